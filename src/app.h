@@ -1,0 +1,83 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "doc.h"
+#include "event.h"
+#include "mesh.h"
+#include "rng.h"
+#include "tree.h"
+#include "view.h"
+
+/*
+ * The kiosk's state machine. It consumes struct event only and owns the document,
+ * the tree rebuilt from it and the meshes. The renderer (ui/) reads it; platform/
+ * feeds it and acts on its requests (export). Pure: no I/O, no clock.
+ */
+
+enum app_mode {
+	APP_MODE_SKETCH = 0,
+	APP_MODE_CLONE,
+	APP_MODE_LEAF,
+	APP_MODE_PROPAGATE,
+};
+
+enum app_pattern {
+	APP_PATTERN_FIXED_COUNT = 0,
+	APP_PATTERN_FIXED_SIZE,
+};
+
+/* Bits returned by app_take_requests(). */
+enum app_request {
+	APP_REQUEST_EXPORT = 1u << 0,
+};
+
+struct app_point {
+	double x, y; /* screen pixels */
+	double pressure;
+	uint64_t time_us;
+};
+
+/* The stroke under the pen, in screen pixels, drawn live. */
+struct app_stroke {
+	struct app_point *points;
+	size_t npoints, cap;
+	enum event_tool tool;
+	bool active; /* tip is down */
+};
+
+struct app_pen {
+	bool in_proximity;
+	enum event_tool tool;
+	double x, y, pressure, tilt_x, tilt_y;
+	bool stylus, stylus2;
+};
+
+struct app {
+	struct view view;
+	struct doc doc;       /* strokes, history, seed: what drawing.edaha holds */
+	struct tree tree;     /* rebuilt from doc */
+	struct rng rng;       /* state after applying doc up to its cursor */
+	struct tree_mesh mesh;
+	uint64_t mesh_serial; /* bumped whenever tree/mesh change, so the renderer re-uploads */
+	struct app_stroke stroke;
+	struct app_pen pen;
+	enum app_mode mode;
+	enum app_pattern pattern;
+	bool buttons_down[BUTTON_COUNT];
+	uint64_t last_time_us;
+	uint32_t requests;
+	int failed; /* first negative errno from an allocation, sticky */
+};
+
+struct app *app_create(int width, int height, uint64_t seed);
+void app_destroy(struct app *app);
+/* Replaces the document (takes ownership of *doc's contents) and rebuilds. 0 or -ENOMEM. */
+int app_load_doc(struct app *app, struct doc *doc);
+void app_handle_event(struct app *app, const struct event *ev);
+uint32_t app_take_requests(struct app *app);
+/* Rebuilds tree and meshes from the document up to its cursor. 0 or -ENOMEM. */
+int app_rebuild(struct app *app);

@@ -1,0 +1,62 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "buf.h"
+#include "error.h"
+#include "event.h"
+
+/*
+ * The drawing as inputs, not polygons: the random seed and the edit history (ops).
+ * The tree is what you get by applying ops[0..cursor) in order from an empty canvas;
+ * undo/redo move the cursor, a new op drops the ops after it.
+ */
+
+enum doc_op_kind {
+	DOC_OP_STROKE = 0, /* a pen stroke, in world metres */
+	DOC_OP_NEW,        /* clears the canvas (undoable) */
+};
+
+/* Stored as float so that what is written is exactly what is replayed. */
+struct doc_point {
+	float x, y;     /* world metres on the sketch plane */
+	float pressure; /* 0..1 */
+	uint32_t dt_us; /* since the stroke started */
+};
+
+struct doc_op {
+	enum doc_op_kind kind;
+	uint64_t time_us; /* when the op was made */
+	enum event_tool tool;
+	struct doc_point *points;
+	size_t npoints;
+};
+
+struct doc {
+	uint64_t seed;
+	struct doc_op *ops;
+	size_t nops, cap;
+	size_t cursor; /* ops[0..cursor) are in effect */
+};
+
+#define DOC_FORMAT_VERSION 1
+
+void doc_init(struct doc *d, uint64_t seed);
+void doc_finish(struct doc *d);
+void doc_op_finish(struct doc_op *op);
+/* Appends op at the cursor (dropping redo ops) and takes ownership of its points. */
+int doc_push(struct doc *d, struct doc_op *op);
+bool doc_can_undo(const struct doc *d);
+bool doc_can_redo(const struct doc *d);
+bool doc_undo(struct doc *d);
+bool doc_redo(struct doc *d);
+
+struct tree;
+/* drawing.edaha, see docs/document-format.md. The tree (built from d) is written as
+ * a readable summary for other tools; loading rebuilds it from the history instead. */
+int doc_serialize(const struct doc *d, const struct tree *t, struct buf *out);
+/* name is used in error messages; returns 0, -EINVAL (malformed) or -ENOMEM. */
+int doc_parse(const char *data, size_t len, const char *name, struct doc *d, struct error *err);

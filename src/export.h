@@ -1,0 +1,18 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+#include "buf.h"
+#include "mesh.h"
+#include "tree.h"
+
+/*
+ * Exporters write into memory; platform/ puts the bytes into files. All return 0, or a
+ * negative errno (-ENOMEM). Same input, same bytes.
+ */
+
+/* glTF 2.0 binary: y up, metres, normals, "bark" and double-sided "leaves" materials. */
+int export_glb(const struct tree_mesh *m, struct buf *out);
+/* Wavefront OBJ with its MTL; the OBJ refers to the MTL as mtl_name (e.g. "model.mtl"). */
+int export_obj(const struct tree_mesh *m, const char *mtl_name, struct buf *obj, struct buf *mtl);
+/* skeleton.json, see docs/skeleton-format.md. */
+int export_skeleton(const struct tree *t, struct buf *out);

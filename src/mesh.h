@@ -1,0 +1,31 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "tree.h"
+
+/* An indexed triangle list; positions in world metres (y up), unit normals. */
+struct mesh {
+	float *positions; /* 3 per vertex */
+	float *normals;   /* 3 per vertex */
+	size_t nvertices, cap_vertices;
+	uint32_t *indices; /* 3 per triangle, counter-clockwise seen from outside */
+	size_t nindices, cap_indices;
+};
+
+void mesh_init(struct mesh *m);
+void mesh_finish(struct mesh *m);
+void mesh_clear(struct mesh *m);
+
+/* Bark (branches swept as tubes) and leaves (one-sided polygons, drawn double-sided). */
+struct tree_mesh {
+	struct mesh bark;
+	struct mesh leaves;
+};
+
+void tree_mesh_init(struct tree_mesh *tm);
+void tree_mesh_finish(struct tree_mesh *tm);
+/* Rebuilds both meshes from the tree. Returns 0 or -ENOMEM. Deterministic. */
+int tree_mesh_build(struct tree_mesh *tm, const struct tree *t);

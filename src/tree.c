@@ -1,0 +1,117 @@
+/* SPDX-License-Identifier: MIT */
+#include "tree.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+const char *origin_name(enum origin origin)
+{
+	switch (origin) {
+	case ORIGIN_SKETCH:
+		return "sketch";
+	case ORIGIN_CLONE:
+		return "clone";
+	case ORIGIN_PROPAGATE:
+		return "propagate";
+	case ORIGIN_MERGE:
+		return "merge";
+	}
+	return "sketch";
+}
+
+void tree_init(struct tree *t)
+{
+	memset(t, 0, sizeof(*t));
+}
+
+void tree_clear(struct tree *t)
+{
+	for (size_t i = 0; i < t->nbranches; i++) {
+		free(t->branches[i].points);
+		free(t->branches[i].radii);
+	}
+	for (size_t i = 0; i < t->nleaves; i++)
+		free(t->leaves[i].points);
+	t->nbranches = 0;
+	t->nleaves = 0;
+}
+
+void tree_finish(struct tree *t)
+{
+	tree_clear(t);
+	free(t->branches);
+	free(t->leaves);
+	tree_init(t);
+}
+
+static int grow(void **array, size_t *cap, size_t n, size_t size)
+{
+	size_t ncap;
+	void *p;
+
+	if (n < *cap)
+		return 0;
+	ncap = *cap ? *cap * 2 : 16;
+	p = realloc(*array, ncap * size);
+	if (!p)
+		return -ENOMEM;
+	*array = p;
+	*cap = ncap;
+	return 0;
+}
+
+static void *dup_array(const void *src, size_t n, size_t size)
+{
+	void *p = malloc(n ? n * size : 1);
+
+	if (p && n)
+		memcpy(p, src, n * size);
+	return p;
+}
+
+int tree_add_branch(struct tree *t, int parent, double parent_t, enum origin origin,
+		    const struct vec3 *points, const double *radii, size_t npoints)
+{
+	struct branch *b;
+
+	if (grow((void **)&t->branches, &t->cap_branches, t->nbranches, sizeof(*b)) < 0)
+		return -ENOMEM;
+	b = &t->branches[t->nbranches];
+	memset(b, 0, sizeof(*b));
+	b->points = dup_array(points, npoints, sizeof(*points));
+	b->radii = dup_array(radii, npoints, sizeof(*radii));
+	if (!b->points || !b->radii) {
+		free(b->points);
+		free(b->radii);
+		return -ENOMEM;
+	}
+	b->id = (int)t->nbranches;
+	b->parent = parent;
+	b->parent_t = parent_t;
+	b->generation = parent >= 0 ? t->branches[parent].generation + 1 : 0;
+	b->origin = origin;
+	b->npoints = npoints;
+	t->nbranches++;
+	return b->id;
+}
+
+int tree_add_leaf(struct tree *t, int branch, enum origin origin, const struct vec3 *points,
+		  size_t npoints)
+{
+	struct leaf *l;
+
+	if (grow((void **)&t->leaves, &t->cap_leaves, t->nleaves, sizeof(*l)) < 0)
+		return -ENOMEM;
+	l = &t->leaves[t->nleaves];
+	memset(l, 0, sizeof(*l));
+	l->points = dup_array(points, npoints, sizeof(*points));
+	if (!l->points)
+		return -ENOMEM;
+	l->id = (int)t->nleaves;
+	l->branch = branch;
+	l->origin = origin;
+	l->npoints = npoints;
+	t->nleaves++;
+	return l->id;
+}
