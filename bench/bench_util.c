@@ -1,0 +1,63 @@
+/* SPDX-License-Identifier: MIT */
+#include "bench_util.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+
+double bench_now(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+
+	return (x > y) - (x < y);
+}
+
+double bench_median(double *v, size_t n)
+{
+	if (n == 0)
+		return 0.0;
+	qsort(v, n, sizeof(*v), cmp_double);
+	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double bench_run(void (*fn)(void *arg), void *arg, int reps)
+{
+	double *t = calloc((size_t)reps, sizeof(*t));
+	double m;
+
+	if (!t)
+		return NAN;
+	for (int i = 0; i < reps; i++) {
+		double t0 = bench_now();
+
+		fn(arg);
+		t[i] = bench_now() - t0;
+	}
+	m = bench_median(t, (size_t)reps);
+	free(t);
+	return m;
+}
+
+void bench_row(const char *name, double size, double median_s, double *prev_size, double *prev_s)
+{
+	if (*prev_size > 0 && *prev_s > 0) {
+		/* exponent k in cost ~ size^k between this row and the previous one */
+		double k = log(median_s / *prev_s) / log(size / *prev_size);
+
+		printf("%-28s %10.0f %12.3f ms   x%.2f for x%.1f size (~n^%.2f)\n", name, size,
+		       median_s * 1e3, median_s / *prev_s, size / *prev_size, k);
+	} else {
+		printf("%-28s %10.0f %12.3f ms\n", name, size, median_s * 1e3);
+	}
+	*prev_size = size;
+	*prev_s = median_s;
+}
