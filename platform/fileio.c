@@ -1,0 +1,162 @@
+/* SPDX-License-Identifier: MIT */
+#include "fileio.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+int file_read_all(const char *path, size_t max, char **data, size_t *len, struct error *err)
+{
+	struct stat st;
+	char *buf = NULL;
+	size_t have = 0, cap = 0;
+	int fd, ret = 0;
+
+	*data = NULL;
+	*len = 0;
+	fd = open(path, O_RDONLY | O_CLOEXEC);
+	if (fd < 0)
+		return error_at(err, -errno, path, 0, "%s", strerror(errno));
+	if (fstat(fd, &st) < 0) {
+		ret = error_at(err, -errno, path, 0, "%s", strerror(errno));
+		goto out;
+	}
+	if (S_ISDIR(st.st_mode)) {
+		ret = error_at(err, -EISDIR, path, 0, "is a directory, not a file");
+		goto out;
+	}
+	for (;;) {
+		ssize_t n;
+
+		if (cap - have < 2) {
+			size_t ncap = cap ? cap * 2 : 65536;
+			char *p;
+
+			if (cap > max + 1) {
+				ret = error_at(err, -EFBIG, path, 0, "file is larger than %zu bytes", max);
+				goto out;
+			}
+			p = realloc(buf, ncap);
+			if (!p) {
+				ret = error_at(err, -ENOMEM, path, 0, "out of memory");
+				goto out;
+			}
+			buf = p;
+			cap = ncap;
+		}
+		n = read(fd, buf + have, cap - have - 1);
+		if (n < 0) {
+			if (errno == EINTR)
+				continue;
+			ret = error_at(err, -errno, path, 0, "read failed: %s", strerror(errno));
+			goto out;
+		}
+		if (n == 0)
+			break;
+		have += (size_t)n;
+		if (have > max) {
+			ret = error_at(err, -EFBIG, path, 0, "file is larger than %zu bytes", max);
+			goto out;
+		}
+	}
+	if (!buf) {
+		buf = malloc(1);
+		if (!buf) {
+			ret = error_at(err, -ENOMEM, path, 0, "out of memory");
+			goto out;
+		}
+	}
+	buf[have] = '\0';
+	*data = buf;
+	*len = have;
+	buf = NULL;
+out:
+	free(buf);
+	close(fd);
+	return ret;
+}
+
+int file_mkdirs(const char *dir, struct error *err)
+{
+	char path[PATH_MAX];
+	size_t n = strlen(dir);
+
+	if (n == 0 || n >= sizeof(path))
+		return error_set(err, -ENAMETOOLONG, "%s: bad directory name", dir);
+	memcpy(path, dir, n + 1);
+	for (char *p = path + 1;; p++) {
+		if (*p == '/' || *p == '\0') {
+			char c = *p;
+
+			*p = '\0';
+			if (mkdir(path, 0755) < 0 && errno != EEXIST)
+				return error_at(err, -errno, path, 0, "cannot create directory: %s",
+						strerror(errno));
+			*p = c;
+			if (c == '\0')
+				break;
+		}
+	}
+	return 0;
+}
+
+static int write_all(int fd, const unsigned char *p, size_t len)
+{
+	while (len > 0) {
+		ssize_t n = write(fd, p, len);
+
+		if (n < 0) {
+			if (errno == EINTR)
+				continue;
+			return -errno;
+		}
+		p += n;
+		len -= (size_t)n;
+	}
+	return 0;
+}
+
+int file_write_atomic(const char *dir, const char *name, const void *data, size_t len,
+		      struct error *err)
+{
+	char tmp[NAME_MAX + 1];
+	int dfd, fd, ret;
+
+	if (strchr(name, '/') || snprintf(tmp, sizeof(tmp), ".%s.tmp", name) >= (int)sizeof(tmp))
+		return error_set(err, -EINVAL, "%s: bad file name", name);
+	dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+	if (dfd < 0)
+		return error_at(err, -errno, dir, 0, "%s", strerror(errno));
+	(void)unlinkat(dfd, tmp, 0); /* a leftover from an interrupted run */
+	fd = openat(dfd, tmp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+	if (fd < 0) {
+		ret = error_at(err, -errno, dir, 0, "cannot create %s: %s", tmp, strerror(errno));
+		goto out_dir;
+	}
+	ret = write_all(fd, data, len);
+	if (ret == 0 && fsync(fd) < 0)
+		ret = -errno;
+	if (close(fd) < 0 && ret == 0)
+		ret = -errno;
+	if (ret < 0) {
+		error_at(err, ret, dir, 0, "cannot write %s: %s", name, strerror(-ret));
+		(void)unlinkat(dfd, tmp, 0);
+		goto out_dir;
+	}
+	if (renameat(dfd, tmp, dfd, name) < 0) {
+		ret = error_at(err, -errno, dir, 0, "cannot rename %s to %s: %s", tmp, name,
+			       strerror(errno));
+		(void)unlinkat(dfd, tmp, 0);
+		goto out_dir;
+	}
+	if (fsync(dfd) < 0)
+		ret = error_at(err, -errno, dir, 0, "fsync failed: %s", strerror(errno));
+out_dir:
+	close(dfd);
+	return ret;
+}

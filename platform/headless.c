@@ -1,0 +1,195 @@
+/* SPDX-License-Identifier: MIT */
+#include "headless.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "app.h"
+#include "egl_headless.h"
+#include "fileio.h"
+#include "output.h"
+#include "render.h"
+#include "trace.h"
+
+#define MAX_DOC_BYTES (64u << 20)
+/* Gaps put between inputs given one after another, so time always moves forward. */
+#define GAP_BETWEEN_INPUTS_US 100000
+#define PRESS_LENGTH_US 50000
+
+struct run {
+	const struct options *o;
+	struct app *app;
+	struct trace_writer *rec;
+	uint64_t now_us;
+	int status;
+};
+
+static void feed(struct run *r, const struct event *ev)
+{
+	if (r->rec && trace_writer_write(r->rec, ev) < 0 && r->status == 0) {
+		fprintf(stderr, "edaha: %s: cannot write the recording\n", r->o->record);
+		r->status = 1;
+	}
+	r->now_us = ev->time_us;
+	app_handle_event(r->app, ev);
+}
+
+static void replay(struct run *r, const struct trace *t)
+{
+	uint64_t offset = 0;
+
+	/* Each trace starts after what came before, whatever its own clock said. */
+	if (t->nevents && t->events[0].time_us <= r->now_us)
+		offset = r->now_us + GAP_BETWEEN_INPUTS_US - t->events[0].time_us;
+	for (size_t i = 0; i < t->nevents; i++) {
+		struct event ev = t->events[i];
+
+		ev.time_us += offset;
+		feed(r, &ev);
+	}
+}
+
+static void press(struct run *r, enum button button)
+{
+	struct event ev = { .type = EVENT_BUTTON, .button = (int)button, .pressed = true };
+
+	ev.time_us = r->now_us + GAP_BETWEEN_INPUTS_US;
+	feed(r, &ev);
+	ev.pressed = false;
+	ev.time_us += PRESS_LENGTH_US;
+	feed(r, &ev);
+}
+
+static int load_doc(struct run *r, const char *path)
+{
+	struct error err = { { 0 } };
+	struct doc doc;
+	char *data;
+	size_t len;
+	int ret;
+
+	ret = file_read_all(path, MAX_DOC_BYTES, &data, &len, &err);
+	if (ret == 0) {
+		ret = doc_parse(data, len, path, &doc, &err);
+		free(data);
+	}
+	if (ret < 0) {
+		fprintf(stderr, "edaha: %s\n", err.msg);
+		return 2;
+	}
+	if (r->o->seed_given && doc.seed != r->o->seed)
+		fprintf(stderr, "edaha: %s keeps its own seed %llu; --seed ignored\n", path,
+			(unsigned long long)doc.seed);
+	if (app_load_doc(r->app, &doc) < 0) {
+		doc_finish(&doc);
+		fprintf(stderr, "edaha: out of memory loading %s\n", path);
+		return 1;
+	}
+	return 0;
+}
+
+/* Reads every trace before anything runs, so bad input stops the run before it starts. */
+static int load_traces(const struct options *o, struct trace *traces)
+{
+	for (size_t i = 0; i < o->nsteps; i++) {
+		struct error err = { { 0 } };
+
+		trace_init(&traces[i]);
+		if (o->steps[i].kind != STEP_REPLAY)
+			continue;
+		if (trace_load(o->steps[i].path, o->width, o->height, &traces[i], &err) < 0) {
+			fprintf(stderr, "edaha: %s\n", err.msg);
+			return 2;
+		}
+	}
+	return 0;
+}
+
+static int render_and_write(struct run *r)
+{
+	const struct options *o = r->o;
+	struct error err = { { 0 } };
+	struct egl_headless *egl;
+	struct render *render = NULL;
+	uint8_t *rgba = NULL;
+	int ret = -EIO;
+
+	egl = egl_headless_create(o->width, o->height, &err);
+	if (!egl) {
+		fprintf(stderr, "edaha: no headless GL: %s\n", err.msg);
+		return 1;
+	}
+	render = render_create();
+	rgba = malloc((size_t)o->width * (size_t)o->height * 4);
+	if (!render || !rgba)
+		fprintf(stderr, "edaha: cannot set up the renderer\n");
+	else if (render_frame(render, r->app) < 0 || egl_headless_read_rgba(egl, rgba) < 0)
+		fprintf(stderr, "edaha: rendering failed\n");
+	else
+		ret = 0;
+	render_destroy(render);
+	egl_headless_destroy(egl);
+	if (ret == 0) {
+		ret = output_write_all(r->app, o->out_dir, rgba, &err);
+		if (ret < 0)
+			fprintf(stderr, "edaha: %s\n", err.msg);
+	}
+	free(rgba);
+	return ret < 0 ? 1 : 0;
+}
+
+int headless_run(const struct options *o)
+{
+	struct run r = { .o = o };
+	struct trace *traces = calloc(o->nsteps ? o->nsteps : 1, sizeof(*traces));
+	struct error err = { { 0 } };
+	int status;
+
+	r.app = app_create(o->width, o->height, o->seed);
+	if (!traces || !r.app) {
+		fprintf(stderr, "edaha: out of memory\n");
+		status = 1;
+		goto out;
+	}
+	status = load_traces(o, traces);
+	if (status == 0 && o->load)
+		status = load_doc(&r, o->load);
+	if (status == 0 && o->record) {
+		r.rec = trace_writer_create(o->record, o->width, o->height, &err);
+		if (!r.rec) {
+			fprintf(stderr, "edaha: %s\n", err.msg);
+			status = 1;
+		}
+	}
+	if (status)
+		goto out;
+	for (size_t i = 0; i < o->nsteps; i++) {
+		if (o->steps[i].kind == STEP_REPLAY)
+			replay(&r, &traces[i]);
+		else
+			press(&r, o->steps[i].button);
+	}
+	(void)app_take_requests(r.app); /* headless writes everything at the end anyway */
+	if (r.app->failed) {
+		fprintf(stderr, "edaha: %s\n", r.app->failed == -ENOMEM ? "out of memory" : "internal error");
+		status = 1;
+		goto out;
+	}
+	status = r.status;
+	if (status == 0)
+		status = render_and_write(&r);
+	if (status == 0)
+		printf("edaha: wrote screen.png, model.glb, model.obj, model.mtl, skeleton.json and "
+		       "drawing.edaha to %s\n", o->out_dir);
+out:
+	if (r.rec && trace_writer_destroy(r.rec) < 0 && status == 0) {
+		fprintf(stderr, "edaha: %s: cannot write the recording\n", o->record);
+		status = 1;
+	}
+	for (size_t i = 0; traces && i < o->nsteps; i++)
+		trace_finish(&traces[i]);
+	free(traces);
+	app_destroy(r.app);
+	return status;
+}

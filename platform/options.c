@@ -1,0 +1,193 @@
+/* SPDX-License-Identifier: MIT */
+#include "options.h"
+
+#include <errno.h>
+#include <getopt.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define DEFAULT_WIDTH 1280
+#define DEFAULT_HEIGHT 800
+#define DEFAULT_SEED 1
+
+void options_usage(FILE *f)
+{
+	fputs("Usage: edaha [OPTIONS]\n"
+	      "Sketch a tree with a pen, make it 3D, grow it, take it home.\n"
+	      "\n"
+	      "With no options edaha runs the kiosk fullscreen on the display.\n"
+	      "\n"
+	      "Headless runs (no display; EGL surfaceless rendering):\n"
+	      "  --headless          run without a display and write results to --out\n"
+	      "  --out DIR           where to write screen.png, model.glb, model.obj, model.mtl,\n"
+	      "                      skeleton.json and drawing.edaha (created if missing)\n"
+	      "  --size WxH          screen size in pixels (default 1280x800)\n"
+	      "  --seed N            random seed of a new drawing (default 1); a loaded\n"
+	      "                      drawing keeps its own seed\n"
+	      "  --load FILE         continue a saved drawing (a drawing.edaha file)\n"
+	      "  --replay FILE       feed recorded input: an edaha trace or a `libinput record`\n"
+	      "                      YAML file; may be repeated\n"
+	      "  --press BUTTON      press and release a button: 3d, clone, leaf, propagate,\n"
+	      "                      undo, redo, export, new, fixed-count, fixed-size; may be\n"
+	      "                      repeated. --replay and --press apply in the order given.\n"
+	      "\n"
+	      "Any mode:\n"
+	      "  --record FILE       write every input event to FILE as an edaha trace\n"
+	      "  --help              show this help\n"
+	      "  --version           show the version\n"
+	      "\n"
+	      "Exit status: 0 success, 1 runtime failure (display, files), 2 bad usage or\n"
+	      "malformed input (the message names the file and line).\n"
+	      "Formats: docs/trace-format.md, docs/document-format.md, docs/skeleton-format.md.\n",
+	      f);
+}
+
+static int usage_error(const char *fmt, const char *arg)
+{
+	fputs("edaha: ", stderr);
+	fprintf(stderr, fmt, arg);
+	fputs("\nTry 'edaha --help'.\n", stderr);
+	return 2;
+}
+
+static int add_step(struct options *o, struct step s)
+{
+	struct step *steps = realloc(o->steps, (o->nsteps + 1) * sizeof(*steps));
+
+	if (!steps) {
+		fputs("edaha: out of memory\n", stderr);
+		return 2;
+	}
+	o->steps = steps;
+	o->steps[o->nsteps++] = s;
+	return 0;
+}
+
+static bool parse_size(const char *s, int *w, int *h)
+{
+	char *end;
+	long x, y;
+
+	errno = 0;
+	x = strtol(s, &end, 10);
+	if (errno || end == s || (*end != 'x' && *end != 'X'))
+		return false;
+	s = end + 1;
+	y = strtol(s, &end, 10);
+	if (errno || end == s || *end)
+		return false;
+	/* Small enough for any GL implementation's framebuffer limits. */
+	if (x < 64 || y < 64 || x > 8192 || y > 8192)
+		return false;
+	*w = (int)x;
+	*h = (int)y;
+	return true;
+}
+
+static bool parse_seed(const char *s, uint64_t *seed)
+{
+	char *end;
+	unsigned long long v;
+
+	if (*s < '0' || *s > '9')
+		return false;
+	errno = 0;
+	v = strtoull(s, &end, 10);
+	if (errno || *end)
+		return false;
+	*seed = v;
+	return true;
+}
+
+int options_parse(struct options *o, int argc, char **argv)
+{
+	enum { OPT_HEADLESS = 256, OPT_SIZE, OPT_SEED, OPT_OUT, OPT_LOAD, OPT_REPLAY, OPT_PRESS,
+	       OPT_RECORD, OPT_HELP, OPT_VERSION };
+	static const struct option longopts[] = {
+		{ "headless", no_argument, NULL, OPT_HEADLESS },
+		{ "size", required_argument, NULL, OPT_SIZE },
+		{ "seed", required_argument, NULL, OPT_SEED },
+		{ "out", required_argument, NULL, OPT_OUT },
+		{ "load", required_argument, NULL, OPT_LOAD },
+		{ "replay", required_argument, NULL, OPT_REPLAY },
+		{ "press", required_argument, NULL, OPT_PRESS },
+		{ "record", required_argument, NULL, OPT_RECORD },
+		{ "help", no_argument, NULL, OPT_HELP },
+		{ "version", no_argument, NULL, OPT_VERSION },
+		{ NULL, 0, NULL, 0 },
+	};
+	int c, ret;
+
+	memset(o, 0, sizeof(*o));
+	o->width = DEFAULT_WIDTH;
+	o->height = DEFAULT_HEIGHT;
+	o->seed = DEFAULT_SEED;
+	opterr = 0;
+	optind = 1;
+	while ((c = getopt_long(argc, argv, "", longopts, NULL)) != -1) {
+		struct step s = { 0 };
+
+		switch (c) {
+		case OPT_HEADLESS:
+			o->headless = true;
+			break;
+		case OPT_SIZE:
+			if (!parse_size(optarg, &o->width, &o->height))
+				return usage_error("bad --size \"%s\" (expected WxH, 64..8192)", optarg);
+			break;
+		case OPT_SEED:
+			if (!parse_seed(optarg, &o->seed))
+				return usage_error("bad --seed \"%s\" (expected a whole number)", optarg);
+			o->seed_given = true;
+			break;
+		case OPT_OUT:
+			o->out_dir = optarg;
+			break;
+		case OPT_LOAD:
+			o->load = optarg;
+			break;
+		case OPT_RECORD:
+			o->record = optarg;
+			break;
+		case OPT_REPLAY:
+			s.kind = STEP_REPLAY;
+			s.path = optarg;
+			if ((ret = add_step(o, s)))
+				return ret;
+			break;
+		case OPT_PRESS:
+			s.kind = STEP_PRESS;
+			if (!button_from_name(optarg, &s.button))
+				return usage_error("unknown button \"%s\" (3d, clone, leaf, propagate, undo, "
+						   "redo, export, new, fixed-count, fixed-size)", optarg);
+			if ((ret = add_step(o, s)))
+				return ret;
+			break;
+		case OPT_HELP:
+			o->help = true;
+			break;
+		case OPT_VERSION:
+			o->version = true;
+			break;
+		default:
+			return usage_error("unknown or incomplete option \"%s\"", argv[optind - 1]);
+		}
+	}
+	if (optind < argc)
+		return usage_error("unexpected argument \"%s\"", argv[optind]);
+	if (o->help || o->version)
+		return 0;
+	if (!o->headless && (o->out_dir || o->nsteps))
+		return usage_error("%s needs --headless", o->out_dir ? "--out" : "--replay/--press");
+	if (o->headless && !o->out_dir)
+		return usage_error("%s needs --out DIR", "--headless");
+	return 0;
+}
+
+void options_finish(struct options *o)
+{
+	free(o->steps);
+	o->steps = NULL;
+	o->nsteps = 0;
+}

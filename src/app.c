@@ -1,0 +1,277 @@
+/* SPDX-License-Identifier: MIT */
+#include "app.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sketch.h"
+
+static void app_fail(struct app *app, int err)
+{
+	if (err < 0 && app->failed == 0)
+		app->failed = err;
+}
+
+struct app *app_create(int width, int height, uint64_t seed)
+{
+	struct app *app = calloc(1, sizeof(*app));
+
+	if (!app)
+		return NULL;
+	view_init(&app->view, width, height);
+	doc_init(&app->doc, seed);
+	tree_init(&app->tree);
+	tree_mesh_init(&app->mesh);
+	rng_seed(&app->rng, seed);
+	app->pattern = APP_PATTERN_FIXED_COUNT;
+	return app;
+}
+
+void app_destroy(struct app *app)
+{
+	if (!app)
+		return;
+	doc_finish(&app->doc);
+	tree_finish(&app->tree);
+	tree_mesh_finish(&app->mesh);
+	free(app->stroke.points);
+	free(app);
+}
+
+static int apply_op(struct app *app, const struct doc_op *op)
+{
+	switch (op->kind) {
+	case DOC_OP_STROKE:
+		return sketch_apply(&app->tree, op, &app->rng);
+	case DOC_OP_NEW:
+		tree_clear(&app->tree);
+		return 0;
+	}
+	return 0;
+}
+
+static int update_mesh(struct app *app)
+{
+	app->mesh_serial++;
+	return tree_mesh_build(&app->mesh, &app->tree);
+}
+
+int app_rebuild(struct app *app)
+{
+	int ret;
+
+	tree_clear(&app->tree);
+	rng_seed(&app->rng, app->doc.seed);
+	for (size_t i = 0; i < app->doc.cursor; i++) {
+		ret = apply_op(app, &app->doc.ops[i]);
+		if (ret < 0)
+			return ret;
+	}
+	return update_mesh(app);
+}
+
+int app_load_doc(struct app *app, struct doc *doc)
+{
+	doc_finish(&app->doc);
+	app->doc = *doc;
+	doc_init(doc, doc->seed);
+	return app_rebuild(app);
+}
+
+/* Records an edit and applies it on top of the current tree (same result as a rebuild). */
+static int push_op(struct app *app, struct doc_op *op)
+{
+	int ret = doc_push(&app->doc, op);
+
+	if (ret < 0)
+		return ret;
+	ret = apply_op(app, &app->doc.ops[app->doc.cursor - 1]);
+	if (ret < 0)
+		return ret;
+	return update_mesh(app);
+}
+
+static void update_pen(struct app *app, const struct event *ev)
+{
+	app->pen.tool = ev->tool;
+	app->pen.x = ev->x;
+	app->pen.y = ev->y;
+	app->pen.pressure = ev->pressure;
+	app->pen.tilt_x = ev->tilt_x;
+	app->pen.tilt_y = ev->tilt_y;
+}
+
+static int stroke_add(struct app *app, const struct event *ev)
+{
+	struct app_stroke *s = &app->stroke;
+	struct app_point *last = s->npoints ? &s->points[s->npoints - 1] : NULL;
+
+	if (last && last->x == ev->x && last->y == ev->y) {
+		last->pressure = ev->pressure > last->pressure ? ev->pressure : last->pressure;
+		return 0;
+	}
+	if (s->npoints == s->cap) {
+		size_t cap = s->cap ? s->cap * 2 : 256;
+		struct app_point *p = realloc(s->points, cap * sizeof(*p));
+
+		if (!p)
+			return -ENOMEM;
+		s->points = p;
+		s->cap = cap;
+	}
+	s->points[s->npoints++] = (struct app_point){ ev->x, ev->y, ev->pressure, ev->time_us };
+	return 0;
+}
+
+static int stroke_commit(struct app *app)
+{
+	struct app_stroke *s = &app->stroke;
+	struct doc_op op = { .kind = DOC_OP_STROKE, .tool = s->tool };
+	double len = 0.0;
+	int ret;
+
+	s->active = false;
+	for (size_t i = 1; i < s->npoints; i++)
+		len += hypot(s->points[i].x - s->points[i - 1].x, s->points[i].y - s->points[i - 1].y);
+	/* A tap is not a drawing: keep it out of the history. */
+	if (s->npoints < 2 || len * app->view.m_per_px < SKETCH_MIN_LENGTH_M) {
+		s->npoints = 0;
+		return 0;
+	}
+	op.time_us = s->points[0].time_us;
+	op.points = calloc(s->npoints, sizeof(*op.points));
+	if (!op.points)
+		return -ENOMEM;
+	op.npoints = s->npoints;
+	for (size_t i = 0; i < s->npoints; i++) {
+		const struct app_point *a = &s->points[i];
+		struct vec3 w = view_to_world(&app->view, a->x, a->y);
+		uint64_t dt = a->time_us - op.time_us;
+
+		op.points[i] = (struct doc_point){
+			.x = (float)w.x,
+			.y = (float)w.y,
+			.pressure = (float)a->pressure,
+			.dt_us = dt > UINT32_MAX ? UINT32_MAX : (uint32_t)dt,
+		};
+	}
+	s->npoints = 0;
+	ret = push_op(app, &op);
+	doc_op_finish(&op);
+	return ret;
+}
+
+static void set_mode(struct app *app, enum app_mode mode)
+{
+	/* Pressing the active mode's button again goes back to drawing. */
+	app->mode = app->mode == mode ? APP_MODE_SKETCH : mode;
+}
+
+static int press_button(struct app *app, enum button button, uint64_t time_us)
+{
+	struct doc_op op = { .kind = DOC_OP_NEW, .time_us = time_us };
+
+	switch (button) {
+	case BUTTON_3D:
+		/* Lifting to 3D arrives with the lifting module; until then the press is shown only. */
+		return 0;
+	case BUTTON_CLONE:
+		set_mode(app, APP_MODE_CLONE);
+		return 0;
+	case BUTTON_LEAF:
+		set_mode(app, APP_MODE_LEAF);
+		return 0;
+	case BUTTON_PROPAGATE:
+		set_mode(app, APP_MODE_PROPAGATE);
+		return 0;
+	case BUTTON_FIXED_COUNT:
+		app->pattern = APP_PATTERN_FIXED_COUNT;
+		return 0;
+	case BUTTON_FIXED_SIZE:
+		app->pattern = APP_PATTERN_FIXED_SIZE;
+		return 0;
+	case BUTTON_UNDO:
+		return doc_undo(&app->doc) ? app_rebuild(app) : 0;
+	case BUTTON_REDO:
+		return doc_redo(&app->doc) ? app_rebuild(app) : 0;
+	case BUTTON_EXPORT:
+		app->requests |= APP_REQUEST_EXPORT;
+		return 0;
+	case BUTTON_NEW:
+		/* Undoable, so a visitor who pressed it by accident gets the tree back. */
+		app->mode = APP_MODE_SKETCH;
+		if (app->tree.nbranches == 0 && app->tree.nleaves == 0)
+			return 0;
+		return push_op(app, &op);
+	case BUTTON_COUNT:
+		break;
+	}
+	return 0;
+}
+
+void app_handle_event(struct app *app, const struct event *ev)
+{
+	int ret = 0;
+
+	app->last_time_us = ev->time_us;
+	switch (ev->type) {
+	case EVENT_PROXIMITY_IN:
+		update_pen(app, ev);
+		app->pen.in_proximity = true;
+		break;
+	case EVENT_PROXIMITY_OUT:
+		update_pen(app, ev);
+		if (app->stroke.active)
+			ret = stroke_commit(app);
+		app->pen.in_proximity = false;
+		break;
+	case EVENT_TIP_DOWN:
+		update_pen(app, ev);
+		app->pen.in_proximity = true;
+		if (app->stroke.active)
+			ret = stroke_commit(app);
+		app->stroke.active = true;
+		app->stroke.tool = ev->tool;
+		app->stroke.npoints = 0;
+		if (ret == 0)
+			ret = stroke_add(app, ev);
+		break;
+	case EVENT_MOTION:
+		update_pen(app, ev);
+		if (app->stroke.active)
+			ret = stroke_add(app, ev);
+		break;
+	case EVENT_TIP_UP:
+		update_pen(app, ev);
+		if (app->stroke.active) {
+			ret = stroke_add(app, ev);
+			if (ret == 0)
+				ret = stroke_commit(app);
+		}
+		break;
+	case EVENT_PEN_BUTTON:
+		update_pen(app, ev);
+		if (ev->button == EVENT_PEN_BUTTON_STYLUS)
+			app->pen.stylus = ev->pressed;
+		else
+			app->pen.stylus2 = ev->pressed;
+		break;
+	case EVENT_BUTTON:
+		if (ev->button < 0 || ev->button >= BUTTON_COUNT)
+			break;
+		app->buttons_down[ev->button] = ev->pressed;
+		if (ev->pressed)
+			ret = press_button(app, (enum button)ev->button, ev->time_us);
+		break;
+	}
+	app_fail(app, ret);
+}
+
+uint32_t app_take_requests(struct app *app)
+{
+	uint32_t r = app->requests;
+
+	app->requests = 0;
+	return r;
+}

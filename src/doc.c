@@ -1,0 +1,76 @@
+/* SPDX-License-Identifier: MIT */
+#include "doc.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+void doc_init(struct doc *d, uint64_t seed)
+{
+	memset(d, 0, sizeof(*d));
+	d->seed = seed;
+}
+
+void doc_op_finish(struct doc_op *op)
+{
+	free(op->points);
+	op->points = NULL;
+	op->npoints = 0;
+}
+
+void doc_finish(struct doc *d)
+{
+	for (size_t i = 0; i < d->nops; i++)
+		doc_op_finish(&d->ops[i]);
+	free(d->ops);
+	doc_init(d, d->seed);
+}
+
+int doc_push(struct doc *d, struct doc_op *op)
+{
+	/* A new edit after undo forgets the undone ones, as every editor does. */
+	for (size_t i = d->cursor; i < d->nops; i++)
+		doc_op_finish(&d->ops[i]);
+	d->nops = d->cursor;
+
+	if (d->nops == d->cap) {
+		size_t cap = d->cap ? d->cap * 2 : 32;
+		struct doc_op *ops = realloc(d->ops, cap * sizeof(*ops));
+
+		if (!ops)
+			return -ENOMEM;
+		d->ops = ops;
+		d->cap = cap;
+	}
+	d->ops[d->nops++] = *op;
+	d->cursor = d->nops;
+	op->points = NULL;
+	op->npoints = 0;
+	return 0;
+}
+
+bool doc_can_undo(const struct doc *d)
+{
+	return d->cursor > 0;
+}
+
+bool doc_can_redo(const struct doc *d)
+{
+	return d->cursor < d->nops;
+}
+
+bool doc_undo(struct doc *d)
+{
+	if (!doc_can_undo(d))
+		return false;
+	d->cursor--;
+	return true;
+}
+
+bool doc_redo(struct doc *d)
+{
+	if (!doc_can_redo(d))
+		return false;
+	d->cursor++;
+	return true;
+}

@@ -1,0 +1,325 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * drawing.edaha: line-based text, see docs/document-format.md. Every problem found while
+ * reading names the line, because a teacher may well open one in a text editor.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "doc.h"
+#include "tree.h"
+
+#define MAX_FIELDS 8
+#define MAX_STROKE_POINTS 1000000u
+
+int doc_serialize(const struct doc *d, const struct tree *t, struct buf *out)
+{
+	buf_printf(out, "edaha-drawing %d\n", DOC_FORMAT_VERSION);
+	buf_printf(out, "# The history is the drawing; the tree section is a summary for other tools.\n");
+	buf_printf(out, "seed %llu\n", (unsigned long long)d->seed);
+	buf_printf(out, "history %zu %zu\n", d->nops, d->cursor);
+	for (size_t i = 0; i < d->nops; i++) {
+		const struct doc_op *op = &d->ops[i];
+
+		switch (op->kind) {
+		case DOC_OP_STROKE:
+			buf_printf(out, "stroke %s %llu %zu\n", event_tool_name(op->tool),
+				   (unsigned long long)op->time_us, op->npoints);
+			for (size_t k = 0; k < op->npoints; k++) {
+				const struct doc_point *p = &op->points[k];
+
+				buf_printf(out, "%.9g %.9g %.9g %lu\n", (double)p->x, (double)p->y,
+					   (double)p->pressure, (unsigned long)p->dt_us);
+			}
+			break;
+		case DOC_OP_NEW:
+			buf_printf(out, "new %llu\n", (unsigned long long)op->time_us);
+			break;
+		}
+	}
+	if (t) {
+		buf_printf(out, "tree %zu %zu\n", t->nbranches, t->nleaves);
+		for (size_t i = 0; i < t->nbranches; i++) {
+			const struct branch *b = &t->branches[i];
+
+			buf_printf(out, "branch %d %d %d %s %zu\n", b->id, b->parent, b->generation,
+				   origin_name(b->origin), b->npoints);
+		}
+		for (size_t i = 0; i < t->nleaves; i++) {
+			const struct leaf *l = &t->leaves[i];
+
+			buf_printf(out, "leaf %d %d %s %zu\n", l->id, l->branch, origin_name(l->origin),
+				   l->npoints);
+		}
+	}
+	buf_printf(out, "end\n");
+	return out->failed ? -ENOMEM : 0;
+}
+
+struct reader {
+	const char *data, *end, *pos;
+	const char *name;
+	unsigned long line;
+	struct error *err;
+	char *copy; /* the current line, NUL-terminated and split in place */
+	size_t copy_cap;
+	char *fields[MAX_FIELDS + 1];
+	int nfields;
+};
+
+/* Next non-blank, non-comment line, split into fields. 1 = got one, 0 = end, <0 error. */
+static int reader_next(struct reader *r)
+{
+	while (r->pos < r->end) {
+		const char *start = r->pos;
+		const char *nl = memchr(start, '\n', (size_t)(r->end - start));
+		size_t len = nl ? (size_t)(nl - start) : (size_t)(r->end - start);
+		char *s;
+
+		r->pos = nl ? nl + 1 : r->end;
+		r->line++;
+		if (len && start[len - 1] == '\r')
+			len--;
+		if (memchr(start, '\0', len))
+			return error_at(r->err, -EINVAL, r->name, r->line, "binary data in a text file");
+		if (len + 1 > r->copy_cap) {
+			char *c = realloc(r->copy, len + 1);
+
+			if (!c)
+				return error_at(r->err, -ENOMEM, r->name, r->line, "out of memory");
+			r->copy = c;
+			r->copy_cap = len + 1;
+		}
+		memcpy(r->copy, start, len);
+		r->copy[len] = '\0';
+
+		r->nfields = 0;
+		for (s = r->copy; *s;) {
+			while (*s == ' ' || *s == '\t')
+				*s++ = '\0';
+			if (!*s)
+				break;
+			if (r->nfields == 0 && *s == '#')
+				break;
+			if (r->nfields == MAX_FIELDS)
+				return error_at(r->err, -EINVAL, r->name, r->line, "too many fields");
+			r->fields[r->nfields++] = s;
+			while (*s && *s != ' ' && *s != '\t')
+				s++;
+		}
+		if (r->nfields > 0)
+			return 1;
+	}
+	return 0;
+}
+
+static int expect_fields(struct reader *r, int n, const char *what)
+{
+	if (r->nfields != n)
+		return error_at(r->err, -EINVAL, r->name, r->line, "expected %d fields for %s, got %d",
+				n, what, r->nfields);
+	return 0;
+}
+
+static int parse_u64(struct reader *r, const char *s, uint64_t max, uint64_t *v, const char *what)
+{
+	char *endp;
+	unsigned long long x;
+
+	errno = 0;
+	if (*s < '0' || *s > '9')
+		goto bad;
+	x = strtoull(s, &endp, 10);
+	if (errno || *endp || x > max)
+		goto bad;
+	*v = x;
+	return 0;
+bad:
+	return error_at(r->err, -EINVAL, r->name, r->line, "bad %s \"%s\"", what, s);
+}
+
+static int parse_float(struct reader *r, const char *s, float lo, float hi, float *v,
+		       const char *what)
+{
+	char *endp;
+	float x;
+
+	errno = 0;
+	x = strtof(s, &endp);
+	if (endp == s || *endp || errno == ERANGE || !isfinite(x))
+		return error_at(r->err, -EINVAL, r->name, r->line, "bad %s \"%s\"", what, s);
+	if (x < lo || x > hi)
+		return error_at(r->err, -EINVAL, r->name, r->line, "%s %s out of range %g..%g", what, s,
+				(double)lo, (double)hi);
+	*v = x;
+	return 0;
+}
+
+static int parse_stroke(struct reader *r, struct doc_op *op)
+{
+	uint64_t v, npoints;
+	uint32_t last_dt = 0;
+	int ret;
+
+	if ((ret = expect_fields(r, 4, "stroke")) < 0)
+		return ret;
+	if (!event_tool_from_name(r->fields[1], &op->tool))
+		return error_at(r->err, -EINVAL, r->name, r->line, "unknown tool \"%s\" (pen, eraser)",
+				r->fields[1]);
+	if ((ret = parse_u64(r, r->fields[2], UINT64_MAX, &op->time_us, "time")) < 0)
+		return ret;
+	if ((ret = parse_u64(r, r->fields[3], MAX_STROKE_POINTS, &npoints, "point count")) < 0)
+		return ret;
+	if (npoints == 0)
+		return error_at(r->err, -EINVAL, r->name, r->line, "a stroke needs at least one point");
+	op->points = calloc(npoints, sizeof(*op->points));
+	if (!op->points)
+		return error_at(r->err, -ENOMEM, r->name, r->line, "out of memory");
+	for (op->npoints = 0; op->npoints < npoints; op->npoints++) {
+		struct doc_point *p = &op->points[op->npoints];
+
+		ret = reader_next(r);
+		if (ret < 0)
+			return ret;
+		if (ret == 0)
+			return error_at(r->err, -EINVAL, r->name, r->line,
+					"file ends inside a stroke (%zu of %llu points)", op->npoints,
+					(unsigned long long)npoints);
+		if ((ret = expect_fields(r, 4, "a stroke point (x y pressure dt_us)")) < 0 ||
+		    (ret = parse_float(r, r->fields[0], -1e4f, 1e4f, &p->x, "x")) < 0 ||
+		    (ret = parse_float(r, r->fields[1], -1e4f, 1e4f, &p->y, "y")) < 0 ||
+		    (ret = parse_float(r, r->fields[2], 0.0f, 1.0f, &p->pressure, "pressure")) < 0 ||
+		    (ret = parse_u64(r, r->fields[3], UINT32_MAX, &v, "dt_us")) < 0)
+			return ret;
+		if ((uint32_t)v < last_dt)
+			return error_at(r->err, -EINVAL, r->name, r->line,
+					"time goes backwards within a stroke (%llu < %lu)",
+					(unsigned long long)v, (unsigned long)last_dt);
+		p->dt_us = last_dt = (uint32_t)v;
+	}
+	return 0;
+}
+
+static int parse_body(struct reader *r, struct doc *d)
+{
+	uint64_t v, nops = 0, cursor = 0;
+	bool have_seed = false, have_history = false, in_tree = false;
+	int ret;
+
+	while ((ret = reader_next(r)) > 0) {
+		const char *kw = r->fields[0];
+		struct doc_op op = { 0 };
+
+		if (strcmp(kw, "end") == 0) {
+			if ((ret = expect_fields(r, 1, "end")) < 0)
+				return ret;
+			if (!have_seed || !have_history)
+				return error_at(r->err, -EINVAL, r->name, r->line, "missing %s line",
+						have_seed ? "history" : "seed");
+			if (d->nops != nops)
+				return error_at(r->err, -EINVAL, r->name, r->line,
+						"history says %llu ops, found %zu",
+						(unsigned long long)nops, d->nops);
+			d->cursor = (size_t)cursor;
+			while ((ret = reader_next(r)) > 0)
+				return error_at(r->err, -EINVAL, r->name, r->line, "text after \"end\"");
+			return ret;
+		}
+		if (in_tree) {
+			/* The summary is rebuilt from the history; only its shape is checked. */
+			if (strcmp(kw, "branch") && strcmp(kw, "leaf"))
+				return error_at(r->err, -EINVAL, r->name, r->line,
+						"unexpected \"%s\" in the tree section", kw);
+			continue;
+		}
+		if (strcmp(kw, "seed") == 0) {
+			if (have_seed)
+				return error_at(r->err, -EINVAL, r->name, r->line, "second seed line");
+			if ((ret = expect_fields(r, 2, "seed")) < 0 ||
+			    (ret = parse_u64(r, r->fields[1], UINT64_MAX, &d->seed, "seed")) < 0)
+				return ret;
+			have_seed = true;
+		} else if (strcmp(kw, "history") == 0) {
+			if (have_history)
+				return error_at(r->err, -EINVAL, r->name, r->line, "second history line");
+			if ((ret = expect_fields(r, 3, "history")) < 0 ||
+			    (ret = parse_u64(r, r->fields[1], 10000000, &nops, "op count")) < 0 ||
+			    (ret = parse_u64(r, r->fields[2], nops, &cursor, "cursor")) < 0)
+				return ret;
+			have_history = true;
+		} else if (strcmp(kw, "stroke") == 0 || strcmp(kw, "new") == 0) {
+			if (!have_history)
+				return error_at(r->err, -EINVAL, r->name, r->line,
+						"\"%s\" before the history line", kw);
+			if (d->nops == nops)
+				return error_at(r->err, -EINVAL, r->name, r->line,
+						"more ops than the history line says (%llu)",
+						(unsigned long long)nops);
+			if (kw[0] == 's') {
+				op.kind = DOC_OP_STROKE;
+				ret = parse_stroke(r, &op);
+			} else {
+				op.kind = DOC_OP_NEW;
+				ret = expect_fields(r, 2, "new");
+				if (ret == 0)
+					ret = parse_u64(r, r->fields[1], UINT64_MAX, &op.time_us, "time");
+			}
+			if (ret == 0) {
+				d->cursor = d->nops; /* append, never truncate, while loading */
+				ret = doc_push(d, &op);
+				if (ret < 0)
+					error_at(r->err, ret, r->name, r->line, "out of memory");
+			}
+			doc_op_finish(&op);
+			if (ret < 0)
+				return ret;
+		} else if (strcmp(kw, "tree") == 0) {
+			if ((ret = expect_fields(r, 3, "tree")) < 0 ||
+			    (ret = parse_u64(r, r->fields[1], UINT32_MAX, &v, "branch count")) < 0 ||
+			    (ret = parse_u64(r, r->fields[2], UINT32_MAX, &v, "leaf count")) < 0)
+				return ret;
+			in_tree = true;
+		} else {
+			return error_at(r->err, -EINVAL, r->name, r->line, "unknown line \"%s\"", kw);
+		}
+	}
+	if (ret < 0)
+		return ret;
+	return error_at(r->err, -EINVAL, r->name, r->line,
+			"file ends without \"end\" (truncated?)");
+}
+
+int doc_parse(const char *data, size_t len, const char *name, struct doc *d, struct error *err)
+{
+	struct reader r = { .data = data, .end = data + len, .pos = data, .name = name, .err = err };
+	uint64_t version;
+	int ret;
+
+	doc_init(d, 0);
+	ret = reader_next(&r);
+	if (ret == 0)
+		ret = error_at(err, -EINVAL, name, 0, "empty file, not an edaha drawing");
+	if (ret < 0)
+		goto out;
+	if (r.nfields != 2 || strcmp(r.fields[0], "edaha-drawing") != 0) {
+		ret = error_at(err, -EINVAL, name, r.line,
+			       "not an edaha drawing (expected \"edaha-drawing %d\")", DOC_FORMAT_VERSION);
+		goto out;
+	}
+	if ((ret = parse_u64(&r, r.fields[1], UINT32_MAX, &version, "version")) < 0)
+		goto out;
+	if (version != DOC_FORMAT_VERSION) {
+		ret = error_at(err, -EINVAL, name, r.line,
+			       "drawing format version %llu is not supported (this edaha reads %d)",
+			       (unsigned long long)version, DOC_FORMAT_VERSION);
+		goto out;
+	}
+	ret = parse_body(&r, d);
+out:
+	free(r.copy);
+	if (ret < 0)
+		doc_finish(d);
+	return ret;
+}

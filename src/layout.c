@@ -1,0 +1,99 @@
+/* SPDX-License-Identifier: MIT */
+#include "layout.h"
+
+#include <math.h>
+
+static const enum button bar_order[LAYOUT_NBUTTONS] = {
+	BUTTON_3D, BUTTON_CLONE, BUTTON_LEAF, BUTTON_PROPAGATE, /* modes, at the top */
+	BUTTON_UNDO, BUTTON_REDO, BUTTON_NEW, BUTTON_EXPORT,     /* actions, at the bottom */
+};
+
+/* How many of bar_order are in the top group. */
+#define LAYOUT_NTOP 4
+
+/* Sizes as fractions of the screen height, so the bar looks the same at any resolution. */
+#define BUTTON_FRACTION 0.10 /* a button's side: ~8 cm on a 80 cm tall kiosk screen */
+#define MARGIN_FRACTION 0.02 /* around the buttons, inside the bar */
+#define GAP_FRACTION 0.015   /* between buttons of a group */
+#define MAX_BUTTON_OF_WIDTH 0.2 /* on a narrow screen the canvas keeps most of the width */
+
+struct metrics {
+	double size;   /* button side */
+	double margin; /* bar edge to button */
+	double gap;    /* between buttons of a group */
+	double bar_x;  /* left edge of the bar */
+};
+
+/* Whole pixels, so edges land on pixel boundaries and stay crisp. */
+static struct metrics metrics(const struct view *v)
+{
+	double h = v->height > 0 ? v->height : 0;
+	double w = v->width > 0 ? v->width : 0;
+	struct metrics m;
+
+	m.size = fmax(1.0, round(fmin(BUTTON_FRACTION * h, MAX_BUTTON_OF_WIDTH * w)));
+	m.margin = round(MARGIN_FRACTION * h);
+	m.gap = round(GAP_FRACTION * h);
+	m.bar_x = w - (m.size + 2.0 * m.margin);
+	return m;
+}
+
+static void button_rect(const struct view *v, const struct metrics *m, size_t i,
+			struct layout_button *b)
+{
+	b->button = bar_order[i];
+	b->x = m->bar_x + m->margin;
+	b->w = m->size;
+	b->h = m->size;
+	if (i < LAYOUT_NTOP) {
+		b->y = m->margin + (double)i * (m->size + m->gap);
+	} else {
+		/* counted up from the bottom edge */
+		double below = (double)(LAYOUT_NBUTTONS - i);
+
+		b->y = v->height - m->margin - below * m->size - (below - 1.0) * m->gap;
+	}
+}
+
+size_t layout_buttons(const struct view *v, struct layout_button *out, size_t max)
+{
+	struct metrics m = metrics(v);
+
+	for (size_t i = 0; i < LAYOUT_NBUTTONS && i < max; i++)
+		button_rect(v, &m, i, &out[i]);
+	return LAYOUT_NBUTTONS;
+}
+
+bool layout_hit(const struct view *v, double x, double y, enum button *button)
+{
+	struct metrics m = metrics(v);
+	double pad = 0.5 * m.gap;
+
+	if (x < m.bar_x || x >= v->width || y < 0.0 || y >= v->height)
+		return false;
+	for (size_t i = 0; i < LAYOUT_NBUTTONS; i++) {
+		struct layout_button b;
+
+		button_rect(v, &m, i, &b);
+		/* the whole bar width counts: a pen landing on the bar's rim still hits */
+		if (y >= b.y - pad && y < b.y + b.h + pad) {
+			*button = b.button;
+			return true;
+		}
+	}
+	return false;
+}
+
+struct layout_rect layout_bar(const struct view *v)
+{
+	struct metrics m = metrics(v);
+
+	return (struct layout_rect){ m.bar_x, 0.0, v->width - m.bar_x, v->height };
+}
+
+struct layout_rect layout_canvas(const struct view *v)
+{
+	struct metrics m = metrics(v);
+
+	return (struct layout_rect){ 0.0, 0.0, fmax(0.0, m.bar_x), v->height };
+}

@@ -1,0 +1,46 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "event.h"
+#include "view.h"
+
+/*
+ * Where the on-screen buttons are: a strip along the right edge of the screen with
+ * large, square, pen-friendly buttons. The four kiosk modes sit at the top, the
+ * actions at the bottom, with a wider gap between the groups so the two kinds read
+ * apart. Pure geometry in screen pixels (origin top left, y down): the renderer draws
+ * from it and the app hit-tests taps with it, so both always agree.
+ */
+
+/* Buttons in the bar, top to bottom. */
+#define LAYOUT_NBUTTONS 8
+
+struct layout_rect {
+	double x, y, w, h;
+};
+
+struct layout_button {
+	enum button button;
+	double x, y, w, h; /* the visible button */
+};
+
+/*
+ * Fills out[0..max) with the buttons of the bar, top to bottom, and returns how many
+ * there are (LAYOUT_NBUTTONS), even when max is smaller, like snprintf.
+ */
+size_t layout_buttons(const struct view *v, struct layout_button *out, size_t max);
+
+/*
+ * The button under screen point (x, y). Each button's target reaches half a gap
+ * beyond what is drawn, so a tap between two buttons still lands on the nearer one.
+ */
+bool layout_hit(const struct view *v, double x, double y, enum button *button);
+
+/* The strip the buttons sit on. */
+struct layout_rect layout_bar(const struct view *v);
+
+/* The drawing area: the screen minus the bar. */
+struct layout_rect layout_canvas(const struct view *v);

@@ -1,0 +1,194 @@
+/* SPDX-License-Identifier: MIT */
+#include "sketch.h"
+
+#include <errno.h>
+#include <stdlib.h>
+
+/* Trunk root radius relative to its length, and how much thinner the tip gets. */
+#define TRUNK_RADIUS_PER_M 0.04
+#define MIN_ROOT_RADIUS_M 0.015
+#define TIP_RADIUS_FRACTION 0.2
+#define CHILD_RADIUS_FRACTION 0.7
+
+static double polyline_length(const struct vec3 *p, size_t n)
+{
+	double len = 0.0;
+
+	for (size_t i = 1; i < n; i++)
+		len += vec3_dist(p[i - 1], p[i]);
+	return len;
+}
+
+int sketch_resample(const struct vec3 *in, size_t n, double step, struct vec3 **out, size_t *nout)
+{
+	double len = polyline_length(in, n);
+	size_t count = (size_t)(len / step) + 2, k = 0;
+	struct vec3 *p = malloc(count * sizeof(*p));
+	double next = step, walked = 0.0;
+
+	if (!p)
+		return -ENOMEM;
+	if (n == 0) {
+		*out = p;
+		*nout = 0;
+		return 0;
+	}
+	p[k++] = in[0];
+	for (size_t i = 1; i < n; i++) {
+		double seg = vec3_dist(in[i - 1], in[i]);
+
+		while (seg > 0.0 && walked + seg >= next && k < count - 1) {
+			p[k++] = vec3_lerp(in[i - 1], in[i], (next - walked) / seg);
+			next += step;
+		}
+		walked += seg;
+	}
+	/* Keep the drawn end exactly, replacing a sample that falls right on it. */
+	if (k > 1 && vec3_dist(p[k - 1], in[n - 1]) < 0.25 * step)
+		k--;
+	p[k++] = in[n - 1];
+	*out = p;
+	*nout = k;
+	return 0;
+}
+
+bool sketch_is_closed(const struct vec3 *p, size_t n)
+{
+	double len, gap;
+
+	if (n < 4)
+		return false;
+	len = polyline_length(p, n);
+	gap = vec3_dist(p[0], p[n - 1]);
+	return gap < 0.2 * len && gap < 0.4;
+}
+
+struct sketch_hit sketch_nearest(const struct tree *t, struct vec3 p)
+{
+	struct sketch_hit best = { .branch = -1, .dist = INFINITY };
+
+	for (size_t b = 0; b < t->nbranches; b++) {
+		const struct branch *br = &t->branches[b];
+		double total = polyline_length(br->points, br->npoints), walked = 0.0;
+
+		for (size_t i = 0; i + 1 < br->npoints; i++) {
+			struct vec3 a = br->points[i], d = vec3_sub(br->points[i + 1], a);
+			double dd = d.x * d.x + d.y * d.y, seg = vec3_len(d);
+			double s = dd > 0 ? ((p.x - a.x) * d.x + (p.y - a.y) * d.y) / dd : 0.0;
+			struct vec3 q;
+			double dist;
+
+			s = s < 0 ? 0 : s > 1 ? 1 : s;
+			q = vec3_lerp(a, br->points[i + 1], s);
+			dist = hypot(q.x - p.x, q.y - p.y);
+			if (dist < best.dist) {
+				best.branch = (int)b;
+				best.segment = i;
+				best.seg_t = s;
+				best.point = q;
+				best.dist = dist;
+				best.param = total > 0 ? (walked + s * seg) / total : 0.0;
+			}
+			walked += seg;
+		}
+	}
+	return best;
+}
+
+static double radius_at(const struct branch *b, const struct sketch_hit *h)
+{
+	double r0 = b->radii[h->segment];
+	double r1 = b->radii[h->segment + 1 < b->npoints ? h->segment + 1 : h->segment];
+
+	return r0 + (r1 - r0) * h->seg_t;
+}
+
+static int add_branch(struct tree *t, struct vec3 *p, size_t n)
+{
+	double len = polyline_length(p, n), walked = 0.0, root_r;
+	struct sketch_hit hit = { .branch = -1 };
+	double *radii = malloc(n * sizeof(*radii));
+	int ret;
+
+	if (!radii)
+		return -ENOMEM;
+	if (t->nbranches == 0) {
+		root_r = fmax(MIN_ROOT_RADIUS_M * 2, TRUNK_RADIUS_PER_M * len);
+	} else {
+		/* Fig. 3a,b: the root moves onto the parent, the tip stays, the rest follows. */
+		struct vec3 shift;
+
+		hit = sketch_nearest(t, p[0]);
+		shift = vec3_sub(hit.point, p[0]);
+		for (size_t i = 0; i < n; i++) {
+			double w = len > 0 ? 1.0 - walked / len : 0.0;
+
+			if (i + 1 < n)
+				walked += vec3_dist(p[i], p[i + 1]);
+			p[i] = vec3_add(p[i], vec3_scale(shift, w));
+		}
+		root_r = fmax(MIN_ROOT_RADIUS_M,
+			      CHILD_RADIUS_FRACTION * radius_at(&t->branches[hit.branch], &hit));
+		len = polyline_length(p, n);
+	}
+	walked = 0.0;
+	for (size_t i = 0; i < n; i++) {
+		double s = len > 0 ? walked / len : 0.0;
+
+		radii[i] = root_r * (1.0 - (1.0 - TIP_RADIUS_FRACTION) * s);
+		if (i + 1 < n)
+			walked += vec3_dist(p[i], p[i + 1]);
+	}
+	ret = tree_add_branch(t, hit.branch, hit.branch >= 0 ? hit.param : 0.0, ORIGIN_SKETCH, p,
+			      radii, n);
+	free(radii);
+	return ret < 0 ? ret : 0;
+}
+
+static int add_leaf(struct tree *t, const struct vec3 *p, size_t n)
+{
+	struct sketch_hit best = { .branch = -1, .dist = INFINITY };
+	int ret;
+
+	if (t->nbranches == 0)
+		return 0; /* nothing to hang it on */
+	for (size_t i = 0; i < n; i++) {
+		struct sketch_hit h = sketch_nearest(t, p[i]);
+
+		if (h.dist < best.dist)
+			best = h;
+	}
+	/* The polygon closes itself: drop the end point that returned to the start. */
+	ret = tree_add_leaf(t, best.branch, ORIGIN_SKETCH, p, n - 1);
+	return ret < 0 ? ret : 0;
+}
+
+int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
+{
+	struct vec3 *raw, *p = NULL;
+	size_t n;
+	int ret;
+
+	(void)rng;
+	if (op->kind != DOC_OP_STROKE || op->tool != EVENT_TOOL_PEN || op->npoints < 2)
+		return 0;
+	raw = malloc(op->npoints * sizeof(*raw));
+	if (!raw)
+		return -ENOMEM;
+	for (size_t i = 0; i < op->npoints; i++)
+		raw[i] = vec3(op->points[i].x, op->points[i].y, 0.0);
+	if (polyline_length(raw, op->npoints) < SKETCH_MIN_LENGTH_M) {
+		free(raw);
+		return 0;
+	}
+	ret = sketch_resample(raw, op->npoints, SKETCH_STEP_M, &p, &n);
+	free(raw);
+	if (ret < 0)
+		return ret;
+	if (sketch_is_closed(p, n))
+		ret = add_leaf(t, p, n);
+	else
+		ret = add_branch(t, p, n);
+	free(p);
+	return ret;
+}

@@ -1,0 +1,8 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+#include "options.h"
+
+/* Runs --headless: load, replay/press in order, render one frame, write the outputs.
+ * Returns the process exit status (0, 1 runtime failure, 2 malformed input). */
+int headless_run(const struct options *o);

@@ -1,0 +1,38 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "event.h"
+
+/* One input step of a headless run, applied in command-line order. */
+enum step_kind {
+	STEP_REPLAY,
+	STEP_PRESS,
+};
+
+struct step {
+	enum step_kind kind;
+	const char *path;    /* STEP_REPLAY */
+	enum button button;  /* STEP_PRESS */
+};
+
+struct options {
+	bool headless, help, version;
+	int width, height;
+	uint64_t seed;
+	bool seed_given;
+	const char *out_dir;
+	const char *load;
+	const char *record;
+	struct step *steps;
+	size_t nsteps;
+};
+
+/* Parses argv. Returns 0, or 2 (usage error, message printed) as an exit status. */
+int options_parse(struct options *o, int argc, char **argv);
+void options_finish(struct options *o);
+void options_usage(FILE *f);

@@ -1,0 +1,39 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "doc.h"
+#include "rng.h"
+#include "tree.h"
+
+/* Resampling step along strokes, metres (about 4 px on an 800 px high screen). */
+#define SKETCH_STEP_M 0.05
+/* Strokes shorter than this are taps, not drawings. */
+#define SKETCH_MIN_LENGTH_M 0.1
+
+struct sketch_hit {
+	int branch;      /* -1 if the tree has no branches */
+	size_t segment;  /* segment index on that branch */
+	double seg_t;    /* 0..1 along that segment */
+	double param;    /* 0..1 arc length along the branch */
+	struct vec3 point;
+	double dist;
+};
+
+/* Nearest point on any branch to p (in the sketch plane's x/y). */
+struct sketch_hit sketch_nearest(const struct tree *t, struct vec3 p);
+
+/* Resamples a polyline by arc length at `step`; *out is malloc'ed. 0 or -ENOMEM. */
+int sketch_resample(const struct vec3 *in, size_t n, double step, struct vec3 **out, size_t *nout);
+
+/* Whether a resampled stroke returns near its start: a leaf rather than a branch. */
+bool sketch_is_closed(const struct vec3 *p, size_t n);
+
+/*
+ * Applies one stroke op: an open stroke becomes a branch (the first the trunk, later ones
+ * attached to the nearest branch point), a closed one a leaf on the nearest branch.
+ * Returns 0 or -ENOMEM; strokes that make nothing (taps, a leaf with no branch) are 0.
+ */
+int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng);

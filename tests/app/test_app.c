@@ -1,0 +1,133 @@
+/* SPDX-License-Identifier: MIT */
+/* The state machine: events in, document and tree out; undo/redo/new; rebuild = incremental. */
+#include <string.h>
+
+#include "app.h"
+#include "test.h"
+
+static uint64_t now = 1000;
+
+static void ev_pen(struct app *app, enum event_type type, double x, double y, double p)
+{
+	struct event ev = { .type = type, .time_us = now, .x = x, .y = y, .pressure = p };
+
+	now += 8000;
+	app_handle_event(app, &ev);
+}
+
+static void ev_button(struct app *app, enum button b)
+{
+	struct event ev = { .type = EVENT_BUTTON, .time_us = now, .button = (int)b, .pressed = true };
+
+	app_handle_event(app, &ev);
+	ev.pressed = false;
+	ev.time_us += 50000;
+	app_handle_event(app, &ev);
+	now += 100000;
+}
+
+static void draw_line(struct app *app, double x0, double y0, double x1, double y1)
+{
+	ev_pen(app, EVENT_PROXIMITY_IN, x0, y0, 0);
+	ev_pen(app, EVENT_TIP_DOWN, x0, y0, 0.3);
+	for (int i = 1; i <= 30; i++)
+		ev_pen(app, EVENT_MOTION, x0 + (x1 - x0) * i / 30, y0 + (y1 - y0) * i / 30, 0.6);
+	ev_pen(app, EVENT_TIP_UP, x1, y1, 0);
+	ev_pen(app, EVENT_PROXIMITY_OUT, x1, y1, 0);
+}
+
+static void draw_loop(struct app *app, double cx, double cy, double r)
+{
+	ev_pen(app, EVENT_TIP_DOWN, cx + r, cy, 0.5);
+	for (int i = 1; i <= 36; i++)
+		ev_pen(app, EVENT_MOTION, cx + r * cos(i * 0.17), cy + r * sin(i * 0.17), 0.5);
+	ev_pen(app, EVENT_TIP_UP, cx + r * cos(36 * 0.17), cy + r * sin(36 * 0.17), 0);
+}
+
+static void same_tree(const struct tree *a, const struct tree *b)
+{
+	CHECK_INT(a->nbranches, b->nbranches);
+	CHECK_INT(a->nleaves, b->nleaves);
+	for (size_t i = 0; i < a->nbranches; i++) {
+		CHECK_INT(a->branches[i].npoints, b->branches[i].npoints);
+		CHECK(memcmp(a->branches[i].points, b->branches[i].points,
+			     a->branches[i].npoints * sizeof(struct vec3)) == 0);
+	}
+}
+
+int main(void)
+{
+	struct app *app = app_create(1280, 800, 5), *copy;
+	struct tree snapshot;
+	struct doc d;
+	struct buf buf;
+	struct error err = { { 0 } };
+	double tx, ty;
+
+	CHECK(app);
+	draw_line(app, 640, 736, 630, 330);  /* trunk */
+	draw_line(app, 636, 520, 860, 380);  /* starts on the trunk */
+	draw_line(app, 660, 440, 420, 300);  /* starts a little off it */
+	draw_loop(app, 880, 370, 20);        /* leaf near the first branch's tip */
+	CHECK_INT(app->failed, 0);
+	CHECK_INT(app->doc.nops, 4);
+	CHECK_INT(app->tree.nbranches, 3);
+	CHECK_INT(app->tree.nleaves, 1);
+	CHECK_INT(app->tree.branches[1].parent, 0);
+	CHECK_INT(app->tree.branches[2].parent, 0);
+	CHECK_INT(app->tree.leaves[0].branch, 1);
+	CHECK(app->mesh.bark.nindices > 0 && app->mesh.leaves.nindices > 0);
+	/* the tip of a drawn branch stays where the pen lifted, to 0.5 px */
+	view_to_screen(&app->view, app->tree.branches[2].points[app->tree.branches[2].npoints - 1],
+		       &tx, &ty);
+	CHECK_NEAR(tx, 420, 0.5);
+	CHECK_NEAR(ty, 300, 0.5);
+
+	/* undo twice, redo twice: the same tree */
+	tree_init(&snapshot);
+	for (size_t i = 0; i < app->tree.nbranches; i++) {
+		const struct branch *b = &app->tree.branches[i];
+
+		CHECK(tree_add_branch(&snapshot, b->parent, b->parent_t, b->origin, b->points, b->radii,
+				      b->npoints) >= 0);
+	}
+	ev_button(app, BUTTON_UNDO);
+	ev_button(app, BUTTON_UNDO);
+	CHECK_INT(app->tree.nbranches, 2);
+	CHECK_INT(app->tree.nleaves, 0);
+	ev_button(app, BUTTON_REDO);
+	ev_button(app, BUTTON_REDO);
+	ev_button(app, BUTTON_REDO); /* nothing left to redo */
+	same_tree(&app->tree, &snapshot);
+
+	/* new clears, and is itself undoable */
+	ev_button(app, BUTTON_NEW);
+	CHECK_INT(app->tree.nbranches, 0);
+	ev_button(app, BUTTON_UNDO);
+	same_tree(&app->tree, &snapshot);
+
+	/* modes toggle; export is a request for platform/ */
+	ev_button(app, BUTTON_LEAF);
+	CHECK_INT(app->mode, APP_MODE_LEAF);
+	ev_button(app, BUTTON_LEAF);
+	CHECK_INT(app->mode, APP_MODE_SKETCH);
+	ev_button(app, BUTTON_EXPORT);
+	CHECK_INT(app_take_requests(app), APP_REQUEST_EXPORT);
+	CHECK_INT(app_take_requests(app), 0);
+
+	/* saved and loaded, the document rebuilds the same tree */
+	buf_init(&buf);
+	CHECK_INT(doc_serialize(&app->doc, &app->tree, &buf), 0);
+	CHECK_INT(doc_parse((const char *)buf.data, buf.len, "t.edaha", &d, &err), 0);
+	copy = app_create(640, 400, 99);
+	CHECK(copy);
+	CHECK_INT(app_load_doc(copy, &d), 0);
+	same_tree(&copy->tree, &app->tree);
+	CHECK(copy->doc.seed == 5);
+
+	buf_finish(&buf);
+	tree_finish(&snapshot);
+	app_destroy(copy);
+	app_destroy(app);
+	return 0;
+}

@@ -1,0 +1,131 @@
+/* SPDX-License-Identifier: MIT */
+/* drawing.edaha: history semantics, exact round trip, and line-numbered errors. */
+#include <errno.h>
+#include <string.h>
+
+#include "doc.h"
+#include "test.h"
+#include "tree.h"
+
+static void push_stroke(struct doc *d, uint64_t t, int n)
+{
+	struct doc_op op = { .kind = DOC_OP_STROKE, .time_us = t, .tool = EVENT_TOOL_PEN };
+
+	op.points = calloc((size_t)n, sizeof(*op.points));
+	CHECK(op.points);
+	op.npoints = (size_t)n;
+	for (int i = 0; i < n; i++)
+		op.points[i] = (struct doc_point){ 0.1f * (float)i + 1e-7f, 3.3f * (float)i / 7.0f,
+						   0.5f, (uint32_t)i * 8000 };
+	CHECK_INT(doc_push(d, &op), 0);
+	CHECK(op.points == NULL);
+}
+
+static void test_history(void)
+{
+	struct doc d;
+	struct doc_op op = { .kind = DOC_OP_NEW };
+
+	doc_init(&d, 7);
+	CHECK(!doc_can_undo(&d) && !doc_can_redo(&d));
+	push_stroke(&d, 1, 3);
+	push_stroke(&d, 2, 4);
+	CHECK(doc_undo(&d));
+	CHECK_INT(d.cursor, 1);
+	CHECK(doc_can_redo(&d));
+	CHECK(doc_redo(&d));
+	CHECK(!doc_redo(&d));
+	CHECK(doc_undo(&d));
+	/* a new edit after undo drops the undone op */
+	CHECK_INT(doc_push(&d, &op), 0);
+	CHECK_INT(d.nops, 2);
+	CHECK_INT(d.ops[1].kind, DOC_OP_NEW);
+	CHECK(!doc_can_redo(&d));
+	doc_finish(&d);
+}
+
+static void test_roundtrip(void)
+{
+	struct doc d, e;
+	struct buf a, b;
+	struct error err = { { 0 } };
+	struct tree t;
+	struct vec3 pts[2] = { { 0, 0, 0 }, { 0, 1, 0 } };
+	double radii[2] = { 0.1, 0.02 };
+
+	doc_init(&d, 123456789012345ULL);
+	push_stroke(&d, 1000, 5);
+	push_stroke(&d, 900000, 17);
+	CHECK(doc_undo(&d));
+	tree_init(&t);
+	CHECK(tree_add_branch(&t, -1, 0, ORIGIN_SKETCH, pts, radii, 2) == 0);
+	buf_init(&a);
+	buf_init(&b);
+	CHECK_INT(doc_serialize(&d, &t, &a), 0);
+	CHECK_INT(doc_parse((const char *)a.data, a.len, "x.edaha", &e, &err), 0);
+	CHECK(e.seed == d.seed);
+	CHECK_INT(e.nops, 2);
+	CHECK_INT(e.cursor, 1);
+	CHECK_INT(e.ops[1].npoints, 17);
+	for (size_t i = 0; i < e.ops[1].npoints; i++)
+		CHECK(memcmp(&e.ops[1].points[i], &d.ops[1].points[i], sizeof(struct doc_point)) == 0);
+	CHECK_INT(doc_serialize(&e, &t, &b), 0);
+	CHECK(a.len == b.len && memcmp(a.data, b.data, a.len) == 0);
+	doc_finish(&d);
+	doc_finish(&e);
+	tree_finish(&t);
+	buf_finish(&a);
+	buf_finish(&b);
+}
+
+static void expect_error_len(const char *text, size_t len, const char *prefix)
+{
+	struct doc d;
+	struct error err = { { 0 } };
+	int ret = doc_parse(text, len, "bad.edaha", &d, &err);
+
+	if (ret != -EINVAL || strncmp(err.msg, prefix, strlen(prefix)) != 0) {
+		fprintf(stderr, "input:\n%s\nret %d, message \"%s\", wanted prefix \"%s\"\n", text, ret,
+			err.msg, prefix);
+		exit(1);
+	}
+	CHECK(d.nops == 0 && d.ops == NULL);
+}
+
+static void expect_error(const char *text, const char *prefix)
+{
+	expect_error_len(text, strlen(text), prefix);
+}
+
+static void test_errors(void)
+{
+	expect_error("", "bad.edaha: empty file");
+	expect_error("hello\n", "bad.edaha:1: not an edaha drawing");
+	expect_error("# c\nedaha-drawing 2\n", "bad.edaha:2: drawing format version 2");
+	expect_error("edaha-drawing 1\nseed x\n", "bad.edaha:2: bad seed");
+	expect_error("edaha-drawing 1\nseed 1\nhistory 1 2\n", "bad.edaha:3: bad cursor");
+	expect_error("edaha-drawing 1\nseed 1\nhistory 1 1\nstroke pen 0 2\n0 0 0.5 0\n",
+		     "bad.edaha:5: file ends inside a stroke");
+	expect_error("edaha-drawing 1\nseed 1\nhistory 1 1\nstroke pen 0 1\n0 0 1.5 0\nend\n",
+		     "bad.edaha:5: pressure 1.5 out of range");
+	expect_error("edaha-drawing 1\nseed 1\nhistory 1 1\nstroke pen 0 1\nnan 0 0.5 0\nend\n",
+		     "bad.edaha:5: bad x");
+	expect_error("edaha-drawing 1\nseed 1\nhistory 1 1\nstroke brush 0 1\n",
+		     "bad.edaha:4: unknown tool");
+	expect_error("edaha-drawing 1\nseed 1\nhistory 2 1\nnew 5\nend\n",
+		     "bad.edaha:5: history says 2 ops, found 1");
+	expect_error("edaha-drawing 1\nseed 1\nhistory 0 0\nend\nmore\n", "bad.edaha:5: text after");
+	expect_error("edaha-drawing 1\nseed 1\nhistory 0 0\n", "bad.edaha:3: file ends without");
+	expect_error("edaha-drawing 1\nseed 1\nhistory 0 0\nwobble\n", "bad.edaha:4: unknown line");
+	static const char nul[] = "edaha-drawing 1\nseed 1\nhis\0tory 0 0\n";
+
+	expect_error_len(nul, sizeof(nul) - 1, "bad.edaha:3: binary data");
+}
+
+int main(void)
+{
+	test_history();
+	test_roundtrip();
+	test_errors();
+	return 0;
+}

@@ -1,0 +1,27 @@
+# shellcheck shell=bash
+# Sourced by tools/run and tools/test: installs the Debian 12 packages edaha needs that are
+# missing. Only missing ones, so a second run costs nothing and needs no network.
+
+BUILD_PKGS="meson ninja-build pkg-config gcc libc6-dev libjson-c-dev libyaml-dev libpng-dev
+ libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libinput-dev libevdev-dev libgpiod-dev
+ libdrm-dev libgbm-dev libudev-dev libseat-dev"
+TEST_PKGS="clang libclang-rt-14-dev assimp-utils"
+
+deps_install() {
+	local missing=() p
+	for p in "$@"; do
+		dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+	done
+	# Node.js for the Khronos glTF validator: any installed node will do.
+	if [ "${DEPS_NODE:-0}" = 1 ] && ! command -v npm >/dev/null; then
+		command -v node >/dev/null || missing+=(nodejs)
+		missing+=(npm)
+	fi
+	[ ${#missing[@]} -eq 0 ] && return 0
+	echo "edaha: installing ${missing[*]}"
+	local sudo=()
+	[ "$(id -u)" -eq 0 ] || sudo=(sudo)
+	"${sudo[@]}" apt-get update -qq
+	DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends \
+		"${missing[@]}" >/dev/null
+}
