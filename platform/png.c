@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 #include "png.h"
 
+/* libpng's own png.h: plain <png.h> would find this module's header first */
+#include <libpng16/png.h>
+
 #include <errno.h>
-#include <limits.h>
-#include <png.h>
 #include <setjmp.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,0 +1,119 @@
+#!/bin/bash
+# End-to-end tests of the edaha binary: cli.sh TEST. Paths come from meson's environment:
+# EDAHA, IMGCMP, JSONCMP, GLTF_VALIDATE, SRC (the source tree's tests/ folder).
+set -uo pipefail
+: "${EDAHA:?}" "${SRC:?}"
+T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-cli.XXXXXX")
+trap 'rm -rf "$T"' EXIT
+DEMO=$SRC/data/demo.edaha-trace
+OUTPUTS="screen.png model.glb model.obj model.mtl skeleton.json drawing.edaha"
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+run() { "$EDAHA" --headless "$@" >"$T/stdout" 2>"$T/stderr" || { cat "$T/stderr" >&2; fail "edaha $* exited $?"; }; }
+same_files() { # dir1 dir2 files...
+	local a=$1 b=$2 f; shift 2
+	for f in "$@"; do cmp -s "$a/$f" "$b/$f" || fail "$f differs between $a and $b"; done
+}
+
+t_help() {
+	"$EDAHA" --help >"$T/help" || fail "--help exited $?"
+	for o in --headless --size --seed --out --replay --press --load --record --help; do
+		grep -q -- "$o" "$T/help" || fail "--help does not mention $o"
+	done
+	"$EDAHA" --version | grep -q '^edaha ' || fail "--version"
+}
+
+t_usage() {
+	local args
+	for args in "--bogus" "--headless" "--headless --out $T/x --press nothing" \
+		"--headless --out $T/x --size 10x10" "--headless --out $T/x --seed -1" "--replay $DEMO" "stray"; do
+		# shellcheck disable=SC2086
+		"$EDAHA" $args >/dev/null 2>"$T/err"; rc=$?
+		[ $rc -eq 2 ] || fail "edaha $args: exit $rc, wanted 2"
+		grep -q "^edaha: " "$T/err" || fail "edaha $args: no message"
+	done
+	[ ! -e "$T/x" ] || fail "a usage error wrote files"
+}
+
+t_golden() {
+	run --out "$T/o" --replay "$DEMO"
+	for f in $OUTPUTS; do [ -s "$T/o/$f" ] || fail "missing $f"; done
+	"$JSONCMP" --eps 1e-5 "$SRC/golden/demo-skeleton.json" "$T/o/skeleton.json" || fail "skeleton differs from golden"
+	"$IMGCMP" "$SRC/golden/demo-screen.png" "$T/o/screen.png" || fail "screen differs from golden"
+}
+
+t_determinism() {
+	local wacom=$SRC/data/wacom-intuos-pro-m.yml
+	run --out "$T/a" --seed 9 --replay "$DEMO" --press leaf --replay "$wacom"
+	run --out "$T/b" --seed 9 --replay "$DEMO" --press leaf --replay "$wacom"
+	# shellcheck disable=SC2086
+	same_files "$T/a" "$T/b" $OUTPUTS
+}
+
+t_undo_redo() {
+	run --out "$T/a" --replay "$DEMO"
+	run --out "$T/b" --replay "$DEMO" --press undo --press undo --press redo --press redo
+	same_files "$T/a" "$T/b" skeleton.json model.glb model.obj screen.png
+	run --out "$T/c" --replay "$DEMO" --press undo
+	cmp -s "$T/a/skeleton.json" "$T/c/skeleton.json" && fail "undo changed nothing"
+	run --out "$T/d" --replay "$DEMO" --press new
+	grep -q '"branches":\[\]' <(tr -d ' \n' <"$T/d/skeleton.json") || fail "new did not clear"
+	run --out "$T/e" --replay "$DEMO" --press new --press undo
+	same_files "$T/a" "$T/e" skeleton.json model.glb
+}
+
+t_load() {
+	# split the demo after its fourth stroke; part two keeps the header lines
+	local cut
+	cut=$(grep -n ' proximity-out ' "$DEMO" | sed -n 4p | cut -d: -f1)
+	[ -n "$cut" ] || fail "demo trace has fewer than 4 strokes"
+	head -n "$cut" "$DEMO" >"$T/p1.trace"
+	{ grep -E '^(edaha-trace|screen) ' "$DEMO"; tail -n +"$((cut + 1))" "$DEMO"; } >"$T/p2.trace"
+	run --out "$T/one" --replay "$T/p1.trace" --replay "$T/p2.trace"
+	run --out "$T/half" --replay "$T/p1.trace"
+	run --out "$T/two" --load "$T/half/drawing.edaha" --replay "$T/p2.trace"
+	same_files "$T/one" "$T/two" skeleton.json model.glb model.obj screen.png
+	# a loaded drawing saves back unchanged
+	run --out "$T/again" --load "$T/half/drawing.edaha"
+	same_files "$T/half" "$T/again" drawing.edaha skeleton.json model.glb
+}
+
+t_record() {
+	local wacom=$SRC/data/wacom-intuos-pro-m.yml
+	run --out "$T/a" --replay "$wacom" --press undo --record "$T/rec.trace"
+	head -n1 "$T/rec.trace" | grep -q '^edaha-trace 1' || fail "recording has no header"
+	run --out "$T/b" --replay "$T/rec.trace"
+	same_files "$T/a" "$T/b" skeleton.json model.glb screen.png
+}
+
+t_exports_valid() {
+	run --out "$T/demo" --replay "$DEMO"
+	run --out "$T/wacom" --replay "$SRC/data/wacom-intuos-pro-m.yml"
+	run --out "$T/empty"
+	"$GLTF_VALIDATE" "$T/demo/model.glb" "$T/wacom/model.glb" "$T/empty/model.glb" || fail "glTF validator"
+	if command -v assimp >/dev/null; then
+		for f in demo/model.glb demo/model.obj wacom/model.glb; do
+			assimp info "$T/$f" >"$T/assimp.log" 2>&1 || { cat "$T/assimp.log"; fail "assimp info $f"; }
+		done
+	else
+		echo "assimp not installed: skipping the assimp check" >&2
+	fi
+}
+
+t_malformed() {
+	local dir=$SRC/malformed n=0 file line opt rc
+	while read -r file line; do
+		[ -n "$file" ] || continue
+		case $file in *.edaha) opt=--load ;; *) opt=--replay ;; esac
+		"$EDAHA" --headless --out "$T/m" "$opt" "$dir/$file" >/dev/null 2>"$T/err"; rc=$?
+		[ $rc -eq 2 ] || { cat "$T/err"; fail "$file: exit $rc, wanted 2"; }
+		if [ "$line" -gt 0 ]; then want="$dir/$file:$line: "; else want="$dir/$file: "; fi
+		grep -qF "edaha: $want" "$T/err" || { cat "$T/err"; fail "$file: message does not start with $want"; }
+		[ ! -e "$T/m" ] || fail "$file: output written despite the error"
+		n=$((n + 1))
+	done < <(cat "$dir/EXPECT" "$dir/EXPECT-doc")
+	[ $n -ge 20 ] || fail "only $n malformed inputs (want at least 20)"
+	echo "$n malformed inputs rejected with exit 2 and file:line"
+}
+
+"t_$1"
