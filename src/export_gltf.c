@@ -1,0 +1,333 @@
+/* SPDX-License-Identifier: MIT */
+#include "export.h"
+
+#include <errno.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <string.h>
+
+#include <json-c/json.h>
+
+/* GLB container constants, glTF 2.0 spec section 4.4. */
+#define GLB_MAGIC 0x46546c67u      /* "glTF" */
+#define GLB_VERSION 2u
+#define GLB_CHUNK_JSON 0x4e4f534au /* "JSON" */
+#define GLB_CHUNK_BIN 0x004e4942u  /* "BIN\0" */
+#define GLB_HEADER_LEN 12u
+#define GLB_CHUNK_HEADER_LEN 8u
+
+#define GL_FLOAT 5126
+#define GL_UNSIGNED_INT 5125
+#define GL_TRIANGLES 4
+#define GL_ARRAY_BUFFER 34962
+#define GL_ELEMENT_ARRAY_BUFFER 34963
+
+/* Materials; the same colours as the OBJ exporter's MTL (export_obj.c). */
+static const double bark_color[4] = { 0.33, 0.22, 0.13, 1.0 };
+static const double leaves_color[4] = { 0.24, 0.52, 0.16, 1.0 };
+
+/*
+ * json-c helpers that propagate allocation failure as NULL: a failing add frees the parent
+ * too, so one check on the root covers the whole document and nothing leaks.
+ */
+static struct json_object *jset(struct json_object *obj, const char *key, struct json_object *val)
+{
+	if (!obj || !val || json_object_object_add(obj, key, val) < 0) {
+		json_object_put(val);
+		json_object_put(obj);
+		return NULL;
+	}
+	return obj;
+}
+
+static struct json_object *jpush(struct json_object *arr, struct json_object *val)
+{
+	if (!arr || !val || json_object_array_add(arr, val) < 0) {
+		json_object_put(val);
+		json_object_put(arr);
+		return NULL;
+	}
+	return arr;
+}
+
+static struct json_object *jint(size_t v)
+{
+	return json_object_new_int64((int64_t)v);
+}
+
+static struct json_object *jstr(const char *s)
+{
+	return json_object_new_string(s);
+}
+
+/* "%.9g" is enough digits for a float to read back as the same float, and no noise for 0.9. */
+static struct json_object *jfloat(double v)
+{
+	char s[32];
+
+	snprintf(s, sizeof(s), "%.9g", v);
+	return json_object_new_double_s(v, s);
+}
+
+static struct json_object *jvec(const double *v, size_t n)
+{
+	struct json_object *arr = json_object_new_array();
+
+	for (size_t i = 0; i < n; i++)
+		arr = jpush(arr, jfloat(v[i]));
+	return arr;
+}
+
+/* What goes into the BIN chunk, in order. */
+struct glb_view {
+	const void *data; /* floats or uint32_t, 4 bytes each */
+	size_t count;     /* 4-byte elements */
+	bool is_float;
+};
+
+struct glb {
+	struct json_object *root;
+	struct glb_view views[6];
+	size_t nviews;
+	size_t bin_len;
+};
+
+static struct json_object *glb_add_view(struct glb *g, struct json_object *views, const void *data,
+					size_t count, bool is_float, int target)
+{
+	struct json_object *v = json_object_new_object();
+	size_t len = 4 * count;
+
+	v = jset(v, "buffer", jint(0));
+	v = jset(v, "byteOffset", jint(g->bin_len));
+	v = jset(v, "byteLength", jint(len));
+	v = jset(v, "target", jint((size_t)target));
+	g->views[g->nviews++] = (struct glb_view){ data, count, is_float };
+	/* Every element is 4 bytes, so every view stays 4-byte aligned. */
+	g->bin_len += len;
+	return jpush(views, v);
+}
+
+static struct json_object *glb_accessor(const char *prim, const char *what, size_t view,
+					int component, size_t count, const char *type)
+{
+	struct json_object *a = json_object_new_object();
+	char name[64];
+
+	snprintf(name, sizeof(name), "%s.%s", prim, what);
+	a = jset(a, "name", jstr(name));
+	a = jset(a, "bufferView", jint(view));
+	a = jset(a, "componentType", jint((size_t)component));
+	a = jset(a, "count", jint(count));
+	a = jset(a, "type", jstr(type));
+	return a;
+}
+
+/* POSITION needs exact bounds: computed on the float data the validator reads back. */
+static struct json_object *glb_bounds(struct json_object *a, const struct mesh *m)
+{
+	double lo[3], hi[3];
+
+	for (int c = 0; c < 3; c++)
+		lo[c] = hi[c] = m->positions[c];
+	for (size_t i = 1; i < m->nvertices; i++) {
+		for (int c = 0; c < 3; c++) {
+			double v = m->positions[3 * i + (size_t)c];
+
+			lo[c] = v < lo[c] ? v : lo[c];
+			hi[c] = v > hi[c] ? v : hi[c];
+		}
+	}
+	a = jset(a, "min", jvec(lo, 3));
+	return jset(a, "max", jvec(hi, 3));
+}
+
+static struct json_object *glb_material(const char *name, const double color[4], double roughness,
+					bool double_sided)
+{
+	struct json_object *pbr = json_object_new_object();
+	struct json_object *mat = json_object_new_object();
+
+	pbr = jset(pbr, "baseColorFactor", jvec(color, 4));
+	pbr = jset(pbr, "metallicFactor", jint(0));
+	pbr = jset(pbr, "roughnessFactor", jfloat(roughness));
+	mat = jset(mat, "name", jstr(name));
+	mat = jset(mat, "pbrMetallicRoughness", pbr);
+	if (double_sided)
+		mat = jset(mat, "doubleSided", json_object_new_boolean(1));
+	return mat;
+}
+
+/* Builds the JSON document and the list of BIN views. */
+static int glb_build_json(struct glb *g, const struct tree_mesh *tm)
+{
+	const struct {
+		const struct mesh *mesh;
+		const char *name;
+	} prims[] = { { &tm->bark, "bark" }, { &tm->leaves, "leaves" } };
+	struct json_object *root, *asset, *scene, *scenes;
+	struct json_object *primitives, *accessors, *views, *materials;
+	size_t nprims = 0;
+
+	root = json_object_new_object();
+	asset = json_object_new_object();
+	asset = jset(asset, "version", jstr("2.0"));
+	asset = jset(asset, "generator", jstr("edaha"));
+	root = jset(root, "asset", asset);
+	root = jset(root, "scene", jint(0));
+
+	primitives = json_object_new_array();
+	accessors = json_object_new_array();
+	views = json_object_new_array();
+	materials = json_object_new_array();
+	for (size_t i = 0; i < sizeof(prims) / sizeof(prims[0]); i++) {
+		const struct mesh *m = prims[i].mesh;
+		const char *name = prims[i].name;
+		size_t first = g->nviews;
+		struct json_object *prim, *attrs, *pos;
+
+		/* An empty primitive is invalid glTF: leave it out. */
+		if (m->nindices < 3 || m->nvertices == 0)
+			continue;
+
+		pos = glb_accessor(name, "POSITION", first, GL_FLOAT, m->nvertices, "VEC3");
+		accessors = jpush(accessors, glb_bounds(pos, m));
+		accessors = jpush(accessors, glb_accessor(name, "NORMAL", first + 1, GL_FLOAT,
+							  m->nvertices, "VEC3"));
+		accessors = jpush(accessors, glb_accessor(name, "indices", first + 2,
+							  GL_UNSIGNED_INT, m->nindices, "SCALAR"));
+		views = glb_add_view(g, views, m->positions, 3 * m->nvertices, true, GL_ARRAY_BUFFER);
+		views = glb_add_view(g, views, m->normals, 3 * m->nvertices, true, GL_ARRAY_BUFFER);
+		views = glb_add_view(g, views, m->indices, m->nindices, false,
+				     GL_ELEMENT_ARRAY_BUFFER);
+
+		/* Accessors and bufferViews are numbered alike: three per primitive. */
+		attrs = json_object_new_object();
+		attrs = jset(attrs, "POSITION", jint(first));
+		attrs = jset(attrs, "NORMAL", jint(first + 1));
+		prim = json_object_new_object();
+		prim = jset(prim, "attributes", attrs);
+		prim = jset(prim, "indices", jint(first + 2));
+		prim = jset(prim, "material", jint(nprims));
+		prim = jset(prim, "mode", jint(GL_TRIANGLES));
+		primitives = jpush(primitives, prim);
+
+		if (i == 0)
+			materials = jpush(materials, glb_material("bark", bark_color, 0.9, false));
+		else
+			materials = jpush(materials, glb_material("leaves", leaves_color, 0.8, true));
+		nprims++;
+	}
+
+	scene = json_object_new_object();
+	scenes = json_object_new_array();
+	if (nprims == 0) {
+		/* Nothing drawn yet: still a valid glTF, an empty scene. */
+		root = jset(root, "scenes", jpush(scenes, scene));
+		json_object_put(primitives);
+		json_object_put(accessors);
+		json_object_put(views);
+		json_object_put(materials);
+	} else {
+		struct json_object *node = json_object_new_object();
+		struct json_object *mesh = json_object_new_object();
+		struct json_object *buffer = json_object_new_object();
+
+		scene = jset(scene, "nodes", jpush(json_object_new_array(), jint(0)));
+		root = jset(root, "scenes", jpush(scenes, scene));
+		node = jset(node, "name", jstr("tree"));
+		node = jset(node, "mesh", jint(0));
+		root = jset(root, "nodes", jpush(json_object_new_array(), node));
+		mesh = jset(mesh, "name", jstr("tree"));
+		mesh = jset(mesh, "primitives", primitives);
+		root = jset(root, "meshes", jpush(json_object_new_array(), mesh));
+		root = jset(root, "accessors", accessors);
+		root = jset(root, "bufferViews", views);
+		buffer = jset(buffer, "byteLength", jint(g->bin_len));
+		root = jset(root, "buffers", jpush(json_object_new_array(), buffer));
+		root = jset(root, "materials", materials);
+	}
+	g->root = root;
+	return root ? 0 : -ENOMEM;
+}
+
+static int glb_append_view(struct buf *out, const struct glb_view *v)
+{
+	for (size_t i = 0; i < v->count; i++) {
+		int r;
+
+		if (v->is_float)
+			r = buf_append_f32le(out, ((const float *)v->data)[i]);
+		else
+			r = buf_append_u32le(out, ((const uint32_t *)v->data)[i]);
+		if (r < 0)
+			return r;
+	}
+	return 0;
+}
+
+/* Padding counts from the chunk start, whatever already is in out. */
+static int append_fill(struct buf *out, size_t n, unsigned char fill)
+{
+	static const unsigned char spaces[3] = { ' ', ' ', ' ' }, zeros[3];
+
+	return buf_append(out, fill == ' ' ? spaces : zeros, n);
+}
+
+static int glb_write(struct buf *out, const char *json, size_t json_len, const struct glb *g)
+{
+	size_t json_padded = (json_len + 3) & ~(size_t)3;
+	size_t bin_padded = (g->bin_len + 3) & ~(size_t)3;
+	size_t total = GLB_HEADER_LEN + GLB_CHUNK_HEADER_LEN + json_padded;
+	int r;
+
+	if (g->bin_len > 0)
+		total += GLB_CHUNK_HEADER_LEN + bin_padded;
+	/* GLB lengths are 32-bit. */
+	if (json_len > UINT32_MAX || g->bin_len > UINT32_MAX || total > UINT32_MAX)
+		return -EFBIG;
+
+	r = buf_reserve(out, total);
+	if (r < 0)
+		return r;
+	if ((r = buf_append_u32le(out, GLB_MAGIC)) < 0 ||
+	    (r = buf_append_u32le(out, GLB_VERSION)) < 0 ||
+	    (r = buf_append_u32le(out, (uint32_t)total)) < 0 ||
+	    (r = buf_append_u32le(out, (uint32_t)json_padded)) < 0 ||
+	    (r = buf_append_u32le(out, GLB_CHUNK_JSON)) < 0 ||
+	    (r = buf_append(out, json, json_len)) < 0 ||
+	    (r = append_fill(out, json_padded - json_len, ' ')) < 0)
+		return r;
+	/* No BIN chunk at all when there is no data: an empty one is flagged by validators. */
+	if (g->bin_len == 0)
+		return 0;
+	if ((r = buf_append_u32le(out, (uint32_t)bin_padded)) < 0 ||
+	    (r = buf_append_u32le(out, GLB_CHUNK_BIN)) < 0)
+		return r;
+	for (size_t i = 0; i < g->nviews; i++) {
+		r = glb_append_view(out, &g->views[i]);
+		if (r < 0)
+			return r;
+	}
+	return append_fill(out, bin_padded - g->bin_len, 0);
+}
+
+int export_glb(const struct tree_mesh *m, struct buf *out)
+{
+	struct glb g;
+	size_t start = out->len;
+	const char *json;
+	int r;
+
+	memset(&g, 0, sizeof(g));
+	r = glb_build_json(&g, m);
+	if (r < 0)
+		return r;
+	json = json_object_to_json_string_ext(g.root,
+					      JSON_C_TO_STRING_PLAIN | JSON_C_TO_STRING_NOSLASHESCAPE);
+	r = json ? glb_write(out, json, strlen(json), &g) : -ENOMEM;
+	json_object_put(g.root);
+	if (r < 0)
+		out->len = start; /* no half-written file */
+	return r;
+}
