@@ -251,18 +251,28 @@ static int glb_build_json(struct glb *g, const struct tree_mesh *tm)
 	return root ? 0 : -ENOMEM;
 }
 
+/* Little-endian, whatever the host: reserved once, then written in place. */
 static int glb_append_view(struct buf *out, const struct glb_view *v)
 {
-	for (size_t i = 0; i < v->count; i++) {
-		int r;
+	unsigned char *p;
+	int r = buf_reserve(out, 4 * v->count);
+
+	if (r < 0)
+		return r;
+	p = out->data + out->len;
+	for (size_t i = 0; i < v->count; i++, p += 4) {
+		uint32_t u;
 
 		if (v->is_float)
-			r = buf_append_f32le(out, ((const float *)v->data)[i]);
+			memcpy(&u, &((const float *)v->data)[i], sizeof(u));
 		else
-			r = buf_append_u32le(out, ((const uint32_t *)v->data)[i]);
-		if (r < 0)
-			return r;
+			u = ((const uint32_t *)v->data)[i];
+		p[0] = (unsigned char)u;
+		p[1] = (unsigned char)(u >> 8);
+		p[2] = (unsigned char)(u >> 16);
+		p[3] = (unsigned char)(u >> 24);
 	}
+	out->len += 4 * v->count;
 	return 0;
 }
 
@@ -315,7 +325,7 @@ static int glb_write(struct buf *out, const char *json, size_t json_len, const s
 int export_glb(const struct tree_mesh *m, struct buf *out)
 {
 	struct glb g;
-	size_t start = out->len;
+	size_t start = out->len, json_len;
 	const char *json;
 	int r;
 
@@ -323,9 +333,14 @@ int export_glb(const struct tree_mesh *m, struct buf *out)
 	r = glb_build_json(&g, m);
 	if (r < 0)
 		return r;
-	json = json_object_to_json_string_ext(g.root,
-					      JSON_C_TO_STRING_PLAIN | JSON_C_TO_STRING_NOSLASHESCAPE);
-	r = json ? glb_write(out, json, strlen(json), &g) : -ENOMEM;
+	/*
+	 * json-c's serialiser ignores most failed appends and returns a shortened text; a
+	 * failed allocation still sets errno (POSIX), so that is the check.
+	 */
+	errno = 0;
+	json = json_object_to_json_string_length(
+		g.root, JSON_C_TO_STRING_PLAIN | JSON_C_TO_STRING_NOSLASHESCAPE, &json_len);
+	r = json && errno != ENOMEM ? glb_write(out, json, json_len, &g) : -ENOMEM;
 	json_object_put(g.root);
 	if (r < 0)
 		out->len = start; /* no half-written file */

@@ -274,47 +274,28 @@ static double tube_slope(const struct scratch *s, size_t k, size_t i)
 	return slope < -TUBE_MAX_SLOPE ? -TUBE_MAX_SLOPE : slope > TUBE_MAX_SLOPE ? TUBE_MAX_SLOPE : slope;
 }
 
-/*
- * A tube: one ring per point, a flat disc closing the root (hidden inside the parent for
- * child branches), a cone closing the tip. Rings run counter-clockwise around the tangent,
- * so (a, a+1, b+1), (a, b+1, b) face outwards.
- */
-static int tube_build(struct mesh *m, const struct branch *br, struct scratch *sc)
-{
+/* The ring shape of one branch: `sides` directions around the axis. */
+struct ring {
+	int sides;
 	double cs[TUBE_MAX_SIDES], sn[TUBE_MAX_SIDES];
-	double rmax = 0.0;
-	size_t k, last;
-	uint32_t base, c;
-	int sides, r;
+};
 
-	r = scratch_reserve(sc, br->npoints);
-	if (r < 0)
-		return r;
-	k = tube_clean(br, sc);
-	if (k < 2)
-		return 0;
-	last = k - 1;
-	tube_frames(sc, k);
+static struct vec3 ring_dir(const struct ring *rg, struct vec3 n, struct vec3 b, int j)
+{
+	return vec3_add(vec3_scale(n, rg->cs[j]), vec3_scale(b, rg->sn[j]));
+}
 
-	for (size_t i = 0; i < k; i++)
-		rmax = sc->r[i] > rmax ? sc->r[i] : rmax;
-	sides = tube_sides(rmax);
-	for (int j = 0; j < sides; j++) {
-		cs[j] = cos(2.0 * MESH_PI * j / sides);
-		sn[j] = sin(2.0 * MESH_PI * j / sides);
-	}
+/* One ring of vertices per point, joined by quads; returns the first ring's first vertex. */
+static uint32_t tube_side(struct mesh *m, const struct scratch *sc, size_t k, const struct ring *rg)
+{
+	uint32_t base = (uint32_t)m->nvertices, s = (uint32_t)rg->sides;
 
-	r = mesh_reserve(m, k * (size_t)sides + 2 * ((size_t)sides + 1), 3 * 2 * (size_t)sides * k);
-	if (r < 0)
-		return r;
-
-	base = (uint32_t)m->nvertices;
 	for (size_t i = 0; i < k; i++) {
 		struct vec3 t = sc->t[i], n = sc->n[i], b = vec3_cross(t, n);
 		double slope = tube_slope(sc, k, i);
 
-		for (int j = 0; j < sides; j++) {
-			struct vec3 radial = vec3_add(vec3_scale(n, cs[j]), vec3_scale(b, sn[j]));
+		for (int j = 0; j < rg->sides; j++) {
+			struct vec3 radial = ring_dir(rg, n, b, j);
 			struct vec3 pos = vec3_add(sc->p[i], vec3_scale(radial, sc->r[i]));
 			struct vec3 nor = vec3_norm_or(vec3_sub(radial, vec3_scale(t, slope)), radial);
 
@@ -322,48 +303,94 @@ static int tube_build(struct mesh *m, const struct branch *br, struct scratch *s
 		}
 	}
 	for (size_t i = 0; i + 1 < k; i++) {
-		uint32_t ring = base + (uint32_t)(i * (size_t)sides);
+		uint32_t ring = base + (uint32_t)i * s;
 
-		for (int j = 0; j < sides; j++) {
-			uint32_t a = ring + (uint32_t)j;
-			uint32_t a1 = ring + (uint32_t)((j + 1) % sides);
-			uint32_t b = a + (uint32_t)sides, b1 = a1 + (uint32_t)sides;
+		for (uint32_t j = 0; j < s; j++) {
+			uint32_t a = ring + j, a1 = ring + (j + 1) % s;
 
-			mesh_push_tri(m, a, a1, b1);
-			mesh_push_tri(m, a, b1, b);
+			mesh_push_tri(m, a, a1, a1 + s);
+			mesh_push_tri(m, a, a1 + s, a + s);
 		}
 	}
+	return base;
+}
 
-	/* Root disc: own vertices, flat normal along -t. */
-	c = mesh_push_vertex(m, sc->p[0], vec3_scale(sc->t[0], -1.0));
-	for (int j = 0; j < sides; j++) {
-		const float *q = &m->positions[3 * (base + (uint32_t)j)];
+/* Copies vertex v's position with a new normal (caps shade flat / as a cone). */
+static uint32_t push_copy(struct mesh *m, uint32_t v, struct vec3 normal)
+{
+	const float *q = &m->positions[3 * (size_t)v];
 
-		mesh_push_vertex(m, vec3(q[0], q[1], q[2]), vec3_scale(sc->t[0], -1.0));
+	return mesh_push_vertex(m, vec3(q[0], q[1], q[2]), normal);
+}
+
+/* The root: a flat disc facing back along the axis (inside the parent for child branches). */
+static void tube_root(struct mesh *m, const struct scratch *sc, uint32_t ring, uint32_t s)
+{
+	struct vec3 back = vec3_scale(sc->t[0], -1.0);
+	uint32_t c = mesh_push_vertex(m, sc->p[0], back);
+
+	for (uint32_t j = 0; j < s; j++)
+		push_copy(m, ring + j, back);
+	for (uint32_t j = 0; j < s; j++)
+		mesh_push_tri(m, c, c + 1 + (j + 1) % s, c + 1 + j);
+}
+
+/* The tip: a cone TUBE_TIP_LENGTH radii long on the last ring, apex on the axis. */
+static void tube_tip(struct mesh *m, const struct scratch *sc, size_t last, uint32_t ring,
+		     const struct ring *rg)
+{
+	struct vec3 t = sc->t[last], n = sc->n[last], b = vec3_cross(t, n);
+	double r = sc->r[last], h = TUBE_TIP_LENGTH * r;
+	uint32_t first = (uint32_t)m->nvertices, s = (uint32_t)rg->sides, apex;
+
+	for (int j = 0; j < rg->sides; j++) {
+		/* The cone side's normal: radial * h + t * r, normalised. */
+		struct vec3 nor = vec3_norm_or(
+			vec3_add(vec3_scale(ring_dir(rg, n, b, j), h), vec3_scale(t, r)), t);
+
+		push_copy(m, ring + (uint32_t)j, nor);
 	}
-	for (int j = 0; j < sides; j++)
-		mesh_push_tri(m, c, c + 1 + (uint32_t)((j + 1) % sides), c + 1 + (uint32_t)j);
+	apex = mesh_push_vertex(m, vec3_add(sc->p[last], vec3_scale(t, h)), t);
+	for (uint32_t j = 0; j < s; j++)
+		mesh_push_tri(m, first + j, first + (j + 1) % s, apex);
+}
 
-	/* Tip cone: own ring vertices with the cone's normals, apex on the axis. */
-	{
-		struct vec3 t = sc->t[last], n = sc->n[last], b = vec3_cross(t, n);
-		double h = TUBE_TIP_LENGTH * sc->r[last];
-		uint32_t ring = base + (uint32_t)(last * (size_t)sides);
-		uint32_t first = (uint32_t)m->nvertices, apex;
+/*
+ * A branch as a closed tube: rings run counter-clockwise around the tangent, so the side,
+ * the root disc and the tip cone all wind counter-clockwise seen from outside.
+ */
+static int tube_build(struct mesh *m, const struct branch *br, struct scratch *sc)
+{
+	struct ring rg;
+	double rmax = 0.0;
+	size_t k;
+	uint32_t base;
+	int r;
 
-		for (int j = 0; j < sides; j++) {
-			const float *q = &m->positions[3 * (ring + (uint32_t)j)];
-			struct vec3 radial = vec3_add(vec3_scale(n, cs[j]), vec3_scale(b, sn[j]));
-			/* The cone side's normal: radial * h + t * r, normalised. */
-			struct vec3 nor = vec3_norm_or(
-				vec3_add(vec3_scale(radial, h), vec3_scale(t, sc->r[last])), t);
+	r = scratch_reserve(sc, br->npoints);
+	if (r < 0)
+		return r;
+	k = tube_clean(br, sc);
+	if (k < 2)
+		return 0;
+	tube_frames(sc, k);
 
-			mesh_push_vertex(m, vec3(q[0], q[1], q[2]), nor);
-		}
-		apex = mesh_push_vertex(m, vec3_add(sc->p[last], vec3_scale(t, h)), t);
-		for (int j = 0; j < sides; j++)
-			mesh_push_tri(m, first + (uint32_t)j, first + (uint32_t)((j + 1) % sides), apex);
+	for (size_t i = 0; i < k; i++)
+		rmax = sc->r[i] > rmax ? sc->r[i] : rmax;
+	rg.sides = tube_sides(rmax);
+	for (int j = 0; j < rg.sides; j++) {
+		rg.cs[j] = cos(2.0 * MESH_PI * j / rg.sides);
+		rg.sn[j] = sin(2.0 * MESH_PI * j / rg.sides);
 	}
+
+	/* k rings + root disc + tip cone; 2 triangles a side per ring gap, 1 per side per cap */
+	r = mesh_reserve(m, k * (size_t)rg.sides + 2 * ((size_t)rg.sides + 1),
+			 3 * 2 * (size_t)rg.sides * k);
+	if (r < 0)
+		return r;
+	base = tube_side(m, sc, k, &rg);
+	tube_root(m, sc, base, (uint32_t)rg.sides);
+	tube_tip(m, sc, k - 1, base + (uint32_t)((k - 1) * (size_t)rg.sides), &rg);
 	return 0;
 }
 
@@ -379,7 +406,8 @@ static bool same_point(const struct scratch *s, size_t a, size_t b)
 }
 
 /* Does any other remaining vertex lie in (or on) triangle (a, b, c)? Then it is no ear. */
-static bool ear_blocked(const struct scratch *s, size_t cnt, size_t a, size_t b, size_t c, double eps)
+static bool ear_blocked(const struct scratch *s, size_t cnt, size_t a, size_t b, size_t c,
+			double eps)
 {
 	for (size_t i = 0; i < cnt; i++) {
 		size_t q = s->live[i];

@@ -91,6 +91,11 @@ int main(void)
 		CHECK(tree_add_branch(&snapshot, b->parent, b->parent_t, b->origin, b->points, b->radii,
 				      b->npoints) >= 0);
 	}
+	for (size_t i = 0; i < app->tree.nleaves; i++) {
+		const struct leaf *l = &app->tree.leaves[i];
+
+		CHECK(tree_add_leaf(&snapshot, l->branch, l->origin, l->points, l->npoints) >= 0);
+	}
 	ev_button(app, BUTTON_UNDO);
 	ev_button(app, BUTTON_UNDO);
 	CHECK_INT(app->tree.nbranches, 2);

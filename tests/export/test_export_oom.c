@@ -1,0 +1,188 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Allocation failure: fails the 1st, 2nd, ... allocation of tree_mesh_build and every
+ * exporter in turn; each must return -ENOMEM, leave nothing half-built and leak nothing.
+ * Replaces malloc & co. the way glibc documents ("Replacing malloc"), so it is not built
+ * with sanitizers, which replace them too.
+ */
+#include <errno.h>
+#include <stdbool.h>
+#include <stddef.h>
+#include <string.h>
+
+#include "buf.h"
+#include "export.h"
+#include "mesh.h"
+#include "synth_tree.h"
+#include "test.h"
+#include "tree.h"
+
+extern void *__libc_malloc(size_t n);
+extern void *__libc_calloc(size_t n, size_t size);
+extern void *__libc_realloc(void *p, size_t n);
+extern void __libc_free(void *p);
+
+static long calls;        /* allocations since the last reset */
+static long fail_at = -1; /* this one returns NULL; -1: none */
+static long live;         /* blocks allocated and not freed */
+
+/* A failing allocation, as POSIX describes it. Not inlined: break here to see who got it. */
+__attribute__((noinline)) static void *injected(void)
+{
+	errno = ENOMEM;
+	return NULL;
+}
+
+static bool inject(void)
+{
+	return fail_at >= 0 && calls++ == fail_at;
+}
+
+void *malloc(size_t n)
+{
+	void *p = inject() ? injected() : __libc_malloc(n);
+
+	live += p != NULL;
+	return p;
+}
+
+void *calloc(size_t n, size_t size)
+{
+	void *p = inject() ? injected() : __libc_calloc(n, size);
+
+	live += p != NULL;
+	return p;
+}
+
+void *realloc(void *old, size_t n)
+{
+	void *p;
+
+	if (!old)
+		return malloc(n);
+	if (inject())
+		return injected(); /* the old block stays valid, as with a real failure */
+	p = __libc_realloc(old, n);
+	if (!p && n == 0)
+		live--;
+	return p;
+}
+
+void free(void *p)
+{
+	live -= p != NULL;
+	__libc_free(p);
+}
+
+struct job {
+	const struct tree *tree;
+	const struct tree_mesh *mesh;
+};
+
+typedef int (*op_fn)(const struct job *j);
+
+static int op_mesh(const struct job *j)
+{
+	struct tree_mesh tm;
+	int r;
+
+	tree_mesh_init(&tm);
+	r = tree_mesh_build(&tm, j->tree);
+	if (r < 0)
+		CHECK(tm.bark.nindices == 0 && tm.leaves.nindices == 0);
+	tree_mesh_finish(&tm);
+	return r;
+}
+
+static int op_glb(const struct job *j)
+{
+	struct buf b;
+	int r;
+
+	buf_init(&b);
+	r = export_glb(j->mesh, &b);
+	if (r < 0)
+		CHECK_INT(b.len, 0);
+	buf_finish(&b);
+	return r;
+}
+
+static int op_obj(const struct job *j)
+{
+	struct buf obj, mtl;
+	int r;
+
+	buf_init(&obj);
+	buf_init(&mtl);
+	r = export_obj(j->mesh, "tree.mtl", &obj, &mtl);
+	if (r < 0)
+		CHECK_INT(obj.len + mtl.len, 0);
+	buf_finish(&obj);
+	buf_finish(&mtl);
+	return r;
+}
+
+static int op_skeleton(const struct job *j)
+{
+	struct buf b;
+	int r;
+
+	buf_init(&b);
+	r = export_skeleton(j->tree, &b);
+	if (r < 0)
+		CHECK_INT(b.len, 0);
+	buf_finish(&b);
+	return r;
+}
+
+/* Fails each allocation of op in turn until op gets through without a failure. */
+static long exhaust(op_fn op, const struct job *j)
+{
+	for (long n = 0;; n++) {
+		long before = live;
+		int r;
+
+		calls = 0;
+		fail_at = n;
+		r = op(j);
+		fail_at = -1;
+		CHECK_INT(live, before);
+		if (calls <= n) {
+			CHECK_INT(r, 0);
+			return n;
+		}
+		if (r != -ENOMEM)
+			fprintf(stderr, "allocation %ld failed, op returned %d\n", n, r);
+		CHECK_INT(r, -ENOMEM);
+	}
+}
+
+int main(void)
+{
+	struct tree t;
+	struct tree_mesh tm;
+	struct job j = { &t, &tm };
+	long n;
+
+	tree_init(&t);
+	tree_mesh_init(&tm);
+	CHECK_INT(synth_tree(&t, 12, 2, 11), 0);
+	CHECK_INT(tree_mesh_build(&tm, &t), 0);
+
+	n = exhaust(op_mesh, &j);
+	printf("tree_mesh_build: %ld allocations, each failed once\n", n);
+	CHECK(n > 0);
+	n = exhaust(op_glb, &j);
+	printf("export_glb: %ld allocations, each failed once\n", n);
+	CHECK(n > 0);
+	n = exhaust(op_obj, &j);
+	printf("export_obj: %ld allocations, each failed once\n", n);
+	CHECK(n > 0);
+	n = exhaust(op_skeleton, &j);
+	printf("export_skeleton: %ld allocations, each failed once\n", n);
+	CHECK(n > 0);
+
+	tree_mesh_finish(&tm);
+	tree_finish(&t);
+	return 0;
+}

@@ -1,0 +1,137 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * write_samples DIR: writes sample exports for external checkers (the Khronos glTF
+ * validator, assimp): DIR/empty.glb, one-branch.glb, concave-leaf.glb, synth-500.glb,
+ * plus synth-500.obj/.mtl and synth-500.skeleton.json. See validate_samples.sh.
+ */
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "buf.h"
+#include "export.h"
+#include "mesh.h"
+#include "synth_tree.h"
+#include "tree.h"
+
+static int write_file(const char *dir, const char *name, const struct buf *b)
+{
+	char path[4096];
+	FILE *f;
+	int ok;
+
+	if (snprintf(path, sizeof(path), "%s/%s", dir, name) >= (int)sizeof(path))
+		return -ENAMETOOLONG;
+	f = fopen(path, "wb");
+	if (!f) {
+		fprintf(stderr, "write_samples: %s: %s\n", path, strerror(errno));
+		return -errno;
+	}
+	ok = fwrite(b->data, 1, b->len, f) == b->len;
+	ok = (fclose(f) == 0) && ok;
+	if (!ok) {
+		fprintf(stderr, "write_samples: %s: write failed\n", path);
+		return -EIO;
+	}
+	printf("%s (%zu bytes)\n", path, b->len);
+	return 0;
+}
+
+static int write_glb(const char *dir, const char *name, const struct tree *t)
+{
+	struct tree_mesh tm;
+	struct buf b;
+	int r;
+
+	tree_mesh_init(&tm);
+	buf_init(&b);
+	r = tree_mesh_build(&tm, t);
+	if (r >= 0)
+		r = export_glb(&tm, &b);
+	if (r >= 0)
+		r = write_file(dir, name, &b);
+	buf_finish(&b);
+	tree_mesh_finish(&tm);
+	return r;
+}
+
+static int one_branch(struct tree *t)
+{
+	const struct vec3 p[] = { { 0, 0, 0 }, { 0.2, 1.5, 0 }, { 0.1, 3, 0 }, { -0.3, 4.2, 0 } };
+	const double r[] = { 0.2, 0.16, 0.1, 0.04 };
+
+	return tree_add_branch(t, -1, 0.0, ORIGIN_SKETCH, p, r, 4);
+}
+
+static int concave_leaf(struct tree *t)
+{
+	/* an arrow-shaped leaf at the branch tip, slightly bent out of its plane */
+	const struct vec3 leaf[] = { { -0.3, 4.2, 0 },     { -0.2, 4.25, 0.01 }, { -0.1, 4.2, 0 },
+				     { -0.18, 4.3, 0.005 }, { -0.15, 4.45, 0 },   { -0.22, 4.36, 0.01 },
+				     { -0.3, 4.45, 0 },    { -0.26, 4.3, 0.005 } };
+	int r = one_branch(t);
+
+	return r < 0 ? r : tree_add_leaf(t, r, ORIGIN_SKETCH, leaf, 8);
+}
+
+static int synth_extras(const char *dir, const struct tree *t)
+{
+	struct tree_mesh tm;
+	struct buf obj, mtl, skel;
+	int r;
+
+	tree_mesh_init(&tm);
+	buf_init(&obj);
+	buf_init(&mtl);
+	buf_init(&skel);
+	r = tree_mesh_build(&tm, t);
+	if (r >= 0)
+		r = export_obj(&tm, "synth-500.mtl", &obj, &mtl);
+	if (r >= 0)
+		r = export_skeleton(t, &skel);
+	if (r >= 0)
+		r = write_file(dir, "synth-500.obj", &obj);
+	if (r >= 0)
+		r = write_file(dir, "synth-500.mtl", &mtl);
+	if (r >= 0)
+		r = write_file(dir, "synth-500.skeleton.json", &skel);
+	buf_finish(&obj);
+	buf_finish(&mtl);
+	buf_finish(&skel);
+	tree_mesh_finish(&tm);
+	return r;
+}
+
+int main(int argc, char **argv)
+{
+	struct tree t;
+	int r;
+
+	if (argc != 2) {
+		fprintf(stderr, "usage: write_samples DIR\n");
+		return 2;
+	}
+	tree_init(&t);
+	r = write_glb(argv[1], "empty.glb", &t);
+	if (r >= 0)
+		r = one_branch(&t);
+	if (r >= 0)
+		r = write_glb(argv[1], "one-branch.glb", &t);
+	tree_clear(&t);
+	if (r >= 0)
+		r = concave_leaf(&t);
+	if (r >= 0)
+		r = write_glb(argv[1], "concave-leaf.glb", &t);
+	if (r >= 0)
+		r = synth_tree(&t, 500, 10, 1);
+	if (r >= 0)
+		r = write_glb(argv[1], "synth-500.glb", &t);
+	if (r >= 0)
+		r = synth_extras(argv[1], &t);
+	tree_finish(&t);
+	if (r < 0) {
+		fprintf(stderr, "write_samples: %s\n", strerror(-r));
+		return 1;
+	}
+	return 0;
+}
