@@ -11,11 +11,15 @@ static const enum button bar_order[LAYOUT_NBUTTONS] = {
 /* How many of bar_order are in the top group. */
 #define LAYOUT_NTOP 4
 
-/* Sizes as fractions of the screen height, so the bar looks the same at any resolution. */
-#define BUTTON_FRACTION 0.10 /* a button's side: ~8 cm on a 80 cm tall kiosk screen */
-#define MARGIN_FRACTION 0.02 /* around the buttons, inside the bar */
-#define GAP_FRACTION 0.015   /* between buttons of a group */
-#define MAX_BUTTON_OF_WIDTH 0.2 /* on a narrow screen the canvas keeps most of the width */
+/*
+ * A button's side is a fraction of the screen height, so the bar looks the same at any
+ * resolution: ~5 cm on a kiosk screen 50 cm tall. On a narrow screen the width limits it
+ * so the canvas keeps most of the screen. Spacing follows the button size.
+ */
+#define BUTTON_OF_HEIGHT 0.10
+#define BUTTON_OF_WIDTH 0.2
+#define MARGIN_OF_BUTTON 0.2 /* bar edge to button */
+#define GAP_OF_BUTTON 0.15   /* between buttons of a group */
 
 struct metrics {
 	double size;   /* button side */
@@ -31,9 +35,9 @@ static struct metrics metrics(const struct view *v)
 	double w = v->width > 0 ? v->width : 0;
 	struct metrics m;
 
-	m.size = fmax(1.0, round(fmin(BUTTON_FRACTION * h, MAX_BUTTON_OF_WIDTH * w)));
-	m.margin = round(MARGIN_FRACTION * h);
-	m.gap = round(GAP_FRACTION * h);
+	m.size = fmax(1.0, round(fmin(BUTTON_OF_HEIGHT * h, BUTTON_OF_WIDTH * w)));
+	m.margin = round(MARGIN_OF_BUTTON * m.size);
+	m.gap = round(GAP_OF_BUTTON * m.size);
 	m.bar_x = w - (m.size + 2.0 * m.margin);
 	return m;
 }

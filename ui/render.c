@@ -1,0 +1,266 @@
+/* SPDX-License-Identifier: MIT */
+/* The frame: paper and ground, the lit tree, then stroke, buttons and cursor on top. */
+#include "render.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app.h"
+#include "render_private.h"
+
+/* GLSL ES 1.00 so the same shaders run on GLES 2 and 3. */
+static const char tree_vs[] =
+	"uniform mat4 u_mvp;\n"
+	"attribute vec3 a_position;\n"
+	"attribute vec3 a_normal;\n"
+	"varying vec3 v_normal;\n"
+	"void main() {\n"
+	"	v_normal = a_normal;\n"
+	"	gl_Position = u_mvp * vec4(a_position, 1.0);\n"
+	"}\n";
+
+static const char tree_fs[] =
+	"precision mediump float;\n"
+	"uniform vec3 u_color;\n"
+	"uniform vec3 u_light;\n"
+	"uniform bool u_two_sided;\n"
+	"varying vec3 v_normal;\n"
+	"void main() {\n"
+	"	vec3 n = normalize(v_normal);\n"
+	/* a leaf seen from behind is lit like its front */
+	"	if (u_two_sided && !gl_FrontFacing)\n"
+	"		n = -n;\n"
+	"	float lambert = max(dot(n, u_light), 0.0);\n"
+	"	gl_FragColor = vec4(u_color * (0.45 + 0.7 * lambert), 1.0);\n"
+	"}\n";
+
+static const char flat_vs[] =
+	"uniform mat4 u_proj;\n"
+	"attribute vec2 a_position;\n"
+	"attribute vec4 a_color;\n"
+	"varying vec4 v_color;\n"
+	"void main() {\n"
+	"	v_color = a_color;\n"
+	"	gl_Position = u_proj * vec4(a_position, 0.0, 1.0);\n"
+	"}\n";
+
+static const char flat_fs[] =
+	"precision mediump float;\n"
+	"varying vec4 v_color;\n"
+	"void main() {\n"
+	"	gl_FragColor = v_color;\n"
+	"}\n";
+
+/* Warm paper, like the sheet a child would draw on. */
+static const float paper[3] = { 0.975f, 0.953f, 0.898f };
+static const float bark_color[3] = { 0.47f, 0.32f, 0.20f };
+static const float leaf_color[3] = { 0.33f, 0.62f, 0.24f };
+/* Towards the light: from the upper left, in front of the sketch plane. */
+static const float light_dir[3] = { -0.4418339f, 0.7069342f, 0.5522924f };
+
+static void drain_gl_errors(void)
+{
+	/* bounded: a lost context may report errors forever */
+	for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; i++)
+		;
+}
+
+struct render *render_create(void)
+{
+	static const char *const tree_attribs[] = { "a_position", "a_normal" };
+	static const GLuint tree_locations[] = { ATTR_POSITION, ATTR_NORMAL };
+	static const char *const flat_attribs[] = { "a_position", "a_color" };
+	static const GLuint flat_locations[] = { ATTR_POSITION, ATTR_COLOR };
+	struct render *r = calloc(1, sizeof(*r));
+
+	if (!r)
+		return NULL;
+	batch_init(&r->batch);
+	drain_gl_errors();
+
+	r->tree_program = render_program("tree", tree_vs, tree_fs, tree_attribs, tree_locations, 2);
+	r->flat_program = render_program("flat", flat_vs, flat_fs, flat_attribs, flat_locations, 2);
+	if (!r->tree_program || !r->flat_program)
+		goto fail;
+	r->tree_mvp = glGetUniformLocation(r->tree_program, "u_mvp");
+	r->tree_color = glGetUniformLocation(r->tree_program, "u_color");
+	r->tree_light = glGetUniformLocation(r->tree_program, "u_light");
+	r->tree_two_sided = glGetUniformLocation(r->tree_program, "u_two_sided");
+	r->flat_proj = glGetUniformLocation(r->flat_program, "u_proj");
+	glGenBuffers(1, &r->flat_vbo);
+
+	r->uint_indices = render_gl_major_version() >= 3 ||
+			  render_has_extension("GL_OES_element_index_uint");
+	if (glGetError() != GL_NO_ERROR) {
+		fprintf(stderr, "render: GL error while setting up\n");
+		goto fail;
+	}
+	return r;
+fail:
+	render_destroy(r);
+	return NULL;
+}
+
+void render_destroy(struct render *r)
+{
+	if (!r)
+		return;
+	render_mesh_finish(&r->bark);
+	render_mesh_finish(&r->leaves);
+	glDeleteBuffers(1, &r->flat_vbo);
+	glDeleteProgram(r->tree_program);
+	glDeleteProgram(r->flat_program);
+	batch_finish(&r->batch);
+	free(r);
+}
+
+void render_get_stats(const struct render *r, struct render_stats *stats)
+{
+	*stats = r->stats;
+}
+
+/* Pixels (origin top left, y down) to clip space, column-major. */
+static void pixel_matrix(int width, int height, float m[16])
+{
+	memset(m, 0, 16 * sizeof(*m));
+	m[0] = 2.0f / (float)width;
+	m[5] = -2.0f / (float)height;
+	m[10] = 1.0f;
+	m[12] = -1.0f;
+	m[13] = 1.0f;
+	m[15] = 1.0f;
+}
+
+/* Draws and empties the batch. */
+static int flush_batch(struct render *r, const float proj[16])
+{
+	struct batch *b = &r->batch;
+	GLsizei stride = BATCH_FLOATS_PER_VERTEX * sizeof(float);
+
+	if (b->failed) {
+		batch_reset(b);
+		return -ENOMEM;
+	}
+	if (b->nvertices == 0)
+		return 0;
+	glUseProgram(r->flat_program);
+	glUniformMatrix4fv(r->flat_proj, 1, GL_FALSE, proj);
+	glBindBuffer(GL_ARRAY_BUFFER, r->flat_vbo);
+	glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(b->nvertices * (size_t)stride), b->v,
+		     GL_STREAM_DRAW);
+	glVertexAttribPointer(ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, stride, NULL);
+	glVertexAttribPointer(ATTR_COLOR, 4, GL_FLOAT, GL_FALSE, stride,
+			      (const void *)(2 * sizeof(float)));
+	glDrawArrays(GL_TRIANGLES, 0, (GLsizei)b->nvertices);
+	glBindBuffer(GL_ARRAY_BUFFER, 0);
+	r->stats.draw_calls++;
+	r->stats.triangles += b->nvertices / 3;
+	batch_reset(b);
+	return 0;
+}
+
+static int upload_tree(struct render *r, const struct app *app)
+{
+	int ret;
+
+	if (r->uploaded && r->mesh_serial == app->mesh_serial)
+		return 0;
+	/* not marked uploaded until both succeed, so a failure is retried next frame */
+	r->uploaded = false;
+	ret = render_mesh_upload(&r->bark, &app->mesh.bark, r->uint_indices);
+	if (ret == 0)
+		ret = render_mesh_upload(&r->leaves, &app->mesh.leaves, r->uint_indices);
+	r->stats.uploads += 2;
+	if (ret < 0)
+		return ret;
+	r->uploaded = true;
+	r->mesh_serial = app->mesh_serial;
+	return 0;
+}
+
+static int draw_tree(struct render *r, const struct app *app)
+{
+	float mvp[16];
+	int ret = upload_tree(r, app);
+
+	view_clip_matrix(&app->view, mvp);
+	glEnable(GL_DEPTH_TEST);
+	glDepthFunc(GL_LESS);
+	glDisable(GL_BLEND);
+	glUseProgram(r->tree_program);
+	glUniformMatrix4fv(r->tree_mvp, 1, GL_FALSE, mvp);
+	glUniform3fv(r->tree_light, 1, light_dir);
+	glEnableVertexAttribArray(ATTR_NORMAL);
+
+	/* branches are closed tubes: their back faces are never seen */
+	glEnable(GL_CULL_FACE);
+	glCullFace(GL_BACK);
+	glUniform1i(r->tree_two_sided, 0);
+	glUniform3fv(r->tree_color, 1, bark_color);
+	render_mesh_draw(r, &r->bark);
+
+	/* leaves are single polygons seen from either side */
+	glDisable(GL_CULL_FACE);
+	glUniform1i(r->tree_two_sided, 1);
+	glUniform3fv(r->tree_color, 1, leaf_color);
+	render_mesh_draw(r, &r->leaves);
+
+	glDisable(GL_DEPTH_TEST);
+	return ret;
+}
+
+int render_frame(struct render *r, const struct app *app)
+{
+	const struct view *v = &app->view;
+	float proj[16];
+	int ret, r2;
+
+	memset(&r->stats, 0, sizeof(r->stats));
+	if (v->width <= 0 || v->height <= 0)
+		return -EINVAL;
+	/* errors left by others are not ours to report */
+	drain_gl_errors();
+
+	/* every piece of state we rely on is set here: the caller may have changed any */
+	glViewport(0, 0, v->width, v->height);
+	glDisable(GL_SCISSOR_TEST);
+	glDisable(GL_CULL_FACE);
+	glDepthMask(GL_TRUE);
+	glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+	glClearColor(paper[0], paper[1], paper[2], 1.0f);
+	glClearDepthf(1.0f);
+	glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	glEnableVertexAttribArray(ATTR_POSITION);
+	glEnableVertexAttribArray(ATTR_COLOR);
+	/* blended colour over an opaque target keeps alpha at 1: the PNGs stay opaque */
+	glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+	pixel_matrix(v->width, v->height, proj);
+
+	/* behind the tree */
+	glDisable(GL_DEPTH_TEST);
+	glEnable(GL_BLEND);
+	batch_reset(&r->batch);
+	render_ui_ground(&r->batch, app);
+	ret = flush_batch(r, proj);
+
+	r2 = draw_tree(r, app);
+	if (ret == 0)
+		ret = r2;
+
+	/* in front of everything; the cursor last so it shows over the buttons too */
+	glEnable(GL_BLEND);
+	render_ui_stroke(&r->batch, app);
+	render_ui_buttons(&r->batch, app);
+	render_ui_cursor(&r->batch, app);
+	r2 = flush_batch(r, proj);
+	if (ret == 0)
+		ret = r2;
+
+	glDisable(GL_BLEND);
+	glUseProgram(0);
+	if (glGetError() != GL_NO_ERROR)
+		return -EIO;
+	return ret;
+}

@@ -1,16 +1,34 @@
 /* SPDX-License-Identifier: MIT */
 #pragma once
 
+#include <stddef.h>
+
 struct app;
 
 /*
  * Draws what the kiosk shows for an app state: the tree, the stroke under the pen, the
  * hover cursor and the on-screen mode buttons. Needs a current GLES context (2.0 or later);
  * draws into the bound framebuffer at app->view's size. Same state, same pixels.
+ * The tree's meshes are uploaded to the GPU only when app->mesh_serial changes.
  */
 struct render;
 
+/* NULL if the context lacks what is needed (a message says why on stderr). */
 struct render *render_create(void);
+/* Needs the context render_create ran in to be current. */
 void render_destroy(struct render *r);
-/* Returns 0, or -EIO if GL reported an error. */
+/*
+ * Returns 0; -EIO if GL reported an error; -ENOMEM; -EINVAL if a mesh has an index
+ * past its vertices (that mesh is not drawn).
+ */
 int render_frame(struct render *r, const struct app *app);
+
+/* What the last render_frame() did: for benchmarks and tests. */
+struct render_stats {
+	unsigned draw_calls;   /* glDraw* calls */
+	size_t triangles;      /* triangles in those calls */
+	size_t tree_triangles; /* of which bark and leaves */
+	unsigned uploads;      /* meshes uploaded (0 when mesh_serial did not change) */
+};
+
+void render_get_stats(const struct render *r, struct render_stats *stats);

@@ -1,0 +1,133 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * render-scene [--twice] SCENE OUT.png: renders a hand-built scene (tests/render/scene.c)
+ * headless and writes it as PNG. With --twice it renders again, with the same and with
+ * a fresh renderer, and fails unless all frames are byte-identical.
+ */
+#include <errno.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "buf.h"
+#include "egl_headless.h"
+#include "png.h"
+#include "render.h"
+#include "scene.h"
+
+static int render_once(struct render *r, struct egl_headless *egl, const struct app *app,
+		       uint8_t *rgba)
+{
+	int ret = render_frame(r, app);
+
+	if (ret < 0) {
+		fprintf(stderr, "render-scene: render_frame: %s\n", strerror(-ret));
+		return ret;
+	}
+	ret = egl_headless_read_rgba(egl, rgba);
+	if (ret < 0)
+		fprintf(stderr, "render-scene: read back: %s\n", strerror(-ret));
+	return ret;
+}
+
+static int write_png(const char *path, const uint8_t *rgba, int width, int height)
+{
+	struct buf b;
+	struct error err;
+	FILE *f;
+	int ret;
+
+	buf_init(&b);
+	ret = png_encode_rgba(rgba, width, height, &b, &err);
+	if (ret < 0) {
+		fprintf(stderr, "render-scene: %s\n", err.msg);
+		buf_finish(&b);
+		return ret;
+	}
+	f = fopen(path, "wb");
+	if (!f) {
+		ret = -errno;
+	} else {
+		if (fwrite(b.data, 1, b.len, f) != b.len)
+			ret = -EIO;
+		if (fclose(f) != 0 && ret == 0)
+			ret = -errno;
+	}
+	if (ret < 0)
+		fprintf(stderr, "render-scene: %s: %s\n", path, strerror(-ret));
+	buf_finish(&b);
+	return ret;
+}
+
+int main(int argc, char **argv)
+{
+	struct app app;
+	struct egl_headless *egl = NULL;
+	struct render *r = NULL, *fresh = NULL;
+	struct error err;
+	uint8_t *rgba = NULL, *again = NULL;
+	bool twice = argc == 4 && !strcmp(argv[1], "--twice");
+	const char *scene, *out;
+	size_t size;
+	int ret, status = 1;
+
+	if (argc != 3 && !twice) {
+		fprintf(stderr, "usage: render-scene [--twice] SCENE OUT.png\nscenes:");
+		for (size_t i = 0; scene_names[i]; i++)
+			fprintf(stderr, " %s", scene_names[i]);
+		fprintf(stderr, "\n");
+		return 2;
+	}
+	scene = argv[argc - 2];
+	out = argv[argc - 1];
+	ret = scene_build(&app, scene);
+	if (ret < 0) {
+		fprintf(stderr, "render-scene: scene '%s': %s\n", scene, strerror(-ret));
+		return 2;
+	}
+
+	egl = egl_headless_create(app.view.width, app.view.height, &err);
+	if (!egl) {
+		fprintf(stderr, "render-scene: %s\n", err.msg);
+		goto out;
+	}
+	r = render_create();
+	size = (size_t)app.view.width * (size_t)app.view.height * 4;
+	rgba = malloc(size);
+	again = malloc(size);
+	if (!r || !rgba || !again) {
+		fprintf(stderr, "render-scene: cannot set up the renderer\n");
+		goto out;
+	}
+	if (render_once(r, egl, &app, rgba) < 0)
+		goto out;
+
+	if (twice) {
+		/* the same renderer (no upload this time), then a new one (uploads again) */
+		if (render_once(r, egl, &app, again) < 0)
+			goto out;
+		if (memcmp(rgba, again, size) != 0) {
+			fprintf(stderr, "render-scene: %s: a second frame differs\n", scene);
+			goto out;
+		}
+		fresh = render_create();
+		if (!fresh || render_once(fresh, egl, &app, again) < 0)
+			goto out;
+		if (memcmp(rgba, again, size) != 0) {
+			fprintf(stderr, "render-scene: %s: a new renderer draws differently\n", scene);
+			goto out;
+		}
+	}
+	if (write_png(out, rgba, app.view.width, app.view.height) < 0)
+		goto out;
+	status = 0;
+out:
+	free(rgba);
+	free(again);
+	render_destroy(fresh);
+	render_destroy(r);
+	egl_headless_destroy(egl);
+	scene_finish(&app);
+	return status;
+}

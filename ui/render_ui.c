@@ -1,0 +1,223 @@
+/* SPDX-License-Identifier: MIT */
+/* The flat layers: ground, the stroke under the pen, the button bar and the hover cursor. */
+#include <math.h>
+
+#include "app.h"
+#include "icons.h"
+#include "layout.h"
+#include "render_private.h"
+
+static const struct rgba ink = { 0.16f, 0.13f, 0.12f, 1.0f };
+static const struct rgba white = { 1.0f, 1.0f, 1.0f, 1.0f };
+static const struct rgba eraser_fill = { 0.86f, 0.85f, 0.83f, 1.0f };
+static const struct rgba eraser_edge = { 0.58f, 0.56f, 0.53f, 1.0f };
+
+static const struct rgba soil_top = { 0.875f, 0.820f, 0.700f, 1.0f };
+static const struct rgba soil_bottom = { 0.925f, 0.890f, 0.800f, 1.0f };
+static const struct rgba ground_line = { 0.600f, 0.500f, 0.380f, 1.0f };
+
+static const struct rgba bar_fill = { 0.925f, 0.895f, 0.830f, 1.0f };
+static const struct rgba bar_edge = { 0.790f, 0.730f, 0.630f, 1.0f };
+static const struct rgba button_fill = { 1.0f, 0.992f, 0.965f, 1.0f };
+static const struct rgba button_pressed_fill = { 0.870f, 0.840f, 0.770f, 1.0f };
+static const struct rgba button_border = { 0.640f, 0.580f, 0.500f, 1.0f };
+static const struct rgba shadow = { 0.350f, 0.250f, 0.150f, 0.28f };
+
+/* Each button has its own colour, so children can say "the green one". */
+static struct rgba accent(enum button button)
+{
+	switch (button) {
+	case BUTTON_3D:
+		return (struct rgba){ 0.22f, 0.44f, 0.80f, 1.0f };
+	case BUTTON_CLONE:
+		return (struct rgba){ 0.58f, 0.33f, 0.74f, 1.0f };
+	case BUTTON_LEAF:
+		return (struct rgba){ 0.24f, 0.58f, 0.22f, 1.0f };
+	case BUTTON_PROPAGATE:
+		return (struct rgba){ 0.90f, 0.48f, 0.12f, 1.0f };
+	case BUTTON_EXPORT:
+		return (struct rgba){ 0.10f, 0.50f, 0.62f, 1.0f };
+	default:
+		return (struct rgba){ 0.33f, 0.30f, 0.28f, 1.0f };
+	}
+}
+
+static struct rgba scaled(struct rgba c, float k)
+{
+	return (struct rgba){ c.r * k, c.g * k, c.b * k, c.a };
+}
+
+static struct rgba with_alpha(struct rgba c, float a)
+{
+	c.a *= a;
+	return c;
+}
+
+/* Pixel sizes chosen on an 800-pixel-tall kiosk screen follow the screen. */
+static double screen_scale(const struct view *v)
+{
+	return fmax(0.5, v->height / 800.0);
+}
+
+void render_ui_ground(struct batch *b, const struct app *app)
+{
+	const struct view *v = &app->view;
+	double gy = v->ground_y_px, w = v->width, h = v->height;
+	double s = screen_scale(v);
+
+	if (gy >= h)
+		return;
+	/* a faint shade above the line, the soil below: soft, not a hard edge */
+	batch_rect_gradient(b, 0.0, gy - 10.0 * s, w, 10.0 * s, with_alpha(ground_line, 0.0f),
+			    with_alpha(ground_line, 0.22f));
+	batch_rect_gradient(b, 0.0, gy, w, h - gy, soil_top, soil_bottom);
+	batch_rect(b, 0.0, gy - 1.5 * s, w, 3.0 * s, ground_line);
+}
+
+static double clamp01(double x)
+{
+	/* also maps NaN to 0 */
+	return x > 0.0 ? (x < 1.0 ? x : 1.0) : 0.0;
+}
+
+/* Half the width of the stroke a tool leaves at a pressure. */
+static double stroke_radius(enum event_tool tool, double pressure)
+{
+	double p = clamp01(pressure);
+
+	if (tool == EVENT_TOOL_ERASER)
+		return 0.5 * (24.0 + 12.0 * p);
+	return 0.5 * (2.0 + 10.0 * p);
+}
+
+/* Discs at the points joined by tapers: round caps and joins, width following pressure. */
+static void ribbon(struct batch *b, const struct app_stroke *s, double grow, struct rgba c)
+{
+	struct pt prev = { 0.0, 0.0 };
+	double prev_r = 0.0;
+
+	for (size_t i = 0; i < s->npoints; i++) {
+		const struct app_point *p = &s->points[i];
+		struct pt pt = { p->x, p->y };
+		double r = stroke_radius(s->tool, p->pressure) + grow;
+
+		batch_disc(b, pt, r, c);
+		if (i > 0)
+			batch_taper(b, prev, prev_r, pt, r, c);
+		prev = pt;
+		prev_r = r;
+	}
+}
+
+void render_ui_stroke(struct batch *b, const struct app *app)
+{
+	const struct app_stroke *s = &app->stroke;
+
+	if (!s->active || s->npoints == 0)
+		return;
+	if (s->tool == EVENT_TOOL_ERASER) {
+		/* a pale band with a rim: clearly not ink */
+		ribbon(b, s, 1.5, eraser_edge);
+		ribbon(b, s, 0.0, eraser_fill);
+	} else {
+		ribbon(b, s, 0.0, ink);
+	}
+}
+
+static bool button_active(const struct app *app, enum button button)
+{
+	switch (app->mode) {
+	case APP_MODE_CLONE:
+		return button == BUTTON_CLONE;
+	case APP_MODE_LEAF:
+		return button == BUTTON_LEAF;
+	case APP_MODE_PROPAGATE:
+		return button == BUTTON_PROPAGATE;
+	case APP_MODE_SKETCH:
+		break;
+	}
+	return false;
+}
+
+static bool button_enabled(const struct app *app, enum button button)
+{
+	if (button == BUTTON_UNDO)
+		return doc_can_undo(&app->doc);
+	if (button == BUTTON_REDO)
+		return doc_can_redo(&app->doc);
+	return true;
+}
+
+static void draw_button(struct batch *b, const struct app *app, const struct layout_button *lb)
+{
+	bool active = button_active(app, lb->button);
+	bool pressed = lb->button < BUTTON_COUNT && app->buttons_down[lb->button];
+	bool enabled = button_enabled(app, lb->button);
+	float alpha = enabled ? 1.0f : 0.3f;
+	struct rgba colour = accent(lb->button);
+	double side = lb->w;
+	double radius = 0.24 * side, border = fmax(1.5, 0.045 * side);
+	/* a pressed button sinks onto its shadow */
+	double lift = 0.06 * side, y = lb->y + (pressed ? 0.045 * side : 0.0);
+	struct rgba fill, edge, icon_ink;
+
+	if (active) {
+		double glow = 0.08 * side;
+
+		batch_rounded_rect(b, lb->x - glow, lb->y - glow, side + 2.0 * glow,
+				   side + 2.0 * glow, radius + glow, with_alpha(colour, 0.32f));
+		fill = pressed ? scaled(colour, 0.8f) : colour;
+		edge = scaled(colour, 0.62f);
+		icon_ink = white;
+	} else {
+		fill = pressed ? button_pressed_fill : button_fill;
+		edge = with_alpha(button_border, alpha);
+		icon_ink = with_alpha(colour, alpha);
+	}
+	if (!pressed)
+		batch_rounded_rect(b, lb->x, lb->y + lift, side, side, radius,
+				   with_alpha(shadow, alpha));
+	batch_rounded_rect(b, lb->x, y, side, side, radius, fill);
+	batch_rounded_frame(b, lb->x, y, side, side, radius, active ? 1.6 * border : border, edge);
+	icon_draw(b, lb->button, (struct pt){ lb->x + 0.5 * side, y + 0.5 * side }, 0.62 * side,
+		  icon_ink, fill);
+}
+
+void render_ui_buttons(struct batch *b, const struct app *app)
+{
+	const struct view *v = &app->view;
+	struct layout_rect bar = layout_bar(v);
+	struct layout_button buttons[LAYOUT_NBUTTONS];
+	size_t n = layout_buttons(v, buttons, LAYOUT_NBUTTONS);
+	double s = screen_scale(v);
+
+	/* the bar casts a faint shadow on the canvas, and has a rim */
+	batch_rect_hgradient(b, bar.x - 8.0 * s, 0.0, 8.0 * s, bar.h, with_alpha(shadow, 0.0f),
+			     with_alpha(shadow, 0.25f));
+	batch_rect(b, bar.x, bar.y, bar.w, bar.h, bar_fill);
+	batch_rect(b, bar.x, bar.y, fmax(1.0, 2.0 * s), bar.h, bar_edge);
+	for (size_t i = 0; i < n && i < LAYOUT_NBUTTONS; i++)
+		draw_button(b, app, &buttons[i]);
+}
+
+void render_ui_cursor(struct batch *b, const struct app *app)
+{
+	const struct app_pen *pen = &app->pen;
+	struct pt at = { pen->x, pen->y };
+	double s = screen_scale(&app->view);
+
+	if (!pen->in_proximity)
+		return;
+	/* a white halo keeps the ring visible over ink and bark */
+	if (pen->tool == EVENT_TOOL_ERASER) {
+		/* as large as the eraser's touch */
+		double r = stroke_radius(EVENT_TOOL_ERASER, 0.0);
+
+		batch_ring(b, at, r - 2.5 * s, r + 2.5 * s, with_alpha(white, 0.85f));
+		batch_ring(b, at, r - 1.0 * s, r + 1.0 * s, eraser_edge);
+	} else {
+		batch_ring(b, at, 4.0 * s, 10.5 * s, with_alpha(white, 0.85f));
+		batch_ring(b, at, 5.5 * s, 8.5 * s, ink);
+		batch_disc(b, at, 1.5 * s, ink);
+	}
+}
