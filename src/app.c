@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "layout.h"
 #include "sketch.h"
 
 static void app_fail(struct app *app, int err)
@@ -210,9 +211,16 @@ static int press_button(struct app *app, enum button button, uint64_t time_us)
 	return 0;
 }
 
+static int button_event(struct app *app, enum button button, bool pressed, uint64_t time_us)
+{
+	app->buttons_down[button] = pressed;
+	return pressed ? press_button(app, button, time_us) : 0;
+}
+
 void app_handle_event(struct app *app, const struct event *ev)
 {
 	int ret = 0;
+	enum button hit;
 
 	app->last_time_us = ev->time_us;
 	switch (ev->type) {
@@ -224,6 +232,11 @@ void app_handle_event(struct app *app, const struct event *ev)
 		update_pen(app, ev);
 		if (app->stroke.active)
 			ret = stroke_commit(app);
+		if (app->ui_button_held) {
+			app->ui_button_held = false;
+			app_fail(app, ret);
+			ret = button_event(app, app->ui_button, false, ev->time_us);
+		}
 		app->pen.in_proximity = false;
 		break;
 	case EVENT_TIP_DOWN:
@@ -231,6 +244,14 @@ void app_handle_event(struct app *app, const struct event *ev)
 		app->pen.in_proximity = true;
 		if (app->stroke.active)
 			ret = stroke_commit(app);
+		/* The pen presses on-screen buttons like the GPIO ones: down now, up on lift. */
+		if (!app->ui_button_held && layout_hit(&app->view, ev->x, ev->y, &hit)) {
+			app->ui_button_held = true;
+			app->ui_button = hit;
+			app_fail(app, ret);
+			ret = button_event(app, hit, true, ev->time_us);
+			break;
+		}
 		app->stroke.active = true;
 		app->stroke.tool = ev->tool;
 		app->stroke.npoints = 0;
@@ -244,7 +265,10 @@ void app_handle_event(struct app *app, const struct event *ev)
 		break;
 	case EVENT_TIP_UP:
 		update_pen(app, ev);
-		if (app->stroke.active) {
+		if (app->ui_button_held) {
+			app->ui_button_held = false;
+			ret = button_event(app, app->ui_button, false, ev->time_us);
+		} else if (app->stroke.active) {
 			ret = stroke_add(app, ev);
 			if (ret == 0)
 				ret = stroke_commit(app);
@@ -260,9 +284,7 @@ void app_handle_event(struct app *app, const struct event *ev)
 	case EVENT_BUTTON:
 		if (ev->button < 0 || ev->button >= BUTTON_COUNT)
 			break;
-		app->buttons_down[ev->button] = ev->pressed;
-		if (ev->pressed)
-			ret = press_button(app, (enum button)ev->button, ev->time_us);
+		ret = button_event(app, (enum button)ev->button, ev->pressed, ev->time_us);
 		break;
 	}
 	app_fail(app, ret);

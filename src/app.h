@@ -68,6 +68,9 @@ struct app {
 	enum app_mode mode;
 	enum app_pattern pattern;
 	bool buttons_down[BUTTON_COUNT];
+	/* The on-screen button the pen tip is holding down, if any. */
+	bool ui_button_held;
+	enum button ui_button;
 	uint64_t last_time_us;
 	uint32_t requests;
 	int failed; /* first negative errno from an allocation, sticky */

@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "app.h"
+#include "layout.h"
 #include "test.h"
 
 static uint64_t now = 1000;
@@ -110,6 +111,26 @@ int main(void)
 	CHECK_INT(app->tree.nbranches, 0);
 	ev_button(app, BUTTON_UNDO);
 	same_tree(&app->tree, &snapshot);
+
+	/* the pen taps the on-screen buttons: undo, then redo */
+	{
+		struct layout_button buttons[LAYOUT_NBUTTONS];
+		size_t n = layout_buttons(&app->view, buttons, LAYOUT_NBUTTONS);
+
+		for (size_t i = 0; i < n; i++) {
+			double cx = buttons[i].x + buttons[i].w / 2, cy = buttons[i].y + buttons[i].h / 2;
+
+			if (buttons[i].button != BUTTON_UNDO && buttons[i].button != BUTTON_REDO)
+				continue;
+			ev_pen(app, EVENT_TIP_DOWN, cx, cy, 0.5);
+			CHECK(app->buttons_down[buttons[i].button]);
+			CHECK(!app->stroke.active);
+			ev_pen(app, EVENT_TIP_UP, cx, cy, 0);
+			CHECK(!app->buttons_down[buttons[i].button]);
+			CHECK_INT(app->tree.nleaves, buttons[i].button == BUTTON_UNDO ? 0 : 1);
+		}
+		CHECK_INT(app->doc.nops, 5);
+	}
 
 	/* modes toggle; export is a request for platform/ */
 	ev_button(app, BUTTON_LEAF);
