@@ -57,6 +57,9 @@ static bool looks_like_edaha(const char *data, size_t len)
 	const size_t n = sizeof(magic) - 1;
 	size_t i = 0;
 
+	if (len >= 3 && memcmp(data, "\xef\xbb\xbf", 3) == 0)
+		i = 3; /* a UTF-8 byte order mark */
+
 	while (i < len) {
 		size_t start;
 

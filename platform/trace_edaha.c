@@ -288,6 +288,10 @@ static int parse_pen_state(struct edaha_parser *p, size_t first, struct event *e
 		ev->x = ev->x * p->screen_w / (double)p->file_w;
 	if (p->file_h != p->screen_h)
 		ev->y = ev->y * p->screen_h / (double)p->file_h;
+	/* 1e308 is finite, but not once scaled up to a bigger screen. */
+	if (!isfinite(ev->x) || !isfinite(ev->y))
+		return fail(p, "position %s %s out of range on a %dx%d screen", f[1], f[2],
+			    p->screen_w, p->screen_h);
 	return 0;
 }
 
@@ -407,6 +411,9 @@ int trace_parse_edaha(const char *data, size_t len, const char *name, int screen
 	};
 	int r;
 
+	/* Windows editors may put a byte order mark in front. */
+	if (p.len >= 3 && memcmp(p.data, "\xef\xbb\xbf", 3) == 0)
+		p.pos = 3;
 	trace_init(&p.out);
 	r = parse_all(&p);
 	free(p.line);
