@@ -9,18 +9,30 @@ DEMO=$SRC/data/demo.edaha-trace
 OUTPUTS="screen.png model.glb model.obj model.mtl skeleton.json drawing.edaha"
 
 fail() { echo "FAIL: $*" >&2; exit 1; }
-run() { "$EDAHA" --headless "$@" >"$T/stdout" 2>"$T/stderr" || { cat "$T/stderr" >&2; fail "edaha $* exited $?"; }; }
+# Under ASan the GL driver is preloaded into edaha only (see tests/meson.build).
+edaha() {
+	if [ -n "${EDAHA_GL_PRELOAD:-}" ]; then
+		LD_PRELOAD=$EDAHA_GL_PRELOAD ASAN_OPTIONS=${ASAN_OPTIONS:-}:verify_asan_link_order=0 "$EDAHA" "$@"
+	else
+		"$EDAHA" "$@"
+	fi
+}
+run() {
+	local rc=0
+	edaha --headless "$@" >"$T/stdout" 2>"$T/stderr" || rc=$?
+	[ $rc -eq 0 ] || { cat "$T/stderr" >&2; fail "edaha $* exited $rc"; }
+}
 same_files() { # dir1 dir2 files...
 	local a=$1 b=$2 f; shift 2
 	for f in "$@"; do cmp -s "$a/$f" "$b/$f" || fail "$f differs between $a and $b"; done
 }
 
 t_help() {
-	"$EDAHA" --help >"$T/help" || fail "--help exited $?"
+	edaha --help >"$T/help" || fail "--help exited $?"
 	for o in --headless --size --seed --out --replay --press --load --record --help; do
 		grep -q -- "$o" "$T/help" || fail "--help does not mention $o"
 	done
-	"$EDAHA" --version | grep -q '^edaha ' || fail "--version"
+	edaha --version | grep -q '^edaha ' || fail "--version"
 }
 
 t_usage() {
@@ -28,7 +40,7 @@ t_usage() {
 	for args in "--bogus" "--headless" "--headless --out $T/x --press nothing" \
 		"--headless --out $T/x --size 10x10" "--headless --out $T/x --seed -1" "--replay $DEMO" "stray"; do
 		# shellcheck disable=SC2086
-		"$EDAHA" $args >/dev/null 2>"$T/err"; rc=$?
+		edaha $args >/dev/null 2>"$T/err"; rc=$?
 		[ $rc -eq 2 ] || fail "edaha $args: exit $rc, wanted 2"
 		grep -q "^edaha: " "$T/err" || fail "edaha $args: no message"
 	done
@@ -105,7 +117,7 @@ t_malformed() {
 	while read -r file line; do
 		[ -n "$file" ] || continue
 		case $file in *.edaha) opt=--load ;; *) opt=--replay ;; esac
-		"$EDAHA" --headless --out "$T/m" "$opt" "$dir/$file" >/dev/null 2>"$T/err"; rc=$?
+		edaha --headless --out "$T/m" "$opt" "$dir/$file" >/dev/null 2>"$T/err"; rc=$?
 		[ $rc -eq 2 ] || { cat "$T/err"; fail "$file: exit $rc, wanted 2"; }
 		if [ "$line" -gt 0 ]; then want="$dir/$file:$line: "; else want="$dir/$file: "; fi
 		grep -qF "edaha: $want" "$T/err" || { cat "$T/err"; fail "$file: message does not start with $want"; }
