@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,7 +28,13 @@ int file_read_all(const char *path, size_t max, char **data, size_t *len, struct
 		goto out;
 	}
 	if (S_ISDIR(st.st_mode)) {
-		ret = error_at(err, -EISDIR, path, 0, "is a directory, not a file");
+		ret = error_at(err, -EISDIR, path, 0, "%s", strerror(EISDIR));
+		goto out;
+	}
+	/* Refuse early, before reading it all only to throw it away (pipes have no size). */
+	if (S_ISREG(st.st_mode) && (uintmax_t)st.st_size > (uintmax_t)max) {
+		ret = error_at(err, -EFBIG, path, 0, "file too large (%jd bytes, limit %zu MiB)",
+			       (intmax_t)st.st_size, max >> 20);
 		goto out;
 	}
 	for (;;) {
@@ -38,7 +45,7 @@ int file_read_all(const char *path, size_t max, char **data, size_t *len, struct
 			char *p;
 
 			if (cap > max + 1) {
-				ret = error_at(err, -EFBIG, path, 0, "file is larger than %zu bytes", max);
+				ret = error_at(err, -EFBIG, path, 0, "file too large (limit %zu MiB)", max >> 20);
 				goto out;
 			}
 			p = realloc(buf, ncap);
@@ -60,7 +67,7 @@ int file_read_all(const char *path, size_t max, char **data, size_t *len, struct
 			break;
 		have += (size_t)n;
 		if (have > max) {
-			ret = error_at(err, -EFBIG, path, 0, "file is larger than %zu bytes", max);
+			ret = error_at(err, -EFBIG, path, 0, "file too large (limit %zu MiB)", max >> 20);
 			goto out;
 		}
 	}

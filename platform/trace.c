@@ -2,12 +2,11 @@
 #include "trace.h"
 
 #include <errno.h>
-#include <fcntl.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
+
+#include "fileio.h"
 
 /* A replay is a few hours of pen input at most; anything bigger is a mistake. */
 #define TRACE_MAX_FILE_SIZE ((size_t)256 * 1024 * 1024)
@@ -108,81 +107,13 @@ int trace_parse(const char *data, size_t len, const char *name, int screen_w, in
 	return trace_parse_libinput(data, len, name, screen_w, screen_h, t, err);
 }
 
-/* Reads all of fd into a malloc'ed buffer; pipes and /proc files have no usable st_size. */
-static int read_all(int fd, const char *path, char **out, size_t *out_len, struct error *err)
-{
-	size_t cap = 64 * 1024, len = 0;
-	char *data = malloc(cap);
-
-	if (!data)
-		return error_at(err, -ENOMEM, path, 0, "out of memory");
-	for (;;) {
-		ssize_t n;
-
-		if (len == cap) {
-			char *bigger;
-
-			if (cap > TRACE_MAX_FILE_SIZE) {
-				free(data);
-				return error_at(err, -EFBIG, path, 0,
-						"file too large (limit %zu MiB)",
-						TRACE_MAX_FILE_SIZE >> 20);
-			}
-			cap *= 2;
-			bigger = realloc(data, cap);
-			if (!bigger) {
-				free(data);
-				return error_at(err, -ENOMEM, path, 0, "out of memory");
-			}
-			data = bigger;
-		}
-		n = read(fd, data + len, cap - len);
-		if (n < 0 && errno == EINTR)
-			continue;
-		if (n < 0) {
-			int r = -errno;
-
-			free(data);
-			return error_at(err, r, path, 0, "%s", strerror(-r));
-		}
-		if (n == 0)
-			break;
-		len += (size_t)n;
-	}
-	if (len > TRACE_MAX_FILE_SIZE) {
-		free(data);
-		return error_at(err, -EFBIG, path, 0, "file too large (limit %zu MiB)",
-				TRACE_MAX_FILE_SIZE >> 20);
-	}
-	*out = data;
-	*out_len = len;
-	return 0;
-}
-
 int trace_load(const char *path, int screen_w, int screen_h, struct trace *t, struct error *err)
 {
-	struct stat st;
-	char *data = NULL;
-	size_t len = 0;
-	int fd, r;
+	char *data;
+	size_t len;
+	int r;
 
-	fd = open(path, O_RDONLY | O_CLOEXEC);
-	if (fd < 0) {
-		r = -errno;
-		trace_finish(t);
-		return error_at(err, r, path, 0, "%s", strerror(-r));
-	}
-	/* Refuse early, before reading 256 MiB only to throw it away. */
-	if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) &&
-	    (uintmax_t)st.st_size > (uintmax_t)TRACE_MAX_FILE_SIZE) {
-		close(fd);
-		trace_finish(t);
-		return error_at(err, -EFBIG, path, 0,
-				"file too large (%jd bytes, limit %zu MiB)", (intmax_t)st.st_size,
-				TRACE_MAX_FILE_SIZE >> 20);
-	}
-	r = read_all(fd, path, &data, &len, err);
-	close(fd);
+	r = file_read_all(path, TRACE_MAX_FILE_SIZE, &data, &len, err);
 	if (r < 0) {
 		trace_finish(t);
 		return r;

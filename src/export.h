@@ -6,8 +6,9 @@
 #include "tree.h"
 
 /*
- * Exporters write into memory; platform/ puts the bytes into files. All return 0, or a
- * negative errno (-ENOMEM). Same input, same bytes.
+ * Exporters append to `out` in memory; platform/ puts the bytes into files. All return 0
+ * or a negative errno (-ENOMEM; -EFBIG past glTF's 4 GiB; -EINVAL for a bad MTL name) and
+ * leave `out` as it was on failure. Same input, same bytes.
  */
 
 /* glTF 2.0 binary: y up, metres, normals, "bark" and double-sided "leaves" materials. */

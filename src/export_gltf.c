@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include <json-c/json.h>
+#include "json_out.h"
 
 /* GLB container constants, glTF 2.0 spec section 4.4. */
 #define GLB_MAGIC 0x46546c67u      /* "glTF" */
@@ -25,30 +25,6 @@
 /* Materials; the same colours as the OBJ exporter's MTL (export_obj.c). */
 static const double bark_color[4] = { 0.33, 0.22, 0.13, 1.0 };
 static const double leaves_color[4] = { 0.24, 0.52, 0.16, 1.0 };
-
-/*
- * json-c helpers that propagate allocation failure as NULL: a failing add frees the parent
- * too, so one check on the root covers the whole document and nothing leaks.
- */
-static struct json_object *jset(struct json_object *obj, const char *key, struct json_object *val)
-{
-	if (!obj || !val || json_object_object_add(obj, key, val) < 0) {
-		json_object_put(val);
-		json_object_put(obj);
-		return NULL;
-	}
-	return obj;
-}
-
-static struct json_object *jpush(struct json_object *arr, struct json_object *val)
-{
-	if (!arr || !val || json_object_array_add(arr, val) < 0) {
-		json_object_put(val);
-		json_object_put(arr);
-		return NULL;
-	}
-	return arr;
-}
 
 static struct json_object *jint(size_t v)
 {
@@ -74,7 +50,7 @@ static struct json_object *jvec(const double *v, size_t n)
 	struct json_object *arr = json_object_new_array();
 
 	for (size_t i = 0; i < n; i++)
-		arr = jpush(arr, jfloat(v[i]));
+		arr = json_out_push(arr, jfloat(v[i]));
 	return arr;
 }
 
@@ -98,14 +74,14 @@ static struct json_object *glb_add_view(struct glb *g, struct json_object *views
 	struct json_object *v = json_object_new_object();
 	size_t len = 4 * count;
 
-	v = jset(v, "buffer", jint(0));
-	v = jset(v, "byteOffset", jint(g->bin_len));
-	v = jset(v, "byteLength", jint(len));
-	v = jset(v, "target", jint((size_t)target));
+	v = json_out_set(v, "buffer", jint(0));
+	v = json_out_set(v, "byteOffset", jint(g->bin_len));
+	v = json_out_set(v, "byteLength", jint(len));
+	v = json_out_set(v, "target", jint((size_t)target));
 	g->views[g->nviews++] = (struct glb_view){ data, count, is_float };
 	/* Every element is 4 bytes, so every view stays 4-byte aligned. */
 	g->bin_len += len;
-	return jpush(views, v);
+	return json_out_push(views, v);
 }
 
 static struct json_object *glb_accessor(const char *prim, const char *what, size_t view,
@@ -115,11 +91,11 @@ static struct json_object *glb_accessor(const char *prim, const char *what, size
 	char name[64];
 
 	snprintf(name, sizeof(name), "%s.%s", prim, what);
-	a = jset(a, "name", jstr(name));
-	a = jset(a, "bufferView", jint(view));
-	a = jset(a, "componentType", jint((size_t)component));
-	a = jset(a, "count", jint(count));
-	a = jset(a, "type", jstr(type));
+	a = json_out_set(a, "name", jstr(name));
+	a = json_out_set(a, "bufferView", jint(view));
+	a = json_out_set(a, "componentType", jint((size_t)component));
+	a = json_out_set(a, "count", jint(count));
+	a = json_out_set(a, "type", jstr(type));
 	return a;
 }
 
@@ -138,8 +114,8 @@ static struct json_object *glb_bounds(struct json_object *a, const struct mesh *
 			hi[c] = v > hi[c] ? v : hi[c];
 		}
 	}
-	a = jset(a, "min", jvec(lo, 3));
-	return jset(a, "max", jvec(hi, 3));
+	a = json_out_set(a, "min", jvec(lo, 3));
+	return json_out_set(a, "max", jvec(hi, 3));
 }
 
 static struct json_object *glb_material(const char *name, const double color[4], double roughness,
@@ -148,13 +124,13 @@ static struct json_object *glb_material(const char *name, const double color[4],
 	struct json_object *pbr = json_object_new_object();
 	struct json_object *mat = json_object_new_object();
 
-	pbr = jset(pbr, "baseColorFactor", jvec(color, 4));
-	pbr = jset(pbr, "metallicFactor", jint(0));
-	pbr = jset(pbr, "roughnessFactor", jfloat(roughness));
-	mat = jset(mat, "name", jstr(name));
-	mat = jset(mat, "pbrMetallicRoughness", pbr);
+	pbr = json_out_set(pbr, "baseColorFactor", jvec(color, 4));
+	pbr = json_out_set(pbr, "metallicFactor", jint(0));
+	pbr = json_out_set(pbr, "roughnessFactor", jfloat(roughness));
+	mat = json_out_set(mat, "name", jstr(name));
+	mat = json_out_set(mat, "pbrMetallicRoughness", pbr);
 	if (double_sided)
-		mat = jset(mat, "doubleSided", json_object_new_boolean(1));
+		mat = json_out_set(mat, "doubleSided", json_object_new_boolean(1));
 	return mat;
 }
 
@@ -171,10 +147,10 @@ static int glb_build_json(struct glb *g, const struct tree_mesh *tm)
 
 	root = json_object_new_object();
 	asset = json_object_new_object();
-	asset = jset(asset, "version", jstr("2.0"));
-	asset = jset(asset, "generator", jstr("edaha"));
-	root = jset(root, "asset", asset);
-	root = jset(root, "scene", jint(0));
+	asset = json_out_set(asset, "version", jstr("2.0"));
+	asset = json_out_set(asset, "generator", jstr("edaha"));
+	root = json_out_set(root, "asset", asset);
+	root = json_out_set(root, "scene", jint(0));
 
 	primitives = json_object_new_array();
 	accessors = json_object_new_array();
@@ -191,10 +167,10 @@ static int glb_build_json(struct glb *g, const struct tree_mesh *tm)
 			continue;
 
 		pos = glb_accessor(name, "POSITION", first, GL_FLOAT, m->nvertices, "VEC3");
-		accessors = jpush(accessors, glb_bounds(pos, m));
-		accessors = jpush(accessors, glb_accessor(name, "NORMAL", first + 1, GL_FLOAT,
+		accessors = json_out_push(accessors, glb_bounds(pos, m));
+		accessors = json_out_push(accessors, glb_accessor(name, "NORMAL", first + 1, GL_FLOAT,
 							  m->nvertices, "VEC3"));
-		accessors = jpush(accessors, glb_accessor(name, "indices", first + 2,
+		accessors = json_out_push(accessors, glb_accessor(name, "indices", first + 2,
 							  GL_UNSIGNED_INT, m->nindices, "SCALAR"));
 		views = glb_add_view(g, views, m->positions, 3 * m->nvertices, true, GL_ARRAY_BUFFER);
 		views = glb_add_view(g, views, m->normals, 3 * m->nvertices, true, GL_ARRAY_BUFFER);
@@ -203,19 +179,19 @@ static int glb_build_json(struct glb *g, const struct tree_mesh *tm)
 
 		/* Accessors and bufferViews are numbered alike: three per primitive. */
 		attrs = json_object_new_object();
-		attrs = jset(attrs, "POSITION", jint(first));
-		attrs = jset(attrs, "NORMAL", jint(first + 1));
+		attrs = json_out_set(attrs, "POSITION", jint(first));
+		attrs = json_out_set(attrs, "NORMAL", jint(first + 1));
 		prim = json_object_new_object();
-		prim = jset(prim, "attributes", attrs);
-		prim = jset(prim, "indices", jint(first + 2));
-		prim = jset(prim, "material", jint(nprims));
-		prim = jset(prim, "mode", jint(GL_TRIANGLES));
-		primitives = jpush(primitives, prim);
+		prim = json_out_set(prim, "attributes", attrs);
+		prim = json_out_set(prim, "indices", jint(first + 2));
+		prim = json_out_set(prim, "material", jint(nprims));
+		prim = json_out_set(prim, "mode", jint(GL_TRIANGLES));
+		primitives = json_out_push(primitives, prim);
 
 		if (i == 0)
-			materials = jpush(materials, glb_material("bark", bark_color, 0.9, false));
+			materials = json_out_push(materials, glb_material("bark", bark_color, 0.9, false));
 		else
-			materials = jpush(materials, glb_material("leaves", leaves_color, 0.8, true));
+			materials = json_out_push(materials, glb_material("leaves", leaves_color, 0.8, true));
 		nprims++;
 	}
 
@@ -223,7 +199,7 @@ static int glb_build_json(struct glb *g, const struct tree_mesh *tm)
 	scenes = json_object_new_array();
 	if (nprims == 0) {
 		/* Nothing drawn yet: still a valid glTF, an empty scene. */
-		root = jset(root, "scenes", jpush(scenes, scene));
+		root = json_out_set(root, "scenes", json_out_push(scenes, scene));
 		json_object_put(primitives);
 		json_object_put(accessors);
 		json_object_put(views);
@@ -233,19 +209,19 @@ static int glb_build_json(struct glb *g, const struct tree_mesh *tm)
 		struct json_object *mesh = json_object_new_object();
 		struct json_object *buffer = json_object_new_object();
 
-		scene = jset(scene, "nodes", jpush(json_object_new_array(), jint(0)));
-		root = jset(root, "scenes", jpush(scenes, scene));
-		node = jset(node, "name", jstr("tree"));
-		node = jset(node, "mesh", jint(0));
-		root = jset(root, "nodes", jpush(json_object_new_array(), node));
-		mesh = jset(mesh, "name", jstr("tree"));
-		mesh = jset(mesh, "primitives", primitives);
-		root = jset(root, "meshes", jpush(json_object_new_array(), mesh));
-		root = jset(root, "accessors", accessors);
-		root = jset(root, "bufferViews", views);
-		buffer = jset(buffer, "byteLength", jint(g->bin_len));
-		root = jset(root, "buffers", jpush(json_object_new_array(), buffer));
-		root = jset(root, "materials", materials);
+		scene = json_out_set(scene, "nodes", json_out_push(json_object_new_array(), jint(0)));
+		root = json_out_set(root, "scenes", json_out_push(scenes, scene));
+		node = json_out_set(node, "name", jstr("tree"));
+		node = json_out_set(node, "mesh", jint(0));
+		root = json_out_set(root, "nodes", json_out_push(json_object_new_array(), node));
+		mesh = json_out_set(mesh, "name", jstr("tree"));
+		mesh = json_out_set(mesh, "primitives", primitives);
+		root = json_out_set(root, "meshes", json_out_push(json_object_new_array(), mesh));
+		root = json_out_set(root, "accessors", accessors);
+		root = json_out_set(root, "bufferViews", views);
+		buffer = json_out_set(buffer, "byteLength", jint(g->bin_len));
+		root = json_out_set(root, "buffers", json_out_push(json_object_new_array(), buffer));
+		root = json_out_set(root, "materials", materials);
 	}
 	g->root = root;
 	return root ? 0 : -ENOMEM;
@@ -325,23 +301,20 @@ static int glb_write(struct buf *out, const char *json, size_t json_len, const s
 int export_glb(const struct tree_mesh *m, struct buf *out)
 {
 	struct glb g;
-	size_t start = out->len, json_len;
-	const char *json;
+	struct buf json;
+	size_t start = out->len;
 	int r;
 
 	memset(&g, 0, sizeof(g));
+	buf_init(&json);
 	r = glb_build_json(&g, m);
 	if (r < 0)
 		return r;
-	/*
-	 * json-c's serialiser ignores most failed appends and returns a shortened text; a
-	 * failed allocation still sets errno (POSIX), so that is the check.
-	 */
-	errno = 0;
-	json = json_object_to_json_string_length(
-		g.root, JSON_C_TO_STRING_PLAIN | JSON_C_TO_STRING_NOSLASHESCAPE, &json_len);
-	r = json && errno != ENOMEM ? glb_write(out, json, json_len, &g) : -ENOMEM;
+	r = json_out_append(g.root, NULL, &json);
+	if (r == 0)
+		r = glb_write(out, (const char *)json.data, json.len, &g);
 	json_object_put(g.root);
+	buf_finish(&json);
 	if (r < 0)
 		out->len = start; /* no half-written file */
 	return r;

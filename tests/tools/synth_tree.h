@@ -8,6 +8,6 @@
 /*
  * A seeded random tree for tests and benchmarks: a trunk, then branches attached to
  * random points of earlier branches, each with `leaves_per_branch` small leaf polygons.
- * Same arguments, same tree. Returns 0 or -ENOMEM.
+ * Clears t (which must be initialised) first. Same arguments, same tree. 0 or -ENOMEM.
  */
 int synth_tree(struct tree *t, int nbranches, int leaves_per_branch, uint64_t seed);
