@@ -20,7 +20,8 @@ int file_read_all(const char *path, size_t max, char **data, size_t *len, struct
 
 	*data = NULL;
 	*len = 0;
-	fd = open(path, O_RDONLY | O_CLOEXEC);
+	/* Non-blocking open: a FIFO without a writer must not hang the kiosk. */
+	fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK);
 	if (fd < 0)
 		return error_at(err, -errno, path, 0, "%s", strerror(errno));
 	if (fstat(fd, &st) < 0) {
@@ -31,7 +32,17 @@ int file_read_all(const char *path, size_t max, char **data, size_t *len, struct
 		ret = error_at(err, -EISDIR, path, 0, "%s", strerror(EISDIR));
 		goto out;
 	}
-	/* Refuse early, before reading it all only to throw it away (pipes have no size). */
+	/* Files and pipes (`--replay <(...)`); never devices such as /dev/zero. */
+	if (!S_ISREG(st.st_mode) && !S_ISFIFO(st.st_mode)) {
+		ret = error_at(err, -EINVAL, path, 0, "not a regular file or a pipe");
+		goto out;
+	}
+	/* A pipe without a writer reads as empty now; one with a writer is waited for. */
+	if (fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK) < 0) {
+		ret = error_at(err, -errno, path, 0, "%s", strerror(errno));
+		goto out;
+	}
+	/* Refuse early, before reading it all only to throw it away. */
 	if (S_ISREG(st.st_mode) && (uintmax_t)st.st_size > (uintmax_t)max) {
 		ret = error_at(err, -EFBIG, path, 0, "file too large (%jd bytes, limit %zu MiB)",
 			       (intmax_t)st.st_size, max >> 20);

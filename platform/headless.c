@@ -12,10 +12,15 @@
 #include "render.h"
 #include "trace.h"
 
-#define MAX_DOC_BYTES (64u << 20)
 /* Gaps put between inputs given one after another, so time always moves forward. */
 #define GAP_BETWEEN_INPUTS_US 100000
 #define PRESS_LENGTH_US 50000
+
+/* Exit status for a failure to read input: the input's fault (2) or the machine's (1). */
+static int input_status(int err)
+{
+	return err == -ENOMEM || err == -EIO ? 1 : 2;
+}
 
 struct run {
 	const struct options *o;
@@ -42,6 +47,7 @@ static void replay(struct run *r, const struct trace *t)
 	/* Each trace starts after what came before, whatever its own clock said. */
 	if (t->nevents && t->events[0].time_us <= r->now_us)
 		offset = r->now_us + GAP_BETWEEN_INPUTS_US - t->events[0].time_us;
+	/* Parsers cap times far below this, so the sums below cannot wrap. */
 	for (size_t i = 0; i < t->nevents; i++) {
 		struct event ev = t->events[i];
 
@@ -69,14 +75,14 @@ static int load_doc(struct run *r, const char *path)
 	size_t len;
 	int ret;
 
-	ret = file_read_all(path, MAX_DOC_BYTES, &data, &len, &err);
+	ret = file_read_all(path, DOC_MAX_FILE_BYTES, &data, &len, &err);
 	if (ret == 0) {
 		ret = doc_parse(data, len, path, &doc, &err);
 		free(data);
 	}
 	if (ret < 0) {
 		fprintf(stderr, "edaha: %s\n", err.msg);
-		return 2;
+		return input_status(ret);
 	}
 	if (r->o->seed_given && doc.seed != r->o->seed)
 		fprintf(stderr, "edaha: %s keeps its own seed %llu; --seed ignored\n", path,
@@ -94,13 +100,15 @@ static int load_traces(const struct options *o, struct trace *traces)
 {
 	for (size_t i = 0; i < o->nsteps; i++) {
 		struct error err = { { 0 } };
+		int ret;
 
 		trace_init(&traces[i]);
 		if (o->steps[i].kind != STEP_REPLAY)
 			continue;
-		if (trace_load(o->steps[i].path, o->width, o->height, &traces[i], &err) < 0) {
+		ret = trace_load(o->steps[i].path, o->width, o->height, &traces[i], &err);
+		if (ret < 0) {
 			fprintf(stderr, "edaha: %s\n", err.msg);
-			return 2;
+			return input_status(ret);
 		}
 	}
 	return 0;

@@ -180,7 +180,7 @@ int options_parse(struct options *o, int argc, char **argv)
 		return 0;
 	if (!o->headless && (o->out_dir || o->nsteps))
 		return usage_error("%s needs --headless", o->out_dir ? "--out" : "--replay/--press");
-	if (o->headless && !o->out_dir)
+	if (o->headless && (!o->out_dir || !o->out_dir[0]))
 		return usage_error("%s needs --out DIR", "--headless");
 	return 0;
 }

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "fileio.h"
+#include "trace_private.h"
 
 /* A replay is a few hours of pen input at most; anything bigger is a mistake. */
 #define TRACE_MAX_FILE_SIZE ((size_t)256 * 1024 * 1024)
@@ -38,6 +39,34 @@ int trace_append(struct trace *t, const struct event *ev)
 	}
 	t->events[t->nevents++] = *ev;
 	return 0;
+}
+
+const char *trace_quote(const char *s, size_t len, char *buf, size_t size)
+{
+	size_t o = 0, i;
+
+	/* Leaves room for one more escape, "...", the closing quote and the NUL. */
+	buf[o++] = '"';
+	for (i = 0; i < len && o + 8 < size; i++) {
+		unsigned char c = (unsigned char)s[i];
+
+		if (c >= 0x20 && c < 0x7f && c != '"' && c != '\\')
+			buf[o++] = (char)c;
+		else
+			o += (size_t)snprintf(buf + o, size - o, "\\x%02x", c);
+	}
+	if (i < len) {
+		memcpy(buf + o, "...", 3);
+		o += 3;
+	}
+	buf[o++] = '"';
+	buf[o] = '\0';
+	return buf;
+}
+
+double trace_clamp(double v, double lo, double hi)
+{
+	return v < lo ? lo : v > hi ? hi : v;
 }
 
 static bool is_blank(char c)

@@ -3,6 +3,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 
 #include "error.h"
@@ -13,6 +14,12 @@
  * and `libinput record` YAML (version 1). Both become the same struct event sequence,
  * with positions in pixels of a screen of the size given to the parser.
  */
+/*
+ * Event times above this (2^62 us, some 146,000 years) are refused by the parsers, so that
+ * whoever replays a trace can add gaps and offsets to its times without overflowing.
+ */
+#define TRACE_MAX_TIME_US ((uint64_t)1 << 62)
+
 struct trace {
 	struct event *events;
 	size_t nevents, cap;
@@ -35,8 +42,9 @@ int trace_parse(const char *data, size_t len, const char *name, int screen_w, in
 /* Reads a file and parses it; -errno for I/O errors, -EFBIG past 256 MiB. */
 int trace_load(const char *path, int screen_w, int screen_h, struct trace *t, struct error *err);
 
-/* Writes edaha traces (--record). Times that go backwards and pressure/tilt a hair out
- * of range are clamped so the file always reads back; non-finite positions give -EINVAL. */
+/* Writes edaha traces (--record). Times that go backwards or past TRACE_MAX_TIME_US and
+ * pressure/tilt a hair out of range are clamped so the file always reads back;
+ * non-finite positions give -EINVAL. */
 struct trace_writer;
 struct trace_writer *trace_writer_create(const char *path, int screen_w, int screen_h,
 					 struct error *err);

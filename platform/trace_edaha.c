@@ -4,6 +4,7 @@
  * whitespace separated fields, positions in pixels of the `screen` the file declares.
  */
 #include "trace.h"
+#include "trace_private.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -38,30 +39,7 @@ struct edaha_parser {
 	struct trace out;
 };
 
-/* Quotes a field for a message: printable ASCII only, and not too long. */
-static const char *quote(const char *s, char *buf, size_t size)
-{
-	size_t o = 0;
-
-	buf[o++] = '"';
-	for (; *s && o + 8 < size; s++) {
-		unsigned char c = (unsigned char)*s;
-
-		if (c >= 0x20 && c < 0x7f && c != '"' && c != '\\')
-			buf[o++] = (char)c;
-		else
-			o += (size_t)snprintf(buf + o, size - o, "\\x%02x", c);
-	}
-	if (*s) {
-		memcpy(buf + o, "...", 3);
-		o += 3;
-	}
-	buf[o++] = '"';
-	buf[o] = '\0';
-	return buf;
-}
-
-#define Q(s) quote((s), (char[64]){ 0 }, 64)
+#define Q(s) TRACE_Q((s), strlen(s))
 
 static int fail(struct edaha_parser *p, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
@@ -312,6 +290,18 @@ static int parse_pen_button(struct edaha_parser *p, struct event *ev)
 	return parse_pen_state(p, 4, ev);
 }
 
+/* Appends " name" (no space first) to a list for a message; a list too long is cut. */
+static void append_name(char *names, size_t size, size_t *o, const char *name)
+{
+	int n;
+
+	if (!name || *o >= size)
+		return;
+	n = snprintf(names + *o, size - *o, "%s%s", *o ? " " : "", name);
+	if (n > 0)
+		*o += (size_t)n;
+}
+
 static int parse_button(struct edaha_parser *p, struct event *ev)
 {
 	enum button button;
@@ -324,9 +314,8 @@ static int parse_button(struct edaha_parser *p, struct event *ev)
 		size_t o = 0;
 
 		names[0] = '\0';
-		for (int b = 0; b < BUTTON_COUNT && o < sizeof(names); b++)
-			o += (size_t)snprintf(names + o, sizeof(names) - o, "%s%s", b ? " " : "",
-					      button_name((enum button)b));
+		for (int b = 0; b < BUTTON_COUNT; b++)
+			append_name(names, sizeof(names), &o, button_name((enum button)b));
 		return fail(p, "unknown button %s (valid: %s)", Q(p->fields[2]), names);
 	}
 	ev->button = (int)button;
@@ -345,11 +334,20 @@ static int parse_event(struct edaha_parser *p, struct event *ev)
 	if (!parse_uint(p->fields[0], &ev->time_us))
 		return fail(p, "bad time %s (expected microseconds, an unsigned integer)",
 			    Q(p->fields[0]));
-	if (!event_type_from_name(p->fields[1], &ev->type))
-		return fail(p,
-			    "unknown event %s (valid: proximity-in proximity-out tip-down tip-up "
-			    "motion pen-button button)",
-			    Q(p->fields[1]));
+	if (ev->time_us > TRACE_MAX_TIME_US)
+		return fail(p, "time %" PRIu64 " too large (limit %" PRIu64 " us)", ev->time_us,
+			    TRACE_MAX_TIME_US);
+	if (!event_type_from_name(p->fields[1], &ev->type)) {
+		char names[256];
+		size_t o = 0;
+
+		/* From the table, like the buttons: the list can't go stale. Types are
+		 * numbered from EVENT_PROXIMITY_IN with no gaps. */
+		names[0] = '\0';
+		for (int type = EVENT_PROXIMITY_IN; event_type_name((enum event_type)type); type++)
+			append_name(names, sizeof(names), &o, event_type_name((enum event_type)type));
+		return fail(p, "unknown event %s (valid: %s)", Q(p->fields[1]), names);
+	}
 
 	switch (ev->type) {
 	case EVENT_PEN_BUTTON:

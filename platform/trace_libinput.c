@@ -8,6 +8,7 @@
  * of a long session has millions of nodes and the loader keeps them all.
  */
 #include "trace.h"
+#include "trace_private.h"
 
 #include <errno.h>
 #include <inttypes.h>
@@ -205,29 +206,8 @@ static bool is_null(const yaml_event_t *ev)
 	return strcmp(v, "") == 0 || strcmp(v, "~") == 0 || strcmp(v, "null") == 0;
 }
 
-/* Quoted scalar for messages: printable ASCII, cut short. */
-static const char *quote_scalar(const yaml_event_t *ev, char *buf, size_t size)
-{
-	const unsigned char *s = ev->data.scalar.value;
-	size_t n = ev->data.scalar.length, o = 0, i;
-
-	buf[o++] = '"';
-	for (i = 0; i < n && o + 8 < size; i++) {
-		if (s[i] >= 0x20 && s[i] < 0x7f && s[i] != '"' && s[i] != '\\')
-			buf[o++] = (char)s[i];
-		else
-			o += (size_t)snprintf(buf + o, size - o, "\\x%02x", s[i]);
-	}
-	if (i < n) {
-		memcpy(buf + o, "...", 3);
-		o += 3;
-	}
-	buf[o++] = '"';
-	buf[o] = '\0';
-	return buf;
-}
-
-#define QS(ev) quote_scalar((ev), (char[48]){ 0 }, 48)
+/* The current scalar, quoted for a message. */
+#define QS(ev) TRACE_Q((const char *)(ev)->data.scalar.value, (ev)->data.scalar.length)
 
 /* The current event must be an integer scalar within lo..hi. */
 static int scalar_int(struct li_parser *p, int64_t lo, int64_t hi, const char *what,
@@ -465,10 +445,18 @@ static int row_item(struct li_parser *p, void *data)
 	r = int_list(p, "evdev row [sec, usec, type, code, value]", v, 5);
 	if (r < 0)
 		return r;
-	/* sec and usec below 10^12 keep sec * 10^6 + usec far from overflowing. */
-	if (v[0] < 0 || v[0] >= 1000000000000 || v[1] < 0 || v[1] >= 1000000000000)
-		return fail_at(p, line, "bad evdev row: time %" PRId64 ".%06" PRId64 " out of range",
-			       v[0], v[1]);
+	/* A struct timeval since the recording began: libinput record normalises usec. */
+	if (v[0] < 0)
+		return fail_at(p, line, "bad evdev row: sec %" PRId64 " is negative", v[0]);
+	if (v[1] < 0 || v[1] > 999999)
+		return fail_at(p, line, "bad evdev row: usec %" PRId64 " out of range 0..999999",
+			       v[1]);
+	/* Compared in seconds first, so that sec * 10^6 cannot overflow. */
+	if ((uint64_t)v[0] > TRACE_MAX_TIME_US / 1000000 ||
+	    (uint64_t)v[0] * 1000000u + (uint64_t)v[1] > TRACE_MAX_TIME_US)
+		return fail_at(p, line, "bad evdev row: time %" PRId64 ".%06" PRId64
+			       " s too large (limit %" PRIu64 ".%06" PRIu64 " s)", v[0], v[1],
+			       TRACE_MAX_TIME_US / 1000000, TRACE_MAX_TIME_US % 1000000);
 	if (v[2] < 0 || v[2] > 0xffff || v[3] < 0 || v[3] > 0xffff)
 		return fail_at(p, line, "bad evdev row: type %" PRId64 " code %" PRId64
 			       " out of range", v[2], v[3]);
@@ -535,11 +523,6 @@ static double normalized(const struct absinfo *abs, int32_t v)
 	return ((double)v - (double)abs->min) / ((double)abs->max - (double)abs->min);
 }
 
-static double clamp(double v, double lo, double hi)
-{
-	return v < lo ? lo : v > hi ? hi : v;
-}
-
 /* libinput 1.22's adjust_tilt(). */
 static double tilt_degrees(const struct absinfo *abs, int32_t v)
 {
@@ -550,7 +533,7 @@ static double tilt_degrees(const struct absinfo *abs, int32_t v)
 		deg = (double)v / (double)abs->resolution * (180.0 / PI);
 	else
 		deg = (normalized(abs, v) * 2.0 - 1.0) * DEFAULT_TILT_DEGREES;
-	return clamp(deg, -90.0, 90.0);
+	return trace_clamp(deg, -90.0, 90.0);
 }
 
 static double screen_pos(const struct absinfo *abs, int32_t v, int screen)
@@ -587,7 +570,7 @@ static int emit(struct li_parser *p, struct pen *pen, enum event_type type, uint
 	ev.x = screen_pos(&dev->abs[AX_X], pen->value[AX_X], p->screen_w);
 	ev.y = screen_pos(&dev->abs[AX_Y], pen->value[AX_Y], p->screen_h);
 	if (has_axis(dev, AX_PRESSURE))
-		ev.pressure = clamp(normalized(&dev->abs[AX_PRESSURE], pen->value[AX_PRESSURE]),
+		ev.pressure = trace_clamp(normalized(&dev->abs[AX_PRESSURE], pen->value[AX_PRESSURE]),
 				    0.0, 1.0);
 	else
 		ev.pressure = pen->tip ? 1.0 : 0.0;
@@ -715,7 +698,7 @@ static int run_frames(struct li_parser *p, const struct device *dev, struct trac
 	/* Before any event an axis sits at 0, or the end of its range nearest to it. */
 	for (int a = 0; a < AX_COUNT; a++) {
 		if (has_axis(dev, (enum axis)a))
-			pen.value[a] = (int32_t)clamp(0.0, (double)dev->abs[a].min,
+			pen.value[a] = (int32_t)trace_clamp(0.0, (double)dev->abs[a].min,
 						      (double)dev->abs[a].max);
 	}
 	memcpy(pen.committed, pen.value, sizeof(pen.value));

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Writes edaha traces (docs/trace-format.md) for `edaha --record`. */
 #include "trace.h"
+#include "trace_private.h"
 
 #include <errno.h>
 #include <inttypes.h>
@@ -28,7 +29,7 @@ int trace_format_event(const struct event *ev, char *line, size_t size)
 	const char *name;
 	int n;
 
-	if (!type)
+	if (!type || ev->time_us > TRACE_MAX_TIME_US)
 		return -EINVAL;
 	/* %.17g: enough digits that strtod gives back the very same double. */
 	switch (ev->type) {
@@ -61,11 +62,6 @@ int trace_format_event(const struct event *ev, char *line, size_t size)
 	if ((size_t)n >= size)
 		return -ENOSPC;
 	return n;
-}
-
-static double clamp(double v, double lo, double hi)
-{
-	return v < lo ? lo : v > hi ? hi : v;
 }
 
 struct trace_writer *trace_writer_create(const char *path, int screen_w, int screen_h,
@@ -110,13 +106,16 @@ int trace_writer_write(struct trace_writer *w, const struct event *ev)
 	/*
 	 * A recording must always read back. Events come from several clocks (tablet,
 	 * GPIO) and devices may overshoot their ranges by a hair: clamp rather than lose
-	 * the session. Non-finite positions have no sensible fix and are refused.
+	 * the session. A replay may push times past the parsers' limit by its gaps:
+	 * they stop there. Non-finite positions have no sensible fix and are refused.
 	 */
 	if (e.time_us < w->last_time)
 		e.time_us = w->last_time;
-	e.pressure = clamp(e.pressure, 0.0, 1.0);
-	e.tilt_x = clamp(e.tilt_x, -90.0, 90.0);
-	e.tilt_y = clamp(e.tilt_y, -90.0, 90.0);
+	if (e.time_us > TRACE_MAX_TIME_US)
+		e.time_us = TRACE_MAX_TIME_US;
+	e.pressure = trace_clamp(e.pressure, 0.0, 1.0);
+	e.tilt_x = trace_clamp(e.tilt_x, -90.0, 90.0);
+	e.tilt_y = trace_clamp(e.tilt_y, -90.0, 90.0);
 	n = trace_format_event(&e, line, sizeof(line));
 	if (n < 0)
 		return n;

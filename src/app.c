@@ -103,15 +103,32 @@ static void update_pen(struct app *app, const struct event *ev)
 	app->pen.tilt_y = ev->tilt_y;
 }
 
+/* The pen can report positions off the screen (and traces any finite number): what
+ * is drawn is what lands on the screen. */
+static double clamp(double v, double lo, double hi)
+{
+	return v < lo ? lo : v > hi ? hi : v;
+}
+
+/* Stored values avoid subnormal floats, which not every reader takes back. */
+static float quantize(double v)
+{
+	return fabs(v) < 1e-9 ? 0.0f : (float)v;
+}
+
 static int stroke_add(struct app *app, const struct event *ev)
 {
 	struct app_stroke *s = &app->stroke;
 	struct app_point *last = s->npoints ? &s->points[s->npoints - 1] : NULL;
+	double x = clamp(ev->x, 0, app->view.width), y = clamp(ev->y, 0, app->view.height);
+	double pressure = clamp(ev->pressure, 0, 1);
 
-	if (last && last->x == ev->x && last->y == ev->y) {
-		last->pressure = ev->pressure > last->pressure ? ev->pressure : last->pressure;
+	if (last && last->x == x && last->y == y) {
+		last->pressure = pressure > last->pressure ? pressure : last->pressure;
 		return 0;
 	}
+	if (s->npoints == DOC_MAX_STROKE_POINTS)
+		return 0; /* an endless stroke keeps its first part */
 	if (s->npoints == s->cap) {
 		size_t cap = s->cap ? s->cap * 2 : 256;
 		struct app_point *p = realloc(s->points, cap * sizeof(*p));
@@ -121,7 +138,7 @@ static int stroke_add(struct app *app, const struct event *ev)
 		s->points = p;
 		s->cap = cap;
 	}
-	s->points[s->npoints++] = (struct app_point){ ev->x, ev->y, ev->pressure, ev->time_us };
+	s->points[s->npoints++] = (struct app_point){ x, y, pressure, ev->time_us };
 	return 0;
 }
 
@@ -151,16 +168,17 @@ static int stroke_commit(struct app *app)
 		uint64_t dt = a->time_us - op.time_us;
 
 		op.points[i] = (struct doc_point){
-			.x = (float)w.x,
-			.y = (float)w.y,
-			.pressure = (float)a->pressure,
+			.x = quantize(w.x),
+			.y = quantize(w.y),
+			.pressure = quantize(a->pressure),
 			.dt_us = dt > UINT32_MAX ? UINT32_MAX : (uint32_t)dt,
 		};
 	}
 	s->npoints = 0;
 	ret = push_op(app, &op);
 	doc_op_finish(&op);
-	return ret;
+	/* A full drawing takes no more strokes; the visitor can still undo or start anew. */
+	return ret == -ENOSPC ? 0 : ret;
 }
 
 static void set_mode(struct app *app, enum app_mode mode)
@@ -172,6 +190,7 @@ static void set_mode(struct app *app, enum app_mode mode)
 static int press_button(struct app *app, enum button button, uint64_t time_us)
 {
 	struct doc_op op = { .kind = DOC_OP_NEW, .time_us = time_us };
+	int ret;
 
 	switch (button) {
 	case BUTTON_3D:
@@ -204,7 +223,8 @@ static int press_button(struct app *app, enum button button, uint64_t time_us)
 		app->mode = APP_MODE_SKETCH;
 		if (app->tree.nbranches == 0 && app->tree.nleaves == 0)
 			return 0;
-		return push_op(app, &op);
+		ret = push_op(app, &op);
+		return ret == -ENOSPC ? 0 : ret;
 	case BUTTON_COUNT:
 		break;
 	}

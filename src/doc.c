@@ -26,8 +26,24 @@ void doc_finish(struct doc *d)
 	doc_init(d, d->seed);
 }
 
+size_t doc_total_points(const struct doc *d)
+{
+	size_t n = 0;
+
+	for (size_t i = 0; i < d->nops; i++)
+		n += d->ops[i].npoints;
+	return n;
+}
+
 int doc_push(struct doc *d, struct doc_op *op)
 {
+	size_t kept = 0;
+
+	for (size_t i = 0; i < d->cursor; i++)
+		kept += d->ops[i].npoints;
+	if (d->cursor >= DOC_MAX_OPS || op->npoints > DOC_MAX_STROKE_POINTS ||
+	    kept + op->npoints > DOC_MAX_POINTS)
+		return -ENOSPC;
 	/* A new edit after undo forgets the undone ones, as every editor does. */
 	for (size_t i = d->cursor; i < d->nops; i++)
 		doc_op_finish(&d->ops[i]);

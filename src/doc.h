@@ -44,11 +44,26 @@ struct doc {
 
 #define DOC_FORMAT_VERSION 1
 
+/*
+ * Limits on a drawing, far beyond what a visitor draws in a day, so that a damaged or
+ * hostile file cannot make the kiosk build a mesh of gigabytes. The app never makes a
+ * document past them, so whatever edaha writes it can read back.
+ */
+#define DOC_MAX_OPS 20000u
+#define DOC_MAX_STROKE_POINTS 100000u
+#define DOC_MAX_POINTS 4000000u    /* in all strokes together */
+#define DOC_MAX_COORD_M 1000.0f    /* |x|, |y| on the sketch plane */
+#define DOC_MAX_FILE_BYTES (256u << 20)
+
 void doc_init(struct doc *d, uint64_t seed);
 void doc_finish(struct doc *d);
 void doc_op_finish(struct doc_op *op);
-/* Appends op at the cursor (dropping redo ops) and takes ownership of its points. */
+/* Appends op at the cursor (dropping redo ops) and takes ownership of its points.
+ * Returns 0, -ENOMEM, or -ENOSPC when the op would take the drawing past a DOC_MAX_ limit
+ * (op is left to the caller then). */
 int doc_push(struct doc *d, struct doc_op *op);
+/* Points in ops[0..nops). */
+size_t doc_total_points(const struct doc *d);
 bool doc_can_undo(const struct doc *d);
 bool doc_can_redo(const struct doc *d);
 bool doc_undo(struct doc *d);

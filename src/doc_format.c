@@ -12,7 +12,6 @@
 #include "tree.h"
 
 #define MAX_FIELDS 8
-#define MAX_STROKE_POINTS 1000000u
 
 int doc_serialize(const struct doc *d, const struct tree *t, struct buf *out)
 {
@@ -170,7 +169,7 @@ static int parse_stroke(struct reader *r, struct doc_op *op)
 				r->fields[1]);
 	if ((ret = parse_u64(r, r->fields[2], UINT64_MAX, &op->time_us, "time")) < 0)
 		return ret;
-	if ((ret = parse_u64(r, r->fields[3], MAX_STROKE_POINTS, &npoints, "point count")) < 0)
+	if ((ret = parse_u64(r, r->fields[3], DOC_MAX_STROKE_POINTS, &npoints, "point count")) < 0)
 		return ret;
 	if (npoints == 0)
 		return error_at(r->err, -EINVAL, r->name, r->line, "a stroke needs at least one point");
@@ -188,8 +187,8 @@ static int parse_stroke(struct reader *r, struct doc_op *op)
 					"file ends inside a stroke (%zu of %llu points)", op->npoints,
 					(unsigned long long)npoints);
 		if ((ret = expect_fields(r, 4, "a stroke point (x y pressure dt_us)")) < 0 ||
-		    (ret = parse_float(r, r->fields[0], -1e4f, 1e4f, &p->x, "x")) < 0 ||
-		    (ret = parse_float(r, r->fields[1], -1e4f, 1e4f, &p->y, "y")) < 0 ||
+		    (ret = parse_float(r, r->fields[0], -DOC_MAX_COORD_M, DOC_MAX_COORD_M, &p->x, "x")) < 0 ||
+		    (ret = parse_float(r, r->fields[1], -DOC_MAX_COORD_M, DOC_MAX_COORD_M, &p->y, "y")) < 0 ||
 		    (ret = parse_float(r, r->fields[2], 0.0f, 1.0f, &p->pressure, "pressure")) < 0 ||
 		    (ret = parse_u64(r, r->fields[3], UINT32_MAX, &v, "dt_us")) < 0)
 			return ret;
@@ -245,7 +244,7 @@ static int parse_body(struct reader *r, struct doc *d)
 			if (have_history)
 				return error_at(r->err, -EINVAL, r->name, r->line, "second history line");
 			if ((ret = expect_fields(r, 3, "history")) < 0 ||
-			    (ret = parse_u64(r, r->fields[1], 10000000, &nops, "op count")) < 0 ||
+			    (ret = parse_u64(r, r->fields[1], DOC_MAX_OPS, &nops, "op count")) < 0 ||
 			    (ret = parse_u64(r, r->fields[2], nops, &cursor, "cursor")) < 0)
 				return ret;
 			have_history = true;
@@ -269,7 +268,11 @@ static int parse_body(struct reader *r, struct doc *d)
 			if (ret == 0) {
 				d->cursor = d->nops; /* append, never truncate, while loading */
 				ret = doc_push(d, &op);
-				if (ret < 0)
+				if (ret == -ENOSPC)
+					ret = error_at(r->err, -EINVAL, r->name, r->line,
+						       "the drawing has more than %u points in all",
+						       DOC_MAX_POINTS);
+				else if (ret < 0)
 					error_at(r->err, ret, r->name, r->line, "out of memory");
 			}
 			doc_op_finish(&op);

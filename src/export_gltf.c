@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 #include "export.h"
+#include "numfmt.h"
 
 #include <errno.h>
 #include <stdbool.h>
@@ -22,9 +23,8 @@
 #define GL_ARRAY_BUFFER 34962
 #define GL_ELEMENT_ARRAY_BUFFER 34963
 
-/* Materials; the same colours as the OBJ exporter's MTL (export_obj.c). */
-static const double bark_color[4] = { 0.33, 0.22, 0.13, 1.0 };
-static const double leaves_color[4] = { 0.24, 0.52, 0.16, 1.0 };
+static const double bark_color[4] = { MATERIAL_BARK_RGB, 1.0 };
+static const double leaves_color[4] = { MATERIAL_LEAVES_RGB, 1.0 };
 
 static struct json_object *jint(size_t v)
 {

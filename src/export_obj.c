@@ -1,48 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 #include "export.h"
+#include "numfmt.h"
 
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-/* Materials; the same colours as the glTF exporter's (export_gltf.c). */
-static const double bark_color[3] = { 0.33, 0.22, 0.13 };
-static const double leaves_color[3] = { 0.24, 0.52, 0.16 };
-
-/*
- * "%.6f" without printf: rounded to millionths by integer arithmetic. A tree has hundreds
- * of thousands of these numbers, and this needs no locale. Never prints "-0.000000".
- */
-static size_t fmt_fixed6(char *out, double v)
-{
-	char digits[24];
-	unsigned long long a, ip;
-	long long q;
-	size_t n = 0, len = 0;
-
-	if (!isfinite(v))
-		v = 0.0;
-	/* Beyond a million kilometres: not a tree, but still a number. */
-	if (fabs(v) >= 1e12)
-		return (size_t)snprintf(out, 32, "%.6f", v);
-	q = llround(v * 1e6);
-	if (q < 0)
-		out[len++] = '-';
-	a = q < 0 ? (unsigned long long)-q : (unsigned long long)q;
-	ip = a / 1000000;
-	do {
-		digits[n++] = (char)('0' + ip % 10);
-		ip /= 10;
-	} while (ip);
-	while (n)
-		out[len++] = digits[--n];
-	out[len++] = '.';
-	a %= 1000000;
-	for (unsigned long long d = 100000; d; d /= 10)
-		out[len++] = (char)('0' + a / d % 10);
-	return len;
-}
+static const double bark_color[3] = { MATERIAL_BARK_RGB };
+static const double leaves_color[3] = { MATERIAL_LEAVES_RGB };
 
 static size_t fmt_u32(char *out, uint32_t v)
 {
@@ -69,7 +35,7 @@ static int obj_vec3s(struct buf *obj, const char *tag, const float *v, size_t n,
 		memcpy(line, tag, len);
 		for (int c = 0; c < 3; c++) {
 			line[len++] = ' ';
-			len += fmt_fixed6(line + len, sign * v[3 * i + (size_t)c]);
+			len += numfmt_micro(line + len, sign * v[3 * i + (size_t)c], false);
 		}
 		line[len++] = '\n';
 		r = buf_append(obj, line, len);

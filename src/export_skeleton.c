@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 #include "export.h"
+#include "numfmt.h"
 
 #include <errno.h>
 #include <math.h>
@@ -18,42 +19,10 @@
  */
 static struct json_object *jnum(double v)
 {
-	char s[48], digits[24];
-	unsigned long long a;
-	long long q;
-	size_t len = 0, n = 0;
-	int frac = 6;
+	char s[NUMFMT_MAX];
 
-	if (!isfinite(v))
-		v = 0.0;
-	if (fabs(v) >= 1e12) {
-		/* Not a tree any more, but keep it a plain JSON number. */
-		snprintf(s, sizeof(s), "%.0f", v);
-		return json_object_new_double_s(v, s);
-	}
-	q = llround(v * 1e6);
-	if (q == 0)
-		return json_object_new_double_s(0.0, "0");
-
-	/* Integer digits, not printf: exact, fast (a tree has ~10^5 numbers), no locale. */
-	a = q < 0 ? (unsigned long long)-q : (unsigned long long)q;
-	while (frac > 0 && a % 10 == 0) {
-		a /= 10;
-		frac--;
-	}
-	do {
-		digits[n++] = (char)('0' + a % 10);
-		a /= 10;
-	} while (a || (int)n <= frac);
-	if (q < 0)
-		s[len++] = '-';
-	while (n) {
-		if ((int)n == frac)
-			s[len++] = '.';
-		s[len++] = digits[--n];
-	}
-	s[len] = '\0';
-	return json_object_new_double_s((double)q / 1e6, s);
+	numfmt_micro(s, v, true);
+	return json_object_new_double_s(round(v * 1e6) / 1e6, s);
 }
 
 static struct json_object *jpoints(const struct vec3 *p, size_t n)

@@ -8,7 +8,6 @@
 #include <string.h>
 
 /* M_PI is POSIX, not C11. */
-#define MESH_PI 3.14159265358979323846
 
 /* Tubes never get thinner than this, so no ring collapses into a point (no zero-area faces). */
 #define TUBE_MIN_RADIUS 0.0005
@@ -379,8 +378,8 @@ static int tube_build(struct mesh *m, const struct branch *br, struct scratch *s
 		rmax = sc->r[i] > rmax ? sc->r[i] : rmax;
 	rg.sides = tube_sides(rmax);
 	for (int j = 0; j < rg.sides; j++) {
-		rg.cs[j] = cos(2.0 * MESH_PI * j / rg.sides);
-		rg.sn[j] = sin(2.0 * MESH_PI * j / rg.sides);
+		rg.cs[j] = cos(2.0 * VEC_PI * j / rg.sides);
+		rg.sn[j] = sin(2.0 * VEC_PI * j / rg.sides);
 	}
 
 	/* k rings + root disc + tip cone; 2 triangles a side per ring gap, 1 per side per cap */

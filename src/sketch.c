@@ -22,10 +22,17 @@ static double polyline_length(const struct vec3 *p, size_t n)
 int sketch_resample(const struct vec3 *in, size_t n, double step, struct vec3 **out, size_t *nout)
 {
 	double len = polyline_length(in, n);
-	size_t count = (size_t)(len / step) + 2, k = 0;
-	struct vec3 *p = malloc(count * sizeof(*p));
-	double next = step, walked = 0.0;
+	size_t count, k = 0;
+	struct vec3 *p;
+	double next, walked = 0.0;
 
+	if (!isfinite(len) || !(step > 0))
+		return -EINVAL;
+	if (len / step > SKETCH_MAX_SAMPLES - 2)
+		step = len / (SKETCH_MAX_SAMPLES - 2);
+	count = (size_t)(len / step) + 2;
+	next = step;
+	p = malloc(count * sizeof(*p));
 	if (!p)
 		return -ENOMEM;
 	if (n == 0) {
@@ -119,6 +126,10 @@ static int add_branch(struct tree *t, struct vec3 *p, size_t n)
 		struct vec3 shift;
 
 		hit = sketch_nearest(t, p[0]);
+		if (hit.branch < 0) {
+			free(radii);
+			return 0;
+		}
 		shift = vec3_sub(hit.point, p[0]);
 		for (size_t i = 0; i < n; i++) {
 			double w = len > 0 ? 1.0 - walked / len : 0.0;
@@ -158,9 +169,22 @@ static int add_leaf(struct tree *t, const struct vec3 *p, size_t n)
 		if (h.dist < best.dist)
 			best = h;
 	}
+	if (best.branch < 0)
+		return 0;
 	/* The polygon closes itself: drop the end point that returned to the start. */
 	ret = tree_add_leaf(t, best.branch, ORIGIN_SKETCH, p, n - 1);
 	return ret < 0 ? ret : 0;
+}
+
+static size_t sketched_points(const struct tree *t)
+{
+	size_t n = 0;
+
+	for (size_t i = 0; i < t->nbranches; i++)
+		n += t->branches[i].origin == ORIGIN_SKETCH ? t->branches[i].npoints : 0;
+	for (size_t i = 0; i < t->nleaves; i++)
+		n += t->leaves[i].origin == ORIGIN_SKETCH ? t->leaves[i].npoints : 0;
+	return n;
 }
 
 int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
@@ -183,8 +207,14 @@ int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
 	}
 	ret = sketch_resample(raw, op->npoints, SKETCH_STEP_M, &p, &n);
 	free(raw);
+	if (ret == -EINVAL)
+		return 0;
 	if (ret < 0)
 		return ret;
+	if (sketched_points(t) + n > SKETCH_MAX_TREE_POINTS) {
+		free(p);
+		return 0;
+	}
 	if (sketch_is_closed(p, n))
 		ret = add_leaf(t, p, n);
 	else

@@ -12,6 +12,11 @@
 #define SKETCH_STEP_M 0.05
 /* Strokes shorter than this are taps, not drawings. */
 #define SKETCH_MIN_LENGTH_M 0.1
+/* At most this many samples a stroke: a longer stroke is sampled more coarsely. */
+#define SKETCH_MAX_SAMPLES 4096
+/* A sketch stroke that would take the tree's sketched points past this makes nothing:
+ * it bounds the meshes a damaged or hostile drawing can ask for. */
+#define SKETCH_MAX_TREE_POINTS 200000
 
 struct sketch_hit {
 	int branch;      /* -1 if the tree has no branches */
@@ -25,7 +30,8 @@ struct sketch_hit {
 /* Nearest point on any branch to p (in the sketch plane's x/y). */
 struct sketch_hit sketch_nearest(const struct tree *t, struct vec3 p);
 
-/* Resamples a polyline by arc length at `step`; *out is malloc'ed. 0 or -ENOMEM. */
+/* Resamples a polyline by arc length at `step` (or coarser, to stay within
+ * SKETCH_MAX_SAMPLES); *out is malloc'ed. 0, -EINVAL (not finite) or -ENOMEM. */
 int sketch_resample(const struct vec3 *in, size_t n, double step, struct vec3 **out, size_t *nout);
 
 /* Whether a resampled stroke returns near its start: a leaf rather than a branch. */

@@ -3,6 +3,9 @@
 
 #include <math.h>
 
+/* M_PI is POSIX, not C11. */
+#define VEC_PI 3.14159265358979323846
+
 /* World coordinates: metres, y up, the sketch plane is z = 0 seen from +z. */
 struct vec3 {
 	double x, y, z;

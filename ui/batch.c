@@ -137,7 +137,7 @@ static size_t circle_segments(double r)
 	if (!(r > ARC_TOLERANCE_PX))
 		return MIN_CIRCLE_SEGMENTS;
 	step = 2.0 * acos(1.0 - ARC_TOLERANCE_PX / r);
-	n = (size_t)ceil(2.0 * BATCH_PI / step);
+	n = (size_t)ceil(2.0 * VEC_PI / step);
 	/* a multiple of 4, so rounded corners get whole quarters */
 	n = (n + 3) / 4 * 4;
 	if (n < MIN_CIRCLE_SEGMENTS)
@@ -155,7 +155,7 @@ void batch_disc(struct batch *b, struct pt centre, double r, struct rgba c)
 	if (!(r > 0.0) || !reserve(b, 3 * n))
 		return;
 	for (size_t i = 1; i <= n; i++) {
-		double a = 2.0 * BATCH_PI * (double)i / (double)n;
+		double a = 2.0 * VEC_PI * (double)i / (double)n;
 		struct pt p = { centre.x + r * cos(a), centre.y + r * sin(a) };
 
 		vertex(b, centre, c);
@@ -172,8 +172,8 @@ void batch_ring(struct batch *b, struct pt centre, double r_in, double r_out, st
 	if (!(r_out > r_in) || r_in < 0.0 || !reserve(b, 6 * n))
 		return;
 	for (size_t i = 0; i < n; i++) {
-		double a0 = 2.0 * BATCH_PI * (double)i / (double)n;
-		double a1 = 2.0 * BATCH_PI * (double)(i + 1) / (double)n;
+		double a0 = 2.0 * VEC_PI * (double)i / (double)n;
+		double a1 = 2.0 * VEC_PI * (double)(i + 1) / (double)n;
 		struct pt i0 = { centre.x + r_in * cos(a0), centre.y + r_in * sin(a0) };
 		struct pt o0 = { centre.x + r_out * cos(a0), centre.y + r_out * sin(a0) };
 		struct pt i1 = { centre.x + r_in * cos(a1), centre.y + r_in * sin(a1) };
@@ -237,10 +237,10 @@ static size_t rounded_outline(double x, double y, double w, double h, double rad
 
 	for (size_t corner = 0; corner < 4; corner++) {
 		/* top left starts facing left (pi); each corner turns a quarter clockwise */
-		double a0 = BATCH_PI + (double)corner * 0.5 * BATCH_PI;
+		double a0 = VEC_PI + (double)corner * 0.5 * VEC_PI;
 
 		for (size_t i = 0; i < per_corner; i++) {
-			double a = a0 + 0.5 * BATCH_PI * (double)i / (double)(per_corner - 1);
+			double a = a0 + 0.5 * VEC_PI * (double)i / (double)(per_corner - 1);
 
 			out[n++] = (struct pt){ centres[corner].x + radius * cos(a),
 						centres[corner].y + radius * sin(a) };

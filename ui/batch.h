@@ -4,6 +4,8 @@
 #include <stdbool.h>
 #include <stddef.h>
 
+#include "vec.h"
+
 /*
  * Flat-coloured triangles in screen pixels (origin top left, y down), collected on the
  * CPU and drawn with one call: the ground, the stroke, the cursor and the buttons.
@@ -12,7 +14,6 @@
  */
 
 /* M_PI is POSIX, not C11. */
-#define BATCH_PI 3.14159265358979323846
 
 struct rgba {
 	float r, g, b, a;

@@ -136,7 +136,7 @@ static void icon_leaf(const struct icon *ic)
 			/* one side tip to tip, the other back */
 			double t = side < 0 ? (double)i / 14.0 : 1.0 - (double)i / 14.0;
 			/* fuller towards the stalk, like a real leaf */
-			double w = 0.5 * sin(BATCH_PI * t) * (1.0 - 0.25 * t);
+			double w = 0.5 * sin(VEC_PI * t) * (1.0 - 0.25 * t);
 
 			outline[n++] = (struct pt){ ax + ux * len * t - uy * w * side,
 						    ay + uy * len * t + ux * w * side };
@@ -154,7 +154,7 @@ static void icon_propagate(const struct icon *ic)
 	const double ox = -0.72, oy = 0.72, reach = 1.5;
 
 	for (int i = 0; i < 3; i++) {
-		double a = -0.5 * BATCH_PI * (double)i / 2.0; /* right, up-right, up */
+		double a = -0.5 * VEC_PI * (double)i / 2.0; /* right, up-right, up */
 		double dx = cos(a), dy = sin(a);
 		double tx = ox + dx * reach, ty = oy + dy * reach;
 
@@ -169,7 +169,7 @@ static void icon_turn(const struct icon *ic, double mirror)
 {
 	const double cx = 0.08, cy = 0.12, r = 0.62;
 	/* from the lower right over the top to the left (y down: angles run clockwise) */
-	const double a0 = 0.3 * BATCH_PI, a1 = -0.92 * BATCH_PI;
+	const double a0 = 0.3 * VEC_PI, a1 = -0.92 * VEC_PI;
 	struct pt p[40];
 	size_t n = 0;
 	double ex, ey, dx, dy;

@@ -54,13 +54,13 @@ int main(void)
 
 		CHECK(d < 1e-4 || fabs(d - 20) < 1e-4);
 	}
-	CHECK_NEAR(total_area(&b), BATCH_PI * 400, BATCH_PI * 400 * 0.02);
+	CHECK_NEAR(total_area(&b), VEC_PI * 400, VEC_PI * 400 * 0.02);
 
 	/* a ring: the annulus's area */
 	batch_reset(&b);
 	batch_ring(&b, (struct pt){ 0, 0 }, 10, 12, red);
 	/* chords within a quarter pixel: a few percent short on so small a ring */
-	CHECK_NEAR(total_area(&b), BATCH_PI * (144 - 100), BATCH_PI * 44 * 0.04);
+	CHECK_NEAR(total_area(&b), VEC_PI * (144 - 100), VEC_PI * 44 * 0.04);
 
 	/* a taper between discs of radii 10 and 4, 30 apart: touches both circles at tangents */
 	batch_reset(&b);
@@ -85,13 +85,13 @@ int main(void)
 
 		CHECK(p.x >= 100 - 1e-4 && p.x <= 180 + 1e-4 && p.y >= 100 - 1e-4 && p.y <= 160 + 1e-4);
 	}
-	CHECK_NEAR(total_area(&b), 80 * 60 - (4 - BATCH_PI) * 144, 16.0);
+	CHECK_NEAR(total_area(&b), 80 * 60 - (4 - VEC_PI) * 144, 16.0);
 
 	/* its frame: the area between it and the rectangle inset by the width */
 	batch_reset(&b);
 	batch_rounded_frame(&b, 100, 100, 80, 60, 12, 3, red);
 	CHECK_NEAR(total_area(&b),
-		   (80 * 60 - (4 - BATCH_PI) * 144) - (74 * 54 - (4 - BATCH_PI) * 81), 10.0);
+		   (80 * 60 - (4 - VEC_PI) * 144) - (74 * 54 - (4 - VEC_PI) * 81), 10.0);
 
 	/* a polyline: both segments' bodies and three round ends/joins */
 	batch_reset(&b);

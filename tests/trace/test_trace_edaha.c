@@ -79,7 +79,7 @@ static size_t make_events(struct event *ev, size_t max)
 		ADD(.type = EVENT_BUTTON, .button = b, .pressed = true);
 		ADD(.type = EVENT_BUTTON, .button = b, .pressed = false);
 	}
-	t = UINT64_MAX - 1; /* the largest times still parse */
+	t = TRACE_MAX_TIME_US; /* the largest time still parses */
 	ADD(.type = EVENT_BUTTON, .button = BUTTON_UNDO, .pressed = true);
 #undef ADD
 	return n;
@@ -152,8 +152,15 @@ static void test_format(void)
 	CHECK_INT(trace_format_event(&ev, line, sizeof(line)), -EINVAL);
 	ev = (struct event){ .type = 0 };
 	CHECK_INT(trace_format_event(&ev, line, sizeof(line)), -EINVAL);
+	ev = (struct event){ .type = EVENT_BUTTON, .time_us = TRACE_MAX_TIME_US + 1 };
+	CHECK_INT(trace_format_event(&ev, line, sizeof(line)), -EINVAL);
+	ev.time_us = UINT64_MAX;
+	CHECK_INT(trace_format_event(&ev, line, sizeof(line)), -EINVAL);
+	ev.time_us = TRACE_MAX_TIME_US;
+	CHECK(trace_format_event(&ev, line, sizeof(line)) > 0);
+	CHECK(strcmp(line, "4611686018427387904 button 3d released\n") == 0);
 	/* The longest line fits TRACE_LINE_MAX. */
-	ev = (struct event){ .type = EVENT_PEN_BUTTON, .time_us = UINT64_MAX,
+	ev = (struct event){ .type = EVENT_PEN_BUTTON, .time_us = TRACE_MAX_TIME_US,
 			     .tool = EVENT_TOOL_ERASER, .button = EVENT_PEN_BUTTON_STYLUS2,
 			     .x = -DBL_MAX, .y = -DBL_MIN, .pressure = nextafter(0.0, 1.0),
 			     .tilt_x = -nextafter(90.0, 0.0), .tilt_y = -89.999999999999986 };
@@ -274,6 +281,12 @@ static const struct bad bad_inputs[] = {
 	{ "edaha-trace 1\nscreen 1280 800\n0x10 motion pen 1 2 0 0 0\n", 3, "bad time" },
 	{ "edaha-trace 1\nscreen 1280 800\n18446744073709551616 motion pen 1 2 0 0 0\n", 3,
 	  "bad time" },
+	/* Past 2^62 us: a replay adds gaps to times and must not overflow. */
+	{ "edaha-trace 1\nscreen 1280 800\n4611686018427387905 motion pen 1 2 0 0 0\n", 3,
+	  "time 4611686018427387905 too large (limit 4611686018427387904 us)" },
+	{ "edaha-trace 1\nscreen 1280 800\n5 motion pen 1 2 0 0 0\n18446744073709551615 button new "
+	  "pressed\n", 4, "time 18446744073709551615 too large" },
+	{ "edaha-trace 1\nscreen 1280 800\n04611686018427387905 hover\n", 3, "too large" },
 	{ "edaha-trace 1\nscreen 1280 800\n1300 motion pen 1 2 0 0 0\n1200 motion pen 1 2 0 0 0\n", 4,
 	  "time goes backwards (1200 < 1300)" },
 	{ "edaha-trace 1\nscreen 1280 800\n5 motion pencil 1 2 0 0 0\n", 3, "unknown tool \"pencil\"" },
@@ -432,12 +445,15 @@ static void test_writer_and_load(void)
 	CHECK(trace_writer_write(w, &e) == 0);
 	e.x = NAN;
 	CHECK_INT(trace_writer_write(w, &e), -EINVAL);
+	e = (struct event){ .type = EVENT_BUTTON, .time_us = UINT64_MAX, .pressed = true };
+	CHECK(trace_writer_write(w, &e) == 0); /* past the limit: stops there */
 	CHECK(trace_writer_destroy(w) == 0);
 	CHECK(trace_writer_destroy(NULL) == 0);
 	CHECK(trace_load(path, 640, 400, &t, &err) == 0);
-	CHECK_INT(t.nevents, 2);
+	CHECK_INT(t.nevents, 3);
 	CHECK(t.events[0].pressure == 1.0 && t.events[0].tilt_x == -90.0);
 	CHECK(t.events[1].time_us == 500 && t.events[1].pressure == 0.0);
+	CHECK(t.events[2].time_us == TRACE_MAX_TIME_US && t.events[2].type == EVENT_BUTTON);
 
 	/* I/O errors name the file and carry -errno. */
 	snprintf(missing, sizeof(missing), "%s/nope/rec.edaha-trace", dir);

@@ -496,7 +496,15 @@ static const struct bad bad_inputs[] = {
 	{ VPEN "  - evdev:\n    - [0, 0, 3, 0, [1]]\n", 13, "expected an integer" },
 	{ VPEN "  - evdev:\n    - 5\n", 13, "bad evdev row: expected [sec, usec, type, code, value], got a scalar" },
 	{ VPEN "  - evdev:\n    - [0, 0, 3, 0, 4294967296]\n", 13, "value 4294967296 out of range" },
-	{ VPEN "  - evdev:\n    - [-1, 0, 3, 0, 1]\n", 13, "time -1.000000 out of range" },
+	{ VPEN "  - evdev:\n    - [-1, 0, 3, 0, 1]\n", 13, "sec -1 is negative" },
+	{ VPEN "  - evdev:\n    - [0, -1, 3, 0, 1]\n", 13, "usec -1 out of range 0..999999" },
+	{ VPEN "  - evdev:\n    - [0, 1000000, 3, 0, 1]\n", 13, "usec 1000000 out of range 0..999999" },
+	/* Times stop at TRACE_MAX_TIME_US, 2^62 us; sec * 10^6 must not overflow first. */
+	{ VPEN "  - evdev:\n    - [4611686018427, 387905, 0, 0, 0]\n", 13,
+	  "time 4611686018427.387905 s too large (limit 4611686018427.387904 s)" },
+	{ VPEN "  - evdev:\n    - [4611686018428, 0, 0, 0, 0]\n", 13, "time 4611686018428.000000 s too large" },
+	{ VPEN "  - evdev:\n    - [18446744073709552, 0, 3, 0, 1]\n", 13, "too large" },
+	{ VPEN "  - evdev:\n    - [4611686018427387903, 999999, 3, 0, 1]\n", 13, "too large" },
 	{ VPEN "  - evdev:\n    - [0, 0, 3, 65536, 1]\n", 13, "code 65536 out of range" },
 	{ VPEN "  - evdev:\n    - [0, 0, 3, 0, 99999999999999999999]\n", 13, "out of range" },
 	{ VPEN "  - evdev: [[1, 5, 0, 0, 0]]\n  - evdev: [[1, 4, 0, 0, 0]]\n", 13,
@@ -535,6 +543,22 @@ static void test_errors(void)
 	}
 }
 
+static void test_time_limit(void)
+{
+	/* The last microsecond the parsers take: a replay adds its gaps to that. */
+	static const char yaml[] = VPEN
+		"  - evdev: [[4611686018427, 387903, 1, 320, 1], [4611686018427, 387903, 0, 0, 0]]\n"
+		"  - evdev: [[4611686018427, 387904, 1, 320, 0], [4611686018427, 387904, 0, 0, 0]]\n";
+	struct trace t = { 0 };
+	struct error err;
+
+	CHECK(parse(yaml, &t, &err) == 0);
+	check_types(&t, "proximity-in proximity-out");
+	CHECK(t.events[0].time_us == TRACE_MAX_TIME_US - 1);
+	CHECK(t.events[1].time_us == TRACE_MAX_TIME_US);
+	trace_finish(&t);
+}
+
 static void test_screen_sizes(void)
 {
 	struct trace t = { 0 };
@@ -562,6 +586,7 @@ int main(int argc, char **argv)
 	test_frames();
 	test_two_tablets();
 	test_errors();
+	test_time_limit();
 	test_screen_sizes();
 	return 0;
 }
