@@ -11,7 +11,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-int file_read_all(const char *path, size_t max, char **data, size_t *len, struct error *err)
+int fileio_read_all(const char *path, size_t max, char **data, size_t *len, struct error *err)
 {
 	struct stat st;
 	char *buf = NULL;
@@ -99,7 +99,7 @@ out:
 	return ret;
 }
 
-int file_mkdirs(const char *dir, struct error *err)
+int fileio_mkdirs(const char *dir, struct error *err)
 {
 	char path[PATH_MAX];
 	size_t n = strlen(dir);
@@ -139,7 +139,7 @@ static int write_all(int fd, const unsigned char *p, size_t len)
 	return 0;
 }
 
-int file_write_atomic(const char *dir, const char *name, const void *data, size_t len,
+int fileio_write_atomic(const char *dir, const char *name, const void *data, size_t len,
 		      struct error *err)
 {
 	char tmp[NAME_MAX + 1];

@@ -7,12 +7,12 @@
 
 /* Reads a whole regular file (at most max bytes) into a NUL-terminated malloc'ed buffer.
  * 0 or -errno, with a message naming the file. */
-int file_read_all(const char *path, size_t max, char **data, size_t *len, struct error *err);
+int fileio_read_all(const char *path, size_t max, char **data, size_t *len, struct error *err);
 
 /* Creates dir and its parents as needed. 0 or -errno. */
-int file_mkdirs(const char *dir, struct error *err);
+int fileio_mkdirs(const char *dir, struct error *err);
 
 /* Writes dir/name so that it is either the old file or the complete new one, never half:
  * a temporary name, fsync, rename, fsync of the directory. Never follows a symlink. */
-int file_write_atomic(const char *dir, const char *name, const void *data, size_t len,
+int fileio_write_atomic(const char *dir, const char *name, const void *data, size_t len,
 		      struct error *err);

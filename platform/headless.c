@@ -75,7 +75,7 @@ static int load_doc(struct run *r, const char *path)
 	size_t len;
 	int ret;
 
-	ret = file_read_all(path, DOC_MAX_FILE_BYTES, &data, &len, &err);
+	ret = fileio_read_all(path, DOC_MAX_FILE_BYTES, &data, &len, &err);
 	if (ret == 0) {
 		ret = doc_parse(data, len, path, &doc, &err);
 		free(data);

@@ -6,13 +6,13 @@
 #include "buf.h"
 #include "export.h"
 #include "fileio.h"
-#include "png.h"
+#include "pngio.h"
 
 static int write_buf(const char *dir, const char *name, struct buf *b, int ret, struct error *err)
 {
 	if (ret < 0)
 		return error_set(err, ret, "cannot build %s: out of memory", name);
-	return file_write_atomic(dir, name, b->data, b->len, err);
+	return fileio_write_atomic(dir, name, b->data, b->len, err);
 }
 
 int output_write_all(const struct app *app, const char *dir, const uint8_t *rgba,
@@ -23,7 +23,7 @@ int output_write_all(const struct app *app, const char *dir, const uint8_t *rgba
 
 	buf_init(&a);
 	buf_init(&b);
-	ret = file_mkdirs(dir, err);
+	ret = fileio_mkdirs(dir, err);
 	if (ret == 0)
 		ret = write_buf(dir, "model.glb", &a, export_glb(&app->mesh, &a), err);
 	if (ret == 0) {
@@ -43,9 +43,9 @@ int output_write_all(const struct app *app, const char *dir, const uint8_t *rgba
 	}
 	if (ret == 0 && rgba) {
 		buf_reset(&a);
-		ret = png_encode_rgba(rgba, app->view.width, app->view.height, &a, err);
+		ret = pngio_encode_rgba(rgba, app->view.width, app->view.height, &a, err);
 		if (ret == 0)
-			ret = file_write_atomic(dir, "screen.png", a.data, a.len, err);
+			ret = fileio_write_atomic(dir, "screen.png", a.data, a.len, err);
 	}
 	buf_finish(&a);
 	buf_finish(&b);

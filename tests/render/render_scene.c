@@ -12,7 +12,7 @@
 
 #include "buf.h"
 #include "egl_headless.h"
-#include "png.h"
+#include "pngio.h"
 #include "render.h"
 #include "scene.h"
 
@@ -39,7 +39,7 @@ static int write_png(const char *path, const uint8_t *rgba, int width, int heigh
 	int ret;
 
 	buf_init(&b);
-	ret = png_encode_rgba(rgba, width, height, &b, &err);
+	ret = pngio_encode_rgba(rgba, width, height, &b, &err);
 	if (ret < 0) {
 		fprintf(stderr, "render-scene: %s\n", err.msg);
 		buf_finish(&b);

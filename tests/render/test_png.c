@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* png_encode_rgba / png_decode_rgba: round trip, determinism, other formats, damage. */
-#include <libpng16/png.h> /* to write formats png_encode_rgba does not */
+/* pngio_encode_rgba / pngio_decode_rgba: round trip, determinism, other formats, damage. */
+#include <libpng16/png.h> /* to write formats pngio_encode_rgba does not */
 
 #include <errno.h>
 #include <stdint.h>
@@ -9,7 +9,7 @@
 
 #include "buf.h"
 #include "error.h"
-#include "png.h"
+#include "pngio.h"
 #include "test.h"
 
 #define W 37
@@ -72,18 +72,18 @@ static void test_round_trip(void)
 
 	buf_init(&a);
 	buf_init(&b);
-	CHECK_INT(png_encode_rgba(rgba, W, H, &a, &err), 0);
-	CHECK_INT(png_encode_rgba(rgba, W, H, &b, &err), 0);
+	CHECK_INT(pngio_encode_rgba(rgba, W, H, &a, &err), 0);
+	CHECK_INT(pngio_encode_rgba(rgba, W, H, &b, &err), 0);
 	CHECK_INT(a.len, b.len);
 	CHECK(memcmp(a.data, b.data, a.len) == 0);
 	check_chunks(&a);
 
-	CHECK_INT(png_decode_rgba(a.data, a.len, "a.png", &back, &w, &h, &err), 0);
+	CHECK_INT(pngio_decode_rgba(a.data, a.len, "a.png", &back, &w, &h, &err), 0);
 	CHECK_INT(w, W);
 	CHECK_INT(h, H);
 	CHECK(memcmp(rgba, back, W * H * 4) == 0);
 
-	CHECK_INT(png_encode_rgba(rgba, 0, H, &a, &err), -EINVAL);
+	CHECK_INT(pngio_encode_rgba(rgba, 0, H, &a, &err), -EINVAL);
 	free(back);
 	free(rgba);
 	buf_finish(&a);
@@ -128,7 +128,7 @@ static void decode_ok(const struct buf *b, int w, int h, uint8_t **rgba)
 	struct error err;
 	int dw, dh;
 
-	CHECK_INT(png_decode_rgba(b->data, b->len, "other.png", rgba, &dw, &dh, &err), 0);
+	CHECK_INT(pngio_decode_rgba(b->data, b->len, "other.png", rgba, &dw, &dh, &err), 0);
 	CHECK_INT(dw, w);
 	CHECK_INT(dh, h);
 }
@@ -229,7 +229,7 @@ static void expect_damaged(const void *data, size_t len)
 	int w = -1, h = -1;
 
 	err.msg[0] = '\0';
-	CHECK_INT(png_decode_rgba(data, len, "bad.png", &rgba, &w, &h, &err), -EINVAL);
+	CHECK_INT(pngio_decode_rgba(data, len, "bad.png", &rgba, &w, &h, &err), -EINVAL);
 	CHECK(rgba == NULL);
 	CHECK(strncmp(err.msg, "bad.png: ", 9) == 0);
 }
@@ -242,7 +242,7 @@ static void test_damaged(void)
 	unsigned char *copy;
 
 	buf_init(&b);
-	CHECK_INT(png_encode_rgba(rgba, W, H, &b, &err), 0);
+	CHECK_INT(pngio_encode_rgba(rgba, W, H, &b, &err), 0);
 	copy = malloc(b.len);
 	CHECK(copy);
 

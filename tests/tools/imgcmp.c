@@ -15,7 +15,7 @@
 
 #include "buf.h"
 #include "error.h"
-#include "png.h"
+#include "pngio.h"
 
 struct image {
 	uint8_t *rgba;
@@ -61,7 +61,7 @@ static int load(const char *path, struct image *img)
 		buf_finish(&b);
 		return r;
 	}
-	r = png_decode_rgba(b.data, b.len, path, &img->rgba, &img->width, &img->height, &err);
+	r = pngio_decode_rgba(b.data, b.len, path, &img->rgba, &img->width, &img->height, &err);
 	buf_finish(&b);
 	if (r < 0)
 		fprintf(stderr, "imgcmp: %s\n", err.msg);
@@ -115,7 +115,7 @@ static int write_diff(const char *path, const struct image *a, const struct imag
 		o[3] = 255;
 	}
 	buf_init(&png);
-	r = png_encode_rgba(out, a->width, a->height, &png, &err);
+	r = pngio_encode_rgba(out, a->width, a->height, &png, &err);
 	free(out);
 	if (r == 0)
 		r = write_file(path, &png);

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-#include "png.h"
+#include "pngio.h"
 
-/* libpng's own png.h: plain <png.h> would find this module's header first */
-#include <libpng16/png.h>
+/* libpng */
+#include <png.h>
 
 #include <errno.h>
 #include <setjmp.h>
@@ -67,7 +67,7 @@ static void read_fn(png_structp png, png_bytep data, size_t len)
 	ctx->pos += len;
 }
 
-int png_encode_rgba(const uint8_t *rgba, int width, int height, struct buf *out, struct error *err)
+int pngio_encode_rgba(const uint8_t *rgba, int width, int height, struct buf *out, struct error *err)
 {
 	struct png_ctx ctx = { .out = out };
 	png_structp png;
@@ -122,7 +122,7 @@ static void set_rgba8_transforms(png_structp png, png_infop info)
 	png_read_update_info(png, info);
 }
 
-int png_decode_rgba(const void *data, size_t len, const char *name, uint8_t **rgba, int *width,
+int pngio_decode_rgba(const void *data, size_t len, const char *name, uint8_t **rgba, int *width,
 		    int *height, struct error *err)
 {
 	struct png_ctx ctx = { .data = data, .len = len };
