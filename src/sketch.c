@@ -73,32 +73,46 @@ bool sketch_is_closed(const struct vec3 *p, size_t n)
 struct sketch_hit sketch_nearest(const struct tree *t, struct vec3 p)
 {
 	struct sketch_hit best = { .branch = -1, .dist = INFINITY };
+	double best_d2 = INFINITY, walked = 0.0, total = 0.0;
+	const struct branch *br;
 
+	/* Squared distances in the hot loop; the rest only for the winner. */
 	for (size_t b = 0; b < t->nbranches; b++) {
-		const struct branch *br = &t->branches[b];
-		double total = polyline_length(br->points, br->npoints), walked = 0.0;
+		const struct vec3 *q = t->branches[b].points;
 
-		for (size_t i = 0; i + 1 < br->npoints; i++) {
-			struct vec3 a = br->points[i], d = vec3_sub(br->points[i + 1], a);
-			double dd = d.x * d.x + d.y * d.y, seg = vec3_len(d);
-			double s = dd > 0 ? ((p.x - a.x) * d.x + (p.y - a.y) * d.y) / dd : 0.0;
-			struct vec3 q;
-			double dist;
+		for (size_t i = 0; i + 1 < t->branches[b].npoints; i++) {
+			double dx = q[i + 1].x - q[i].x, dy = q[i + 1].y - q[i].y;
+			double dd = dx * dx + dy * dy;
+			double s = dd > 0 ? ((p.x - q[i].x) * dx + (p.y - q[i].y) * dy) / dd : 0.0;
+			double ex, ey, d2;
 
 			s = s < 0 ? 0 : s > 1 ? 1 : s;
-			q = vec3_lerp(a, br->points[i + 1], s);
-			dist = hypot(q.x - p.x, q.y - p.y);
-			if (dist < best.dist) {
+			ex = q[i].x + s * dx - p.x;
+			ey = q[i].y + s * dy - p.y;
+			d2 = ex * ex + ey * ey;
+			if (d2 < best_d2) {
+				best_d2 = d2;
 				best.branch = (int)b;
 				best.segment = i;
 				best.seg_t = s;
-				best.point = q;
-				best.dist = dist;
-				best.param = total > 0 ? (walked + s * seg) / total : 0.0;
 			}
-			walked += seg;
 		}
 	}
+	if (best.branch < 0)
+		return best;
+	br = &t->branches[best.branch];
+	best.point = vec3_lerp(br->points[best.segment], br->points[best.segment + 1], best.seg_t);
+	best.dist = sqrt(best_d2);
+	for (size_t i = 0; i + 1 < br->npoints; i++) {
+		double seg = vec3_dist(br->points[i], br->points[i + 1]);
+
+		if (i < best.segment)
+			walked += seg;
+		else if (i == best.segment)
+			walked += best.seg_t * seg;
+		total += seg;
+	}
+	best.param = total > 0 ? walked / total : 0.0;
 	return best;
 }
 
