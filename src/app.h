@@ -15,7 +15,8 @@
 /*
  * The kiosk's state machine. It consumes struct event only and owns the document,
  * the tree rebuilt from it and the meshes. The renderer (ui/) reads it; platform/
- * feeds it and acts on its requests (export). Pure: no I/O, no clock.
+ * feeds it and takes its requests (export: the kiosk writes to USB; a headless run
+ * writes its files at the end in any case). Pure: no I/O, no clock.
  */
 
 enum app_mode {

@@ -64,8 +64,12 @@ int main(int argc, char **argv)
 		trunk_only.nbranches = 1;
 		CHECK_NEAR(sketch_nearest(&trunk_only, side->points[0]).dist, 0.0, 1e-9);
 	}
-	/* pressure and tilt came through from the pen device, not the pad */
+	/* pressure and tilt came through from the pen device, not the pad: the first event is
+	 * the pen entering proximity with ABS_TILT_X 12, ABS_TILT_Y -9 at 57 units/radian */
 	CHECK(app->doc.ops[0].points[3].pressure > 0.05f);
+	CHECK_INT(t.events[0].type, EVENT_PROXIMITY_IN);
+	CHECK_NEAR(t.events[0].tilt_x, 12.0 / 57.0 * 180.0 / VEC_PI, 1e-9);
+	CHECK_NEAR(t.events[0].tilt_y, -9.0 / 57.0 * 180.0 / VEC_PI, 1e-9);
 	app_destroy(app);
 	trace_finish(&t);
 	return 0;
