@@ -142,7 +142,7 @@ int trace_load(const char *path, int screen_w, int screen_h, struct trace *t, st
 	size_t len;
 	int r;
 
-	r = file_read_all(path, TRACE_MAX_FILE_SIZE, &data, &len, err);
+	r = fileio_read_all(path, TRACE_MAX_FILE_SIZE, &data, &len, err);
 	if (r < 0) {
 		trace_finish(t);
 		return r;

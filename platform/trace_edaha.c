@@ -290,7 +290,7 @@ static int parse_pen_button(struct edaha_parser *p, struct event *ev)
 	return parse_pen_state(p, 4, ev);
 }
 
-/* Appends " name" (no space first) to a list for a message; a list too long is cut. */
+/* Appends name to a space-separated list for a message; a list too long is cut short. */
 static void append_name(char *names, size_t size, size_t *o, const char *name)
 {
 	int n;

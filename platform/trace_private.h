@@ -5,7 +5,7 @@
 
 #include <stddef.h>
 
-/* Room for a quoted field cut short: 40-odd characters of text, escapes included. */
+/* Room for a quoted field cut short: some 50 characters of text, escapes included. */
 #define TRACE_QUOTE_SIZE 64
 
 /*
