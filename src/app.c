@@ -47,9 +47,9 @@ static int apply_op(struct app *app, const struct doc_op *op)
 		return sketch_apply(&app->tree, op, &app->rng);
 	case DOC_OP_NEW:
 		tree_clear(&app->tree);
-		return 0;
+		return SKETCH_CHANGED;
 	}
-	return 0;
+	return SKETCH_CHANGED;
 }
 
 static int update_mesh(struct app *app)
@@ -80,9 +80,12 @@ int app_load_doc(struct app *app, struct doc *doc)
 	return app_rebuild(app);
 }
 
-/* Records an edit and applies it on top of the current tree (same result as a rebuild). */
+/* Records an edit and applies it on top of the current tree (same result as a rebuild).
+ * When the tree only grew, only the new elements are meshed: a stroke's cost does not
+ * grow with the drawing. */
 static int push_op(struct app *app, struct doc_op *op)
 {
+	size_t nb = app->tree.nbranches, nl = app->tree.nleaves;
 	int ret = doc_push(&app->doc, op);
 
 	if (ret < 0)
@@ -90,6 +93,10 @@ static int push_op(struct app *app, struct doc_op *op)
 	ret = apply_op(app, &app->doc.ops[app->doc.cursor - 1]);
 	if (ret < 0)
 		return ret;
+	if (ret == SKETCH_GREW && app->tree.nbranches >= nb && app->tree.nleaves >= nl) {
+		app->mesh_serial++;
+		return tree_mesh_append(&app->mesh, &app->tree, nb, nl);
+	}
 	return update_mesh(app);
 }
 

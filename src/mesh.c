@@ -561,18 +561,16 @@ static int leaf_build(struct mesh *m, const struct leaf *l, struct scratch *s)
 	return 0;
 }
 
-int tree_mesh_build(struct tree_mesh *tm, const struct tree *t)
+int tree_mesh_append(struct tree_mesh *tm, const struct tree *t, size_t first_branch,
+		     size_t first_leaf)
 {
 	struct scratch sc;
 	int r = 0;
 
 	memset(&sc, 0, sizeof(sc));
-	mesh_clear(&tm->bark);
-	mesh_clear(&tm->leaves);
-
-	for (size_t i = 0; i < t->nbranches && r == 0; i++)
+	for (size_t i = first_branch; i < t->nbranches && r == 0; i++)
 		r = tube_build(&tm->bark, &t->branches[i], &sc);
-	for (size_t i = 0; i < t->nleaves && r == 0; i++)
+	for (size_t i = first_leaf; i < t->nleaves && r == 0; i++)
 		r = leaf_build(&tm->leaves, &t->leaves[i], &sc);
 
 	scratch_finish(&sc);
@@ -582,4 +580,11 @@ int tree_mesh_build(struct tree_mesh *tm, const struct tree *t)
 		mesh_clear(&tm->leaves);
 	}
 	return r;
+}
+
+int tree_mesh_build(struct tree_mesh *tm, const struct tree *t)
+{
+	mesh_clear(&tm->bark);
+	mesh_clear(&tm->leaves);
+	return tree_mesh_append(tm, t, 0, 0);
 }

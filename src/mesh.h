@@ -27,5 +27,10 @@ struct tree_mesh {
 
 void tree_mesh_init(struct tree_mesh *tm);
 void tree_mesh_finish(struct tree_mesh *tm);
-/* Rebuilds both meshes from the tree. Returns 0 or -ENOMEM. Deterministic. */
+/* Rebuilds both meshes from the tree. Returns 0 or -ENOMEM (meshes then empty).
+ * Deterministic: elements are laid out in the tree's order. */
 int tree_mesh_build(struct tree_mesh *tm, const struct tree *t);
+/* Adds branches [first_branch..) and leaves [first_leaf..) to meshes built for the
+ * elements before them: the same bytes as a full rebuild, at the cost of the new ones. */
+int tree_mesh_append(struct tree_mesh *tm, const struct tree *t, size_t first_branch,
+		     size_t first_leaf);

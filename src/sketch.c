@@ -234,5 +234,5 @@ int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
 	else
 		ret = add_branch(t, p, n);
 	free(p);
-	return ret;
+	return ret < 0 ? ret : SKETCH_GREW;
 }

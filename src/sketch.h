@@ -40,6 +40,9 @@ bool sketch_is_closed(const struct vec3 *p, size_t n);
 /*
  * Applies one stroke op: an open stroke becomes a branch (the first the trunk, later ones
  * attached to the nearest branch point), a closed one a leaf on the nearest branch.
- * Returns 0 or -ENOMEM; strokes that make nothing (taps, a leaf with no branch) are 0.
+ * Returns SKETCH_GREW when the tree only gained elements at its end (or nothing: taps, a
+ * leaf with no branch), SKETCH_CHANGED when existing elements changed, or -ENOMEM.
  */
+#define SKETCH_GREW 0
+#define SKETCH_CHANGED 1
 int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng);

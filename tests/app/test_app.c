@@ -45,6 +45,15 @@ static void draw_loop(struct app *app, double cx, double cy, double r)
 	ev_pen(app, EVENT_TIP_UP, cx + r * cos(36 * 0.17), cy + r * sin(36 * 0.17), 0);
 }
 
+static void same_mesh(const struct mesh *a, const struct mesh *b)
+{
+	CHECK_INT(a->nvertices, b->nvertices);
+	CHECK_INT(a->nindices, b->nindices);
+	CHECK(memcmp(a->positions, b->positions, a->nvertices * 3 * sizeof(float)) == 0);
+	CHECK(memcmp(a->normals, b->normals, a->nvertices * 3 * sizeof(float)) == 0);
+	CHECK(memcmp(a->indices, b->indices, a->nindices * sizeof(uint32_t)) == 0);
+}
+
 static void same_tree(const struct tree *a, const struct tree *b)
 {
 	CHECK_INT(a->nbranches, b->nbranches);
@@ -78,6 +87,16 @@ int main(void)
 	CHECK_INT(app->tree.branches[2].parent, 0);
 	CHECK_INT(app->tree.leaves[0].branch, 1);
 	CHECK(app->mesh.bark.nindices > 0 && app->mesh.leaves.nindices > 0);
+	/* meshes grown stroke by stroke are the bytes of a full rebuild */
+	{
+		struct tree_mesh full;
+
+		tree_mesh_init(&full);
+		CHECK_INT(tree_mesh_build(&full, &app->tree), 0);
+		same_mesh(&full.bark, &app->mesh.bark);
+		same_mesh(&full.leaves, &app->mesh.leaves);
+		tree_mesh_finish(&full);
+	}
 	/* the tip of a drawn branch stays where the pen lifted, to 0.5 px */
 	view_to_screen(&app->view, app->tree.branches[2].points[app->tree.branches[2].npoints - 1],
 		       &tx, &ty);
