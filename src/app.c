@@ -159,8 +159,8 @@ static int stroke_commit(struct app *app)
 	s->active = false;
 	for (size_t i = 1; i < s->npoints; i++)
 		len += hypot(s->points[i].x - s->points[i - 1].x, s->points[i].y - s->points[i - 1].y);
-	/* A tap is not a drawing: keep it out of the history. */
-	if (s->npoints < 2 || len * app->view.m_per_px < SKETCH_MIN_LENGTH_M) {
+	/* A pen tap is not a drawing: keep it out of the history. An eraser tap erases. */
+	if (s->tool == EVENT_TOOL_PEN && (s->npoints < 2 || len * app->view.m_per_px < SKETCH_MIN_LENGTH_M)) {
 		s->npoints = 0;
 		return 0;
 	}

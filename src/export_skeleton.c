@@ -62,6 +62,7 @@ static struct json_object *jleaf(const struct leaf *l)
 
 	o = json_out_set(o, "id", json_object_new_int(l->id));
 	o = json_out_set(o, "branch", json_object_new_int(l->branch));
+	o = json_out_set(o, "branch_t", jnum(l->branch_t));
 	o = json_out_set(o, "origin", json_object_new_string(origin_name(l->origin)));
 	return json_out_set(o, "points", jpoints(l->points, l->npoints));
 }

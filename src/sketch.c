@@ -2,6 +2,8 @@
 #include "sketch.h"
 
 #include <errno.h>
+
+#include "gesture.h"
 #include <stdlib.h>
 
 /* Trunk root radius relative to its length, and how much thinner the tip gets. */
@@ -61,13 +63,23 @@ int sketch_resample(const struct vec3 *in, size_t n, double step, struct vec3 **
 
 bool sketch_is_closed(const struct vec3 *p, size_t n)
 {
-	double len, gap;
+	double len, gap, area = 0.0;
 
 	if (n < 4)
 		return false;
 	len = polyline_length(p, n);
 	gap = vec3_dist(p[0], p[n - 1]);
-	return gap < 0.2 * len && gap < 0.4;
+	if (!(gap < 0.2 * len && gap < 0.4))
+		return false;
+	/* Returning near the start is not enough: a V or a zigzag does too. A leaf encloses
+	 * area; area / perimeter^2 is 1/(4 pi) = 0.08 for a circle, 0.037 for a 4:1 ellipse
+	 * and under 0.02 for a V. */
+	for (size_t i = 0; i < n; i++) {
+		const struct vec3 *a = &p[i], *b = &p[(i + 1) % n];
+
+		area += a->x * b->y - b->x * a->y;
+	}
+	return fabs(area) / 2 > SKETCH_MIN_LEAF_ROUNDNESS * len * len;
 }
 
 struct sketch_hit sketch_nearest(const struct tree *t, struct vec3 p)
@@ -187,7 +199,10 @@ static int add_leaf(struct tree *t, const struct vec3 *p, size_t n)
 		return 0;
 	/* The polygon closes itself: drop the end point that returned to the start. */
 	ret = tree_add_leaf(t, best.branch, ORIGIN_SKETCH, p, n - 1);
-	return ret < 0 ? ret : 0;
+	if (ret < 0)
+		return ret;
+	t->leaves[ret].branch_t = best.param;
+	return 0;
 }
 
 static size_t sketched_points(const struct tree *t)
@@ -201,6 +216,55 @@ static size_t sketched_points(const struct tree *t)
 	return n;
 }
 
+static int erase(struct tree *t, const struct doc_op *op)
+{
+	struct vec3 *raw = malloc(op->npoints * sizeof(*raw)), *p = NULL;
+	size_t n;
+	int ret;
+
+	if (!raw)
+		return -ENOMEM;
+	for (size_t i = 0; i < op->npoints; i++)
+		raw[i] = vec3(op->points[i].x, op->points[i].y, 0.0);
+	ret = sketch_resample(raw, op->npoints, SKETCH_STEP_M, &p, &n);
+	free(raw);
+	if (ret == -EINVAL)
+		return SKETCH_GREW;
+	if (ret < 0)
+		return ret;
+	ret = gesture_eraser(t, p, n);
+	free(p);
+	return ret < 0 ? ret : ret > 0 ? SKETCH_CHANGED : SKETCH_GREW;
+}
+
+/*
+ * An open stroke is a new branch if it starts on a branch (within GESTURE_SNAP_M), if its
+ * first crossing comes within 2 x GESTURE_SNAP_M of its start (a child who began just
+ * beside the parent and drew across it), or if it crosses nothing. Otherwise it is a
+ * cut/erase gesture: a slash that begins away from the wood. So a branch drawn from its
+ * parent is never a cut, even when it crosses other branches further on.
+ */
+static int open_stroke(struct tree *t, struct vec3 *p, size_t n)
+{
+	struct gesture_crossing *c;
+	double first = INFINITY;
+	size_t nc;
+	int ret;
+
+	if (t->nbranches == 0 || sketch_nearest(t, p[0]).dist <= GESTURE_SNAP_M)
+		return add_branch(t, p, n);
+	ret = gesture_crossings(t, p, n, &c, &nc);
+	if (ret < 0)
+		return ret;
+	for (size_t i = 0; i < nc; i++)
+		first = fmin(first, c[i].along);
+	free(c);
+	if (nc == 0 || first <= 2 * GESTURE_SNAP_M)
+		return add_branch(t, p, n);
+	ret = gesture_cut_erase(t, p, n);
+	return ret < 0 ? ret : SKETCH_CHANGED;
+}
+
 int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
 {
 	struct vec3 *raw, *p = NULL;
@@ -208,8 +272,12 @@ int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
 	int ret;
 
 	(void)rng;
-	if (op->kind != DOC_OP_STROKE || op->tool != EVENT_TOOL_PEN || op->npoints < 2)
-		return 0;
+	if (op->kind != DOC_OP_STROKE || op->npoints == 0)
+		return SKETCH_GREW;
+	if (op->tool == EVENT_TOOL_ERASER)
+		return erase(t, op);
+	if (op->npoints < 2)
+		return SKETCH_GREW;
 	raw = malloc(op->npoints * sizeof(*raw));
 	if (!raw)
 		return -ENOMEM;
@@ -232,7 +300,7 @@ int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
 	if (sketch_is_closed(p, n))
 		ret = add_leaf(t, p, n);
 	else
-		ret = add_branch(t, p, n);
+		ret = open_stroke(t, p, n);
 	free(p);
-	return ret < 0 ? ret : SKETCH_GREW;
+	return ret < 0 ? ret : ret == SKETCH_CHANGED ? SKETCH_CHANGED : SKETCH_GREW;
 }

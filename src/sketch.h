@@ -12,6 +12,8 @@
 #define SKETCH_STEP_M 0.05
 /* Strokes shorter than this are taps, not drawings. */
 #define SKETCH_MIN_LENGTH_M 0.1
+/* A closed stroke's area / length^2 at least (a V returning to its start is no leaf). */
+#define SKETCH_MIN_LEAF_ROUNDNESS 0.02
 /* At most this many samples a stroke: a longer stroke is sampled more coarsely. */
 #define SKETCH_MAX_SAMPLES 4096
 /* A sketch stroke that would take the tree's sketched points past this makes nothing:

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #pragma once
 
+#include <stdbool.h>
 #include <stddef.h>
 
 #include "vec.h"
@@ -28,7 +29,8 @@ struct branch {
 
 struct leaf {
 	int id;
-	int branch; /* the branch it is attached to */
+	int branch;      /* the branch it is attached to */
+	double branch_t; /* arc-length parameter 0..1 on that branch where it attaches */
 	enum origin origin;
 	struct vec3 *points; /* closed polygon, last point != first */
 	size_t npoints;
@@ -50,3 +52,19 @@ int tree_add_branch(struct tree *t, int parent, double parent_t, enum origin ori
 		    const struct vec3 *points, const double *radii, size_t npoints);
 int tree_add_leaf(struct tree *t, int branch, enum origin origin, const struct vec3 *points,
 		  size_t npoints);
+
+/* Edits (tree_edit.c). Ids stay dense and in creation order, so a child always comes
+ * after its parent. */
+
+/* Removes every branch with remove[id] set, everything attached to it (recursively) and
+ * their leaves; renumbers what stays. remove has nbranches entries and is updated to
+ * say what was removed. 0 or -ENOMEM (tree unchanged). */
+int tree_remove_branches(struct tree *t, bool *remove);
+/* Removes leaves with remove[id] set; renumbers the rest. */
+void tree_remove_leaves(struct tree *t, const bool *remove);
+/* Cuts branch b at (segment, seg_t): its part beyond, and every branch and leaf attached
+ * there, are removed; attachment parameters on b are rescaled to its new length.
+ * 0 or -ENOMEM (tree unchanged). */
+int tree_cut_branch(struct tree *t, int b, size_t segment, double seg_t);
+/* Arc length of a branch's polyline. */
+double tree_branch_length(const struct branch *b);

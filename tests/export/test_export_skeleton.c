@@ -116,7 +116,7 @@ static void test_exact(void)
 		"\"points\":[[0,0,0],[0,0.1,0.333333]],\"radii\":[0.25,0]},"
 		"{\"id\":1,\"parent\":0,\"generation\":1,\"origin\":\"propagate\",\"parent_t\":0.7,"
 		"\"points\":[[0,0.1,0.3],[0.000001,2.5,-3]],\"radii\":[0.1,0.05]}],"
-		"\"leaves\":[{\"id\":0,\"branch\":1,\"origin\":\"clone\","
+		"\"leaves\":[{\"id\":0,\"branch\":1,\"branch_t\":0,\"origin\":\"clone\","
 		"\"points\":[[1,2,0],[1.5,2,0],[1,2.5,0.123457]]}]}\n";
 	struct tree t;
 	struct buf out;

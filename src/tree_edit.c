@@ -1,0 +1,137 @@
+/* SPDX-License-Identifier: MIT */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "tree.h"
+
+double tree_branch_length(const struct branch *b)
+{
+	double len = 0.0;
+
+	for (size_t i = 1; i < b->npoints; i++)
+		len += vec3_dist(b->points[i - 1], b->points[i]);
+	return len;
+}
+
+/* Compacts the leaves, keeping order; map_branch gives each branch's new id or -1. */
+static void compact_leaves(struct tree *t, const int *map_branch, const bool *remove_leaf)
+{
+	size_t k = 0;
+
+	for (size_t i = 0; i < t->nleaves; i++) {
+		struct leaf l = t->leaves[i];
+		int b = map_branch ? map_branch[l.branch] : l.branch;
+
+		if ((remove_leaf && remove_leaf[i]) || b < 0) {
+			free(l.points);
+			continue;
+		}
+		l.id = (int)k;
+		l.branch = b;
+		t->leaves[k++] = l;
+	}
+	t->nleaves = k;
+}
+
+void tree_remove_leaves(struct tree *t, const bool *remove)
+{
+	compact_leaves(t, NULL, remove);
+}
+
+/* map: room for nbranches ints, so that nothing here can fail. */
+static void remove_branches(struct tree *t, bool *remove, int *map)
+{
+	size_t k = 0;
+
+	/* Children come after their parents, so one pass spreads removal down the tree. */
+	for (size_t i = 0; i < t->nbranches; i++) {
+		int p = t->branches[i].parent;
+
+		if (p >= 0 && remove[p])
+			remove[i] = true;
+	}
+	for (size_t i = 0; i < t->nbranches; i++) {
+		struct branch b = t->branches[i];
+
+		if (remove[i]) {
+			free(b.points);
+			free(b.radii);
+			map[i] = -1;
+			continue;
+		}
+		map[i] = (int)k;
+		b.id = (int)k;
+		if (b.parent >= 0)
+			b.parent = map[b.parent];
+		t->branches[k++] = b;
+	}
+	t->nbranches = k;
+	compact_leaves(t, map, NULL);
+}
+
+int tree_remove_branches(struct tree *t, bool *remove)
+{
+	int *map = malloc((t->nbranches + 1) * sizeof(*map));
+
+	if (!map)
+		return -ENOMEM;
+	remove_branches(t, remove, map);
+	free(map);
+	return 0;
+}
+
+int tree_cut_branch(struct tree *t, int id, size_t segment, double seg_t)
+{
+	struct branch *b = &t->branches[id];
+	double len = tree_branch_length(b), walked = 0.0, cut_t;
+	bool *remove;
+	int *map;
+	size_t n = segment + 2;
+
+	if (segment + 1 >= b->npoints)
+		return 0;
+	for (size_t i = 0; i < segment; i++)
+		walked += vec3_dist(b->points[i], b->points[i + 1]);
+	walked += seg_t * vec3_dist(b->points[segment], b->points[segment + 1]);
+	cut_t = len > 0 ? walked / len : 0.0;
+
+	remove = calloc(t->nbranches + t->nleaves + 1, sizeof(*remove));
+	map = malloc((t->nbranches + 1) * sizeof(*map));
+	if (!remove || !map) {
+		free(remove);
+		free(map);
+		return -ENOMEM;
+	}
+	/* The cut point replaces everything past it. */
+	b->points[segment + 1] = vec3_lerp(b->points[segment], b->points[segment + 1], seg_t);
+	b->radii[segment + 1] = b->radii[segment] + (b->radii[segment + 1] - b->radii[segment]) * seg_t;
+	b->npoints = n;
+
+	for (size_t i = 0; i < t->nleaves; i++) {
+		struct leaf *l = &t->leaves[i];
+
+		if (l->branch != id)
+			continue;
+		if (l->branch_t > cut_t)
+			remove[t->nbranches + i] = true;
+		else if (cut_t > 0)
+			l->branch_t /= cut_t;
+	}
+	tree_remove_leaves(t, remove + t->nbranches);
+	memset(remove, 0, t->nbranches * sizeof(*remove));
+	for (size_t i = 0; i < t->nbranches; i++) {
+		struct branch *c = &t->branches[i];
+
+		if (c->parent != id)
+			continue;
+		if (c->parent_t > cut_t)
+			remove[i] = true;
+		else if (cut_t > 0)
+			c->parent_t /= cut_t;
+	}
+	remove_branches(t, remove, map);
+	free(remove);
+	free(map);
+	return 0;
+}
