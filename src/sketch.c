@@ -136,7 +136,28 @@ static double radius_at(const struct branch *b, const struct sketch_hit *h)
 	return r0 + (r1 - r0) * h->seg_t;
 }
 
-static int add_branch(struct tree *t, struct vec3 *p, size_t n)
+/* Radius at s (0..1) as a fraction of the root's: the drawn profile once there is one. */
+static double profile_at(const struct tree *t, double s)
+{
+	double x, f;
+	int i;
+
+	if (!t->has_profile)
+		return 1.0 - (1.0 - TIP_RADIUS_FRACTION) * s;
+	x = s * (TREE_PROFILE_N - 1);
+	i = (int)x;
+	if (i >= TREE_PROFILE_N - 1)
+		return t->profile[TREE_PROFILE_N - 1];
+	f = x - i;
+	return t->profile[i] + (t->profile[i + 1] - t->profile[i]) * f;
+}
+
+/*
+ * Adds p as a branch: the trunk if the tree is empty, otherwise attached to the nearest
+ * branch point. radii, when given, are the drawn ones (two-stroke branches); otherwise
+ * the root radius follows from the parent and the profile gives the rest.
+ */
+static int add_branch(struct tree *t, struct vec3 *p, size_t n, const double *drawn)
 {
 	double len = polyline_length(p, n), walked = 0.0, root_r;
 	struct sketch_hit hit = { .branch = -1 };
@@ -172,14 +193,17 @@ static int add_branch(struct tree *t, struct vec3 *p, size_t n)
 	for (size_t i = 0; i < n; i++) {
 		double s = len > 0 ? walked / len : 0.0;
 
-		radii[i] = root_r * (1.0 - (1.0 - TIP_RADIUS_FRACTION) * s);
+		radii[i] = drawn ? fmax(drawn[i], MIN_ROOT_RADIUS_M / 4) : root_r * profile_at(t, s);
 		if (i + 1 < n)
 			walked += vec3_dist(p[i], p[i + 1]);
 	}
 	ret = tree_add_branch(t, hit.branch, hit.branch >= 0 ? hit.param : 0.0, ORIGIN_SKETCH, p,
 			      radii, n);
 	free(radii);
-	return ret < 0 ? ret : 0;
+	if (ret < 0)
+		return ret;
+	t->last_sketched = ret;
+	return 0;
 }
 
 static int add_leaf(struct tree *t, const struct vec3 *p, size_t n)
@@ -237,6 +261,98 @@ static int erase(struct tree *t, const struct doc_op *op)
 	return ret < 0 ? ret : ret > 0 ? SKETCH_CHANGED : SKETCH_GREW;
 }
 
+/* The point at fraction s (0..1) of a polyline's arc length. */
+static struct vec3 point_at(const struct vec3 *p, size_t n, double len, double s)
+{
+	double want = s * len, walked = 0.0;
+
+	for (size_t i = 0; i + 1 < n; i++) {
+		double seg = vec3_dist(p[i], p[i + 1]);
+
+		if (walked + seg >= want && seg > 0)
+			return vec3_lerp(p[i], p[i + 1], (want - walked) / seg);
+		walked += seg;
+	}
+	return p[n - 1];
+}
+
+/*
+ * Fig. 4: one branch drawn as its two outlines. The stroke b is taken as the second
+ * outline of the branch `prev` the previous stroke drew when it came within
+ * SKETCH_OUTLINE_PAUSE_US of it, is about as long, runs the same way and stays close
+ * beside it all along: every pair of points at the same fraction of their lengths is
+ * at most 0.6 x, and on average at most 0.3 x, the shorter length apart, and the two
+ * chords are within 30 degrees. Returns 1 when it merged them, 0 when not, or -ENOMEM.
+ */
+static int outline_pair(struct tree *t, const struct vec3 *b, size_t nb, uint64_t start_us, int prev)
+{
+	enum { N = 48 };
+	const struct branch *a;
+	struct vec3 axis[N], a0, a1, b0, b1, ca, cb;
+	double radii[N], la, lb, lmin, sum = 0.0, cosang;
+	bool reversed;
+	bool *remove;
+	int ret;
+
+	if (prev < 0 || (size_t)prev + 1 != t->nbranches || start_us < t->last_sketched_end_us ||
+	    start_us - t->last_sketched_end_us > SKETCH_OUTLINE_PAUSE_US)
+		return 0;
+	a = &t->branches[prev];
+	la = polyline_length(a->points, a->npoints);
+	lb = polyline_length(b, nb);
+	lmin = fmin(la, lb);
+	if (lmin <= 0 || la > 1.6 * lb || lb > 1.6 * la)
+		return 0;
+	a0 = a->points[0];
+	a1 = a->points[a->npoints - 1];
+	/* the second outline may be drawn either way */
+	reversed = vec3_dist(a0, b[nb - 1]) + vec3_dist(a1, b[0]) < vec3_dist(a0, b[0]) + vec3_dist(a1, b[nb - 1]);
+	b0 = reversed ? b[nb - 1] : b[0];
+	b1 = reversed ? b[0] : b[nb - 1];
+	ca = vec3_sub(a1, a0);
+	cb = vec3_sub(b1, b0);
+	cosang = vec3_dot(ca, cb) / (vec3_len(ca) * vec3_len(cb) + 1e-12);
+	if (cosang < cos(30.0 * VEC_PI / 180.0))
+		return 0;
+	for (int i = 0; i < N; i++) {
+		double s = (double)i / (N - 1);
+		struct vec3 pa = point_at(a->points, a->npoints, la, s);
+		struct vec3 pb = point_at(b, nb, lb, reversed ? 1.0 - s : s);
+		double d = vec3_dist(pa, pb);
+
+		if (d > 0.6 * lmin)
+			return 0;
+		sum += d;
+		axis[i] = vec3_lerp(pa, pb, 0.5);
+		radii[i] = 0.5 * d;
+	}
+	if (sum / N > 0.3 * lmin)
+		return 0;
+
+	/* The first outline's branch becomes the branch between the two. */
+	remove = calloc(t->nbranches, sizeof(*remove));
+	if (!remove)
+		return -ENOMEM;
+	remove[prev] = true;
+	ret = tree_remove_branches(t, remove);
+	free(remove);
+	if (ret < 0)
+		return ret;
+	ret = add_branch(t, axis, N, radii);
+	if (ret < 0)
+		return ret;
+	/* Later single strokes taper like this one (radius relative to the root's). */
+	for (int i = 0; i < TREE_PROFILE_N; i++) {
+		double x = (double)i * (N - 1) / (TREE_PROFILE_N - 1);
+		int k = (int)x;
+		double r = k + 1 < N ? radii[k] + (radii[k + 1] - radii[k]) * (x - k) : radii[N - 1];
+
+		t->profile[i] = radii[0] > 0 ? fmin(r / radii[0], 4.0) : 1.0;
+	}
+	t->has_profile = true;
+	return 1;
+}
+
 /*
  * An open stroke is a new branch if it starts on a branch (within GESTURE_SNAP_M), if its
  * first crossing comes within 2 x GESTURE_SNAP_M of its start (a child who began just
@@ -244,15 +360,19 @@ static int erase(struct tree *t, const struct doc_op *op)
  * cut/erase gesture: a slash that begins away from the wood. So a branch drawn from its
  * parent is never a cut, even when it crosses other branches further on.
  */
-static int open_stroke(struct tree *t, struct vec3 *p, size_t n)
+static int open_stroke(struct tree *t, struct vec3 *p, size_t n, uint64_t start_us, int prev)
 {
 	struct gesture_crossing *c;
 	double first = INFINITY;
 	size_t nc;
 	int ret;
 
+	ret = outline_pair(t, p, n, start_us, prev);
+	if (ret != 0)
+		return ret < 0 ? ret : SKETCH_CHANGED;
+
 	if (t->nbranches == 0 || sketch_nearest(t, p[0]).dist <= GESTURE_SNAP_M)
-		return add_branch(t, p, n);
+		return add_branch(t, p, n, NULL);
 	ret = gesture_crossings(t, p, n, &c, &nc);
 	if (ret < 0)
 		return ret;
@@ -260,7 +380,7 @@ static int open_stroke(struct tree *t, struct vec3 *p, size_t n)
 		first = fmin(first, c[i].along);
 	free(c);
 	if (nc == 0 || first <= 2 * GESTURE_SNAP_M)
-		return add_branch(t, p, n);
+		return add_branch(t, p, n, NULL);
 	ret = gesture_cut_erase(t, p, n);
 	return ret < 0 ? ret : SKETCH_CHANGED;
 }
@@ -269,11 +389,14 @@ int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
 {
 	struct vec3 *raw, *p = NULL;
 	size_t n;
-	int ret;
+	int ret, sketched;
 
 	(void)rng;
 	if (op->kind != DOC_OP_STROKE || op->npoints == 0)
 		return SKETCH_GREW;
+	/* Only a branch drawn by the stroke right before can get a second outline. */
+	sketched = t->last_sketched;
+	t->last_sketched = -1;
 	if (op->tool == EVENT_TOOL_ERASER)
 		return erase(t, op);
 	if (op->npoints < 2)
@@ -300,7 +423,9 @@ int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
 	if (sketch_is_closed(p, n))
 		ret = add_leaf(t, p, n);
 	else
-		ret = open_stroke(t, p, n);
+		ret = open_stroke(t, p, n, op->time_us, sketched);
 	free(p);
+	if (t->last_sketched >= 0) /* this stroke drew a branch */
+		t->last_sketched_end_us = op->time_us + op->points[op->npoints - 1].dt_us;
 	return ret < 0 ? ret : ret == SKETCH_CHANGED ? SKETCH_CHANGED : SKETCH_GREW;
 }

@@ -12,6 +12,8 @@
 #define SKETCH_STEP_M 0.05
 /* Strokes shorter than this are taps, not drawings. */
 #define SKETCH_MIN_LENGTH_M 0.1
+/* Two outlines of one branch (Fig. 4) are drawn within this pause of each other. */
+#define SKETCH_OUTLINE_PAUSE_US 3000000u
 /* A closed stroke's area / length^2 at least (a V returning to its start is no leaf). */
 #define SKETCH_MIN_LEAF_ROUNDNESS 0.02
 /* At most this many samples a stroke: a longer stroke is sampled more coarsely. */

@@ -23,6 +23,7 @@ const char *origin_name(enum origin origin)
 void tree_init(struct tree *t)
 {
 	memset(t, 0, sizeof(*t));
+	t->last_sketched = -1;
 }
 
 void tree_clear(struct tree *t)
@@ -35,6 +36,8 @@ void tree_clear(struct tree *t)
 		free(t->leaves[i].points);
 	t->nbranches = 0;
 	t->nleaves = 0;
+	t->last_sketched = -1;
+	t->has_profile = false;
 }
 
 void tree_finish(struct tree *t)

@@ -3,6 +3,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "vec.h"
 
@@ -36,12 +37,20 @@ struct leaf {
 	size_t npoints;
 };
 
+#define TREE_PROFILE_N 16
+
 /* The model: what the skeleton, the meshes and the screen are made from. */
 struct tree {
 	struct branch *branches;
 	size_t nbranches, cap_branches;
 	struct leaf *leaves;
 	size_t nleaves, cap_leaves;
+
+	/* What sketching carries from stroke to stroke; rebuilt with the tree. */
+	int last_sketched;             /* the branch the latest stroke drew, or -1 */
+	uint64_t last_sketched_end_us; /* when that stroke ended */
+	bool has_profile;              /* a two-stroke branch defined a radius profile: */
+	double profile[TREE_PROFILE_N]; /* radius / root radius at s = i / (N - 1) */
 };
 
 void tree_init(struct tree *t);
