@@ -61,6 +61,31 @@ int sketch_resample(const struct vec3 *in, size_t n, double step, struct vec3 **
 	return 0;
 }
 
+void sketch_smooth(struct vec3 *p, size_t n, bool closed)
+{
+	/* A turn sharper than this is a corner the child meant, and stays. */
+	const double corner_cos = cos(SKETCH_CORNER_DEG * VEC_PI / 180.0);
+	struct vec3 prev, cur;
+
+	if (n < 3)
+		return;
+	for (int pass = 0; pass < SKETCH_SMOOTH_PASSES; pass++) {
+		size_t first = closed ? 0 : 1, last = closed ? n : n - 1;
+
+		prev = closed ? p[n - 1] : p[0];
+		for (size_t i = first; i < last; i++) {
+			struct vec3 next = closed ? p[(i + 1) % n] : p[i + 1];
+			struct vec3 d0 = vec3_sub(p[i], prev), d1 = vec3_sub(next, p[i]);
+			double l = vec3_len(d0) * vec3_len(d1);
+
+			cur = p[i];
+			if (l > 0 && vec3_dot(d0, d1) / l >= corner_cos)
+				p[i] = vec3_add(vec3_scale(cur, 0.5), vec3_scale(vec3_add(prev, next), 0.25));
+			prev = cur;
+		}
+	}
+}
+
 bool sketch_is_closed(const struct vec3 *p, size_t n)
 {
 	double len, gap, area = 0.0;
@@ -420,10 +445,13 @@ int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
 		free(p);
 		return 0;
 	}
-	if (sketch_is_closed(p, n))
+	if (sketch_is_closed(p, n)) {
+		sketch_smooth(p, n, true);
 		ret = add_leaf(t, p, n);
-	else
+	} else {
+		sketch_smooth(p, n, false);
 		ret = open_stroke(t, p, n, op->time_us, sketched);
+	}
 	free(p);
 	if (t->last_sketched >= 0) /* this stroke drew a branch */
 		t->last_sketched_end_us = op->time_us + op->points[op->npoints - 1].dt_us;

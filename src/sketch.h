@@ -38,6 +38,12 @@ struct sketch_hit sketch_nearest(const struct tree *t, struct vec3 p);
  * SKETCH_MAX_SAMPLES); *out is malloc'ed. 0, -EINVAL (not finite) or -ENOMEM. */
 int sketch_resample(const struct vec3 *in, size_t n, double step, struct vec3 **out, size_t *nout);
 
+/* Light smoothing: SKETCH_SMOOTH_PASSES of a (1/4, 1/2, 1/4) filter that leaves the ends
+ * (of an open stroke) and corners sharper than SKETCH_CORNER_DEG where they are. */
+#define SKETCH_SMOOTH_PASSES 2
+#define SKETCH_CORNER_DEG 60.0
+void sketch_smooth(struct vec3 *p, size_t n, bool closed);
+
 /* Whether a resampled stroke returns near its start: a leaf rather than a branch. */
 bool sketch_is_closed(const struct vec3 *p, size_t n);
 

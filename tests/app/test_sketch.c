@@ -110,8 +110,30 @@ static void test_closed(void)
 	CHECK(!sketch_is_closed(open, 5));
 }
 
+static void test_smooth(void)
+{
+	struct vec3 p[41];
+
+	/* a wobbly line into a right-angle corner and out again */
+	for (int i = 0; i <= 20; i++)
+		p[i] = vec3(0.1 * i, (i % 2 ? 0.02 : -0.02) * (i > 0 && i < 20), 0);
+	for (int i = 21; i <= 40; i++)
+		p[i] = vec3(2.0, 0.1 * (i - 20), 0);
+	sketch_smooth(p, 41, false);
+	CHECK_NEAR(p[0].x, 0, 0);
+	CHECK_NEAR(p[0].y, 0, 0);
+	CHECK_NEAR(p[40].y, 2.0, 0);
+	/* the corner stays where it was drawn */
+	CHECK_NEAR(p[20].x, 2.0, 1e-12);
+	CHECK_NEAR(p[20].y, 0.0, 1e-12);
+	/* the jitter is damped */
+	for (int i = 3; i < 18; i++)
+		CHECK(fabs(p[i].y) < 0.011);
+}
+
 int main(void)
 {
+	test_smooth();
 	test_resample();
 	test_closed();
 	test_tree();
