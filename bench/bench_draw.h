@@ -1,0 +1,23 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "app.h"
+
+/*
+ * Drawings made the way a visitor makes them, through pen events: a trunk and
+ * `nbranches` wavy branch strokes from random points of the trunk's area outwards, with
+ * a leaf loop every tenth branch. Seeded, so every run draws the same.
+ */
+struct bench_pen {
+	uint64_t now_us;
+	double last_commit_s; /* wall time of the latest tip-up (the commit) */
+};
+
+struct app *bench_draw_tree(struct bench_pen *pen, int nbranches);
+/* A wavy stroke of npoints points from (x0,y0) to (x1,y1). If event_s is given, the wall
+ * time of each motion event is stored there (npoints - 2 entries). */
+void bench_draw_stroke(struct app *app, struct bench_pen *pen, double x0, double y0, double x1,
+		       double y1, int npoints, double *event_s);
