@@ -251,7 +251,8 @@ static int add_leaf(struct tree *t, const struct vec3 *p, size_t n)
 	if (ret < 0)
 		return ret;
 	t->leaves[ret].branch_t = best.param;
-	return 0;
+	/* in the branch's frame, so it follows the branch when it moves (lifting to 3D) */
+	return tree_leaf_attach(t, (size_t)ret);
 }
 
 static size_t sketched_points(const struct tree *t)

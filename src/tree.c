@@ -32,8 +32,10 @@ void tree_clear(struct tree *t)
 		free(t->branches[i].points);
 		free(t->branches[i].radii);
 	}
-	for (size_t i = 0; i < t->nleaves; i++)
+	for (size_t i = 0; i < t->nleaves; i++) {
 		free(t->leaves[i].points);
+		free(t->leaves[i].local);
+	}
 	t->nbranches = 0;
 	t->nleaves = 0;
 	t->last_sketched = -1;

@@ -34,6 +34,9 @@ struct leaf {
 	double branch_t; /* arc-length parameter 0..1 on that branch where it attaches */
 	enum origin origin;
 	struct vec3 *points; /* closed polygon, last point != first */
+	/* The same points in the branch's frame at branch_t (tree_leaf_attach), so the leaf
+	 * follows when the branch moves (tree_leaves_follow); NULL until attached. */
+	struct vec3 *local;
 	size_t npoints;
 };
 
@@ -77,3 +80,16 @@ void tree_remove_leaves(struct tree *t, const bool *remove);
 int tree_cut_branch(struct tree *t, int b, size_t segment, double seg_t);
 /* Arc length of a branch's polyline. */
 double tree_branch_length(const struct branch *b);
+
+/* The frame of branch b at arc-length parameter t: position, unit tangent and two unit
+ * normals: `normal` across the branch in the picture plane, `binormal` = tangent x normal.
+ * Deterministic. */
+struct tree_frame {
+	struct vec3 origin, tangent, normal, binormal;
+};
+struct tree_frame tree_frame_at(const struct branch *b, double t);
+/* Records leaf i's points in its branch's frame. 0 or -ENOMEM. */
+int tree_leaf_attach(struct tree *t, size_t leaf);
+/* Moves every attached leaf of branch b (all branches if b < 0) to where its branch's
+ * frame now puts it: call after changing a branch's points. */
+void tree_leaves_follow(struct tree *t, int b);

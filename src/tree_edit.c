@@ -25,6 +25,7 @@ static void compact_leaves(struct tree *t, const int *map_branch, const bool *re
 
 		if ((remove_leaf && remove_leaf[i]) || b < 0) {
 			free(l.points);
+			free(l.local);
 			continue;
 		}
 		l.id = (int)k;
@@ -134,4 +135,74 @@ int tree_cut_branch(struct tree *t, int id, size_t segment, double seg_t)
 	free(remove);
 	free(map);
 	return 0;
+}
+
+struct tree_frame tree_frame_at(const struct branch *b, double t)
+{
+	struct tree_frame f = { .tangent = vec3(0, 1, 0), .normal = vec3(1, 0, 0),
+				.binormal = vec3(0, 0, 1) };
+	double want = t * tree_branch_length(b), walked = 0.0;
+	size_t seg = 0;
+	double s = 0.0;
+
+	if (b->npoints == 0)
+		return f;
+	f.origin = b->points[0];
+	if (b->npoints < 2)
+		return f;
+	for (seg = 0; seg + 2 < b->npoints; seg++) {
+		double l = vec3_dist(b->points[seg], b->points[seg + 1]);
+
+		if (walked + l >= want)
+			break;
+		walked += l;
+	}
+	{
+		double l = vec3_dist(b->points[seg], b->points[seg + 1]);
+
+		s = l > 0 ? (want - walked) / l : 0.0;
+		s = s < 0 ? 0 : s > 1 ? 1 : s;
+	}
+	f.origin = vec3_lerp(b->points[seg], b->points[seg + 1], s);
+	f.tangent = vec3_norm_or(vec3_sub(b->points[seg + 1], b->points[seg]), f.tangent);
+	/* The normal lies across the branch in the picture plane (z up out of the screen)
+	 * unless the branch points along z. */
+	f.normal = vec3_norm_or(vec3_cross(vec3(0, 0, 1), f.tangent),
+				vec3_norm_or(vec3_cross(vec3(1, 0, 0), f.tangent), vec3(0, 1, 0)));
+	f.binormal = vec3_cross(f.tangent, f.normal);
+	return f;
+}
+
+int tree_leaf_attach(struct tree *t, size_t i)
+{
+	struct leaf *l = &t->leaves[i];
+	struct tree_frame f = tree_frame_at(&t->branches[l->branch], l->branch_t);
+	struct vec3 *local = realloc(l->local, (l->npoints ? l->npoints : 1) * sizeof(*local));
+
+	if (!local)
+		return -ENOMEM;
+	for (size_t k = 0; k < l->npoints; k++) {
+		struct vec3 d = vec3_sub(l->points[k], f.origin);
+
+		local[k] = vec3(vec3_dot(d, f.tangent), vec3_dot(d, f.normal), vec3_dot(d, f.binormal));
+	}
+	l->local = local;
+	return 0;
+}
+
+void tree_leaves_follow(struct tree *t, int b)
+{
+	for (size_t i = 0; i < t->nleaves; i++) {
+		struct leaf *l = &t->leaves[i];
+		struct tree_frame f;
+
+		if (!l->local || (b >= 0 && l->branch != b))
+			continue;
+		f = tree_frame_at(&t->branches[l->branch], l->branch_t);
+		for (size_t k = 0; k < l->npoints; k++)
+			l->points[k] = vec3_add(f.origin,
+						vec3_add(vec3_scale(f.tangent, l->local[k].x),
+							 vec3_add(vec3_scale(f.normal, l->local[k].y),
+								  vec3_scale(f.binormal, l->local[k].z))));
+	}
 }

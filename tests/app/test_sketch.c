@@ -93,6 +93,30 @@ static void test_tree(void)
 	CHECK_INT(t.leaves[0].branch, 1);
 	CHECK(t.leaves[0].npoints >= 10);
 
+	/* the leaf is held in b1's frame: turn b1 a quarter about its root and the leaf turns
+	 * with it */
+	{
+		struct branch *b1 = &t.branches[1];
+		struct vec3 root = b1->points[0], before[64];
+		size_t n = t.leaves[0].npoints;
+
+		CHECK(n <= 64);
+		for (size_t i = 0; i < n; i++)
+			before[i] = t.leaves[0].points[i];
+		for (size_t i = 0; i < b1->npoints; i++) {
+			struct vec3 d = vec3_sub(b1->points[i], root);
+
+			b1->points[i] = vec3_add(root, vec3(-d.y, d.x, 0));
+		}
+		tree_leaves_follow(&t, 1);
+		for (size_t i = 0; i < n; i++) {
+			struct vec3 d = vec3_sub(before[i], root);
+
+			CHECK_NEAR(t.leaves[0].points[i].x, root.x - d.y, 1e-9);
+			CHECK_NEAR(t.leaves[0].points[i].y, root.y + d.x, 1e-9);
+		}
+	}
+
 	/* a tap makes nothing */
 	op = line_op(1, 1, 1.01, 1, 2);
 	CHECK_INT(sketch_apply(&t, &op, &rng), 0);
