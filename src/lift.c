@@ -1,0 +1,539 @@
+/* SPDX-License-Identifier: MIT */
+#include "lift.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Depth candidates tried for each branch end. */
+#define CANDIDATES 48
+
+/* The sketch's 2D convex hull (Andrew's monotone chain), counter-clockwise. */
+struct hull {
+	struct vec3 *p;
+	size_t n;
+	double ymin, ymax;
+};
+
+static int cmp_xy(const void *a, const void *b)
+{
+	const struct vec3 *p = a, *q = b;
+
+	if (p->x != q->x)
+		return p->x < q->x ? -1 : 1;
+	return (p->y > q->y) - (p->y < q->y);
+}
+
+static double cross2(struct vec3 o, struct vec3 a, struct vec3 b)
+{
+	return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+static int hull_build(struct hull *h, const struct tree *t)
+{
+	size_t n = 0, k = 0;
+	struct vec3 *pts;
+
+	for (size_t i = 0; i < t->nbranches; i++)
+		n += t->branches[i].npoints;
+	pts = malloc((n + 1) * sizeof(*pts));
+	h->p = malloc((2 * n + 2) * sizeof(*h->p));
+	if (!pts || !h->p) {
+		free(pts);
+		free(h->p);
+		return -ENOMEM;
+	}
+	n = 0;
+	for (size_t i = 0; i < t->nbranches; i++)
+		for (size_t j = 0; j < t->branches[i].npoints; j++)
+			pts[n++] = t->branches[i].points[j];
+	qsort(pts, n, sizeof(*pts), cmp_xy);
+	for (size_t i = 0; i < n; i++) {
+		while (k >= 2 && cross2(h->p[k - 2], h->p[k - 1], pts[i]) <= 0)
+			k--;
+		h->p[k++] = pts[i];
+	}
+	for (size_t i = n - 1, lo = k + 1; i-- > 0;) {
+		while (k >= lo && cross2(h->p[k - 2], h->p[k - 1], pts[i]) <= 0)
+			k--;
+		h->p[k++] = pts[i];
+	}
+	h->n = k > 1 ? k - 1 : k;
+	h->ymin = INFINITY;
+	h->ymax = -INFINITY;
+	for (size_t i = 0; i < h->n; i++) {
+		h->ymin = fmin(h->ymin, h->p[i].y);
+		h->ymax = fmax(h->ymax, h->p[i].y);
+	}
+	free(pts);
+	return 0;
+}
+
+/* The hull's horizontal extent at height y: centre and half width (0 outside). */
+static void hull_span(const struct hull *h, double y, double *xc, double *hw)
+{
+	double lo = INFINITY, hi = -INFINITY;
+
+	for (size_t i = 0; i < h->n; i++) {
+		struct vec3 a = h->p[i], b = h->p[(i + 1) % h->n];
+
+		if ((a.y <= y && b.y >= y) || (b.y <= y && a.y >= y)) {
+			double x = a.y == b.y ? a.x : a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y);
+
+			lo = fmin(lo, x);
+			hi = fmax(hi, x);
+			if (a.y == b.y) {
+				lo = fmin(lo, b.x);
+				hi = fmax(hi, b.x);
+			}
+		}
+	}
+	if (lo > hi) {
+		*xc = 0;
+		*hw = 0;
+		return;
+	}
+	*xc = 0.5 * (lo + hi);
+	*hw = 0.5 * (hi - lo);
+}
+
+/* Largest |z| at (x, y) inside the scaled 3D hull (discs swept along y); <0: outside. */
+static double hull_depth(const struct hull *h, double x, double y)
+{
+	double xc, hw, r, dx;
+
+	hull_span(h, fmin(fmax(y, h->ymin), h->ymax), &xc, &hw);
+	r = LIFT_HULL_SCALE * hw;
+	dx = x - xc;
+	return r * r - dx * dx >= 0 ? sqrt(r * r - dx * dx) : -1.0;
+}
+
+/* Distances on the ground (x, z) to every branch placed so far. */
+struct field {
+	double x0, z0, cell;
+	float d[LIFT_FIELD_N * LIFT_FIELD_N];
+};
+
+static double seg_dist2(double px, double pz, double ax, double az, double bx, double bz)
+{
+	double dx = bx - ax, dz = bz - az, dd = dx * dx + dz * dz;
+	double s = dd > 0 ? ((px - ax) * dx + (pz - az) * dz) / dd : 0.0;
+
+	s = s < 0 ? 0 : s > 1 ? 1 : s;
+	dx = ax + s * dx - px;
+	dz = az + s * dz - pz;
+	return dx * dx + dz * dz;
+}
+
+static void field_add(struct field *f, struct vec3 a, struct vec3 b)
+{
+	for (int j = 0; j < LIFT_FIELD_N; j++) {
+		double z = f->z0 + (j + 0.5) * f->cell;
+
+		for (int i = 0; i < LIFT_FIELD_N; i++) {
+			double x = f->x0 + (i + 0.5) * f->cell;
+			float d = (float)sqrt(seg_dist2(x, z, a.x, a.z, b.x, b.z));
+			float *c = &f->d[j * LIFT_FIELD_N + i];
+
+			if (d < *c)
+				*c = d;
+		}
+	}
+}
+
+static double field_at(const struct field *f, double x, double z)
+{
+	int i = (int)floor((x - f->x0) / f->cell), j = (int)floor((z - f->z0) / f->cell);
+
+	i = i < 0 ? 0 : i >= LIFT_FIELD_N ? LIFT_FIELD_N - 1 : i;
+	j = j < 0 ? 0 : j >= LIFT_FIELD_N ? LIFT_FIELD_N - 1 : j;
+	return f->d[j * LIFT_FIELD_N + i];
+}
+
+static double angle_between(struct vec3 a, struct vec3 b)
+{
+	double c = vec3_dot(a, b) / (vec3_len(a) * vec3_len(b) + 1e-300);
+
+	return acos(c < -1 ? -1 : c > 1 ? 1 : c);
+}
+
+struct seg {
+	struct vec3 s, e; /* placed segment */
+	double max_child_angle;
+	bool placed;
+};
+
+/* 4.1: depth of each branch's end, as segments. */
+static int place_segments(const struct tree *t, struct rng *rng, struct seg *seg)
+{
+	struct hull h = { 0 };
+	struct field *f;
+	int *order;
+	int maxgen = 0, ret;
+	double xmin = INFINITY, xmax = -INFINITY, rmax = 0;
+
+	ret = hull_build(&h, t);
+	if (ret < 0)
+		return ret;
+	f = malloc(sizeof(*f));
+	order = malloc((t->nbranches + 1) * sizeof(*order));
+	if (!f || !order) {
+		free(h.p);
+		free(f);
+		free(order);
+		return -ENOMEM;
+	}
+	for (size_t i = 0; i < h.n; i++) {
+		xmin = fmin(xmin, h.p[i].x);
+		xmax = fmax(xmax, h.p[i].x);
+	}
+	rmax = LIFT_HULL_SCALE * 0.5 * (xmax - xmin) + 1e-3;
+	f->cell = fmax(xmax - xmin + 2 * rmax, 2 * rmax) / LIFT_FIELD_N;
+	f->x0 = 0.5 * (xmin + xmax) - 0.5 * LIFT_FIELD_N * f->cell;
+	f->z0 = -0.5 * LIFT_FIELD_N * f->cell;
+	for (int i = 0; i < LIFT_FIELD_N * LIFT_FIELD_N; i++)
+		f->d[i] = INFINITY;
+
+	/* The largest drawn angle between each parent and its children. */
+	for (size_t i = 0; i < t->nbranches; i++) {
+		const struct branch *b = &t->branches[i];
+
+		seg[i].s = b->points[0];
+		seg[i].e = b->points[b->npoints - 1];
+		seg[i].max_child_angle = 0;
+		seg[i].placed = false;
+		maxgen = b->generation > maxgen ? b->generation : maxgen;
+	}
+	for (size_t i = 0; i < t->nbranches; i++) {
+		const struct branch *b = &t->branches[i];
+
+		if (b->parent >= 0) {
+			double a = angle_between(vec3_sub(seg[b->parent].e, seg[b->parent].s),
+						 vec3_sub(seg[i].e, seg[i].s));
+
+			seg[b->parent].max_child_angle = fmax(seg[b->parent].max_child_angle, a);
+		}
+	}
+
+	for (int g = 0; g <= maxgen; g++) {
+		size_t n = 0;
+
+		for (size_t i = 0; i < t->nbranches; i++)
+			if (t->branches[i].generation == g)
+				order[n++] = (int)i;
+		/* a seeded random order within the generation (Fisher-Yates) */
+		for (size_t i = n; i > 1; i--) {
+			size_t j = (size_t)(rng_next(rng) % i);
+			int tmp = order[i - 1];
+
+			order[i - 1] = order[j];
+			order[j] = tmp;
+		}
+		for (size_t k = 0; k < n; k++) {
+			int id = order[k];
+			const struct branch *b = &t->branches[id];
+			struct seg *s = &seg[id];
+			double best = -1, best_z = 0, best_angle = INFINITY, best_angle_z = 0;
+			bool found = false;
+
+			if (b->parent < 0) {
+				s->placed = true; /* a trunk stays in the sketch plane */
+				field_add(f, s->s, s->e);
+				continue;
+			}
+			{
+				const struct seg *p = &seg[b->parent];
+				struct vec3 pd = vec3_sub(p->e, p->s);
+				double plen = vec3_len(pd), dxy, lo, hi, reach, zmax;
+				double amax = fmin(LIFT_MAX_ANGLE_RATIO * p->max_child_angle, VEC_PI);
+
+				s->s.z = p->s.z + (p->e.z - p->s.z) * b->parent_t;
+				dxy = hypot(s->e.x - s->s.x, s->e.y - s->s.y);
+				/* 45..135 degrees from the view direction: |dz| <= |dxy| */
+				lo = s->s.z - dxy;
+				hi = s->s.z + dxy;
+				/* at most 1.2 x the parent's length */
+				reach = LIFT_MAX_LENGTH_RATIO * plen;
+				if (reach > dxy) {
+					double dz = sqrt(reach * reach - dxy * dxy);
+
+					lo = fmax(lo, s->s.z - dz);
+					hi = fmin(hi, s->s.z + dz);
+				} else {
+					lo = hi = s->s.z;
+				}
+				/* inside the hull */
+				zmax = hull_depth(&h, s->e.x, s->e.y);
+				if (zmax >= 0) {
+					lo = fmax(lo, -zmax);
+					hi = fmin(hi, zmax);
+				}
+				if (lo > hi)
+					lo = hi = fmin(fmax(s->s.z, zmax >= 0 ? -zmax : s->s.z), zmax >= 0 ? zmax : s->s.z);
+				for (int c = 0; c < CANDIDATES; c++) {
+					double z = lo + (hi - lo) * c / (CANDIDATES - 1);
+					struct vec3 e = vec3(s->e.x, s->e.y, z);
+					double a = angle_between(pd, vec3_sub(e, s->s));
+					double d = field_at(f, e.x, z);
+
+					if (a <= amax + 1e-9) {
+						if (d > best) {
+							best = d;
+							best_z = z;
+							found = true;
+						}
+					} else if (a < best_angle) {
+						best_angle = a;
+						best_angle_z = z;
+					}
+				}
+				s->e.z = found ? best_z : best_angle_z;
+			}
+			s->placed = true;
+			field_add(f, s->s, s->e);
+		}
+	}
+	free(h.p);
+	free(f);
+	free(order);
+	return 0;
+}
+
+/*
+ * 4.3: depth along one branch from the constant-curvature rule. In the stroke's frame
+ * (u along the chord, x across it on the screen, y the depth): kappa = max |x''|, |y''| =
+ * sqrt(kappa^2 - x''^2), its sign flipping where x' = 0; y(0) = 0 and y'(0) such that
+ * y'(end) = 0. Writes y for each point into depth.
+ */
+static void curvature_depth(const struct branch *b, double *depth)
+{
+	size_t n = b->npoints;
+	struct vec3 a = b->points[0], e = b->points[n - 1];
+	double cx = e.x - a.x, cy = e.y - a.y, L = hypot(cx, cy);
+	double *u, *x, *ypp, kappa = 0, sign = 1, y, yp, sum;
+
+	for (size_t i = 0; i < n; i++)
+		depth[i] = 0;
+	if (n < 3 || L <= 0)
+		return;
+	u = malloc(3 * n * sizeof(*u));
+	if (!u)
+		return; /* depth along the branch is a refinement: none rather than fail */
+	x = u + n;
+	ypp = x + n;
+	cx /= L;
+	cy /= L;
+	for (size_t i = 0; i < n; i++) {
+		double dx = b->points[i].x - a.x, dy = b->points[i].y - a.y;
+
+		u[i] = dx * cx + dy * cy;
+		x[i] = -dx * cy + dy * cx;
+	}
+	for (size_t i = 1; i + 1 < n; i++) {
+		double h0 = u[i] - u[i - 1], h1 = u[i + 1] - u[i];
+
+		ypp[i] = h0 > 1e-9 && h1 > 1e-9 ?
+				 2 * ((x[i + 1] - x[i]) / h1 - (x[i] - x[i - 1]) / h0) / (h0 + h1) :
+				 0;
+		kappa = fmax(kappa, fabs(ypp[i]));
+	}
+	ypp[0] = ypp[n - 1] = 0;
+	for (size_t i = 1; i + 1 < n; i++) {
+		double xpp = ypp[i];
+		double xp0 = x[i] - x[i - 1], xp1 = x[i + 1] - x[i];
+
+		/* the sign turns where x' changes sign */
+		if (xp0 * xp1 < 0 || (xp0 != 0 && xp1 == 0))
+			sign = -sign;
+		ypp[i] = sign * sqrt(fmax(kappa * kappa - xpp * xpp, 0));
+	}
+	/* y'(u) = y'(0) + int y''; choose y'(0) so that y'(end) = 0 */
+	sum = 0;
+	for (size_t i = 1; i < n; i++)
+		sum += 0.5 * (ypp[i - 1] + ypp[i]) * (u[i] - u[i - 1]);
+	yp = -sum;
+	y = 0;
+	for (size_t i = 1; i < n; i++) {
+		double h = u[i] - u[i - 1], yp1 = yp + 0.5 * (ypp[i - 1] + ypp[i]) * h;
+
+		y += 0.5 * (yp + yp1) * h;
+		yp = yp1;
+		depth[i] = y;
+	}
+	free(u);
+}
+
+/* Gives every point depth: along the placed segment, plus the curvature depth; roots
+ * land on the parent's final polyline (parents come first). */
+static int apply_depth(struct tree *t, const struct seg *seg)
+{
+	size_t maxn = 1;
+	double *depth;
+
+	for (size_t i = 0; i < t->nbranches; i++)
+		maxn = t->branches[i].npoints > maxn ? t->branches[i].npoints : maxn;
+	depth = malloc(maxn * sizeof(*depth));
+	if (!depth)
+		return -ENOMEM;
+	for (size_t i = 0; i < t->nbranches; i++) {
+		struct branch *b = &t->branches[i];
+		double zs = seg[i].s.z, len = tree_branch_length(b), walked = 0;
+
+		if (b->parent >= 0)
+			zs = tree_frame_at(&t->branches[b->parent], b->parent_t).origin.z;
+		curvature_depth(b, depth);
+		for (size_t k = 0; k < b->npoints; k++) {
+			double s = len > 0 ? walked / len : 0;
+
+			if (k + 1 < b->npoints)
+				walked += hypot(b->points[k + 1].x - b->points[k].x,
+						b->points[k + 1].y - b->points[k].y);
+			b->points[k].z = zs + (seg[i].e.z - seg[i].s.z) * s + depth[k];
+		}
+	}
+	free(depth);
+	tree_leaves_follow(t, -1);
+	return 0;
+}
+
+static int lift_once(struct tree *t, struct rng *rng)
+{
+	struct seg *seg = malloc((t->nbranches + 1) * sizeof(*seg));
+	int ret;
+
+	if (!seg)
+		return -ENOMEM;
+	ret = place_segments(t, rng, seg);
+	if (ret == 0)
+		ret = apply_depth(t, seg);
+	free(seg);
+	return ret;
+}
+
+static int copy_tree(struct tree *dst, const struct tree *src)
+{
+	tree_init(dst);
+	for (size_t i = 0; i < src->nbranches; i++) {
+		const struct branch *b = &src->branches[i];
+
+		if (tree_add_branch(dst, b->parent, b->parent_t, b->origin, b->points, b->radii,
+				    b->npoints) < 0)
+			return -ENOMEM;
+	}
+	for (size_t i = 0; i < src->nleaves; i++) {
+		const struct leaf *l = &src->leaves[i];
+		int id = tree_add_leaf(dst, l->branch, l->origin, l->points, l->npoints);
+
+		if (id < 0)
+			return -ENOMEM;
+		dst->leaves[id].branch_t = l->branch_t;
+		if (l->local && tree_leaf_attach(dst, (size_t)id) < 0)
+			return -ENOMEM;
+	}
+	return 0;
+}
+
+/* 4.2: the second tree turned 90 degrees about the trunk's base, merged without trunks. */
+static int merge_turned(struct tree *a, const struct tree *b)
+{
+	struct vec3 base = a->branches[0].points[0];
+	int *map = malloc((b->nbranches + 1) * sizeof(*map));
+	size_t first = a->nbranches;
+
+	if (!map)
+		return -ENOMEM;
+	for (size_t i = 0; i < b->nbranches; i++) {
+		const struct branch *br = &b->branches[i];
+		struct vec3 *p, shift = vec3(0, 0, 0);
+		int parent, id;
+
+		if (br->parent < 0) {
+			map[i] = br->id < (int)a->nbranches ? (int)i : 0; /* trunks map onto A's */
+			continue;
+		}
+		p = malloc(br->npoints * sizeof(*p));
+		if (!p) {
+			free(map);
+			return -ENOMEM;
+		}
+		for (size_t k = 0; k < br->npoints; k++) {
+			struct vec3 d = vec3_sub(br->points[k], base);
+
+			p[k] = vec3(base.x + d.z, br->points[k].y, base.z - d.x);
+		}
+		parent = map[br->parent];
+		/* first-generation branches hang on A's trunk, which is not turned */
+		if (b->branches[br->parent].parent < 0)
+			shift = vec3_sub(tree_frame_at(&a->branches[parent], br->parent_t).origin, p[0]);
+		for (size_t k = 0; k < br->npoints; k++)
+			p[k] = vec3_add(p[k], shift);
+		id = tree_add_branch(a, parent, br->parent_t, ORIGIN_MERGE, p, br->radii, br->npoints);
+		free(p);
+		if (id < 0) {
+			free(map);
+			return -ENOMEM;
+		}
+		map[i] = id;
+	}
+	for (size_t i = 0; i < b->nleaves; i++) {
+		const struct leaf *l = &b->leaves[i];
+		int id;
+
+		if (map[l->branch] < (int)first)
+			continue; /* leaves on the trunk are not copied with it */
+		id = tree_add_leaf(a, map[l->branch], ORIGIN_MERGE, l->points, l->npoints);
+		if (id < 0) {
+			free(map);
+			return -ENOMEM;
+		}
+		a->leaves[id].branch_t = l->branch_t;
+		a->leaves[id].local = NULL;
+		if (l->local) {
+			a->leaves[id].local = malloc(l->npoints * sizeof(*l->local));
+			if (!a->leaves[id].local) {
+				free(map);
+				return -ENOMEM;
+			}
+			memcpy(a->leaves[id].local, l->local, l->npoints * sizeof(*l->local));
+		}
+	}
+	free(map);
+	tree_leaves_follow(a, -1);
+	return 0;
+}
+
+int lift_tree(struct tree *t, struct rng *rng, bool merge)
+{
+	struct tree a, b;
+	struct rng ra, rb;
+	int ret;
+
+	if (t->nbranches == 0)
+		return 0;
+	rng_seed(&ra, rng_next(rng));
+	rng_seed(&rb, rng_next(rng));
+	ret = copy_tree(&a, t);
+	if (ret == 0)
+		ret = lift_once(&a, &ra);
+	tree_init(&b);
+	if (ret == 0 && merge) {
+		ret = copy_tree(&b, t);
+		if (ret == 0)
+			ret = lift_once(&b, &rb);
+		if (ret == 0)
+			ret = merge_turned(&a, &b);
+	}
+	tree_finish(&b);
+	if (ret < 0) {
+		tree_finish(&a);
+		return ret;
+	}
+	/* keep what sketching remembers */
+	a.last_sketched = -1;
+	a.has_profile = t->has_profile;
+	memcpy(a.profile, t->profile, sizeof(a.profile));
+	tree_finish(t);
+	*t = a;
+	return 0;
+}

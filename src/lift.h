@@ -1,0 +1,36 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+#include <stdbool.h>
+
+#include "rng.h"
+#include "tree.h"
+
+/*
+ * Lifting the 2D sketch to a 3D tree (seed 000, sections 4.1-4.3). Every branch keeps its
+ * drawn x and y (so the tree looks like the sketch from the front) and gets depth z:
+ *
+ * 4.1 Branches are taken as segments from start to end and placed from the trunk outwards,
+ *     generation by generation, in a seeded random order within a generation. A branch's
+ *     start sits on its placed parent; the depth of its end is the sparsest admissible
+ *     one on a LIFT_FIELD_N^2 distance field of all branches placed so far, projected on
+ *     the ground. Admissible: inside the sqrt(2)-scaled hull (the sketch's 2D convex hull
+ *     swept as discs from its lowest to its highest point), at most 1.2 x the parent's
+ *     length, at most 1.2 x the largest drawn parent-child angle from the parent, and
+ *     between 45 and 135 degrees from the view direction.
+ * 4.3 The points along each branch get depth by the constant-curvature rule, so a wavy
+ *     stroke becomes a helix.
+ * 4.2 With `merge`, this is done twice with different random streams; the second tree,
+ *     turned 90 degrees about the vertical through the trunk's base, is merged into the
+ *     first without its trunk (origin ORIGIN_MERGE): the branches a child leaves out
+ *     because they point at the viewer.
+ *
+ * Leaves follow their branches. Returns 0 or -ENOMEM (tree unchanged).
+ */
+#define LIFT_FIELD_N 128
+#define LIFT_HULL_SCALE 1.41421356237309504880
+#define LIFT_MAX_LENGTH_RATIO 1.2
+#define LIFT_MAX_ANGLE_RATIO 1.2
+#define LIFT_MIN_VIEW_ANGLE_DEG 45.0
+
+int lift_tree(struct tree *t, struct rng *rng, bool merge);

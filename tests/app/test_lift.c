@@ -1,0 +1,205 @@
+/* SPDX-License-Identifier: MIT */
+/* Lifting (seed 000, 4.1-4.3): the constraints hold for every branch, a sine stroke
+ * becomes a helix, the same seed gives the same tree and another seed another. */
+#include <string.h>
+
+#include "lift.h"
+#include "sketch.h"
+#include "test.h"
+
+static uint64_t now;
+
+static void stroke(struct tree *t, struct rng *rng, double x0, double y0, double x1, double y1,
+		   double wave)
+{
+	struct doc_op op = { .kind = DOC_OP_STROKE, .tool = EVENT_TOOL_PEN, .time_us = now };
+	int n = 60;
+
+	now += 5000000;
+	op.points = calloc((size_t)n, sizeof(*op.points));
+	CHECK(op.points);
+	op.npoints = (size_t)n;
+	for (int i = 0; i < n; i++) {
+		double s = (double)i / (n - 1), dx = x1 - x0, dy = y1 - y0, l = hypot(dx, dy);
+		double off = wave * sin(s * 2 * VEC_PI * 2); /* two waves across the stroke */
+
+		op.points[i] = (struct doc_point){ (float)(x0 + dx * s - dy / l * off),
+						   (float)(y0 + dy * s + dx / l * off), 0.5f,
+						   (uint32_t)i * 8000 };
+	}
+	CHECK(sketch_apply(t, &op, rng) >= 0);
+	doc_op_finish(&op);
+}
+
+/* A broad, left-right symmetric tree: trunk, 3 pairs of branches, twigs on them. */
+static void broadleaf(struct tree *t, struct rng *rng)
+{
+	stroke(t, rng, 0, 0, 0, 6, 0);
+	for (int k = 0; k < 3; k++) {
+		double y = 2.5 + k * 1.2, reach = 2.8 - 0.6 * k;
+
+		stroke(t, rng, 0, y, reach, y + 1.2, 0);
+		stroke(t, rng, 0, y, -reach, y + 1.2, 0);
+	}
+	for (int k = 1; k <= 6; k++) {
+		const struct branch *b = &t->branches[k];
+		struct vec3 m = b->points[b->npoints / 2];
+
+		stroke(t, rng, m.x, m.y, m.x + 0.3 * (m.x > 0 ? 1 : -1), m.y + 0.9, 0);
+	}
+}
+
+static struct vec3 end_of(const struct branch *b)
+{
+	return b->points[b->npoints - 1];
+}
+
+static double angle(struct vec3 a, struct vec3 b)
+{
+	return acos(fmin(1, fmax(-1, vec3_dot(a, b) / (vec3_len(a) * vec3_len(b)))));
+}
+
+static void test_constraints(void)
+{
+	struct tree t2, t3;
+	struct rng rng;
+	double xmin = INFINITY, xmax = -INFINITY;
+
+	tree_init(&t2);
+	rng_seed(&rng, 11);
+	broadleaf(&t2, &rng);
+	CHECK_INT(t2.nbranches, 13);
+	tree_init(&t3);
+	for (size_t i = 0; i < t2.nbranches; i++) {
+		const struct branch *b = &t2.branches[i];
+
+		CHECK(tree_add_branch(&t3, b->parent, b->parent_t, b->origin, b->points, b->radii,
+				      b->npoints) >= 0);
+		for (size_t k = 0; k < b->npoints; k++) {
+			xmin = fmin(xmin, b->points[k].x);
+			xmax = fmax(xmax, b->points[k].x);
+		}
+	}
+	CHECK_INT(lift_tree(&t3, &rng, false), 0);
+	CHECK_INT(t3.nbranches, t2.nbranches);
+	for (size_t i = 0; i < t3.nbranches; i++) {
+		const struct branch *b2 = &t2.branches[i], *b3 = &t3.branches[i];
+		struct vec3 s3 = b3->points[0], e3 = end_of(b3), d3 = vec3_sub(e3, s3);
+
+		/* the front view is the sketch: x and y exactly as drawn */
+		for (size_t k = 0; k < b3->npoints; k++) {
+			CHECK_NEAR(b3->points[k].x, b2->points[k].x, 0.06);
+			CHECK_NEAR(b3->points[k].y, b2->points[k].y, 0.06);
+		}
+		/* inside the sqrt(2)-scaled hull (a looser, independent bound) */
+		CHECK(fabs(e3.z) <= LIFT_HULL_SCALE * 0.5 * (xmax - xmin) + 1e-9);
+		if (b3->parent < 0)
+			continue;
+		{
+			const struct branch *p3 = &t3.branches[b3->parent], *p2 = &t2.branches[b2->parent];
+			double plen = vec3_dist(p3->points[0], end_of(p3));
+			double amax2 = 0;
+
+			/* at most 1.2 x as long as the parent */
+			CHECK(vec3_len(d3) <= LIFT_MAX_LENGTH_RATIO * plen + 0.02);
+			/* 45..135 degrees from the view direction */
+			CHECK(fabs(d3.z) <= hypot(d3.x, d3.y) + 0.02);
+			/* parent-child angle at most 1.2 x the largest drawn one */
+			for (size_t j = 0; j < t2.nbranches; j++)
+				if (t2.branches[j].parent == b2->parent)
+					amax2 = fmax(amax2, angle(vec3_sub(end_of(p2), p2->points[0]),
+								  vec3_sub(end_of(&t2.branches[j]),
+									   t2.branches[j].points[0])));
+			CHECK(angle(vec3_sub(end_of(p3), p3->points[0]), d3) <=
+			      LIFT_MAX_ANGLE_RATIO * amax2 + 0.02);
+			/* the root is on the parent */
+			CHECK(vec3_dist(s3, tree_frame_at(p3, b3->parent_t).origin) < 0.08);
+		}
+	}
+	tree_finish(&t2);
+	tree_finish(&t3);
+}
+
+static void test_merge_and_seed(void)
+{
+	struct tree a, b, c;
+	struct rng r;
+	double zmin = INFINITY, zmax = -INFINITY, xmin = INFINITY, xmax = -INFINITY;
+	bool differ = false;
+
+	for (int k = 0; k < 3; k++) {
+		struct tree *t = k == 0 ? &a : k == 1 ? &b : &c;
+
+		tree_init(t);
+		rng_seed(&r, 11);
+		broadleaf(t, &r);
+		rng_seed(&r, k < 2 ? 100 : 101);
+		CHECK_INT(lift_tree(t, &r, true), 0);
+	}
+	/* merged: the turned copy without its trunk, marked "merge" */
+	CHECK_INT(a.nbranches, 13 + 12);
+	CHECK_INT(a.branches[13].origin, ORIGIN_MERGE);
+	CHECK_INT(a.branches[13].parent, 0);
+	/* same seed, same tree; another seed, another */
+	for (size_t i = 0; i < a.nbranches; i++) {
+		CHECK(memcmp(a.branches[i].points, b.branches[i].points,
+			     a.branches[i].npoints * sizeof(struct vec3)) == 0);
+		if (memcmp(a.branches[i].points, c.branches[i].points,
+			   a.branches[i].npoints * sizeof(struct vec3)))
+			differ = true;
+	}
+	CHECK(differ);
+	/* a left-right symmetric sketch grows about as deep as it is wide */
+	for (size_t i = 0; i < a.nbranches; i++)
+		for (size_t k = 0; k < a.branches[i].npoints; k++) {
+			struct vec3 p = a.branches[i].points[k];
+
+			zmin = fmin(zmin, p.z), zmax = fmax(zmax, p.z);
+			xmin = fmin(xmin, p.x), xmax = fmax(xmax, p.x);
+		}
+	fprintf(stderr, "depth/width = %.2f\n", (zmax - zmin) / (xmax - xmin));
+	CHECK((zmax - zmin) >= 0.5 * (xmax - xmin) && (zmax - zmin) <= 1.5 * (xmax - xmin));
+	tree_finish(&a);
+	tree_finish(&b);
+	tree_finish(&c);
+}
+
+static void test_helix(void)
+{
+	struct tree t;
+	struct rng r;
+	const struct branch *b;
+	double xamp = 0, zamp = 0, zmin = INFINITY, zmax = -INFINITY;
+
+	tree_init(&t);
+	rng_seed(&r, 1);
+	/* a vertical trunk waving sideways with amplitude 0.4 m, two waves */
+	stroke(&t, &r, 0, 0, 0, 6, 0.4);
+	CHECK_INT(lift_tree(&t, &r, false), 0);
+	b = &t.branches[0];
+	for (size_t k = 0; k < b->npoints; k++) {
+		xamp = fmax(xamp, fabs(b->points[k].x));
+		zmin = fmin(zmin, b->points[k].z);
+		zmax = fmax(zmax, b->points[k].z);
+	}
+	zamp = 0.5 * (zmax - zmin);
+	fprintf(stderr, "helix: sideways %.3f, depth %.3f\n", xamp, zamp);
+	CHECK(fabs(zamp - xamp) <= 0.2 * xamp);
+	/* a quarter period out of phase: depth is at an extreme where x crosses zero
+	 * (the middle of each wave) and at its middle where x is extreme */
+	for (size_t k = 1; k + 1 < b->npoints; k++) {
+		double x = b->points[k].x, zmid = 0.5 * (zmin + zmax);
+
+		if (fabs(x) > 0.95 * xamp)
+			CHECK(fabs(b->points[k].z - zmid) < 0.35 * zamp);
+	}
+	tree_finish(&t);
+}
+
+int main(void)
+{
+	test_constraints();
+	test_merge_and_seed();
+	test_helix();
+	return 0;
+}
