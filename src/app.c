@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "layout.h"
+#include "lift.h"
 #include "sketch.h"
 
 static void app_fail(struct app *app, int err)
@@ -48,6 +49,11 @@ static int apply_op(struct app *app, const struct doc_op *op)
 	case DOC_OP_NEW:
 		tree_clear(&app->tree);
 		return SKETCH_CHANGED;
+	case DOC_OP_LIFT: {
+		int ret = lift_tree(&app->tree, &app->rng, true);
+
+		return ret < 0 ? ret : SKETCH_CHANGED;
+	}
 	}
 	return SKETCH_CHANGED;
 }
@@ -201,8 +207,12 @@ static int press_button(struct app *app, enum button button, uint64_t time_us)
 
 	switch (button) {
 	case BUTTON_3D:
-		/* Lifting to 3D arrives with the lifting module; until then the press is shown only. */
-		return 0;
+		/* Once per drawing: a 3D tree stays 3D (undo goes back to the sketch). */
+		if (app->tree.nbranches == 0 || app->tree.lifted)
+			return 0;
+		op.kind = DOC_OP_LIFT;
+		ret = push_op(app, &op);
+		return ret == -ENOSPC ? 0 : ret;
 	case BUTTON_CLONE:
 		set_mode(app, APP_MODE_CLONE);
 		return 0;

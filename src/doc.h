@@ -18,6 +18,7 @@
 enum doc_op_kind {
 	DOC_OP_STROKE = 0, /* a pen stroke, in world metres */
 	DOC_OP_NEW,        /* clears the canvas (undoable) */
+	DOC_OP_LIFT,       /* the 3D button: the sketch becomes a 3D tree (version 2) */
 };
 
 /* Stored as float so that what is written is exactly what is replayed. */
@@ -42,7 +43,8 @@ struct doc {
 	size_t cursor; /* ops[0..cursor) are in effect */
 };
 
-#define DOC_FORMAT_VERSION 1
+/* 2 added the lift op; files of version 1 read as before. */
+#define DOC_FORMAT_VERSION 2
 
 /*
  * Limits on a drawing, far beyond what a visitor draws in a day, so that a damaged or

@@ -36,6 +36,9 @@ int doc_serialize(const struct doc *d, const struct tree *t, struct buf *out)
 		case DOC_OP_NEW:
 			buf_printf(out, "new %llu\n", (unsigned long long)op->time_us);
 			break;
+		case DOC_OP_LIFT:
+			buf_printf(out, "lift %llu\n", (unsigned long long)op->time_us);
+			break;
 		}
 	}
 	if (t) {
@@ -201,7 +204,7 @@ static int parse_stroke(struct reader *r, struct doc_op *op)
 	return 0;
 }
 
-static int parse_body(struct reader *r, struct doc *d)
+static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 {
 	uint64_t v, nops = 0, cursor = 0;
 	bool have_seed = false, have_history = false, in_tree = false;
@@ -248,7 +251,8 @@ static int parse_body(struct reader *r, struct doc *d)
 			    (ret = parse_u64(r, r->fields[2], nops, &cursor, "cursor")) < 0)
 				return ret;
 			have_history = true;
-		} else if (strcmp(kw, "stroke") == 0 || strcmp(kw, "new") == 0) {
+		} else if (strcmp(kw, "stroke") == 0 || strcmp(kw, "new") == 0 ||
+			   (version >= 2 && strcmp(kw, "lift") == 0)) {
 			if (!have_history)
 				return error_at(r->err, -EINVAL, r->name, r->line,
 						"\"%s\" before the history line", kw);
@@ -260,8 +264,8 @@ static int parse_body(struct reader *r, struct doc *d)
 				op.kind = DOC_OP_STROKE;
 				ret = parse_stroke(r, &op);
 			} else {
-				op.kind = DOC_OP_NEW;
-				ret = expect_fields(r, 2, "new");
+				op.kind = kw[0] == 'n' ? DOC_OP_NEW : DOC_OP_LIFT;
+				ret = expect_fields(r, 2, kw);
 				if (ret == 0)
 					ret = parse_u64(r, r->fields[1], UINT64_MAX, &op.time_us, "time");
 			}
@@ -313,13 +317,13 @@ int doc_parse(const char *data, size_t len, const char *name, struct doc *d, str
 	}
 	if ((ret = parse_u64(&r, r.fields[1], UINT32_MAX, &version, "version")) < 0)
 		goto out;
-	if (version != DOC_FORMAT_VERSION) {
+	if (version < 1 || version > DOC_FORMAT_VERSION) {
 		ret = error_at(err, -EINVAL, name, r.line,
-			       "drawing format version %llu is not supported (this edaha reads %d)",
+			       "drawing format version %llu is not supported (this edaha reads 1 to %d)",
 			       (unsigned long long)version, DOC_FORMAT_VERSION);
 		goto out;
 	}
-	ret = parse_body(&r, d);
+	ret = parse_body(&r, d, version);
 out:
 	free(r.copy);
 	if (ret < 0)

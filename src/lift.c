@@ -509,7 +509,7 @@ int lift_tree(struct tree *t, struct rng *rng, bool merge)
 	struct rng ra, rb;
 	int ret;
 
-	if (t->nbranches == 0)
+	if (t->nbranches == 0 || t->lifted)
 		return 0;
 	rng_seed(&ra, rng_next(rng));
 	rng_seed(&rb, rng_next(rng));
@@ -531,6 +531,7 @@ int lift_tree(struct tree *t, struct rng *rng, bool merge)
 	}
 	/* keep what sketching remembers */
 	a.last_sketched = -1;
+	a.lifted = true;
 	a.has_profile = t->has_profile;
 	memcpy(a.profile, t->profile, sizeof(a.profile));
 	tree_finish(t);

@@ -25,7 +25,8 @@
  *     first without its trunk (origin ORIGIN_MERGE): the branches a child leaves out
  *     because they point at the viewer.
  *
- * Leaves follow their branches. Returns 0 or -ENOMEM (tree unchanged).
+ * Leaves follow their branches. A lifted tree (t->lifted) is left as it is. Returns 0 or
+ * -ENOMEM (tree unchanged).
  */
 #define LIFT_FIELD_N 128
 #define LIFT_HULL_SCALE 1.41421356237309504880

@@ -202,6 +202,10 @@ static int add_branch(struct tree *t, struct vec3 *p, size_t n, const double *dr
 			free(radii);
 			return 0;
 		}
+		/* In 3D the stroke lies on the plane through the attachment point that faces
+		 * the camera (the front view looks along -z). */
+		for (size_t i = 0; i < n; i++)
+			p[i].z = hit.point.z;
 		shift = vec3_sub(hit.point, p[0]);
 		for (size_t i = 0; i < n; i++) {
 			double w = len > 0 ? 1.0 - walked / len : 0.0;
@@ -231,7 +235,7 @@ static int add_branch(struct tree *t, struct vec3 *p, size_t n, const double *dr
 	return 0;
 }
 
-static int add_leaf(struct tree *t, const struct vec3 *p, size_t n)
+static int add_leaf(struct tree *t, struct vec3 *p, size_t n)
 {
 	struct sketch_hit best = { .branch = -1, .dist = INFINITY };
 	int ret;
@@ -246,6 +250,8 @@ static int add_leaf(struct tree *t, const struct vec3 *p, size_t n)
 	}
 	if (best.branch < 0)
 		return 0;
+	for (size_t i = 0; i < n; i++)
+		p[i].z = best.point.z; /* see add_branch */
 	/* The polygon closes itself: drop the end point that returned to the start. */
 	ret = tree_add_leaf(t, best.branch, ORIGIN_SKETCH, p, n - 1);
 	if (ret < 0)

@@ -40,6 +40,7 @@ void tree_clear(struct tree *t)
 	t->nleaves = 0;
 	t->last_sketched = -1;
 	t->has_profile = false;
+	t->lifted = false;
 }
 
 void tree_finish(struct tree *t)

@@ -49,6 +49,7 @@ struct tree {
 	struct leaf *leaves;
 	size_t nleaves, cap_leaves;
 
+	bool lifted; /* the 3D button made it a 3D tree */
 	/* What sketching carries from stroke to stroke; rebuilt with the tree. */
 	int last_sketched;             /* the branch the latest stroke drew, or -1 */
 	uint64_t last_sketched_end_us; /* when that stroke ended */

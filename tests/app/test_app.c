@@ -160,6 +160,36 @@ int main(void)
 	CHECK_INT(app_take_requests(app), APP_REQUEST_EXPORT);
 	CHECK_INT(app_take_requests(app), 0);
 
+	/* 3D: the lift is one undoable edit; the front view stays the sketch */
+	{
+		size_t nb = app->tree.nbranches;
+		struct vec3 tip = app->tree.branches[1].points[app->tree.branches[1].npoints - 1];
+		const struct branch *nb3;
+		double z;
+
+		ev_button(app, BUTTON_3D);
+		CHECK(app->tree.lifted);
+		CHECK_INT(app->doc.ops[app->doc.cursor - 1].kind, DOC_OP_LIFT);
+		CHECK(app->tree.nbranches > nb); /* the turned copy was merged in */
+		CHECK_NEAR(app->tree.branches[1].points[app->tree.branches[1].npoints - 1].x, tip.x, 1e-9);
+		CHECK_NEAR(app->tree.branches[1].points[app->tree.branches[1].npoints - 1].y, tip.y, 1e-9);
+		ev_button(app, BUTTON_3D); /* once is enough */
+		CHECK_INT(app->doc.ops[app->doc.cursor - 2].kind, DOC_OP_STROKE);
+		/* a branch drawn on the 3D tree lies in the plane of its attachment point */
+		draw_line(app, 634, 600, 500, 560);
+		nb3 = &app->tree.branches[app->tree.nbranches - 1];
+		z = nb3->points[0].z;
+		CHECK_INT(nb3->parent, 0);
+		for (size_t i = 0; i < nb3->npoints; i++)
+			CHECK_NEAR(nb3->points[i].z, z, 1e-12);
+		ev_button(app, BUTTON_UNDO);
+		ev_button(app, BUTTON_UNDO);
+		CHECK(!app->tree.lifted);
+		CHECK_INT(app->tree.nbranches, nb);
+		ev_button(app, BUTTON_REDO);
+		CHECK(app->tree.lifted);
+	}
+
 	/* saved and loaded, the document rebuilds the same tree */
 	buf_init(&buf);
 	CHECK_INT(doc_serialize(&app->doc, &app->tree, &buf), 0);

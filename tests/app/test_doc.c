@@ -101,7 +101,10 @@ static void test_errors(void)
 {
 	expect_error("", "bad.edaha: empty file");
 	expect_error("hello\n", "bad.edaha:1: not an edaha drawing");
-	expect_error("# c\nedaha-drawing 2\n", "bad.edaha:2: drawing format version 2");
+	expect_error("# c\nedaha-drawing 3\n", "bad.edaha:2: drawing format version 3");
+	expect_error("edaha-drawing 0\n", "bad.edaha:1: drawing format version 0");
+	/* version 1 files have no lift op */
+	expect_error("edaha-drawing 1\nseed 1\nhistory 1 1\nlift 5\nend\n", "bad.edaha:4: unknown line");
 	expect_error("edaha-drawing 1\nseed x\n", "bad.edaha:2: bad seed");
 	expect_error("edaha-drawing 1\nseed 1\nhistory 1 2\n", "bad.edaha:3: bad cursor");
 	expect_error("edaha-drawing 1\nseed 1\nhistory 1 1\nstroke pen 0 2\n0 0 0.5 0\n",
@@ -122,8 +125,31 @@ static void test_errors(void)
 	expect_error_len(nul, sizeof(nul) - 1, "bad.edaha:3: binary data");
 }
 
+/* A version 1 file (before the lift op) still loads; version 2 has lift. */
+static void test_versions(void)
+{
+	static const char v1[] = "edaha-drawing 1\nseed 4\nhistory 1 1\nnew 5\nend\n";
+	static const char v2[] = "edaha-drawing 2\nseed 4\nhistory 2 2\nnew 5\nlift 9\nend\n";
+	struct error err = { { 0 } };
+	struct doc d;
+	struct buf b;
+
+	CHECK_INT(doc_parse(v1, sizeof(v1) - 1, "v1", &d, &err), 0);
+	CHECK_INT(d.nops, 1);
+	doc_finish(&d);
+	CHECK_INT(doc_parse(v2, sizeof(v2) - 1, "v2", &d, &err), 0);
+	CHECK_INT(d.ops[1].kind, DOC_OP_LIFT);
+	CHECK(d.ops[1].time_us == 9);
+	buf_init(&b);
+	CHECK_INT(doc_serialize(&d, NULL, &b), 0);
+	CHECK(b.len > 0 && strstr((const char *)b.data, "\nlift 9\n") && strncmp((const char *)b.data, "edaha-drawing 2\n", 16) == 0);
+	buf_finish(&b);
+	doc_finish(&d);
+}
+
 int main(void)
 {
+	test_versions();
 	test_history();
 	test_roundtrip();
 	test_errors();

@@ -57,8 +57,8 @@ t_golden() {
 t_determinism() {
 	local wacom=$SRC/data/wacom-intuos-pro-m.yml
 	# different heap garbage and rasteriser threads must not change a byte
-	MALLOC_PERTURB_=17 LP_NUM_THREADS=0 run --out "$T/a" --seed 9 --replay "$DEMO" --press leaf --replay "$wacom"
-	MALLOC_PERTURB_=201 LP_NUM_THREADS=2 run --out "$T/b" --seed 9 --replay "$DEMO" --press leaf --replay "$wacom"
+	MALLOC_PERTURB_=17 LP_NUM_THREADS=0 run --out "$T/a" --seed 9 --replay "$DEMO" --press leaf --replay "$wacom" --press 3d
+	MALLOC_PERTURB_=201 LP_NUM_THREADS=2 run --out "$T/b" --seed 9 --replay "$DEMO" --press leaf --replay "$wacom" --press 3d
 	# shellcheck disable=SC2086
 	same_files "$T/a" "$T/b" $OUTPUTS
 }
@@ -101,11 +101,13 @@ t_record() {
 
 t_exports_valid() {
 	run --out "$T/demo" --replay "$DEMO"
+	run --out "$T/demo3d" --replay "$DEMO" --press 3d
 	run --out "$T/wacom" --replay "$SRC/data/wacom-intuos-pro-m.yml"
 	run --out "$T/empty"
-	"$GLTF_VALIDATE" "$T/demo/model.glb" "$T/wacom/model.glb" "$T/empty/model.glb" || fail "glTF validator"
+	"$GLTF_VALIDATE" "$T/demo/model.glb" "$T/demo3d/model.glb" "$T/wacom/model.glb" "$T/empty/model.glb" ||
+		fail "glTF validator"
 	if command -v assimp >/dev/null; then
-		for f in demo/model.glb demo/model.obj wacom/model.glb; do
+		for f in demo/model.glb demo/model.obj demo3d/model.glb wacom/model.glb; do
 			assimp info "$T/$f" >"$T/assimp.log" 2>&1 || { cat "$T/assimp.log"; fail "assimp info $f"; }
 		done
 	else
