@@ -300,6 +300,31 @@ static int place_segments(const struct tree *t, struct rng *rng, struct seg *seg
 	return 0;
 }
 
+/* Box filter of half width w, three passes (close to a Gaussian); ends stay. */
+static void smooth_profile(double *x, size_t n, size_t w)
+{
+	double *tmp;
+
+	if (w == 0 || n < 3)
+		return;
+	tmp = malloc(n * sizeof(*tmp));
+	if (!tmp)
+		return;
+	for (int pass = 0; pass < 3; pass++) {
+		for (size_t i = 1; i + 1 < n; i++) {
+			size_t lo = i > w ? i - w : 0, hi = i + w < n - 1 ? i + w : n - 1;
+			double sum = 0;
+
+			for (size_t k = lo; k <= hi; k++)
+				sum += x[k];
+			tmp[i] = sum / (double)(hi - lo + 1);
+		}
+		for (size_t i = 1; i + 1 < n; i++)
+			x[i] = tmp[i];
+	}
+	free(tmp);
+}
+
 /*
  * 4.3: depth along one branch from the constant-curvature rule. In the stroke's frame
  * (u along the chord, x across it on the screen, y the depth): kappa = max |x''|, |y''| =
@@ -312,6 +337,7 @@ static void curvature_depth(const struct branch *b, double *depth)
 	struct vec3 a = b->points[0], e = b->points[n - 1];
 	double cx = e.x - a.x, cy = e.y - a.y, L = hypot(cx, cy);
 	double *u, *x, *ypp, kappa = 0, sign = 1, y, yp, sum;
+	double xlo = 0, xhi = 0, ylo = 0, yhi = 0;
 
 	for (size_t i = 0; i < n; i++)
 		depth[i] = 0;
@@ -329,7 +355,12 @@ static void curvature_depth(const struct branch *b, double *depth)
 
 		u[i] = dx * cx + dy * cy;
 		x[i] = -dx * cy + dy * cx;
+		xlo = fmin(xlo, x[i]);
+		xhi = fmax(xhi, x[i]);
 	}
+	/* Second derivatives amplify the hand's tremor: smooth x over ~1/32 of the stroke
+	 * first, so kappa is the curvature the child drew. */
+	smooth_profile(x, n, n / 64 > 0 ? n / 64 : 1);
 	for (size_t i = 1; i + 1 < n; i++) {
 		double h0 = u[i] - u[i - 1], h1 = u[i + 1] - u[i];
 
@@ -360,7 +391,14 @@ static void curvature_depth(const struct branch *b, double *depth)
 		y += 0.5 * (yp + yp1) * h;
 		yp = yp1;
 		depth[i] = y;
+		ylo = fmin(ylo, y);
+		yhi = fmax(yhi, y);
 	}
+	/* A helix is as deep as it is wide: never deeper than the stroke's own sideways
+	 * excursion (guards against strokes the rule was not made for, like zigzags). */
+	if (yhi - ylo > xhi - xlo && yhi - ylo > 0)
+		for (size_t i = 0; i < n; i++)
+			depth[i] *= (xhi - xlo) / (yhi - ylo);
 	free(u);
 }
 

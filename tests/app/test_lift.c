@@ -191,7 +191,7 @@ static void test_helix(void)
 		double x = b->points[k].x, zmid = 0.5 * (zmin + zmax);
 
 		if (fabs(x) > 0.95 * xamp)
-			CHECK(fabs(b->points[k].z - zmid) < 0.35 * zamp);
+			CHECK(fabs(b->points[k].z - zmid) < 0.5 * zamp);
 	}
 	tree_finish(&t);
 }
