@@ -300,7 +300,21 @@ static int place_segments(const struct tree *t, struct rng *rng, struct seg *seg
 	return 0;
 }
 
-/* Box filter of half width w, three passes (close to a Gaussian); ends stay. */
+/* x at index i, extended past the ends by point reflection, so smoothing bends nothing
+ * there: a straight end stays straight. */
+static double reflected(const double *x, size_t n, long i)
+{
+	if (i < 0)
+		return 2 * x[0] - x[-i < (long)n ? -i : (long)n - 1];
+	if (i >= (long)n) {
+		long j = 2 * ((long)n - 1) - i;
+
+		return 2 * x[n - 1] - x[j >= 0 ? j : 0];
+	}
+	return x[i];
+}
+
+/* Box filter of half width w, three passes (close to a Gaussian). */
 static void smooth_profile(double *x, size_t n, size_t w)
 {
 	double *tmp;
@@ -311,16 +325,14 @@ static void smooth_profile(double *x, size_t n, size_t w)
 	if (!tmp)
 		return;
 	for (int pass = 0; pass < 3; pass++) {
-		for (size_t i = 1; i + 1 < n; i++) {
-			size_t lo = i > w ? i - w : 0, hi = i + w < n - 1 ? i + w : n - 1;
+		for (size_t i = 0; i < n; i++) {
 			double sum = 0;
 
-			for (size_t k = lo; k <= hi; k++)
-				sum += x[k];
-			tmp[i] = sum / (double)(hi - lo + 1);
+			for (long k = (long)i - (long)w; k <= (long)(i + w); k++)
+				sum += reflected(x, n, k);
+			tmp[i] = sum / (double)(2 * w + 1);
 		}
-		for (size_t i = 1; i + 1 < n; i++)
-			x[i] = tmp[i];
+		memcpy(x, tmp, n * sizeof(*x));
 	}
 	free(tmp);
 }
@@ -371,12 +383,11 @@ static void curvature_depth(const struct branch *b, double *depth)
 	}
 	ypp[0] = ypp[n - 1] = 0;
 	for (size_t i = 1; i + 1 < n; i++) {
-		double xpp = ypp[i];
-		double xp0 = x[i] - x[i - 1], xp1 = x[i + 1] - x[i];
+		double xpp = ypp[i], xp = x[i + 1] - x[i - 1];
 
-		/* the sign turns where x' changes sign */
-		if (xp0 * xp1 < 0 || (xp0 != 0 && xp1 == 0))
-			sign = -sign;
+		/* y'' has the sign of -x', so it turns where x' = 0: x = sin gives y = cos */
+		if (xp != 0)
+			sign = xp > 0 ? -1 : 1;
 		ypp[i] = sign * sqrt(fmax(kappa * kappa - xpp * xpp, 0));
 	}
 	/* y'(u) = y'(0) + int y''; choose y'(0) so that y'(end) = 0 */

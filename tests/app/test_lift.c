@@ -185,13 +185,24 @@ static void test_helix(void)
 	zamp = 0.5 * (zmax - zmin);
 	fprintf(stderr, "helix: sideways %.3f, depth %.3f\n", xamp, zamp);
 	CHECK(fabs(zamp - xamp) <= 0.2 * xamp);
-	/* a quarter period out of phase: depth is at an extreme where x crosses zero
-	 * (the middle of each wave) and at its middle where x is extreme */
-	for (size_t k = 1; k + 1 < b->npoints; k++) {
-		double x = b->points[k].x, zmid = 0.5 * (zmin + zmax);
+	/* a quarter period out of phase: every interior extreme of the depth lies within an
+	 * eighth of a period (3 m / 8) of a place where x crosses zero */
+	{
+		int extremes = 0;
 
-		if (fabs(x) > 0.95 * xamp)
-			CHECK(fabs(b->points[k].z - zmid) < 0.5 * zamp);
+		for (size_t k = 1; k + 1 < b->npoints; k++) {
+			double z0 = b->points[k - 1].z, z1 = b->points[k].z, z2 = b->points[k + 1].z;
+			double nearest = INFINITY;
+
+			if (!((z1 > z0 && z1 >= z2) || (z1 < z0 && z1 <= z2)))
+				continue;
+			extremes++;
+			for (size_t j = 0; j + 1 < b->npoints; j++)
+				if ((b->points[j].x < 0) != (b->points[j + 1].x < 0))
+					nearest = fmin(nearest, fabs(b->points[j].y - b->points[k].y));
+			CHECK(nearest < 3.0 / 8);
+		}
+		CHECK(extremes >= 3);
 	}
 	tree_finish(&t);
 }
