@@ -1,0 +1,52 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Lifting a sketch to 3D (the 3D button) for drawings of 30..1,000 branches, with the
+ * front/back merge, as the kiosk does it. Medians; growth per doubling.
+ */
+#include <stdio.h>
+
+#include "bench_draw.h"
+#include "bench_util.h"
+#include "lift.h"
+#include "sketch.h"
+
+#define REPS 5
+
+int main(void)
+{
+	static const int sizes[] = { 30, 100, 300, 1000 };
+	double pn = 0, pt = 0;
+
+	for (size_t s = 0; s < sizeof(sizes) / sizeof(sizes[0]); s++) {
+		struct bench_pen pen = { .now_us = 1000 };
+		struct app *app = bench_draw_tree(&pen, sizes[s]);
+		double t[REPS];
+		char name[64];
+
+		if (!app)
+			return 1;
+		for (int r = 0; r < REPS; r++) {
+			struct tree tree;
+			struct rng rng;
+			double t0;
+
+			/* the same sketch each time, rebuilt outside the timing */
+			tree_init(&tree);
+			rng_seed(&rng, app->doc.seed);
+			for (size_t i = 0; i < app->doc.cursor; i++)
+				if (sketch_apply(&tree, &app->doc.ops[i], &rng) < 0)
+					return 1;
+			t0 = bench_now();
+			if (lift_tree(&tree, &rng, true) < 0)
+				return 1;
+			t[r] = bench_now() - t0;
+			if (r == 0)
+				snprintf(name, sizeof(name), "lift %zu -> %zu branches", app->tree.nbranches,
+					 tree.nbranches);
+			tree_finish(&tree);
+		}
+		bench_row(name, sizes[s], bench_median(t, REPS), &pn, &pt);
+		app_destroy(app);
+	}
+	return 0;
+}
