@@ -109,7 +109,8 @@ static double hull_depth(const struct hull *h, double x, double y)
 	return r * r - dx * dx >= 0 ? sqrt(r * r - dx * dx) : -1.0;
 }
 
-/* Distances on the ground (x, z) to every branch placed so far. */
+/* Squared distances on the ground (x, z) to every branch placed so far (squared: only
+ * compared, never added, so no square roots). */
 struct field {
 	double x0, z0, cell;
 	float d[LIFT_FIELD_N * LIFT_FIELD_N];
@@ -133,7 +134,7 @@ static void field_add(struct field *f, struct vec3 a, struct vec3 b)
 
 		for (int i = 0; i < LIFT_FIELD_N; i++) {
 			double x = f->x0 + (i + 0.5) * f->cell;
-			float d = (float)sqrt(seg_dist2(x, z, a.x, a.z, b.x, b.z));
+			float d = (float)seg_dist2(x, z, a.x, a.z, b.x, b.z);
 			float *c = &f->d[j * LIFT_FIELD_N + i];
 
 			if (d < *c)
