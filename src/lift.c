@@ -416,22 +416,49 @@ static void curvature_depth(const struct branch *b, double *depth)
 
 /* Gives every point depth: along the placed segment, plus the curvature depth; roots
  * land on the parent's final polyline (parents come first). */
+struct anchor {
+	size_t segment;
+	double seg_t;
+};
+
 static int apply_depth(struct tree *t, const struct seg *seg)
 {
 	size_t maxn = 1;
-	double *depth;
+	double *depth = NULL;
+	struct anchor *root = malloc((t->nbranches + 1) * sizeof(*root));
+	struct anchor *leaf = malloc((t->nleaves + 1) * sizeof(*leaf));
 
 	for (size_t i = 0; i < t->nbranches; i++)
 		maxn = t->branches[i].npoints > maxn ? t->branches[i].npoints : maxn;
 	depth = malloc(maxn * sizeof(*depth));
-	if (!depth)
+	if (!depth || !root || !leaf) {
+		free(depth);
+		free(root);
+		free(leaf);
 		return -ENOMEM;
+	}
+	/* Where everything hangs, as (segment, fraction): arc-length parameters change when
+	 * the branches gain depth, the points they name do not. */
+	for (size_t i = 0; i < t->nbranches; i++)
+		if (t->branches[i].parent >= 0)
+			tree_locate(&t->branches[t->branches[i].parent], t->branches[i].parent_t,
+				    &root[i].segment, &root[i].seg_t);
+	for (size_t i = 0; i < t->nleaves; i++)
+		tree_locate(&t->branches[t->leaves[i].branch], t->leaves[i].branch_t, &leaf[i].segment,
+			    &leaf[i].seg_t);
+
 	for (size_t i = 0; i < t->nbranches; i++) {
 		struct branch *b = &t->branches[i];
 		double zs = seg[i].s.z, len = tree_branch_length(b), walked = 0;
 
-		if (b->parent >= 0)
-			zs = tree_frame_at(&t->branches[b->parent], b->parent_t).origin.z;
+		if (b->parent >= 0) {
+			/* on the parent, which (coming first) already has its depth */
+			const struct branch *p = &t->branches[b->parent];
+			size_t k = root[i].segment;
+
+			zs = k + 1 < p->npoints ? p->points[k].z + (p->points[k + 1].z - p->points[k].z) * root[i].seg_t :
+						  p->points[k].z;
+		}
 		curvature_depth(b, depth);
 		for (size_t k = 0; k < b->npoints; k++) {
 			double s = len > 0 ? walked / len : 0;
@@ -442,7 +469,16 @@ static int apply_depth(struct tree *t, const struct seg *seg)
 			b->points[k].z = zs + (seg[i].e.z - seg[i].s.z) * s + depth[k];
 		}
 	}
+	for (size_t i = 0; i < t->nbranches; i++)
+		if (t->branches[i].parent >= 0)
+			t->branches[i].parent_t = tree_param(&t->branches[t->branches[i].parent],
+							     root[i].segment, root[i].seg_t);
+	for (size_t i = 0; i < t->nleaves; i++)
+		t->leaves[i].branch_t =
+			tree_param(&t->branches[t->leaves[i].branch], leaf[i].segment, leaf[i].seg_t);
 	free(depth);
+	free(root);
+	free(leaf);
 	tree_leaves_follow(t, -1);
 	return 0;
 }

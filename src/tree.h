@@ -81,6 +81,10 @@ void tree_remove_leaves(struct tree *t, const bool *remove);
 int tree_cut_branch(struct tree *t, int b, size_t segment, double seg_t);
 /* Arc length of a branch's polyline. */
 double tree_branch_length(const struct branch *b);
+/* Where arc-length parameter t (0..1) falls on b: segment index and fraction along it;
+ * and back. Points that move (lifting) keep their (segment, fraction), not their t. */
+void tree_locate(const struct branch *b, double t, size_t *segment, double *seg_t);
+double tree_param(const struct branch *b, size_t segment, double seg_t);
 
 /* The frame of branch b at arc-length parameter t: position, unit tangent and two unit
  * normals: `normal` across the branch in the picture plane, `binormal` = tangent x normal.

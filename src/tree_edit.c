@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 #include <errno.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -12,6 +13,36 @@ double tree_branch_length(const struct branch *b)
 	for (size_t i = 1; i < b->npoints; i++)
 		len += vec3_dist(b->points[i - 1], b->points[i]);
 	return len;
+}
+
+void tree_locate(const struct branch *b, double t, size_t *segment, double *seg_t)
+{
+	double want = t * tree_branch_length(b), walked = 0.0;
+
+	*segment = 0;
+	*seg_t = 0.0;
+	for (size_t i = 0; i + 1 < b->npoints; i++) {
+		double l = vec3_dist(b->points[i], b->points[i + 1]);
+
+		*segment = i;
+		if (walked + l >= want || i + 2 == b->npoints) {
+			*seg_t = l > 0 ? fmin(fmax((want - walked) / l, 0.0), 1.0) : 0.0;
+			return;
+		}
+		walked += l;
+	}
+}
+
+double tree_param(const struct branch *b, size_t segment, double seg_t)
+{
+	double len = tree_branch_length(b), walked = 0.0;
+
+	if (len <= 0 || segment + 1 >= b->npoints)
+		return segment + 1 >= b->npoints && len > 0 ? 1.0 : 0.0;
+	for (size_t i = 0; i < segment; i++)
+		walked += vec3_dist(b->points[i], b->points[i + 1]);
+	walked += seg_t * vec3_dist(b->points[segment], b->points[segment + 1]);
+	return walked / len;
 }
 
 /* Compacts the leaves, keeping order; map_branch gives each branch's new id or -1. */
@@ -141,28 +172,15 @@ struct tree_frame tree_frame_at(const struct branch *b, double t)
 {
 	struct tree_frame f = { .tangent = vec3(0, 1, 0), .normal = vec3(1, 0, 0),
 				.binormal = vec3(0, 0, 1) };
-	double want = t * tree_branch_length(b), walked = 0.0;
-	size_t seg = 0;
-	double s = 0.0;
+	size_t seg;
+	double s;
 
 	if (b->npoints == 0)
 		return f;
 	f.origin = b->points[0];
 	if (b->npoints < 2)
 		return f;
-	for (seg = 0; seg + 2 < b->npoints; seg++) {
-		double l = vec3_dist(b->points[seg], b->points[seg + 1]);
-
-		if (walked + l >= want)
-			break;
-		walked += l;
-	}
-	{
-		double l = vec3_dist(b->points[seg], b->points[seg + 1]);
-
-		s = l > 0 ? (want - walked) / l : 0.0;
-		s = s < 0 ? 0 : s > 1 ? 1 : s;
-	}
+	tree_locate(b, t, &seg, &s);
 	f.origin = vec3_lerp(b->points[seg], b->points[seg + 1], s);
 	f.tangent = vec3_norm_or(vec3_sub(b->points[seg + 1], b->points[seg]), f.tangent);
 	/* The normal lies across the branch in the picture plane (z up out of the screen)
