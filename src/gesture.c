@@ -98,39 +98,40 @@ int gesture_crossings(const struct tree *t, const struct vec3 *p, size_t n,
 
 int gesture_cut_erase(struct tree *t, const struct vec3 *p, size_t n)
 {
-	int edits = 0;
+	struct gesture_crossing *c;
+	size_t nc;
+	int edits = 0, ret;
 
-	/* One edit at a time, newest branch first: each edit renumbers only what comes
-	 * after it, and every edit removes wood, so this ends. */
-	for (size_t guard = t->nbranches + 1; guard > 0; guard--) {
-		struct gesture_crossing *c, last;
-		size_t nc;
-		int ret = gesture_crossings(t, p, n, &c, &nc);
+	/* Every crossed branch once, newest first: an edit removes or renumbers only
+	 * branches after the one it edits, so the older ids stay valid. (Crossings are not
+	 * looked for again: a cut end lying on the slash must not be cut twice.) */
+	ret = gesture_crossings(t, p, n, &c, &nc);
+	if (ret < 0)
+		return ret;
+	for (size_t k = nc; k-- > 0;) {
+		const struct gesture_crossing *x = &c[k];
 
-		if (ret < 0)
-			return ret;
-		if (nc == 0) {
-			free(c);
-			break;
-		}
-		last = c[nc - 1];
-		free(c);
-		if (last.count >= 2) {
+		if ((size_t)x->branch >= t->nbranches)
+			continue; /* went with a parent edited before */
+		if (x->count >= 2) {
 			bool *remove = calloc(t->nbranches, sizeof(*remove));
 
-			if (!remove)
-				return -ENOMEM;
-			remove[last.branch] = true;
+			if (!remove) {
+				ret = -ENOMEM;
+				break;
+			}
+			remove[x->branch] = true;
 			ret = tree_remove_branches(t, remove);
 			free(remove);
 		} else {
-			ret = tree_cut_branch(t, last.branch, last.segment, last.seg_t);
+			ret = tree_cut_branch(t, x->branch, x->segment, x->seg_t);
 		}
 		if (ret < 0)
-			return ret;
+			break;
 		edits++;
 	}
-	return edits;
+	free(c);
+	return ret < 0 ? ret : edits;
 }
 
 /* Distance in x/y from q to segment a-b. */

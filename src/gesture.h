@@ -31,8 +31,8 @@ struct gesture_crossing {
 int gesture_crossings(const struct tree *t, const struct vec3 *p, size_t n,
 		      struct gesture_crossing **out, size_t *nout);
 
-/* Applies cuts and erasures of a stroke that crosses branches, one branch at a time from
- * the newest. Returns how many edits were made, or -ENOMEM. */
+/* Applies cuts and erasures of a stroke that crosses branches, each crossed branch once,
+ * from the newest. Returns how many edits were made, or -ENOMEM. */
 int gesture_cut_erase(struct tree *t, const struct vec3 *p, size_t n);
 
 /* Erases the branches (from their base, with all attached) and leaves the eraser trail

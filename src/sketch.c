@@ -350,7 +350,12 @@ static int outline_pair(struct tree *t, const struct vec3 *b, size_t nb, uint64_
 		double s = (double)i / (N - 1);
 		struct vec3 pa = point_at(a->points, a->npoints, la, s);
 		struct vec3 pb = point_at(b, nb, lb, reversed ? 1.0 - s : s);
-		double d = vec3_dist(pa, pb);
+		double d;
+
+		/* compared on the screen: on a 3D tree the first outline lies at its parent's
+		 * depth, the second is still on the sketch plane */
+		pb.z = pa.z;
+		d = vec3_dist(pa, pb);
 
 		if (d > 0.6 * lmin)
 			return 0;
@@ -379,7 +384,8 @@ static int outline_pair(struct tree *t, const struct vec3 *b, size_t nb, uint64_
 		int k = (int)x;
 		double r = k + 1 < N ? radii[k] + (radii[k + 1] - radii[k]) * (x - k) : radii[N - 1];
 
-		t->profile[i] = radii[0] > 0 ? fmin(r / radii[0], 4.0) : 1.0;
+		/* never 0: outlines meeting at the tip must not make needle-thin twigs */
+		t->profile[i] = radii[0] > 0 ? fmin(fmax(r / radii[0], 0.25 * TIP_RADIUS_FRACTION), 4.0) : 1.0;
 	}
 	t->has_profile = true;
 	return 1;

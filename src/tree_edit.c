@@ -100,6 +100,8 @@ static void remove_branches(struct tree *t, bool *remove, int *map)
 	}
 	t->nbranches = k;
 	compact_leaves(t, map, NULL);
+	if (k == 0)
+		t->lifted = false; /* nothing left: the next drawing starts flat */
 }
 
 int tree_remove_branches(struct tree *t, bool *remove)

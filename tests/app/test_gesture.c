@@ -176,8 +176,42 @@ static void test_eraser(void)
 	app_destroy(app);
 }
 
+static void test_slash_cuts_every_crossed_branch(void)
+{
+	struct app *app = young_tree();
+
+	/* one horizontal slash through b1 and the trunk: both are cut there (b1 and the
+	 * trunk end at the slash; b2 and the leaf, beyond b1's cut, go) */
+	line(app, 560, 505, 760, 505);
+	CHECK_INT(app->tree.nbranches, 2);
+	CHECK_NEAR(app->tree.branches[0].points[app->tree.branches[0].npoints - 1].y,
+		   view_to_world(&app->view, 0, 505).y, 0.05);
+	CHECK_NEAR(screen_x(app, app->tree.branches[1].points[app->tree.branches[1].npoints - 1]), 733, 3);
+	app_destroy(app);
+}
+
+static void test_erase_all_then_3d_again(void)
+{
+	struct app *app = young_tree();
+	const double scrub[] = { 640, 740, 640, 200, 960, 440, 820, 330 };
+
+	press(app, BUTTON_3D);
+	CHECK(app->tree.lifted);
+	draw(app, EVENT_TOOL_ERASER, scrub, 4);
+	CHECK_INT(app->tree.nbranches, 0);
+	/* the next visitor's tree starts flat and can be lifted */
+	line(app, 640, 736, 640, 300);
+	line(app, 640, 500, 800, 400);
+	CHECK(!app->tree.lifted);
+	press(app, BUTTON_3D);
+	CHECK(app->tree.lifted);
+	app_destroy(app);
+}
+
 int main(void)
 {
+	test_slash_cuts_every_crossed_branch();
+	test_erase_all_then_3d_again();
 	test_cut();
 	test_cut_keeps_lower_children();
 	test_erase();

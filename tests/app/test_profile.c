@@ -89,8 +89,24 @@ static void test_not_outlines(void)
 	app_destroy(app);
 }
 
+static void test_outlines_meeting_at_the_tip(void)
+{
+	struct app *app = app_create(1280, 800, 1);
+
+	/* the second outline starts where the first ended: radius 0 at the tip */
+	line(app, 600, 736, 640, 300);
+	line(app, 640, 300, 680, 736);
+	CHECK_INT(app->tree.nbranches, 1);
+	CHECK(app->tree.has_profile);
+	/* later branches still end in a twig, not a needle of radius 0 */
+	line(app, 640, 500, 900, 400);
+	CHECK(app->tree.branches[1].radii[app->tree.branches[1].npoints - 1] > 0);
+	app_destroy(app);
+}
+
 int main(void)
 {
+	test_outlines_meeting_at_the_tip();
 	test_two_outlines();
 	test_not_outlines();
 	return 0;
