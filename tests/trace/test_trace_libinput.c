@@ -103,7 +103,7 @@ static void check_events(const char *what, const struct trace *t, const struct e
 	}
 }
 
-/* /work/shared/reference's recording from the VM's virtual pen, unchanged. */
+/* ../shared/reference's recording from the VM's virtual pen, unchanged. */
 static void test_virtual_pen(void)
 {
 	static const struct device_axes d = {
