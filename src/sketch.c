@@ -12,18 +12,9 @@
 #define TIP_RADIUS_FRACTION 0.2
 #define CHILD_RADIUS_FRACTION 0.7
 
-static double polyline_length(const struct vec3 *p, size_t n)
-{
-	double len = 0.0;
-
-	for (size_t i = 1; i < n; i++)
-		len += vec3_dist(p[i - 1], p[i]);
-	return len;
-}
-
 int sketch_resample(const struct vec3 *in, size_t n, double step, struct vec3 **out, size_t *nout)
 {
-	double len = polyline_length(in, n);
+	double len = vec3_polyline_length(in, n);
 	size_t count, k = 0;
 	struct vec3 *p;
 	double next, walked = 0.0;
@@ -92,7 +83,7 @@ bool sketch_is_closed(const struct vec3 *p, size_t n)
 
 	if (n < 4)
 		return false;
-	len = polyline_length(p, n);
+	len = vec3_polyline_length(p, n);
 	gap = vec3_dist(p[0], p[n - 1]);
 	if (!(gap < 0.2 * len && gap < 0.4))
 		return false;
@@ -184,7 +175,7 @@ static double profile_at(const struct tree *t, double s)
  */
 static int add_branch(struct tree *t, struct vec3 *p, size_t n, const double *drawn)
 {
-	double len = polyline_length(p, n), walked = 0.0, root_r;
+	double len = vec3_polyline_length(p, n), walked = 0.0, root_r;
 	struct sketch_hit hit = { .branch = -1 };
 	double *radii = malloc(n * sizeof(*radii));
 	int ret;
@@ -216,7 +207,7 @@ static int add_branch(struct tree *t, struct vec3 *p, size_t n, const double *dr
 		}
 		root_r = fmax(MIN_ROOT_RADIUS_M,
 			      CHILD_RADIUS_FRACTION * radius_at(&t->branches[hit.branch], &hit));
-		len = polyline_length(p, n);
+		len = vec3_polyline_length(p, n);
 	}
 	walked = 0.0;
 	for (size_t i = 0; i < n; i++) {
@@ -330,8 +321,8 @@ static int outline_pair(struct tree *t, const struct vec3 *b, size_t nb, uint64_
 	    start_us - t->last_sketched_end_us > SKETCH_OUTLINE_PAUSE_US)
 		return 0;
 	a = &t->branches[prev];
-	la = polyline_length(a->points, a->npoints);
-	lb = polyline_length(b, nb);
+	la = vec3_polyline_length(a->points, a->npoints);
+	lb = vec3_polyline_length(b, nb);
 	lmin = fmin(la, lb);
 	if (lmin <= 0 || la > 1.6 * lb || lb > 1.6 * la)
 		return 0;
@@ -444,7 +435,7 @@ int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
 		return -ENOMEM;
 	for (size_t i = 0; i < op->npoints; i++)
 		raw[i] = vec3(op->points[i].x, op->points[i].y, 0.0);
-	if (polyline_length(raw, op->npoints) < SKETCH_MIN_LENGTH_M) {
+	if (vec3_polyline_length(raw, op->npoints) < SKETCH_MIN_LENGTH_M) {
 		free(raw);
 		return 0;
 	}

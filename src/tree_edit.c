@@ -8,11 +8,7 @@
 
 double tree_branch_length(const struct branch *b)
 {
-	double len = 0.0;
-
-	for (size_t i = 1; i < b->npoints; i++)
-		len += vec3_dist(b->points[i - 1], b->points[i]);
-	return len;
+	return vec3_polyline_length(b->points, b->npoints);
 }
 
 void tree_locate(const struct branch *b, double t, size_t *segment, double *seg_t)

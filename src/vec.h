@@ -2,6 +2,7 @@
 #pragma once
 
 #include <math.h>
+#include <stddef.h>
 
 /* M_PI is POSIX, not C11. */
 #define VEC_PI 3.14159265358979323846
@@ -62,4 +63,14 @@ static inline struct vec3 vec3_norm_or(struct vec3 a, struct vec3 fallback)
 static inline struct vec3 vec3_lerp(struct vec3 a, struct vec3 b, double t)
 {
 	return vec3(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t);
+}
+
+/* Arc length of a polyline. */
+static inline double vec3_polyline_length(const struct vec3 *p, size_t n)
+{
+	double len = 0.0;
+
+	for (size_t i = 1; i < n; i++)
+		len += vec3_dist(p[i - 1], p[i]);
+	return len;
 }
