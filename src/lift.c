@@ -525,22 +525,28 @@ static int merge_turned(struct tree *a, const struct tree *b)
 {
 	struct vec3 base = a->branches[0].points[0];
 	int *map = malloc((b->nbranches + 1) * sizeof(*map));
+	struct vec3 *shifts = malloc((b->nbranches + 1) * sizeof(*shifts));
 	size_t first = a->nbranches;
 
-	if (!map)
+	if (!map || !shifts) {
+		free(map);
+		free(shifts);
 		return -ENOMEM;
+	}
 	for (size_t i = 0; i < b->nbranches; i++) {
 		const struct branch *br = &b->branches[i];
 		struct vec3 *p, shift = vec3(0, 0, 0);
 		int parent, id;
 
 		if (br->parent < 0) {
-			map[i] = br->id < (int)a->nbranches ? (int)i : 0; /* trunks map onto A's */
+			map[i] = (int)i; /* A and B are copies of one sketch: trunks map onto A's */
+			shifts[i] = vec3(0, 0, 0);
 			continue;
 		}
 		p = malloc(br->npoints * sizeof(*p));
 		if (!p) {
 			free(map);
+			free(shifts);
 			return -ENOMEM;
 		}
 		for (size_t k = 0; k < br->npoints; k++) {
@@ -549,19 +555,25 @@ static int merge_turned(struct tree *a, const struct tree *b)
 			p[k] = vec3(base.x + d.z, br->points[k].y, base.z - d.x);
 		}
 		parent = map[br->parent];
-		/* first-generation branches hang on A's trunk, which is not turned */
+		/* first-generation branches hang on A's trunk, which is not turned; everything
+		 * on them moves with them */
 		if (b->branches[br->parent].parent < 0)
 			shift = vec3_sub(tree_frame_at(&a->branches[parent], br->parent_t).origin, p[0]);
+		else
+			shift = shifts[br->parent];
+		shifts[i] = shift;
 		for (size_t k = 0; k < br->npoints; k++)
 			p[k] = vec3_add(p[k], shift);
 		id = tree_add_branch(a, parent, br->parent_t, ORIGIN_MERGE, p, br->radii, br->npoints);
 		free(p);
 		if (id < 0) {
 			free(map);
+			free(shifts);
 			return -ENOMEM;
 		}
 		map[i] = id;
 	}
+	free(shifts);
 	for (size_t i = 0; i < b->nleaves; i++) {
 		const struct leaf *l = &b->leaves[i];
 		int id;

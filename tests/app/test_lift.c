@@ -140,6 +140,13 @@ static void test_merge_and_seed(void)
 	CHECK_INT(a.nbranches, 13 + 12);
 	CHECK_INT(a.branches[13].origin, ORIGIN_MERGE);
 	CHECK_INT(a.branches[13].parent, 0);
+	/* every branch, merged ones and their children too, starts on its parent */
+	for (size_t i = 1; i < a.nbranches; i++) {
+		const struct branch *br = &a.branches[i];
+
+		CHECK(vec3_dist(br->points[0], tree_frame_at(&a.branches[br->parent], br->parent_t).origin) <
+		      1e-6);
+	}
 	/* same seed, same tree; another seed, another */
 	for (size_t i = 0; i < a.nbranches; i++) {
 		CHECK(memcmp(a.branches[i].points, b.branches[i].points,
