@@ -171,6 +171,31 @@ static void test_merge_and_seed(void)
 	tree_finish(&c);
 }
 
+/* A leaning trunk: the merged copy's first generation must be moved onto the unturned
+ * trunk, and everything on those branches with them. */
+static void test_merge_leaning_trunk(void)
+{
+	struct tree t;
+	struct rng r;
+
+	tree_init(&t);
+	rng_seed(&r, 5);
+	stroke(&t, &r, 0, 0, 1.2, 6, 0);
+	stroke(&t, &r, 0.6, 3, 2.5, 4.5, 0);
+	stroke(&t, &r, 0.9, 4.5, -1.5, 5.5, 0);
+	stroke(&t, &r, 1.55, 3.75, 1.9, 5.2, 0); /* a twig on the first branch */
+	CHECK_INT(t.branches[3].parent, 1);
+	CHECK_INT(lift_tree(&t, &r, true), 0);
+	CHECK_INT(t.nbranches, 7);
+	for (size_t i = 1; i < t.nbranches; i++) {
+		const struct branch *br = &t.branches[i];
+
+		CHECK(vec3_dist(br->points[0], tree_frame_at(&t.branches[br->parent], br->parent_t).origin) <
+		      1e-6);
+	}
+	tree_finish(&t);
+}
+
 static void test_helix(void)
 {
 	struct tree t;
@@ -218,6 +243,7 @@ int main(void)
 {
 	test_constraints();
 	test_merge_and_seed();
+	test_merge_leaning_trunk();
 	test_helix();
 	return 0;
 }
