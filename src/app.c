@@ -97,8 +97,11 @@ static int push_op(struct app *app, struct doc_op *op)
 	if (ret < 0)
 		return ret;
 	ret = apply_op(app, &app->doc.ops[app->doc.cursor - 1]);
-	if (ret < 0)
+	if (ret < 0) {
+		/* Half an edit may have been made: the document is the truth, rebuild from it. */
+		(void)app_rebuild(app);
 		return ret;
+	}
 	if (ret == SKETCH_GREW && app->tree.nbranches >= nb && app->tree.nleaves >= nl) {
 		app->mesh_serial++;
 		return tree_mesh_append(&app->mesh, &app->tree, nb, nl);

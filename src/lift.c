@@ -406,6 +406,14 @@ static void curvature_depth(const struct branch *b, double *depth)
 		ylo = fmin(ylo, y);
 		yhi = fmax(yhi, y);
 	}
+	/* Both ends stay where 4.1 put them: tilt the profile so y(end) = 0. */
+	for (size_t i = 1; i < n; i++)
+		depth[i] -= u[n - 1] > 0 ? depth[n - 1] * u[i] / u[n - 1] : 0;
+	ylo = yhi = 0;
+	for (size_t i = 0; i < n; i++) {
+		ylo = fmin(ylo, depth[i]);
+		yhi = fmax(yhi, depth[i]);
+	}
 	/* A helix is as deep as it is wide: never deeper than the stroke's own sideways
 	 * excursion (guards against strokes the rule was not made for, like zigzags). */
 	if (yhi - ylo > xhi - xlo && yhi - ylo > 0)
@@ -466,7 +474,8 @@ static int apply_depth(struct tree *t, const struct seg *seg)
 			if (k + 1 < b->npoints)
 				walked += hypot(b->points[k + 1].x - b->points[k].x,
 						b->points[k + 1].y - b->points[k].y);
-			b->points[k].z = zs + (seg[i].e.z - seg[i].s.z) * s + depth[k];
+			/* from the parent's real point to the end 4.1 chose, plus the curvature */
+			b->points[k].z = zs + (seg[i].e.z - zs) * s + depth[k];
 		}
 	}
 	for (size_t i = 0; i < t->nbranches; i++)

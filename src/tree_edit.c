@@ -6,6 +6,8 @@
 
 #include "tree.h"
 
+#define TREE_MIN_CUT_M 0.025
+
 double tree_branch_length(const struct branch *b)
 {
 	return vec3_polyline_length(b->points, b->npoints);
@@ -132,6 +134,15 @@ int tree_cut_branch(struct tree *t, int id, size_t segment, double seg_t)
 		free(remove);
 		free(map);
 		return -ENOMEM;
+	}
+	/* A cut at the very root leaves nothing worth keeping: the branch goes, as if erased
+	 * (a zero-length branch would be invisible yet take children). */
+	if (walked < TREE_MIN_CUT_M) {
+		remove[id] = true;
+		remove_branches(t, remove, map);
+		free(remove);
+		free(map);
+		return 0;
 	}
 	/* The cut point replaces everything past it. */
 	b->points[segment + 1] = vec3_lerp(b->points[segment], b->points[segment + 1], seg_t);

@@ -82,6 +82,9 @@ static void test_constraints(void)
 	}
 	CHECK_INT(lift_tree(&t3, &rng, false), 0);
 	CHECK_INT(t3.nbranches, t2.nbranches);
+	/* the trunk's ends stay in the sketch plane */
+	CHECK_NEAR(t3.branches[0].points[0].z, 0, 1e-12);
+	CHECK_NEAR(end_of(&t3.branches[0]).z, 0, 1e-9);
 	for (size_t i = 0; i < t3.nbranches; i++) {
 		const struct branch *b2 = &t2.branches[i], *b3 = &t3.branches[i];
 		struct vec3 s3 = b3->points[0], e3 = end_of(b3), d3 = vec3_sub(e3, s3);

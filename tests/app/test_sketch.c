@@ -117,11 +117,22 @@ static void test_tree(void)
 		}
 	}
 
+	/* a cut right at a branch's root removes it rather than leaving a zero-length one */
+	{
+		size_t nb = t.nbranches;
+
+		CHECK_INT(tree_cut_branch(&t, 1, 0, 0.0), 0);
+		CHECK(t.nbranches < nb);
+		CHECK_INT(t.nleaves, 0); /* the leaf on it went too */
+		for (size_t i = 0; i < t.nbranches; i++)
+			CHECK(tree_branch_length(&t.branches[i]) > 0.1);
+	}
+
 	/* a tap makes nothing */
 	op = line_op(1, 1, 1.01, 1, 2);
 	CHECK_INT(sketch_apply(&t, &op, &rng), 0);
 	doc_op_finish(&op);
-	CHECK_INT(t.nbranches, 2);
+	CHECK_INT(t.nbranches, 1);
 	tree_finish(&t);
 }
 
