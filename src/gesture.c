@@ -112,7 +112,7 @@ int gesture_cut_erase(struct tree *t, const struct vec3 *p, size_t n)
 		const struct gesture_crossing *x = &c[k];
 
 		if ((size_t)x->branch >= t->nbranches)
-			continue; /* went with a parent edited before */
+			continue; /* defensive: edits only renumber ids above the one edited */
 		if (x->count >= 2) {
 			bool *remove = calloc(t->nbranches, sizeof(*remove));
 
