@@ -1,12 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Mesh building and the three exporters on synthetic trees of 62..500 branches with 10
+ * Mesh building and the three exporters on synthetic trees of 100..1,000 branches with 10
  * leaves each: median of REPS runs per stage and in total, growth with size, and what
- * came out (triangles, bytes).
+ * came out (triangles, bytes). Then the mesh alone for drawings made through pen events
+ * (bench_draw: 5 cm samples, the kiosk's real input), whose tubes have many more rings.
  */
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "bench_draw.h"
 #include "bench_util.h"
 #include "buf.h"
 #include "export.h"
@@ -17,6 +19,7 @@
 #define REPS 7
 #define LEAVES_PER_BRANCH 10
 #define NSIZES 4
+#define NDRAWN 3
 #define SEED 2024
 
 enum stage { MESH, GLB, OBJ, SKELETON, TOTAL, NSTAGES };
@@ -27,8 +30,18 @@ static const char *const stage_names[NSTAGES] = {
 
 struct result {
 	double median[NSTAGES];
-	size_t bark_tris, leaf_tris, glb_bytes, obj_bytes, mtl_bytes, skel_bytes;
+	size_t branches, points, bark_tris, bark_verts, leaf_tris, glb_bytes, obj_bytes, mtl_bytes,
+		skel_bytes;
 };
+
+static size_t tree_points(const struct tree *t)
+{
+	size_t n = 0;
+
+	for (size_t i = 0; i < t->nbranches; i++)
+		n += t->branches[i].npoints;
+	return n;
+}
 
 static int run_size(int nbranches, struct result *res)
 {
@@ -76,7 +89,9 @@ static int run_size(int nbranches, struct result *res)
 	if (r >= 0) {
 		for (int s = 0; s < NSTAGES; s++)
 			res->median[s] = bench_median(times[s], REPS);
+		res->points = tree_points(&t);
 		res->bark_tris = tm.bark.nindices / 3;
+		res->bark_verts = tm.bark.nvertices;
 		res->leaf_tris = tm.leaves.nindices / 3;
 		res->glb_bytes = glb.len;
 		res->obj_bytes = obj.len;
@@ -92,10 +107,44 @@ static int run_size(int nbranches, struct result *res)
 	return r;
 }
 
+/* The mesh of a drawn tree: median build time, its size. */
+static int run_drawn(int nbranches, struct result *res)
+{
+	struct bench_pen pen = { .now_us = 1000 };
+	struct app *app = bench_draw_tree(&pen, nbranches);
+	struct tree_mesh tm;
+	double times[REPS];
+	int r = 0;
+
+	if (!app)
+		return -1;
+	tree_mesh_init(&tm);
+	for (int rep = 0; rep < REPS && r >= 0; rep++) {
+		double t0 = bench_now();
+
+		r = tree_mesh_build(&tm, &app->tree);
+		times[rep] = bench_now() - t0;
+	}
+	if (r >= 0) {
+		res->median[MESH] = bench_median(times, REPS);
+		res->points = tree_points(&app->tree);
+		res->bark_tris = tm.bark.nindices / 3;
+		res->bark_verts = tm.bark.nvertices;
+		res->leaf_tris = tm.leaves.nindices / 3;
+		/* the drawing may refuse a stroke; report what it holds */
+		res->branches = app->tree.nbranches;
+	}
+	tree_mesh_finish(&tm);
+	app_destroy(app);
+	return r;
+}
+
 int main(void)
 {
-	static const int sizes[NSIZES] = { 62, 125, 250, 500 };
-	struct result res[NSIZES];
+	static const int sizes[NSIZES] = { 100, 250, 500, 1000 };
+	static const int drawn_sizes[NDRAWN] = { 250, 500, 1000 };
+	struct result res[NSIZES], drawn[NDRAWN];
+	double prev_size = 0, prev_s = 0;
 
 	for (int i = 0; i < NSIZES; i++) {
 		int r = run_size(sizes[i], &res[i]);
@@ -110,18 +159,44 @@ int main(void)
 	       " size = branches\n\n",
 	       LEAVES_PER_BRANCH, REPS);
 	for (int s = 0; s < NSTAGES; s++) {
-		double prev_size = 0, prev_s = 0;
-
+		prev_size = 0;
+		prev_s = 0;
 		for (int i = 0; i < NSIZES; i++)
 			bench_row(stage_names[s], sizes[i], res[i].median[s], &prev_size, &prev_s);
 		printf("\n");
 	}
 
-	printf("%8s %8s %12s %12s %12s %12s %14s\n", "branches", "leaves", "bark tris", "leaf tris",
-	       "glb bytes", "obj bytes", "skeleton bytes");
+	printf("%8s %8s %8s %10s %10s %9s %10s %11s %11s %10s\n", "branches", "points", "leaves",
+	       "bark tris", "bark verts", "tris/br.", "leaf tris", "glb bytes", "obj bytes",
+	       "skel bytes");
 	for (int i = 0; i < NSIZES; i++)
-		printf("%8d %8d %12zu %12zu %12zu %12zu %14zu\n", sizes[i], sizes[i] * LEAVES_PER_BRANCH,
-		       res[i].bark_tris, res[i].leaf_tris, res[i].glb_bytes,
-		       res[i].obj_bytes + res[i].mtl_bytes, res[i].skel_bytes);
+		printf("%8d %8zu %8d %10zu %10zu %9.1f %10zu %11zu %11zu %10zu\n", sizes[i],
+		       res[i].points, sizes[i] * LEAVES_PER_BRANCH, res[i].bark_tris,
+		       res[i].bark_verts, (double)res[i].bark_tris / sizes[i], res[i].leaf_tris,
+		       res[i].glb_bytes, res[i].obj_bytes + res[i].mtl_bytes, res[i].skel_bytes);
+
+	for (int i = 0; i < NDRAWN; i++) {
+		int r = run_drawn(drawn_sizes[i], &drawn[i]);
+
+		if (r < 0) {
+			fprintf(stderr, "bench_export: drawing %d branches failed: %d\n",
+				drawn_sizes[i], r);
+			return 1;
+		}
+	}
+	printf("\nbench_export: drawn trees (bench_draw: 1 + n strokes through pen events),"
+	       " median of %d runs\n\n",
+	       REPS);
+	prev_size = 0;
+	prev_s = 0;
+	for (int i = 0; i < NDRAWN; i++)
+		bench_row("tree_mesh_build (drawn)", drawn_sizes[i], drawn[i].median[MESH],
+			  &prev_size, &prev_s);
+	printf("\n%8s %8s %10s %10s %9s %10s\n", "branches", "points", "bark tris", "bark verts",
+	       "tris/br.", "leaf tris");
+	for (int i = 0; i < NDRAWN; i++)
+		printf("%8zu %8zu %10zu %10zu %9.1f %10zu\n", drawn[i].branches, drawn[i].points,
+		       drawn[i].bark_tris, drawn[i].bark_verts,
+		       (double)drawn[i].bark_tris / (double)drawn[i].branches, drawn[i].leaf_tris);
 	return 0;
 }
