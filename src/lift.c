@@ -166,7 +166,8 @@ struct seg {
 };
 
 /* 4.1: depth of each branch's end, as segments. */
-static int place_segments(const struct tree *t, struct rng *rng, struct seg *seg)
+static int place_segments(const struct tree *t, struct rng *rng, enum lift_pick pick,
+			  struct seg *seg)
 {
 	struct hull h = { 0 };
 	struct field *f;
@@ -236,6 +237,8 @@ static int place_segments(const struct tree *t, struct rng *rng, struct seg *seg
 			const struct branch *b = &t->branches[id];
 			struct seg *s = &seg[id];
 			double best = -1, best_z = 0, best_angle = INFINITY, best_angle_z = 0;
+			double admissible[CANDIDATES];
+			int nadmissible = 0;
 			bool found = false;
 
 			if (b->parent < 0) {
@@ -276,9 +279,11 @@ static int place_segments(const struct tree *t, struct rng *rng, struct seg *seg
 					double z = lo + (hi - lo) * c / (CANDIDATES - 1);
 					struct vec3 e = vec3(s->e.x, s->e.y, z);
 					double a = angle_between(pd, vec3_sub(e, s->s));
-					double d = field_at(f, e.x, z);
 
 					if (a <= amax + 1e-9) {
+						double d = field_at(f, e.x, z);
+
+						admissible[nadmissible++] = z;
 						if (d > best) {
 							best = d;
 							best_z = z;
@@ -289,6 +294,8 @@ static int place_segments(const struct tree *t, struct rng *rng, struct seg *seg
 						best_angle_z = z;
 					}
 				}
+				if (pick == LIFT_PICK_RANDOM && nadmissible > 0)
+					best_z = admissible[rng_next(rng) % (uint64_t)nadmissible];
 				s->e.z = found ? best_z : best_angle_z;
 			}
 			s->placed = true;
@@ -492,14 +499,14 @@ static int apply_depth(struct tree *t, const struct seg *seg)
 	return 0;
 }
 
-static int lift_once(struct tree *t, struct rng *rng)
+static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick)
 {
 	struct seg *seg = malloc((t->nbranches + 1) * sizeof(*seg));
 	int ret;
 
 	if (!seg)
 		return -ENOMEM;
-	ret = place_segments(t, rng, seg);
+	ret = place_segments(t, rng, pick, seg);
 	if (ret == 0)
 		ret = apply_depth(t, seg);
 	free(seg);
@@ -612,6 +619,11 @@ static int merge_turned(struct tree *a, const struct tree *b)
 
 int lift_tree(struct tree *t, struct rng *rng, bool merge)
 {
+	return lift_tree_with(t, rng, merge, LIFT_PICK_SPARSEST);
+}
+
+int lift_tree_with(struct tree *t, struct rng *rng, bool merge, enum lift_pick pick)
+{
 	struct tree a, b;
 	struct rng ra, rb;
 	int ret;
@@ -622,12 +634,12 @@ int lift_tree(struct tree *t, struct rng *rng, bool merge)
 	rng_seed(&rb, rng_next(rng));
 	ret = copy_tree(&a, t);
 	if (ret == 0)
-		ret = lift_once(&a, &ra);
+		ret = lift_once(&a, &ra, pick);
 	tree_init(&b);
 	if (ret == 0 && merge) {
 		ret = copy_tree(&b, t);
 		if (ret == 0)
-			ret = lift_once(&b, &rb);
+			ret = lift_once(&b, &rb, pick);
 		if (ret == 0)
 			ret = merge_turned(&a, &b);
 	}

@@ -34,4 +34,14 @@
 #define LIFT_MAX_ANGLE_RATIO 1.2
 #define LIFT_MIN_VIEW_ANGLE_DEG 45.0
 
+/* How 4.1 chooses among the admissible depths of a branch end. */
+enum lift_pick {
+	LIFT_PICK_SPARSEST = 0, /* where the branches placed so far are sparsest (the paper) */
+	LIFT_PICK_RANDOM,       /* a random admissible one: the baseline the tests measure
+				 * the sparsest rule against (tests/replay/test_replay_lift.c) */
+};
+
 int lift_tree(struct tree *t, struct rng *rng, bool merge);
+/* lift_tree with a choice of rule; lift_tree(t, rng, merge) is
+ * lift_tree_with(t, rng, merge, LIFT_PICK_SPARSEST). */
+int lift_tree_with(struct tree *t, struct rng *rng, bool merge, enum lift_pick pick);
