@@ -179,6 +179,10 @@ int headless_run(const struct options *o)
 			press(&r, o->steps[i].button);
 	}
 	(void)app_take_requests(r.app); /* headless writes everything at the end anyway */
+	if (o->view_given &&
+	    !app_set_camera(r.app, camera_normalize(o->view_yaw, o->view_pitch)))
+		fprintf(stderr, "edaha: --view: the drawing is not 3D (press 3d first); it is shown "
+			"from the front\n");
 	if (r.app->failed) {
 		fprintf(stderr, "edaha: %s\n", r.app->failed == -ENOMEM ? "out of memory" : "internal error");
 		status = 1;

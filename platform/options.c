@@ -3,9 +3,12 @@
 
 #include <errno.h>
 #include <getopt.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "camera.h"
 
 #define DEFAULT_WIDTH 1280
 #define DEFAULT_HEIGHT 800
@@ -29,8 +32,11 @@ void options_usage(FILE *f)
 	      "  --replay FILE       feed recorded input: an edaha trace or a `libinput record`\n"
 	      "                      YAML file; may be repeated\n"
 	      "  --press BUTTON      press and release a button: 3d, clone, leaf, propagate,\n"
-	      "                      undo, redo, export, new, fixed-count, fixed-size; may be\n"
-	      "                      repeated. --replay and --press apply in the order given.\n"
+	      "                      undo, redo, export, new, fixed-count, fixed-size, view;\n"
+	      "                      may be repeated. --replay and --press apply in the order\n"
+	      "                      given.\n"
+	      "  --view YAW[,PITCH]  show a 3D tree turned: the camera's azimuth (90 = from\n"
+	      "                      the right) and height in degrees, after all input\n"
 	      "\n"
 	      "Any mode:\n"
 	      "  --record FILE       write every input event to FILE as an edaha trace\n"
@@ -100,10 +106,28 @@ static bool parse_seed(const char *s, uint64_t *seed)
 	return true;
 }
 
+static bool parse_view(const char *s, double *yaw, double *pitch)
+{
+	char *end;
+
+	errno = 0;
+	*yaw = strtod(s, &end);
+	*pitch = 0.0;
+	if (errno || end == s || !isfinite(*yaw) || fabs(*yaw) > 360.0)
+		return false;
+	if (*end == ',') {
+		s = end + 1;
+		*pitch = strtod(s, &end);
+		if (errno || end == s || !(*pitch >= CAMERA_PITCH_MIN_DEG && *pitch <= CAMERA_PITCH_MAX_DEG))
+			return false;
+	}
+	return *end == '\0';
+}
+
 int options_parse(struct options *o, int argc, char **argv)
 {
 	enum { OPT_HEADLESS = 256, OPT_SIZE, OPT_SEED, OPT_OUT, OPT_LOAD, OPT_REPLAY, OPT_PRESS,
-	       OPT_RECORD, OPT_HELP, OPT_VERSION };
+	       OPT_VIEW, OPT_RECORD, OPT_HELP, OPT_VERSION };
 	static const struct option longopts[] = {
 		{ "headless", no_argument, NULL, OPT_HEADLESS },
 		{ "size", required_argument, NULL, OPT_SIZE },
@@ -112,6 +136,7 @@ int options_parse(struct options *o, int argc, char **argv)
 		{ "load", required_argument, NULL, OPT_LOAD },
 		{ "replay", required_argument, NULL, OPT_REPLAY },
 		{ "press", required_argument, NULL, OPT_PRESS },
+		{ "view", required_argument, NULL, OPT_VIEW },
 		{ "record", required_argument, NULL, OPT_RECORD },
 		{ "help", no_argument, NULL, OPT_HELP },
 		{ "version", no_argument, NULL, OPT_VERSION },
@@ -160,9 +185,15 @@ int options_parse(struct options *o, int argc, char **argv)
 			s.kind = STEP_PRESS;
 			if (!button_from_name(optarg, &s.button))
 				return usage_error("unknown button \"%s\" (3d, clone, leaf, propagate, undo, "
-						   "redo, export, new, fixed-count, fixed-size)", optarg);
+						   "redo, export, new, fixed-count, fixed-size, view)", optarg);
 			if ((ret = add_step(o, s)))
 				return ret;
+			break;
+		case OPT_VIEW:
+			if (!parse_view(optarg, &o->view_yaw, &o->view_pitch))
+				return usage_error("bad --view \"%s\" (expected YAW or YAW,PITCH in degrees, "
+						   "pitch -20..75)", optarg);
+			o->view_given = true;
 			break;
 		case OPT_HELP:
 			o->help = true;
@@ -178,8 +209,9 @@ int options_parse(struct options *o, int argc, char **argv)
 		return usage_error("unexpected argument \"%s\"", argv[optind]);
 	if (o->help || o->version)
 		return 0;
-	if (!o->headless && (o->out_dir || o->nsteps))
-		return usage_error("%s needs --headless", o->out_dir ? "--out" : "--replay/--press");
+	if (!o->headless && (o->out_dir || o->nsteps || o->view_given))
+		return usage_error("%s needs --headless",
+				   o->out_dir ? "--out" : o->nsteps ? "--replay/--press" : "--view");
 	if (o->headless && (!o->out_dir || !o->out_dir[0]))
 		return usage_error("%s needs --out DIR", "--headless");
 	return 0;

@@ -28,6 +28,8 @@ struct options {
 	const char *out_dir;
 	const char *load;
 	const char *record;
+	bool view_given;
+	double view_yaw, view_pitch; /* degrees */
 	struct step *steps;
 	size_t nsteps;
 };

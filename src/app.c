@@ -8,6 +8,7 @@
 #include "layout.h"
 #include "lift.h"
 #include "sketch.h"
+#include "sketch_view.h"
 
 static void app_fail(struct app *app, int err)
 {
@@ -58,6 +59,23 @@ static int apply_op(struct app *app, const struct doc_op *op)
 	return SKETCH_CHANGED;
 }
 
+static void set_camera(struct app *app, struct camera c)
+{
+	app->camera = c;
+	app->doc.view = c; /* saved with the drawing */
+}
+
+/* Only a 3D tree can be turned: a sketch (after undoing 3D, or an empty canvas) is shown
+ * from the front. */
+static void camera_follow_tree(struct app *app)
+{
+	if (!app->tree.lifted) {
+		set_camera(app, (struct camera){ 0.0f, 0.0f });
+		app->turning = false;
+		app->orbiting = false;
+	}
+}
+
 static int update_mesh(struct app *app)
 {
 	app->mesh_serial++;
@@ -72,9 +90,12 @@ int app_rebuild(struct app *app)
 	rng_seed(&app->rng, app->doc.seed);
 	for (size_t i = 0; i < app->doc.cursor; i++) {
 		ret = apply_op(app, &app->doc.ops[i]);
-		if (ret < 0)
+		if (ret < 0) {
+			camera_follow_tree(app);
 			return ret;
+		}
 	}
+	camera_follow_tree(app);
 	return update_mesh(app);
 }
 
@@ -83,6 +104,7 @@ int app_load_doc(struct app *app, struct doc *doc)
 	doc_finish(&app->doc);
 	app->doc = *doc;
 	doc_init(doc, doc->seed);
+	app->camera = app->doc.view; /* kept if the drawing is a 3D tree */
 	return app_rebuild(app);
 }
 
@@ -102,6 +124,7 @@ static int push_op(struct app *app, struct doc_op *op)
 		(void)app_rebuild(app);
 		return ret;
 	}
+	camera_follow_tree(app);
 	if (ret == SKETCH_GREW && app->tree.nbranches >= nb && app->tree.nleaves >= nl) {
 		app->mesh_serial++;
 		return tree_mesh_append(&app->mesh, &app->tree, nb, nl);
@@ -161,7 +184,7 @@ static int stroke_add(struct app *app, const struct event *ev)
 static int stroke_commit(struct app *app)
 {
 	struct app_stroke *s = &app->stroke;
-	struct doc_op op = { .kind = DOC_OP_STROKE, .tool = s->tool };
+	struct doc_op op = { .kind = DOC_OP_STROKE, .tool = s->tool, .camera = app->camera };
 	double len = 0.0;
 	int ret;
 
@@ -215,6 +238,11 @@ static int press_button(struct app *app, enum button button, uint64_t time_us)
 			return 0;
 		op.kind = DOC_OP_LIFT;
 		ret = push_op(app, &op);
+		if (ret == 0 && app->tree.lifted) {
+			/* a short swing, so the visitor sees the tree has become 3D */
+			app->turning = true;
+			app->turn_start_us = time_us;
+		}
 		return ret == -ENOSPC ? 0 : ret;
 	case BUTTON_CLONE:
 		set_mode(app, APP_MODE_CLONE);
@@ -245,10 +273,77 @@ static int press_button(struct app *app, enum button button, uint64_t time_us)
 			return 0;
 		ret = push_op(app, &op);
 		return ret == -ENOSPC ? 0 : ret;
+	case BUTTON_VIEW:
+		app->turning = false;
+		app->orbiting = false;
+		set_camera(app, (struct camera){ 0.0f, 0.0f });
+		return 0;
 	case BUTTON_COUNT:
 		break;
 	}
 	return 0;
+}
+
+/* The on-screen button at (x, y): the bar, and the front view button of a 3D tree. */
+static bool ui_hit(const struct app *app, double x, double y, enum button *button)
+{
+	if (layout_hit(&app->view, x, y, button))
+		return true;
+	if (app->tree.lifted && layout_hit_view_button(&app->view, x, y)) {
+		*button = BUTTON_VIEW;
+		return true;
+	}
+	return false;
+}
+
+bool app_would_orbit(const struct app *app, double x, double y)
+{
+	struct sketch_view sv;
+	enum button hit;
+	double clearance;
+
+	if (!app->tree.lifted || app->pen.tool != EVENT_TOOL_PEN || ui_hit(app, x, y, &hit))
+		return false;
+	if (sketch_view_init(&sv, &app->tree, app->camera) < 0)
+		return false;
+	clearance = sketch_view_clearance(&sv, view_to_world(&app->view, x, y));
+	sketch_view_finish(&sv);
+	return clearance > APP_ORBIT_CLEARANCE_M;
+}
+
+/* Dragging right turns the tree to the right, like a turntable; dragging down lets the
+ * visitor look down on it. */
+static void orbit_to(struct app *app, const struct event *ev)
+{
+	double x = clamp(ev->x, 0, app->view.width), y = clamp(ev->y, 0, app->view.height);
+	double k = app->view.m_per_px * APP_ORBIT_DEG_PER_M;
+
+	set_camera(app, camera_normalize(app->camera.yaw - (x - app->orbit_x) * k,
+					 app->camera.pitch + (y - app->orbit_y) * k));
+	app->orbit_x = x;
+	app->orbit_y = y;
+}
+
+bool app_set_camera(struct app *app, struct camera c)
+{
+	if (!app->tree.lifted)
+		return false;
+	app->turning = false;
+	set_camera(app, camera_normalize(c.yaw, c.pitch));
+	return true;
+}
+
+bool app_camera_at(const struct app *app, uint64_t now_us, struct camera *out)
+{
+	double s, e;
+
+	*out = app->camera;
+	if (!app->turning || now_us < app->turn_start_us || now_us - app->turn_start_us >= APP_TURN_US)
+		return false;
+	s = (double)(now_us - app->turn_start_us) / APP_TURN_US;
+	e = s * s * (3.0 - 2.0 * s); /* eased in and out */
+	*out = camera_normalize(app->camera.yaw + APP_TURN_DEG * sin(2.0 * VEC_PI * e), app->camera.pitch);
+	return true;
 }
 
 static int button_event(struct app *app, enum button button, bool pressed, uint64_t time_us)
@@ -272,6 +367,7 @@ void app_handle_event(struct app *app, const struct event *ev)
 		update_pen(app, ev);
 		if (app->stroke.active)
 			ret = stroke_commit(app);
+		app->orbiting = false;
 		if (app->ui_button_held) {
 			app->ui_button_held = false;
 			app_fail(app, ret);
@@ -285,11 +381,20 @@ void app_handle_event(struct app *app, const struct event *ev)
 		if (app->stroke.active)
 			ret = stroke_commit(app);
 		/* The pen presses on-screen buttons like the GPIO ones: down now, up on lift. */
-		if (!app->ui_button_held && layout_hit(&app->view, ev->x, ev->y, &hit)) {
+		app->orbiting = false;
+		if (!app->ui_button_held && ui_hit(app, ev->x, ev->y, &hit)) {
 			app->ui_button_held = true;
 			app->ui_button = hit;
 			app_fail(app, ret);
 			ret = button_event(app, hit, true, ev->time_us);
+			break;
+		}
+		/* the pen takes over: the turn into 3D stops where the visitor left it */
+		app->turning = false;
+		if (app_would_orbit(app, ev->x, ev->y)) {
+			app->orbiting = true;
+			app->orbit_x = clamp(ev->x, 0, app->view.width);
+			app->orbit_y = clamp(ev->y, 0, app->view.height);
 			break;
 		}
 		app->stroke.active = true;
@@ -300,7 +405,9 @@ void app_handle_event(struct app *app, const struct event *ev)
 		break;
 	case EVENT_MOTION:
 		update_pen(app, ev);
-		if (app->stroke.active)
+		if (app->orbiting)
+			orbit_to(app, ev);
+		else if (app->stroke.active)
 			ret = stroke_add(app, ev);
 		break;
 	case EVENT_TIP_UP:
@@ -308,6 +415,9 @@ void app_handle_event(struct app *app, const struct event *ev)
 		if (app->ui_button_held) {
 			app->ui_button_held = false;
 			ret = button_event(app, app->ui_button, false, ev->time_us);
+		} else if (app->orbiting) {
+			orbit_to(app, ev);
+			app->orbiting = false;
 		} else if (app->stroke.active) {
 			ret = stroke_add(app, ev);
 			if (ret == 0)

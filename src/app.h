@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "camera.h"
 #include "doc.h"
 #include "event.h"
 #include "mesh.h"
@@ -50,6 +51,20 @@ struct app_stroke {
 	bool active; /* tip is down */
 };
 
+/*
+ * Orbiting a 3D tree: a pen drag that starts on empty canvas, farther than this from
+ * every branch and leaf on the screen, turns the camera instead of drawing (metres on
+ * the screen: 12% of its height). Closer in, strokes and gestures work as in 2D: a cut
+ * begins at least 2 x GESTURE_SNAP_M before its crossing, so slashes from up to here
+ * stay cuts.
+ */
+#define APP_ORBIT_CLEARANCE_M 1.2
+/* Degrees the camera turns per metre the pen drags (half a screen height: 90 degrees). */
+#define APP_ORBIT_DEG_PER_M 18.0
+/* After 3D is pressed the tree swings this far to one side and the other, and back. */
+#define APP_TURN_US 2400000u
+#define APP_TURN_DEG 40.0
+
 struct app_pen {
 	bool in_proximity;
 	enum event_tool tool;
@@ -72,6 +87,12 @@ struct app {
 	/* The on-screen button the pen tip is holding down, if any. */
 	bool ui_button_held;
 	enum button ui_button;
+	/* The camera strokes are drawn in; the front view unless the tree is 3D. */
+	struct camera camera;
+	bool orbiting;             /* the pen tip is turning the camera */
+	double orbit_x, orbit_y;   /* where the pen was, screen pixels */
+	uint64_t turn_start_us;    /* the animated turn after lifting, when turning */
+	bool turning;
 	uint64_t last_time_us;
 	uint32_t requests;
 	int failed; /* first negative errno from an allocation, sticky */
@@ -83,5 +104,13 @@ void app_destroy(struct app *app);
 int app_load_doc(struct app *app, struct doc *doc);
 void app_handle_event(struct app *app, const struct event *ev);
 uint32_t app_take_requests(struct app *app);
+/* The camera to show at now_us: the settled one, or a step of the animated turn into 3D
+ * (UINT64_MAX: the settled one). Returns true while the turn runs, so that the kiosk
+ * keeps drawing frames. */
+bool app_camera_at(const struct app *app, uint64_t now_us, struct camera *out);
+/* Turns a 3D tree's camera (as orbiting would). False, and nothing changes, for a sketch. */
+bool app_set_camera(struct app *app, struct camera c);
+/* Whether a pen tip put down at screen pixel (x, y) would turn the camera. */
+bool app_would_orbit(const struct app *app, double x, double y);
 /* Rebuilds tree and meshes from the document up to its cursor. 0 or -ENOMEM. */
 int app_rebuild(struct app *app);

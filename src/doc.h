@@ -6,6 +6,7 @@
 #include <stdint.h>
 
 #include "buf.h"
+#include "camera.h"
 #include "error.h"
 #include "event.h"
 
@@ -34,6 +35,8 @@ struct doc_op {
 	enum event_tool tool;
 	struct doc_point *points;
 	size_t npoints;
+	struct camera camera; /* strokes: the camera they were drawn in (the front view
+			       * before version 3) */
 };
 
 struct doc {
@@ -41,10 +44,12 @@ struct doc {
 	struct doc_op *ops;
 	size_t nops, cap;
 	size_t cursor; /* ops[0..cursor) are in effect */
+	struct camera view; /* how the kiosk showed the tree when it was saved (version 3) */
 };
 
-/* 2 added the lift op; files of version 1 read as before. */
-#define DOC_FORMAT_VERSION 2
+/* 2 added the lift op, 3 the camera (of strokes drawn on a turned 3D tree, and the
+ * view when saved); older files read as before. */
+#define DOC_FORMAT_VERSION 3
 
 /*
  * Limits on a drawing, far beyond what a visitor draws in a day, so that a damaged or

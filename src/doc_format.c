@@ -18,14 +18,20 @@ int doc_serialize(const struct doc *d, const struct tree *t, struct buf *out)
 	buf_printf(out, "edaha-drawing %d\n", DOC_FORMAT_VERSION);
 	buf_printf(out, "# The history is the drawing; the tree section is a summary for other tools.\n");
 	buf_printf(out, "seed %llu\n", (unsigned long long)d->seed);
+	if (!camera_is_front(d->view))
+		buf_printf(out, "view %.9g %.9g\n", (double)d->view.yaw, (double)d->view.pitch);
 	buf_printf(out, "history %zu %zu\n", d->nops, d->cursor);
 	for (size_t i = 0; i < d->nops; i++) {
 		const struct doc_op *op = &d->ops[i];
 
 		switch (op->kind) {
 		case DOC_OP_STROKE:
-			buf_printf(out, "stroke %s %llu %zu\n", event_tool_name(op->tool),
+			buf_printf(out, "stroke %s %llu %zu", event_tool_name(op->tool),
 				   (unsigned long long)op->time_us, op->npoints);
+			if (!camera_is_front(op->camera))
+				buf_printf(out, " %.9g %.9g", (double)op->camera.yaw,
+					   (double)op->camera.pitch);
+			buf_printf(out, "\n");
 			for (size_t k = 0; k < op->npoints; k++) {
 				const struct doc_point *p = &op->points[k];
 
@@ -159,14 +165,33 @@ static int parse_float(struct reader *r, const char *s, float lo, float hi, floa
 	return 0;
 }
 
-static int parse_stroke(struct reader *r, struct doc_op *op)
+/* YAW PITCH in degrees, as camera_normalize leaves them. */
+static int parse_camera(struct reader *r, const char *yaw, const char *pitch, struct camera *c)
+{
+	int ret;
+
+	if ((ret = parse_float(r, yaw, -180.0f, 180.0f, &c->yaw, "camera yaw")) < 0 ||
+	    (ret = parse_float(r, pitch, CAMERA_PITCH_MIN_DEG, CAMERA_PITCH_MAX_DEG, &c->pitch,
+			       "camera pitch")) < 0)
+		return ret;
+	if (c->yaw == 180.0f)
+		c->yaw = -180.0f;
+	return 0;
+}
+
+static int parse_stroke(struct reader *r, struct doc_op *op, uint64_t version)
 {
 	uint64_t v, npoints;
 	uint32_t last_dt = 0;
 	int ret;
 
-	if ((ret = expect_fields(r, 4, "stroke")) < 0)
+	/* version 3: the camera of a stroke drawn on a turned tree follows */
+	if (version >= 3 && r->nfields == 6) {
+		if ((ret = parse_camera(r, r->fields[4], r->fields[5], &op->camera)) < 0)
+			return ret;
+	} else if ((ret = expect_fields(r, 4, "stroke")) < 0) {
 		return ret;
+	}
 	if (!event_tool_from_name(r->fields[1], &op->tool))
 		return error_at(r->err, -EINVAL, r->name, r->line, "unknown tool \"%s\" (pen, eraser)",
 				r->fields[1]);
@@ -243,6 +268,10 @@ static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 			    (ret = parse_u64(r, r->fields[1], UINT64_MAX, &d->seed, "seed")) < 0)
 				return ret;
 			have_seed = true;
+		} else if (version >= 3 && strcmp(kw, "view") == 0) {
+			if ((ret = expect_fields(r, 3, "view")) < 0 ||
+			    (ret = parse_camera(r, r->fields[1], r->fields[2], &d->view)) < 0)
+				return ret;
 		} else if (strcmp(kw, "history") == 0) {
 			if (have_history)
 				return error_at(r->err, -EINVAL, r->name, r->line, "second history line");
@@ -262,7 +291,7 @@ static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 						(unsigned long long)nops);
 			if (kw[0] == 's') {
 				op.kind = DOC_OP_STROKE;
-				ret = parse_stroke(r, &op);
+				ret = parse_stroke(r, &op, version);
 			} else {
 				op.kind = kw[0] == 'n' ? DOC_OP_NEW : DOC_OP_LIFT;
 				ret = expect_fields(r, 2, kw);

@@ -34,6 +34,7 @@ static const char *const button_names[BUTTON_COUNT] = {
 	[BUTTON_NEW] = "new",
 	[BUTTON_FIXED_COUNT] = "fixed-count",
 	[BUTTON_FIXED_SIZE] = "fixed-size",
+	[BUTTON_VIEW] = "view",
 };
 
 #define N(a) (sizeof(a) / sizeof((a)[0]))

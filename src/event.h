@@ -40,6 +40,7 @@ enum button {
 	BUTTON_NEW,
 	BUTTON_FIXED_COUNT, /* propagation pattern: same number of children */
 	BUTTON_FIXED_SIZE,  /* propagation pattern: same size and spacing */
+	BUTTON_VIEW,        /* a turned 3D tree back to the front view */
 	BUTTON_COUNT
 };
 

@@ -96,7 +96,7 @@ int gesture_crossings(const struct tree *t, const struct vec3 *p, size_t n,
 	return 0;
 }
 
-int gesture_cut_erase(struct tree *t, const struct vec3 *p, size_t n)
+int gesture_cut_erase(struct tree *t, const struct tree *seen, const struct vec3 *p, size_t n)
 {
 	struct gesture_crossing *c;
 	size_t nc;
@@ -105,7 +105,7 @@ int gesture_cut_erase(struct tree *t, const struct vec3 *p, size_t n)
 	/* Every crossed branch once, newest first: an edit removes or renumbers only
 	 * branches after the one it edits, so the older ids stay valid. (Crossings are not
 	 * looked for again: a cut end lying on the slash must not be cut twice.) */
-	ret = gesture_crossings(t, p, n, &c, &nc);
+	ret = gesture_crossings(seen, p, n, &c, &nc);
 	if (ret < 0)
 		return ret;
 	for (size_t k = nc; k-- > 0;) {
@@ -163,7 +163,7 @@ static bool trail_touches(const struct vec3 *trail, size_t n, const struct vec3 
 	return false;
 }
 
-int gesture_eraser(struct tree *t, const struct vec3 *p, size_t n)
+int gesture_eraser(struct tree *t, const struct tree *seen, const struct vec3 *p, size_t n)
 {
 	struct box trail = bounds(p, n, GESTURE_ERASER_RADIUS_M);
 	bool *rb = calloc(t->nbranches + 1, sizeof(*rb));
@@ -175,7 +175,7 @@ int gesture_eraser(struct tree *t, const struct vec3 *p, size_t n)
 		goto out;
 	}
 	for (size_t i = 0; i < t->nleaves; i++) {
-		const struct leaf *l = &t->leaves[i];
+		const struct leaf *l = &seen->leaves[i];
 
 		if (overlap(trail, bounds(l->points, l->npoints, 0.0)) &&
 		    trail_touches(p, n, l->points, l->npoints, GESTURE_ERASER_RADIUS_M)) {
@@ -184,7 +184,7 @@ int gesture_eraser(struct tree *t, const struct vec3 *p, size_t n)
 		}
 	}
 	for (size_t i = 0; i < t->nbranches; i++) {
-		const struct branch *b = &t->branches[i];
+		const struct branch *b = &seen->branches[i];
 
 		if (overlap(trail, bounds(b->points, b->npoints, 0.0)) &&
 		    trail_touches(p, n, b->points, b->npoints, GESTURE_ERASER_RADIUS_M)) {

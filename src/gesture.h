@@ -31,10 +31,16 @@ struct gesture_crossing {
 int gesture_crossings(const struct tree *t, const struct vec3 *p, size_t n,
 		      struct gesture_crossing **out, size_t *nout);
 
+/*
+ * The edits below look for crossings and touches in `seen`, the tree as the screen shows
+ * it (the same ids and segments: t itself for the front view, a sketch_view of it on a
+ * turned 3D tree), and edit t.
+ */
+
 /* Applies cuts and erasures of a stroke that crosses branches, each crossed branch once,
  * from the newest. Returns how many edits were made, or -ENOMEM. */
-int gesture_cut_erase(struct tree *t, const struct vec3 *p, size_t n);
+int gesture_cut_erase(struct tree *t, const struct tree *seen, const struct vec3 *p, size_t n);
 
 /* Erases the branches (from their base, with all attached) and leaves the eraser trail
  * touches. Returns how many were touched, or -ENOMEM. */
-int gesture_eraser(struct tree *t, const struct vec3 *p, size_t n);
+int gesture_eraser(struct tree *t, const struct tree *seen, const struct vec3 *p, size_t n);

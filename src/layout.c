@@ -88,6 +88,22 @@ bool layout_hit(const struct view *v, double x, double y, enum button *button)
 	return false;
 }
 
+struct layout_button layout_view_button(const struct view *v)
+{
+	struct metrics m = metrics(v);
+
+	return (struct layout_button){ BUTTON_VIEW, m.margin, v->height - m.margin - m.size, m.size,
+				       m.size };
+}
+
+bool layout_hit_view_button(const struct view *v, double x, double y)
+{
+	struct layout_button b = layout_view_button(v);
+	double pad = 0.5 * metrics(v).gap;
+
+	return x >= b.x - pad && x < b.x + b.w + pad && y >= b.y - pad && y < b.y + b.h + pad;
+}
+
 struct layout_rect layout_bar(const struct view *v)
 {
 	struct metrics m = metrics(v);

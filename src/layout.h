@@ -39,6 +39,14 @@ size_t layout_buttons(const struct view *v, struct layout_button *out, size_t ma
  */
 bool layout_hit(const struct view *v, double x, double y, enum button *button);
 
+/*
+ * The "front view" button of a 3D tree: the size of the bar's buttons, in the canvas's
+ * bottom left corner, where a turned tree rarely reaches. Shown and hit only while the
+ * tree is 3D (the app decides).
+ */
+struct layout_button layout_view_button(const struct view *v);
+bool layout_hit_view_button(const struct view *v, double x, double y);
+
 /* The strip the buttons sit on. */
 struct layout_rect layout_bar(const struct view *v);
 

@@ -2,9 +2,10 @@
 #include "sketch.h"
 
 #include <errno.h>
+#include <stdlib.h>
 
 #include "gesture.h"
-#include <stdlib.h>
+#include "sketch_view.h"
 
 /* Trunk root radius relative to its length, and how much thinner the tip gets. */
 #define TRUNK_RADIUS_PER_M 0.04
@@ -173,7 +174,8 @@ static double profile_at(const struct tree *t, double s)
  * branch point. radii, when given, are the drawn ones (two-stroke branches); otherwise
  * the root radius follows from the parent and the profile gives the rest.
  */
-static int add_branch(struct tree *t, struct vec3 *p, size_t n, const double *drawn)
+static int add_branch(struct tree *t, const struct sketch_view *sv, struct vec3 *p, size_t n,
+		      const double *drawn)
 {
 	double len = vec3_polyline_length(p, n), walked = 0.0, root_r;
 	struct sketch_hit hit = { .branch = -1 };
@@ -188,13 +190,13 @@ static int add_branch(struct tree *t, struct vec3 *p, size_t n, const double *dr
 		/* Fig. 3a,b: the root moves onto the parent, the tip stays, the rest follows. */
 		struct vec3 shift;
 
-		hit = sketch_nearest(t, p[0]);
+		hit = sketch_nearest(sv->tree, p[0]);
 		if (hit.branch < 0) {
 			free(radii);
 			return 0;
 		}
 		/* In 3D the stroke lies on the plane through the attachment point that faces
-		 * the camera (the front view looks along -z). */
+		 * the camera (view space looks along -z). */
 		for (size_t i = 0; i < n; i++)
 			p[i].z = hit.point.z;
 		shift = vec3_sub(hit.point, p[0]);
@@ -217,6 +219,8 @@ static int add_branch(struct tree *t, struct vec3 *p, size_t n, const double *dr
 		if (i + 1 < n)
 			walked += vec3_dist(p[i], p[i + 1]);
 	}
+	for (size_t i = 0; i < n; i++)
+		p[i] = camera_from_view(&sv->xf, p[i]);
 	ret = tree_add_branch(t, hit.branch, hit.branch >= 0 ? hit.param : 0.0, ORIGIN_SKETCH, p,
 			      radii, n);
 	free(radii);
@@ -226,7 +230,7 @@ static int add_branch(struct tree *t, struct vec3 *p, size_t n, const double *dr
 	return 0;
 }
 
-static int add_leaf(struct tree *t, struct vec3 *p, size_t n)
+static int add_leaf(struct tree *t, const struct sketch_view *sv, struct vec3 *p, size_t n)
 {
 	struct sketch_hit best = { .branch = -1, .dist = INFINITY };
 	int ret;
@@ -234,15 +238,17 @@ static int add_leaf(struct tree *t, struct vec3 *p, size_t n)
 	if (t->nbranches == 0)
 		return 0; /* nothing to hang it on */
 	for (size_t i = 0; i < n; i++) {
-		struct sketch_hit h = sketch_nearest(t, p[i]);
+		struct sketch_hit h = sketch_nearest(sv->tree, p[i]);
 
 		if (h.dist < best.dist)
 			best = h;
 	}
 	if (best.branch < 0)
 		return 0;
-	for (size_t i = 0; i < n; i++)
+	for (size_t i = 0; i < n; i++) {
 		p[i].z = best.point.z; /* see add_branch */
+		p[i] = camera_from_view(&sv->xf, p[i]);
+	}
 	/* The polygon closes itself: drop the end point that returned to the start. */
 	ret = tree_add_leaf(t, best.branch, ORIGIN_SKETCH, p, n - 1);
 	if (ret < 0)
@@ -263,7 +269,7 @@ static size_t sketched_points(const struct tree *t)
 	return n;
 }
 
-static int erase(struct tree *t, const struct doc_op *op)
+static int erase(struct tree *t, const struct sketch_view *sv, const struct doc_op *op)
 {
 	struct vec3 *raw = malloc(op->npoints * sizeof(*raw)), *p = NULL;
 	size_t n;
@@ -279,7 +285,7 @@ static int erase(struct tree *t, const struct doc_op *op)
 		return SKETCH_GREW;
 	if (ret < 0)
 		return ret;
-	ret = gesture_eraser(t, p, n);
+	ret = gesture_eraser(t, sv->tree, p, n);
 	free(p);
 	return ret < 0 ? ret : ret > 0 ? SKETCH_CHANGED : SKETCH_GREW;
 }
@@ -307,7 +313,8 @@ static struct vec3 point_at(const struct vec3 *p, size_t n, double len, double s
  * at most 0.6 x, and on average at most 0.3 x, the shorter length apart, and the two
  * chords are within 30 degrees. Returns 1 when it merged them, 0 when not, or -ENOMEM.
  */
-static int outline_pair(struct tree *t, const struct vec3 *b, size_t nb, uint64_t start_us, int prev)
+static int outline_pair(struct tree *t, struct sketch_view *sv, const struct vec3 *b, size_t nb,
+			uint64_t start_us, int prev)
 {
 	enum { N = 48 };
 	const struct branch *a;
@@ -320,7 +327,7 @@ static int outline_pair(struct tree *t, const struct vec3 *b, size_t nb, uint64_
 	if (prev < 0 || (size_t)prev + 1 != t->nbranches || start_us < t->last_sketched_end_us ||
 	    start_us - t->last_sketched_end_us > SKETCH_OUTLINE_PAUSE_US)
 		return 0;
-	a = &t->branches[prev];
+	a = &sv->tree->branches[prev];
 	la = vec3_polyline_length(a->points, a->npoints);
 	lb = vec3_polyline_length(b, nb);
 	lmin = fmin(la, lb);
@@ -344,7 +351,7 @@ static int outline_pair(struct tree *t, const struct vec3 *b, size_t nb, uint64_
 		double d;
 
 		/* compared on the screen: on a 3D tree the first outline lies at its parent's
-		 * depth, the second is still on the sketch plane */
+		 * depth, the second is still on the screen's plane */
 		pb.z = pa.z;
 		d = vec3_dist(pa, pb);
 
@@ -366,7 +373,8 @@ static int outline_pair(struct tree *t, const struct vec3 *b, size_t nb, uint64_
 	free(remove);
 	if (ret < 0)
 		return ret;
-	ret = add_branch(t, axis, N, radii);
+	sketch_view_drop_last_branch(sv);
+	ret = add_branch(t, sv, axis, N, radii);
 	if (ret < 0)
 		return ret;
 	/* Later single strokes taper like this one (radius relative to the root's). */
@@ -389,47 +397,43 @@ static int outline_pair(struct tree *t, const struct vec3 *b, size_t nb, uint64_
  * cut/erase gesture: a slash that begins away from the wood. So a branch drawn from its
  * parent is never a cut, even when it crosses other branches further on.
  */
-static int open_stroke(struct tree *t, struct vec3 *p, size_t n, uint64_t start_us, int prev)
+static int open_stroke(struct tree *t, struct sketch_view *sv, struct vec3 *p, size_t n,
+		       uint64_t start_us, int prev)
 {
 	struct gesture_crossing *c;
 	double first = INFINITY;
 	size_t nc;
 	int ret;
 
-	ret = outline_pair(t, p, n, start_us, prev);
+	ret = outline_pair(t, sv, p, n, start_us, prev);
 	if (ret != 0)
 		return ret < 0 ? ret : SKETCH_CHANGED;
 
-	if (t->nbranches == 0 || sketch_nearest(t, p[0]).dist <= GESTURE_SNAP_M)
-		return add_branch(t, p, n, NULL);
-	ret = gesture_crossings(t, p, n, &c, &nc);
+	if (t->nbranches == 0 || sketch_nearest(sv->tree, p[0]).dist <= GESTURE_SNAP_M)
+		return add_branch(t, sv, p, n, NULL);
+	ret = gesture_crossings(sv->tree, p, n, &c, &nc);
 	if (ret < 0)
 		return ret;
 	for (size_t i = 0; i < nc; i++)
 		first = fmin(first, c[i].along);
 	free(c);
 	if (nc == 0 || first <= 2 * GESTURE_SNAP_M)
-		return add_branch(t, p, n, NULL);
-	ret = gesture_cut_erase(t, p, n);
+		return add_branch(t, sv, p, n, NULL);
+	ret = gesture_cut_erase(t, sv->tree, p, n);
 	return ret < 0 ? ret : SKETCH_CHANGED;
 }
 
-int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
+/* The stroke's points on the screen's sketch plane (view space), resampled and smoothed.
+ * 1 = got a stroke, 0 = nothing to draw, <0 error. */
+static int prepare(const struct doc_op *op, size_t sketched, struct vec3 **out, size_t *nout,
+		   bool *closed)
 {
 	struct vec3 *raw, *p = NULL;
 	size_t n;
-	int ret, sketched;
+	int ret;
 
-	(void)rng;
-	if (op->kind != DOC_OP_STROKE || op->npoints == 0)
-		return SKETCH_GREW;
-	/* Only a branch drawn by the stroke right before can get a second outline. */
-	sketched = t->last_sketched;
-	t->last_sketched = -1;
-	if (op->tool == EVENT_TOOL_ERASER)
-		return erase(t, op);
 	if (op->npoints < 2)
-		return SKETCH_GREW;
+		return 0;
 	raw = malloc(op->npoints * sizeof(*raw));
 	if (!raw)
 		return -ENOMEM;
@@ -445,17 +449,49 @@ int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
 		return 0;
 	if (ret < 0)
 		return ret;
-	if (sketched_points(t) + n > SKETCH_MAX_TREE_POINTS) {
+	if (sketched + n > SKETCH_MAX_TREE_POINTS) {
 		free(p);
 		return 0;
 	}
-	if (sketch_is_closed(p, n)) {
-		sketch_smooth(p, n, true);
-		ret = add_leaf(t, p, n);
-	} else {
-		sketch_smooth(p, n, false);
-		ret = open_stroke(t, p, n, op->time_us, sketched);
+	*closed = sketch_is_closed(p, n);
+	sketch_smooth(p, n, *closed);
+	*out = p;
+	*nout = n;
+	return 1;
+}
+
+int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
+{
+	struct sketch_view sv;
+	struct vec3 *p = NULL;
+	size_t n = 0;
+	bool closed = false;
+	int ret, sketched;
+
+	(void)rng;
+	if (op->kind != DOC_OP_STROKE || op->npoints == 0)
+		return SKETCH_GREW;
+	/* Only a branch drawn by the stroke right before can get a second outline. */
+	sketched = t->last_sketched;
+	t->last_sketched = -1;
+	if (op->tool != EVENT_TOOL_ERASER) {
+		ret = prepare(op, sketched_points(t), &p, &n, &closed);
+		if (ret <= 0)
+			return ret < 0 ? ret : SKETCH_GREW;
 	}
+	/* On a turned 3D tree everything is decided as the screen shows it. */
+	ret = sketch_view_init(&sv, t, op->camera);
+	if (ret < 0) {
+		free(p);
+		return ret;
+	}
+	if (op->tool == EVENT_TOOL_ERASER)
+		ret = erase(t, &sv, op);
+	else if (closed)
+		ret = add_leaf(t, &sv, p, n);
+	else
+		ret = open_stroke(t, &sv, p, n, op->time_us, sketched);
+	sketch_view_finish(&sv);
 	free(p);
 	if (t->last_sketched >= 0) /* this stroke drew a branch */
 		t->last_sketched_end_us = op->time_us + op->points[op->npoints - 1].dt_us;

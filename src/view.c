@@ -22,12 +22,22 @@ void view_to_screen(const struct view *v, struct vec3 p, double *x_px, double *y
 	*y_px = v->ground_y_px - p.y / v->m_per_px;
 }
 
-void view_clip_matrix(const struct view *v, float m[16])
+void view_clip_matrix(const struct view *v, const struct camera_xf *xf, float m[16])
 {
 	double sx = 2.0 / (v->m_per_px * v->width);
 	double sy = 2.0 / (v->m_per_px * v->height);
+	float cam[16], proj[16];
 
 	memset(m, 0, 16 * sizeof(*m));
+	if (xf && !xf->identity) {
+		view_clip_matrix(v, NULL, proj);
+		camera_matrix(xf, cam);
+		for (int c = 0; c < 4; c++)
+			for (int r = 0; r < 4; r++)
+				for (int k = 0; k < 4; k++)
+					m[c * 4 + r] += proj[k * 4 + r] * cam[c * 4 + k];
+		return;
+	}
 	/* x_clip = x * sx; y_clip = y * sy + (1 - 2 ground / h); z_clip = -z / depth */
 	m[0] = (float)sx;
 	m[5] = (float)sy;

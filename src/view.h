@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #pragma once
 
+#include "camera.h"
 #include "vec.h"
 
 /*
@@ -23,5 +24,6 @@ struct view {
 void view_init(struct view *v, int width, int height);
 struct vec3 view_to_world(const struct view *v, double x_px, double y_px);
 void view_to_screen(const struct view *v, struct vec3 p, double *x_px, double *y_px);
-/* Column-major 4x4 matrix from world to GL clip space (orthographic, y up). */
-void view_clip_matrix(const struct view *v, float m[16]);
+/* Column-major 4x4 matrix from world to GL clip space (orthographic, y up), seen through
+ * the camera xf (NULL: the front view). */
+void view_clip_matrix(const struct view *v, const struct camera_xf *xf, float m[16]);

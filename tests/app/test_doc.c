@@ -101,10 +101,23 @@ static void test_errors(void)
 {
 	expect_error("", "bad.edaha: empty file");
 	expect_error("hello\n", "bad.edaha:1: not an edaha drawing");
-	expect_error("# c\nedaha-drawing 3\n", "bad.edaha:2: drawing format version 3");
+	expect_error("# c\nedaha-drawing 4\n", "bad.edaha:2: drawing format version 4");
 	expect_error("edaha-drawing 0\n", "bad.edaha:1: drawing format version 0");
 	/* version 1 files have no lift op */
 	expect_error("edaha-drawing 1\nseed 1\nhistory 1 1\nlift 5\nend\n", "bad.edaha:4: unknown line");
+	/* the camera came with version 3, within the orbit's range */
+	expect_error("edaha-drawing 2\nseed 1\nhistory 1 1\nstroke pen 0 1 30 10\n",
+		     "bad.edaha:4: expected 4 fields for stroke, got 6");
+	expect_error("edaha-drawing 2\nseed 1\nview 30 10\n", "bad.edaha:3: unknown line");
+	expect_error("edaha-drawing 3\nseed 1\nhistory 1 1\nstroke pen 0 1 30 80\n",
+		     "bad.edaha:4: camera pitch 80 out of range -20..75");
+	expect_error("edaha-drawing 3\nseed 1\nhistory 1 1\nstroke pen 0 1 200 0\n",
+		     "bad.edaha:4: camera yaw 200 out of range -180..180");
+	expect_error("edaha-drawing 3\nseed 1\nhistory 1 1\nstroke pen 0 1 inf 0\n",
+		     "bad.edaha:4: bad camera yaw");
+	expect_error("edaha-drawing 3\nseed 1\nhistory 1 1\nstroke pen 0 1 30\n",
+		     "bad.edaha:4: expected 4 fields for stroke, got 5");
+	expect_error("edaha-drawing 3\nseed 1\nview 30\n", "bad.edaha:3: expected 3 fields for view");
 	expect_error("edaha-drawing 1\nseed x\n", "bad.edaha:2: bad seed");
 	expect_error("edaha-drawing 1\nseed 1\nhistory 1 2\n", "bad.edaha:3: bad cursor");
 	expect_error("edaha-drawing 1\nseed 1\nhistory 1 1\nstroke pen 0 2\n0 0 0.5 0\n",
@@ -142,14 +155,52 @@ static void test_versions(void)
 	CHECK(d.ops[1].time_us == 9);
 	buf_init(&b);
 	CHECK_INT(doc_serialize(&d, NULL, &b), 0);
-	CHECK(b.len > 0 && strstr((const char *)b.data, "\nlift 9\n") && strncmp((const char *)b.data, "edaha-drawing 2\n", 16) == 0);
+	/* read as version 2, written as the newest: a front-view drawing needs no camera */
+	CHECK(b.len > 0 && strstr((const char *)b.data, "\nlift 9\n") &&
+	      strncmp((const char *)b.data, "edaha-drawing 3\n", 16) == 0 &&
+	      !strstr((const char *)b.data, "view"));
 	buf_finish(&b);
 	doc_finish(&d);
+}
+
+/* Version 3: a stroke drawn on a turned tree keeps its camera, the file the view. */
+static void test_camera(void)
+{
+	static const char v3[] = "edaha-drawing 3\nseed 4\nview -90 12.5\nhistory 3 3\nnew 1\n"
+				 "lift 2\nstroke pen 3 2 37.25 -7.5\n0 1 0.5 0\n0.5 1.5 0.5 10\n"
+				 "end\n";
+	static const char edge[] = "edaha-drawing 3\nseed 4\nhistory 1 1\nstroke pen 3 1 180 75\n"
+				   "0 1 0.5 0\nend\n";
+	struct error err = { { 0 } };
+	struct doc d, again;
+	struct buf b, b2;
+
+	CHECK_INT(doc_parse(v3, sizeof(v3) - 1, "v3", &d, &err), 0);
+	CHECK(d.view.yaw == -90.0f && d.view.pitch == 12.5f);
+	CHECK(camera_is_front(d.ops[0].camera) && camera_is_front(d.ops[1].camera));
+	CHECK(d.ops[2].camera.yaw == 37.25f && d.ops[2].camera.pitch == -7.5f);
+	buf_init(&b);
+	buf_init(&b2);
+	CHECK_INT(doc_serialize(&d, NULL, &b), 0);
+	CHECK(strstr((const char *)b.data, "\nview -90 12.5\n") &&
+	      strstr((const char *)b.data, "\nstroke pen 3 2 37.25 -7.5\n"));
+	CHECK_INT(doc_parse((const char *)b.data, b.len, "again", &again, &err), 0);
+	CHECK_INT(doc_serialize(&again, NULL, &b2), 0);
+	CHECK(b.len == b2.len && memcmp(b.data, b2.data, b.len) == 0);
+	doc_finish(&again);
+	doc_finish(&d);
+	/* yaw 180 is the same camera as -180, which is how it is kept */
+	CHECK_INT(doc_parse(edge, sizeof(edge) - 1, "edge", &d, &err), 0);
+	CHECK(d.ops[0].camera.yaw == -180.0f && d.ops[0].camera.pitch == 75.0f);
+	doc_finish(&d);
+	buf_finish(&b);
+	buf_finish(&b2);
 }
 
 int main(void)
 {
 	test_versions();
+	test_camera();
 	test_history();
 	test_roundtrip();
 	test_errors();

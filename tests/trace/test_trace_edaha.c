@@ -309,7 +309,7 @@ static const struct bad bad_inputs[] = {
 	  "tilt_y -91 out of range -90..90" },
 	{ "edaha-trace 1\nscreen 1280 800\n5 button 3D pressed\n", 3,
 	  "unknown button \"3D\" (valid: 3d clone leaf propagate undo redo export new fixed-count "
-	  "fixed-size)" },
+	  "fixed-size view)" },
 	{ "edaha-trace 1\nscreen 1280 800\n5 button undo down\n", 3,
 	  "expected pressed or released, got \"down\"" },
 	{ "edaha-trace 1\nscreen 1280 800\n5 button undo\n", 3, "expected 4 fields for button, got 3" },

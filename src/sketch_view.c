@@ -1,0 +1,123 @@
+/* SPDX-License-Identifier: MIT */
+#include "sketch_view.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct vec3 sketch_view_pivot(const struct tree *t)
+{
+	if (t->nbranches == 0 || t->branches[0].npoints == 0)
+		return vec3(0, 0, 0);
+	return t->branches[0].points[0];
+}
+
+int sketch_view_init(struct sketch_view *sv, const struct tree *t, struct camera c)
+{
+	size_t n = 0, k = 0;
+	struct tree *s = &sv->shadow;
+
+	memset(sv, 0, sizeof(*sv));
+	camera_xf_init(&sv->xf, c, sketch_view_pivot(t));
+	sv->tree = t;
+	if (sv->xf.identity)
+		return 0;
+	for (size_t i = 0; i < t->nbranches; i++)
+		n += t->branches[i].npoints;
+	for (size_t i = 0; i < t->nleaves; i++)
+		n += t->leaves[i].npoints;
+	*s = *t;
+	s->branches = malloc((t->nbranches ? t->nbranches : 1) * sizeof(*s->branches));
+	s->leaves = malloc((t->nleaves ? t->nleaves : 1) * sizeof(*s->leaves));
+	sv->pool = malloc((n ? n : 1) * sizeof(*sv->pool));
+	if (!s->branches || !s->leaves || !sv->pool) {
+		sketch_view_finish(sv);
+		return -ENOMEM;
+	}
+	s->cap_branches = t->nbranches;
+	s->cap_leaves = t->nleaves;
+	for (size_t i = 0; i < t->nbranches; i++) {
+		const struct branch *b = &t->branches[i];
+
+		s->branches[i] = *b;
+		s->branches[i].points = sv->pool + k;
+		for (size_t j = 0; j < b->npoints; j++)
+			sv->pool[k++] = camera_to_view(&sv->xf, b->points[j]);
+	}
+	for (size_t i = 0; i < t->nleaves; i++) {
+		const struct leaf *l = &t->leaves[i];
+
+		s->leaves[i] = *l;
+		s->leaves[i].local = NULL;
+		s->leaves[i].points = sv->pool + k;
+		for (size_t j = 0; j < l->npoints; j++)
+			sv->pool[k++] = camera_to_view(&sv->xf, l->points[j]);
+	}
+	sv->tree = s;
+	return 0;
+}
+
+void sketch_view_finish(struct sketch_view *sv)
+{
+	/* the shadow borrows radii from the tree: only its own arrays are freed */
+	free(sv->shadow.branches);
+	free(sv->shadow.leaves);
+	free(sv->pool);
+	memset(&sv->shadow, 0, sizeof(sv->shadow));
+	sv->pool = NULL;
+	sv->tree = NULL;
+}
+
+void sketch_view_drop_last_branch(struct sketch_view *sv)
+{
+	if (sv->tree == &sv->shadow && sv->shadow.nbranches > 0)
+		sv->shadow.nbranches--;
+}
+
+/* Distance in x/y from q to segment a-b. */
+static double segment_distance(struct vec3 q, struct vec3 a, struct vec3 b)
+{
+	double dx = b.x - a.x, dy = b.y - a.y, dd = dx * dx + dy * dy;
+	double s = dd > 0 ? ((q.x - a.x) * dx + (q.y - a.y) * dy) / dd : 0.0;
+
+	s = s < 0 ? 0 : s > 1 ? 1 : s;
+	return hypot(a.x + s * dx - q.x, a.y + s * dy - q.y);
+}
+
+static bool inside(const struct vec3 *p, size_t n, struct vec3 q)
+{
+	bool in = false;
+
+	for (size_t i = 0, j = n - 1; i < n; j = i++)
+		if ((p[i].y > q.y) != (p[j].y > q.y) &&
+		    q.x < (p[j].x - p[i].x) * (q.y - p[i].y) / (p[j].y - p[i].y) + p[i].x)
+			in = !in;
+	return in;
+}
+
+double sketch_view_clearance(const struct sketch_view *sv, struct vec3 p)
+{
+	const struct tree *t = sv->tree;
+	double best = INFINITY;
+
+	for (size_t i = 0; i < t->nbranches; i++) {
+		const struct branch *b = &t->branches[i];
+
+		if (b->npoints == 1)
+			best = fmin(best, hypot(b->points[0].x - p.x, b->points[0].y - p.y));
+		for (size_t j = 0; j + 1 < b->npoints; j++)
+			best = fmin(best, segment_distance(p, b->points[j], b->points[j + 1]));
+	}
+	for (size_t i = 0; i < t->nleaves; i++) {
+		const struct leaf *l = &t->leaves[i];
+
+		if (l->npoints == 0)
+			continue;
+		if (l->npoints >= 3 && inside(l->points, l->npoints, p))
+			return 0.0;
+		for (size_t j = 0; j < l->npoints; j++)
+			best = fmin(best, segment_distance(p, l->points[j], l->points[(j + 1) % l->npoints]));
+	}
+	return best;
+}

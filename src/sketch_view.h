@@ -1,0 +1,30 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+#include "camera.h"
+#include "tree.h"
+
+/*
+ * The tree as the camera shows it, for sketching on a turned 3D tree: the same ids,
+ * segments, parameters and radii, with points in view space (x, y on the screen's
+ * sketch plane, z towards the viewer). The camera is rigid, so lengths and parameters
+ * are the world's. For the front view it is the tree itself: nothing is copied and
+ * results are bit for bit those of the 2D sketch.
+ */
+struct sketch_view {
+	struct camera_xf xf;
+	const struct tree *tree; /* what to query */
+	struct tree shadow;      /* the turned copy, when there is one */
+	struct vec3 *pool;
+};
+
+/* The pivot the camera turns about: the trunk's base (the origin without a trunk). */
+struct vec3 sketch_view_pivot(const struct tree *t);
+/* 0 or -ENOMEM. */
+int sketch_view_init(struct sketch_view *sv, const struct tree *t, struct camera c);
+void sketch_view_finish(struct sketch_view *sv);
+/* The tree's last branch was just removed: forget it here too. */
+void sketch_view_drop_last_branch(struct sketch_view *sv);
+/* Distance on the screen (metres) from view-space point p to the nearest branch or
+ * leaf; 0 inside a leaf, INFINITY on an empty tree. */
+double sketch_view_clearance(const struct sketch_view *sv, struct vec3 p);
