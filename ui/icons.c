@@ -218,6 +218,31 @@ static void icon_export(const struct icon *ic)
 	arrow_head(ic, -0.25, 0.16, 0.0, 1.0, 0.5, 0.42, ic->ink);
 }
 
+/* A tree on a turntable with an arrow going round: "turn it back to the front". */
+static void icon_view(const struct icon *ic)
+{
+	const double cx = 0.0, cy = 0.5, rx = 0.86, ry = 0.32;
+	const double a0 = -0.1 * VEC_PI, a1 = 1.02 * VEC_PI;
+	struct pt p[32];
+	double ex, ey, dx, dy;
+
+	disc(ic, 0.0, -0.42, 0.42, ic->ink);
+	segment(ic, 0.0, -0.2, 0.0, 0.5, LINE * 1.3, ic->ink);
+	/* the front half of the turntable's rim, left to right under the tree */
+	for (int i = 0; i < 32; i++) {
+		double a = a1 + (a0 - a1) * (double)i / 31.0;
+
+		p[i] = (struct pt){ cx + rx * cos(a), cy + ry * sin(a) };
+	}
+	line(ic, p, 32, LINE, ic->ink);
+	ex = cx + rx * cos(a0);
+	ey = cy + ry * sin(a0);
+	dx = sin(a0) * rx;
+	dy = -cos(a0) * ry;
+	arrow_head(ic, ex + 0.3 * dx / hypot(dx, dy), ey + 0.3 * dy / hypot(dx, dy), dx, dy, 0.42,
+		   0.3, ic->ink);
+}
+
 void icon_draw(struct batch *b, enum button button, struct pt centre, double size,
 	       struct rgba ink, struct rgba bg)
 {
@@ -247,6 +272,9 @@ void icon_draw(struct batch *b, enum button button, struct pt centre, double siz
 		break;
 	case BUTTON_EXPORT:
 		icon_export(&ic);
+		break;
+	case BUTTON_VIEW:
+		icon_view(&ic);
 		break;
 	case BUTTON_FIXED_COUNT:
 	case BUTTON_FIXED_SIZE:

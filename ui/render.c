@@ -9,6 +9,7 @@
 
 #include "app.h"
 #include "render_private.h"
+#include "sketch_view.h"
 
 /* GLSL ES 1.00 so the same shaders run on GLES 2 and 3. */
 static const char tree_vs[] =
@@ -180,18 +181,23 @@ static int upload_tree(struct render *r, const struct app *app)
 	return 0;
 }
 
-static int draw_tree(struct render *r, const struct app *app)
+static int draw_tree(struct render *r, const struct app *app, const struct camera_xf *xf)
 {
-	float mvp[16];
+	float mvp[16], light[3];
+	struct vec3 l = camera_dir_from_view(xf, vec3(light_dir[0], light_dir[1], light_dir[2]));
 	int ret = upload_tree(r, app);
 
-	view_clip_matrix(&app->view, mvp);
+	/* the light turns with the camera: the side a visitor looks at is always lit */
+	light[0] = (float)l.x;
+	light[1] = (float)l.y;
+	light[2] = (float)l.z;
+	view_clip_matrix(&app->view, xf, mvp);
 	glEnable(GL_DEPTH_TEST);
 	glDepthFunc(GL_LESS);
 	glDisable(GL_BLEND);
 	glUseProgram(r->tree_program);
 	glUniformMatrix4fv(r->tree_mvp, 1, GL_FALSE, mvp);
-	glUniform3fv(r->tree_light, 1, light_dir);
+	glUniform3fv(r->tree_light, 1, light);
 	glEnableVertexAttribArray(ATTR_NORMAL);
 
 	/* branches are closed tubes: their back faces are never seen */
@@ -213,10 +219,19 @@ static int draw_tree(struct render *r, const struct app *app)
 
 int render_frame(struct render *r, const struct app *app)
 {
+	return render_frame_at(r, app, UINT64_MAX);
+}
+
+int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
+{
 	const struct view *v = &app->view;
+	struct camera cam;
+	struct camera_xf xf;
 	float proj[16];
 	int ret, r2;
 
+	(void)app_camera_at(app, now_us, &cam);
+	camera_xf_init(&xf, cam, sketch_view_pivot(&app->tree));
 	memset(&r->stats, 0, sizeof(r->stats));
 	if (v->width <= 0 || v->height <= 0)
 		return -EINVAL;
@@ -245,7 +260,7 @@ int render_frame(struct render *r, const struct app *app)
 	render_ui_ground(&r->batch, app);
 	ret = flush_batch(r, proj);
 
-	r2 = draw_tree(r, app);
+	r2 = draw_tree(r, app, &xf);
 	if (ret == 0)
 		ret = r2;
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <stddef.h>
+#include <stdint.h>
 
 struct app;
 
@@ -22,6 +23,9 @@ void render_destroy(struct render *r);
  * past its vertices (that mesh is not drawn).
  */
 int render_frame(struct render *r, const struct app *app);
+/* The same at a moment of the app's clock: the animated turn into 3D shows its step at
+ * now_us (render_frame shows the settled view). */
+int render_frame_at(struct render *r, const struct app *app, uint64_t now_us);
 
 /* What the last render_frame() did: for benchmarks and tests. */
 struct render_stats {

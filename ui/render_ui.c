@@ -145,6 +145,8 @@ static bool button_enabled(const struct app *app, enum button button)
 		return doc_can_undo(&app->doc);
 	if (button == BUTTON_REDO)
 		return doc_can_redo(&app->doc);
+	if (button == BUTTON_VIEW)
+		return !camera_is_front(app->camera);
 	return true;
 }
 
@@ -198,6 +200,37 @@ void render_ui_buttons(struct batch *b, const struct app *app)
 	batch_rect(b, bar.x, bar.y, fmax(1.0, 2.0 * s), bar.h, bar_edge);
 	for (size_t i = 0; i < n && i < LAYOUT_NBUTTONS; i++)
 		draw_button(b, app, &buttons[i]);
+	if (app->tree.lifted) {
+		struct layout_button view = layout_view_button(v);
+
+		draw_button(b, app, &view);
+	}
+}
+
+/* Two arrows chasing each other round the pen: "drag here to turn the tree". */
+static void orbit_cursor(struct batch *b, struct pt at, double s)
+{
+	const double r = 13.0 * s;
+
+	for (int half = 0; half < 2; half++) {
+		struct pt p[12];
+		double a0 = VEC_PI * (half + 0.08), a1 = VEC_PI * (half + 0.78), ax, ay;
+
+		for (int i = 0; i < 12; i++) {
+			double a = a0 + (a1 - a0) * i / 11.0;
+
+			p[i] = (struct pt){ at.x + r * cos(a), at.y + r * sin(a) };
+		}
+		batch_polyline(b, p, 12, 6.5 * s, with_alpha(white, 0.85f));
+		batch_polyline(b, p, 12, 3.0 * s, ink);
+		ax = -sin(a1);
+		ay = cos(a1);
+		batch_triangle(b, (struct pt){ p[11].x + ax * 7.0 * s, p[11].y + ay * 7.0 * s },
+			       (struct pt){ p[11].x + cos(a1) * 5.0 * s, p[11].y + sin(a1) * 5.0 * s },
+			       (struct pt){ p[11].x - cos(a1) * 5.0 * s, p[11].y - sin(a1) * 5.0 * s },
+			       ink);
+	}
+	batch_disc(b, at, 2.0 * s, ink);
 }
 
 void render_ui_cursor(struct batch *b, const struct app *app)
@@ -215,6 +248,8 @@ void render_ui_cursor(struct batch *b, const struct app *app)
 
 		batch_ring(b, at, r - 2.5 * s, r + 2.5 * s, with_alpha(white, 0.85f));
 		batch_ring(b, at, r - 1.0 * s, r + 1.0 * s, eraser_edge);
+	} else if (app->orbiting || (!app->stroke.active && app_would_orbit(app, pen->x, pen->y))) {
+		orbit_cursor(b, at, s);
 	} else {
 		batch_ring(b, at, 4.0 * s, 10.5 * s, with_alpha(white, 0.85f));
 		batch_ring(b, at, 5.5 * s, 8.5 * s, ink);
