@@ -298,17 +298,12 @@ static bool ui_hit(const struct app *app, double x, double y, enum button *butto
 
 bool app_would_orbit(const struct app *app, double x, double y)
 {
-	struct sketch_view sv;
 	enum button hit;
-	double clearance;
 
 	if (!app->tree.lifted || app->pen.tool != EVENT_TOOL_PEN || ui_hit(app, x, y, &hit))
 		return false;
-	if (sketch_view_init(&sv, &app->tree, app->camera) < 0)
-		return false;
-	clearance = sketch_view_clearance(&sv, view_to_world(&app->view, x, y));
-	sketch_view_finish(&sv);
-	return clearance > APP_ORBIT_CLEARANCE_M;
+	return !sketch_view_near(&app->tree, app->camera, view_to_world(&app->view, x, y),
+				 APP_ORBIT_CLEARANCE_M);
 }
 
 /* Dragging right turns the tree to the right, like a turntable; dragging down lets the

@@ -96,6 +96,56 @@ static bool inside(const struct vec3 *p, size_t n, struct vec3 q)
 	return in;
 }
 
+static bool polyline_near(const struct camera_xf *xf, const struct vec3 *pts, size_t n, bool closed,
+			  struct vec3 p, double r)
+{
+	struct vec3 first, prev;
+
+	if (n == 0)
+		return false;
+	first = prev = camera_to_view(xf, pts[0]);
+	if (n == 1)
+		return hypot(first.x - p.x, first.y - p.y) <= r;
+	for (size_t i = 1; i <= n; i++) {
+		struct vec3 q;
+
+		if (i == n && !closed)
+			break;
+		q = i == n ? first : camera_to_view(xf, pts[i]);
+		if (segment_distance(p, prev, q) <= r)
+			return true;
+		prev = q;
+	}
+	return false;
+}
+
+bool sketch_view_near(const struct tree *t, struct camera c, struct vec3 p, double r)
+{
+	struct camera_xf xf;
+
+	camera_xf_init(&xf, c, sketch_view_pivot(t));
+	for (size_t i = 0; i < t->nbranches; i++)
+		if (polyline_near(&xf, t->branches[i].points, t->branches[i].npoints, false, p, r))
+			return true;
+	for (size_t i = 0; i < t->nleaves; i++) {
+		const struct leaf *l = &t->leaves[i];
+
+		if (polyline_near(&xf, l->points, l->npoints, true, p, r))
+			return true;
+		if (l->npoints >= 3) {
+			/* inside a leaf counts as on it; a leaf is small, so copying it is cheap */
+			struct vec3 poly[64];
+			size_t n = l->npoints < 64 ? l->npoints : 64;
+
+			for (size_t k = 0; k < n; k++)
+				poly[k] = camera_to_view(&xf, l->points[k * l->npoints / n]);
+			if (inside(poly, n, p))
+				return true;
+		}
+	}
+	return false;
+}
+
 double sketch_view_clearance(const struct sketch_view *sv, struct vec3 p)
 {
 	const struct tree *t = sv->tree;

@@ -28,3 +28,7 @@ void sketch_view_drop_last_branch(struct sketch_view *sv);
 /* Distance on the screen (metres) from view-space point p to the nearest branch or
  * leaf; 0 inside a leaf, INFINITY on an empty tree. */
 double sketch_view_clearance(const struct sketch_view *sv, struct vec3 p);
+/* Whether anything of t is within r of view-space point p on the screen through camera c:
+ * the same answer as clearance <= r, without copying the tree and stopping at the first
+ * hit (the cursor asks every frame). */
+bool sketch_view_near(const struct tree *t, struct camera c, struct vec3 p, double r);

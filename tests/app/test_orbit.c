@@ -155,6 +155,28 @@ static void test_orbit_drag(void)
 	}
 	CHECK_INT(app->doc.nops, nops + 1);
 	CHECK(app->camera.yaw == before.yaw && app->camera.pitch == before.pitch);
+	/* a leaf at a branch tip, drawn on the turned tree */
+	{
+		const struct branch *b1 = &app->tree.branches[1];
+		double x, y, xy[2 * 25];
+
+		to_screen(app, b1->points[b1->npoints - 1], &x, &y);
+		for (int i = 0; i < 25; i++) {
+			xy[2 * i] = x + 12 + 16 * cos(i * 2 * VEC_PI / 24);
+			xy[2 * i + 1] = y + 16 * sin(i * 2 * VEC_PI / 24);
+		}
+		draw(app, EVENT_TOOL_PEN, xy, 25);
+		CHECK_INT(app->tree.nleaves, 1);
+	}
+	/* the quick test the cursor uses agrees with the full clearance everywhere */
+	for (int y = 10; y < 800; y += 37)
+		for (int x = 10; x < 1160; x += 41) {
+			double c = clearance(app, x, y);
+
+			if (fabs(c - APP_ORBIT_CLEARANCE_M) > 1e-6)
+				CHECK(sketch_view_near(&app->tree, app->camera, view_to_world(&app->view, x, y),
+						       APP_ORBIT_CLEARANCE_M) == (c <= APP_ORBIT_CLEARANCE_M));
+		}
 	/* the eraser never orbits */
 	app->pen.tool = EVENT_TOOL_ERASER;
 	CHECK(!app_would_orbit(app, 120, 150));
