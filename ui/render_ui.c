@@ -6,6 +6,7 @@
 #include "icons.h"
 #include "layout.h"
 #include "render_private.h"
+#include "sketch_view.h"
 
 static const struct rgba ink = { 0.16f, 0.13f, 0.12f, 1.0f };
 static const struct rgba white = { 1.0f, 1.0f, 1.0f, 1.0f };
@@ -59,6 +60,35 @@ static double screen_scale(const struct view *v)
 	return fmax(0.5, v->height / 800.0);
 }
 
+/* Under a 3D tree seen from above, the ground round its trunk shows as an ellipse: it
+ * tells which branches come forward and which go back. Pitch is not animated, so the
+ * settled camera is the one on the screen. */
+static void ground_patch(struct batch *b, const struct app *app)
+{
+	const struct view *v = &app->view;
+	struct vec3 pivot = sketch_view_pivot(&app->tree);
+	double reach = 0.0, x, y, rx, ry, k = sin(app->camera.pitch * (VEC_PI / 180.0));
+	struct pt p[48];
+
+	if (!app->tree.lifted || fabs(k) < 0.02)
+		return;
+	for (size_t i = 0; i < app->tree.nbranches; i++)
+		for (size_t j = 0; j < app->tree.branches[i].npoints; j++) {
+			struct vec3 q = app->tree.branches[i].points[j];
+
+			reach = fmax(reach, hypot(q.x - pivot.x, q.z - pivot.z));
+		}
+	view_to_screen(v, pivot, &x, &y);
+	rx = (reach + 0.5) / v->m_per_px;
+	ry = rx * fabs(k);
+	for (int i = 0; i < 48; i++)
+		p[i] = (struct pt){ x + rx * cos(i * VEC_PI / 24), y + ry * sin(i * VEC_PI / 24) };
+	batch_convex(b, p, 48, with_alpha(ground_line, 0.16f));
+	for (int i = 0; i < 48; i++)
+		p[i] = (struct pt){ x + 0.5 * rx * cos(i * VEC_PI / 24), y + 0.5 * ry * sin(i * VEC_PI / 24) };
+	batch_convex(b, p, 48, with_alpha(ground_line, 0.12f));
+}
+
 void render_ui_ground(struct batch *b, const struct app *app)
 {
 	const struct view *v = &app->view;
@@ -72,6 +102,7 @@ void render_ui_ground(struct batch *b, const struct app *app)
 			    with_alpha(ground_line, 0.22f));
 	batch_rect_gradient(b, 0.0, gy, w, h - gy, soil_top, soil_bottom);
 	batch_rect(b, 0.0, gy - 1.5 * s, w, 3.0 * s, ground_line);
+	ground_patch(b, app);
 }
 
 static double clamp01(double x)

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "app.h"
 #include "egl_headless.h"
 #include "render.h"
 #include "render_private.h"
@@ -211,8 +212,66 @@ static void test_antialiased_stroke(void)
 	fixture_finish(&f);
 }
 
+static void pen_line(struct app *app, uint64_t *t, double x0, double y0, double x1, double y1)
+{
+	struct event e = { .type = EVENT_TIP_DOWN, .x = x0, .y = y0, .pressure = 0.5 };
+
+	for (int i = 0; i <= 20; i++) {
+		e.time_us = (*t += 8000);
+		e.x = x0 + (x1 - x0) * i / 20;
+		e.y = y0 + (y1 - y0) * i / 20;
+		app_handle_event(app, &e);
+		e.type = EVENT_MOTION;
+	}
+	e.type = EVENT_TIP_UP;
+	app_handle_event(app, &e);
+	*t += 4000000;
+}
+
+/* The turn into 3D is shown frame by frame and ends on the settled picture; a turned
+ * tree draws differently from the front. */
+static void test_turn(void)
+{
+	struct fixture f;
+	struct app *app = app_create(320, 200, 5);
+	struct event press = { .type = EVENT_BUTTON, .button = BUTTON_3D, .pressed = true };
+	struct render *r;
+	uint8_t *mid;
+	uint64_t t = 1000, t0;
+
+	CHECK(app);
+	pen_line(app, &t, 140, 184, 140, 60);
+	pen_line(app, &t, 140, 130, 200, 90);
+	pen_line(app, &t, 140, 110, 90, 70);
+	t0 = press.time_us = t;
+	app_handle_event(app, &press);
+	CHECK(app->tree.lifted && app->turning);
+	fixture_init(&f, 320, 200);
+	mid = malloc(f.size);
+	CHECK(mid);
+	r = render_create();
+	CHECK(r);
+	draw(&f, r, app, f.a);
+	CHECK_INT(render_frame_at(r, app, t0 + APP_TURN_US / 4), 0);
+	CHECK_INT(egl_headless_read_rgba(f.egl, mid), 0);
+	CHECK(memcmp(f.a, mid, f.size) != 0);
+	CHECK_INT(render_frame_at(r, app, t0 + APP_TURN_US), 0);
+	CHECK_INT(egl_headless_read_rgba(f.egl, f.b), 0);
+	CHECK(memcmp(f.a, f.b, f.size) == 0);
+	/* turned by hand: a different picture, the same meshes */
+	CHECK(app_set_camera(app, (struct camera){ 90.0f, 30.0f }));
+	draw(&f, r, app, f.b);
+	CHECK(memcmp(f.a, f.b, f.size) != 0);
+
+	free(mid);
+	render_destroy(r);
+	fixture_finish(&f);
+	app_destroy(app);
+}
+
 int main(void)
 {
+	test_turn();
 	test_upload_only_on_serial();
 	test_expanded_indices();
 	test_bad_mesh();
