@@ -159,155 +159,6 @@ static double angle_between(struct vec3 a, struct vec3 b)
 	return acos(c < -1 ? -1 : c > 1 ? 1 : c);
 }
 
-struct seg {
-	struct vec3 s, e; /* placed segment */
-	double max_child_angle;
-	bool placed;
-};
-
-/* 4.1: depth of each branch's end, as segments. */
-static int place_segments(const struct tree *t, struct rng *rng, enum lift_pick pick,
-			  struct seg *seg)
-{
-	struct hull h = { 0 };
-	struct field *f;
-	int *order;
-	int maxgen = 0, ret;
-	double xmin = INFINITY, xmax = -INFINITY, rmax = 0;
-
-	ret = hull_build(&h, t);
-	if (ret < 0)
-		return ret;
-	f = malloc(sizeof(*f));
-	order = malloc((t->nbranches + 1) * sizeof(*order));
-	if (!f || !order) {
-		free(h.p);
-		free(f);
-		free(order);
-		return -ENOMEM;
-	}
-	for (size_t i = 0; i < h.n; i++) {
-		xmin = fmin(xmin, h.p[i].x);
-		xmax = fmax(xmax, h.p[i].x);
-	}
-	rmax = LIFT_HULL_SCALE * 0.5 * (xmax - xmin) + 1e-3;
-	f->cell = fmax(xmax - xmin + 2 * rmax, 2 * rmax) / LIFT_FIELD_N;
-	f->x0 = 0.5 * (xmin + xmax) - 0.5 * LIFT_FIELD_N * f->cell;
-	f->z0 = -0.5 * LIFT_FIELD_N * f->cell;
-	for (int i = 0; i < LIFT_FIELD_N * LIFT_FIELD_N; i++)
-		f->d[i] = INFINITY;
-
-	/* The largest drawn angle between each parent and its children. */
-	for (size_t i = 0; i < t->nbranches; i++) {
-		const struct branch *b = &t->branches[i];
-
-		seg[i].s = b->points[0];
-		seg[i].e = b->points[b->npoints - 1];
-		seg[i].max_child_angle = 0;
-		seg[i].placed = false;
-		maxgen = b->generation > maxgen ? b->generation : maxgen;
-	}
-	for (size_t i = 0; i < t->nbranches; i++) {
-		const struct branch *b = &t->branches[i];
-
-		if (b->parent >= 0) {
-			double a = angle_between(vec3_sub(seg[b->parent].e, seg[b->parent].s),
-						 vec3_sub(seg[i].e, seg[i].s));
-
-			seg[b->parent].max_child_angle = fmax(seg[b->parent].max_child_angle, a);
-		}
-	}
-
-	for (int g = 0; g <= maxgen; g++) {
-		size_t n = 0;
-
-		for (size_t i = 0; i < t->nbranches; i++)
-			if (t->branches[i].generation == g)
-				order[n++] = (int)i;
-		/* a seeded random order within the generation (Fisher-Yates) */
-		for (size_t i = n; i > 1; i--) {
-			size_t j = (size_t)(rng_next(rng) % i);
-			int tmp = order[i - 1];
-
-			order[i - 1] = order[j];
-			order[j] = tmp;
-		}
-		for (size_t k = 0; k < n; k++) {
-			int id = order[k];
-			const struct branch *b = &t->branches[id];
-			struct seg *s = &seg[id];
-			double best = -1, best_z = 0, best_angle = INFINITY, best_angle_z = 0;
-			double admissible[CANDIDATES];
-			int nadmissible = 0;
-			bool found = false;
-
-			if (b->parent < 0) {
-				s->placed = true; /* a trunk stays in the sketch plane */
-				field_add(f, s->s, s->e);
-				continue;
-			}
-			{
-				const struct seg *p = &seg[b->parent];
-				struct vec3 pd = vec3_sub(p->e, p->s);
-				double plen = vec3_len(pd), dxy, lo, hi, reach, zmax;
-				double amax = fmin(LIFT_MAX_ANGLE_RATIO * p->max_child_angle, VEC_PI);
-
-				s->s.z = p->s.z + (p->e.z - p->s.z) * b->parent_t;
-				dxy = hypot(s->e.x - s->s.x, s->e.y - s->s.y);
-				/* 45..135 degrees from the view direction: |dz| <= |dxy| */
-				lo = s->s.z - dxy;
-				hi = s->s.z + dxy;
-				/* at most 1.2 x the parent's length */
-				reach = LIFT_MAX_LENGTH_RATIO * plen;
-				if (reach > dxy) {
-					double dz = sqrt(reach * reach - dxy * dxy);
-
-					lo = fmax(lo, s->s.z - dz);
-					hi = fmin(hi, s->s.z + dz);
-				} else {
-					lo = hi = s->s.z;
-				}
-				/* inside the hull */
-				zmax = hull_depth(&h, s->e.x, s->e.y);
-				if (zmax >= 0) {
-					lo = fmax(lo, -zmax);
-					hi = fmin(hi, zmax);
-				}
-				if (lo > hi)
-					lo = hi = fmin(fmax(s->s.z, zmax >= 0 ? -zmax : s->s.z), zmax >= 0 ? zmax : s->s.z);
-				for (int c = 0; c < CANDIDATES; c++) {
-					double z = lo + (hi - lo) * c / (CANDIDATES - 1);
-					struct vec3 e = vec3(s->e.x, s->e.y, z);
-					double a = angle_between(pd, vec3_sub(e, s->s));
-
-					if (a <= amax + 1e-9) {
-						double d = field_at(f, e.x, z);
-
-						admissible[nadmissible++] = z;
-						if (d > best) {
-							best = d;
-							best_z = z;
-							found = true;
-						}
-					} else if (a < best_angle) {
-						best_angle = a;
-						best_angle_z = z;
-					}
-				}
-				if (pick == LIFT_PICK_RANDOM && nadmissible > 0)
-					best_z = admissible[rng_next(rng) % (uint64_t)nadmissible];
-				s->e.z = found ? best_z : best_angle_z;
-			}
-			s->placed = true;
-			field_add(f, s->s, s->e);
-		}
-	}
-	free(h.p);
-	free(f);
-	free(order);
-	return 0;
-}
-
 /* x at index i, extended past the ends by point reflection, so smoothing bends nothing
  * there: a straight end stays straight. */
 static double reflected(const double *x, size_t n, long i)
@@ -429,31 +280,124 @@ static void curvature_depth(const struct branch *b, double *depth)
 	free(u);
 }
 
-/* Gives every point depth: along the placed segment, plus the curvature depth; roots
- * land on the parent's final polyline (parents come first). */
+/*
+ * Among n admissible depths z[] with field values d[] (the largest is best): the
+ * sparsest (the first of a tie); or with LIFT_PICK_RANDOM, any of them.
+ */
+static double pick_depth(const double *z, const double *d, int n, double best,
+			 enum lift_pick pick, struct rng *rng)
+{
+	if (pick == LIFT_PICK_RANDOM)
+		return z[n > 1 ? rng_next(rng) % (uint64_t)n : 0];
+	for (int i = 0; i < n; i++)
+		if (d[i] == best)
+			return z[i];
+	return z[0];
+}
+
+/* A branch as 4.1 sees it: the segment from its start to its end. */
+struct seg {
+	struct vec3 s, e;
+	double max_child_angle; /* the largest drawn angle to its children */
+};
+
+/* Where a branch or a leaf hangs, as (segment, fraction): arc-length parameters change
+ * when the branches gain depth, the points they name do not. */
 struct anchor {
 	size_t segment;
 	double seg_t;
 };
 
-static int apply_depth(struct tree *t, const struct seg *seg)
+static struct vec3 anchor_point(const struct branch *b, struct anchor a)
 {
-	size_t maxn = 1;
-	double *depth = NULL;
-	struct anchor *root = malloc((t->nbranches + 1) * sizeof(*root));
-	struct anchor *leaf = malloc((t->nleaves + 1) * sizeof(*leaf));
+	size_t k = a.segment;
 
+	return k + 1 < b->npoints ? vec3_lerp(b->points[k], b->points[k + 1], a.seg_t) : b->points[k];
+}
+
+/*
+ * 4.3 on top of 4.1: branch b's points go from its start's depth to its end's (by arc
+ * length), plus the curvature depth. Uses depth[] (npoints) as scratch.
+ */
+static void branch_depth(struct branch *b, const struct seg *s, double *depth)
+{
+	double len = tree_branch_length(b), walked = 0;
+
+	curvature_depth(b, depth);
+	for (size_t k = 0; k < b->npoints; k++) {
+		double f = len > 0 ? walked / len : 0;
+
+		if (k + 1 < b->npoints)
+			walked += hypot(b->points[k + 1].x - b->points[k].x,
+					b->points[k + 1].y - b->points[k].y);
+		b->points[k].z = s->s.z + (s->e.z - s->s.z) * f + depth[k];
+	}
+}
+
+/*
+ * 4.1 and 4.3, generation by generation: each branch's start is the point of its parent's
+ * final polyline it hangs on (so the constraints hold for the branch as it ends up), its
+ * end's depth the sparsest (or, LIFT_PICK_RANDOM, a random) admissible one; then its
+ * points get their depth at once, before its children are placed.
+ */
+static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick)
+{
+	struct hull h = { 0 };
+	struct field *f;
+	struct seg *seg;
+	struct anchor *root, *leaf;
+	double *depth;
+	int *order;
+	size_t maxn = 1;
+	int maxgen = 0, ret;
+	double xmin = INFINITY, xmax = -INFINITY, rmax = 0;
+
+	ret = hull_build(&h, t);
+	if (ret < 0)
+		return ret;
 	for (size_t i = 0; i < t->nbranches; i++)
 		maxn = t->branches[i].npoints > maxn ? t->branches[i].npoints : maxn;
+	f = malloc(sizeof(*f));
+	seg = malloc((t->nbranches + 1) * sizeof(*seg));
+	root = malloc((t->nbranches + 1) * sizeof(*root));
+	leaf = malloc((t->nleaves + 1) * sizeof(*leaf));
 	depth = malloc(maxn * sizeof(*depth));
-	if (!depth || !root || !leaf) {
-		free(depth);
-		free(root);
-		free(leaf);
-		return -ENOMEM;
+	order = malloc((t->nbranches + 1) * sizeof(*order));
+	if (!f || !seg || !root || !leaf || !depth || !order) {
+		ret = -ENOMEM;
+		goto out;
 	}
-	/* Where everything hangs, as (segment, fraction): arc-length parameters change when
-	 * the branches gain depth, the points they name do not. */
+	for (size_t i = 0; i < h.n; i++) {
+		xmin = fmin(xmin, h.p[i].x);
+		xmax = fmax(xmax, h.p[i].x);
+	}
+	rmax = LIFT_HULL_SCALE * 0.5 * (xmax - xmin) + 1e-3;
+	f->cell = fmax(xmax - xmin + 2 * rmax, 2 * rmax) / LIFT_FIELD_N;
+	f->x0 = 0.5 * (xmin + xmax) - 0.5 * LIFT_FIELD_N * f->cell;
+	f->z0 = -0.5 * LIFT_FIELD_N * f->cell;
+	for (int i = 0; i < LIFT_FIELD_N * LIFT_FIELD_N; i++)
+		f->d[i] = INFINITY;
+
+	/* The largest drawn angle between each parent and its children. */
+	for (size_t i = 0; i < t->nbranches; i++) {
+		const struct branch *b = &t->branches[i];
+
+		seg[i].s = b->points[0];
+		seg[i].e = b->points[b->npoints - 1];
+		seg[i].max_child_angle = 0;
+		maxgen = b->generation > maxgen ? b->generation : maxgen;
+	}
+	for (size_t i = 0; i < t->nbranches; i++) {
+		const struct branch *b = &t->branches[i];
+
+		if (b->parent >= 0) {
+			double a = angle_between(vec3_sub(seg[b->parent].e, seg[b->parent].s),
+						 vec3_sub(seg[i].e, seg[i].s));
+
+			seg[b->parent].max_child_angle = fmax(seg[b->parent].max_child_angle, a);
+		}
+	}
+	/* Where everything hangs, on the drawing as it is. */
 	for (size_t i = 0; i < t->nbranches; i++)
 		if (t->branches[i].parent >= 0)
 			tree_locate(&t->branches[t->branches[i].parent], t->branches[i].parent_t,
@@ -462,27 +406,78 @@ static int apply_depth(struct tree *t, const struct seg *seg)
 		tree_locate(&t->branches[t->leaves[i].branch], t->leaves[i].branch_t, &leaf[i].segment,
 			    &leaf[i].seg_t);
 
-	for (size_t i = 0; i < t->nbranches; i++) {
-		struct branch *b = &t->branches[i];
-		double zs = seg[i].s.z, len = tree_branch_length(b), walked = 0;
+	for (int g = 0; g <= maxgen; g++) {
+		size_t n = 0;
 
-		if (b->parent >= 0) {
-			/* on the parent, which (coming first) already has its depth */
-			const struct branch *p = &t->branches[b->parent];
-			size_t k = root[i].segment;
+		for (size_t i = 0; i < t->nbranches; i++)
+			if (t->branches[i].generation == g)
+				order[n++] = (int)i;
+		/* a seeded random order within the generation (Fisher-Yates) */
+		for (size_t i = n; i > 1; i--) {
+			size_t j = (size_t)(rng_next(rng) % i);
+			int tmp = order[i - 1];
 
-			zs = k + 1 < p->npoints ? p->points[k].z + (p->points[k + 1].z - p->points[k].z) * root[i].seg_t :
-						  p->points[k].z;
+			order[i - 1] = order[j];
+			order[j] = tmp;
 		}
-		curvature_depth(b, depth);
-		for (size_t k = 0; k < b->npoints; k++) {
-			double s = len > 0 ? walked / len : 0;
+		for (size_t k = 0; k < n; k++) {
+			int id = order[k];
+			struct branch *b = &t->branches[id];
+			struct seg *s = &seg[id];
+			double best = -1, best_angle = INFINITY, best_angle_z = 0;
+			double cz[CANDIDATES], cd[CANDIDATES];
+			int nadmissible = 0;
 
-			if (k + 1 < b->npoints)
-				walked += hypot(b->points[k + 1].x - b->points[k].x,
-						b->points[k + 1].y - b->points[k].y);
-			/* from the parent's real point to the end 4.1 chose, plus the curvature */
-			b->points[k].z = zs + (seg[i].e.z - zs) * s + depth[k];
+			/* a trunk's ends stay in the sketch plane */
+			if (b->parent >= 0) {
+				const struct seg *p = &seg[b->parent];
+				struct vec3 pd = vec3_sub(p->e, p->s);
+				double plen = vec3_len(pd), dxy, lo, hi, reach, zmax;
+				double amax = fmin(LIFT_MAX_ANGLE_RATIO * p->max_child_angle, VEC_PI);
+
+				/* on the parent, which (an earlier generation) has its depth */
+				s->s.z = anchor_point(&t->branches[b->parent], root[id]).z;
+				dxy = hypot(s->e.x - s->s.x, s->e.y - s->s.y);
+				/* 45..135 degrees from the view direction: |dz| <= |dxy| */
+				lo = s->s.z - dxy;
+				hi = s->s.z + dxy;
+				/* at most 1.2 x the parent's length */
+				reach = LIFT_MAX_LENGTH_RATIO * plen;
+				if (reach > dxy) {
+					double dz = sqrt(reach * reach - dxy * dxy);
+
+					lo = fmax(lo, s->s.z - dz);
+					hi = fmin(hi, s->s.z + dz);
+				} else {
+					lo = hi = s->s.z;
+				}
+				/* inside the hull */
+				zmax = hull_depth(&h, s->e.x, s->e.y);
+				if (zmax >= 0) {
+					lo = fmax(lo, -zmax);
+					hi = fmin(hi, zmax);
+				}
+				if (lo > hi)
+					lo = hi = fmin(fmax(s->s.z, zmax >= 0 ? -zmax : s->s.z), zmax >= 0 ? zmax : s->s.z);
+				for (int c = 0; c < CANDIDATES; c++) {
+					double z = lo + (hi - lo) * c / (CANDIDATES - 1);
+					struct vec3 e = vec3(s->e.x, s->e.y, z);
+					double a = angle_between(pd, vec3_sub(e, s->s));
+
+					if (a <= amax + 1e-9) {
+						cz[nadmissible] = z;
+						cd[nadmissible] = field_at(f, e.x, z);
+						best = fmax(best, cd[nadmissible++]);
+					} else if (a < best_angle) {
+						best_angle = a;
+						best_angle_z = z;
+					}
+				}
+				s->e.z = nadmissible ? pick_depth(cz, cd, nadmissible, best, pick, rng) :
+						       best_angle_z;
+			}
+			branch_depth(b, s, depth);
+			field_add(f, s->s, s->e);
 		}
 	}
 	for (size_t i = 0; i < t->nbranches; i++)
@@ -492,24 +487,16 @@ static int apply_depth(struct tree *t, const struct seg *seg)
 	for (size_t i = 0; i < t->nleaves; i++)
 		t->leaves[i].branch_t =
 			tree_param(&t->branches[t->leaves[i].branch], leaf[i].segment, leaf[i].seg_t);
-	free(depth);
+	tree_leaves_follow(t, -1);
+	ret = 0;
+out:
+	free(h.p);
+	free(f);
+	free(seg);
 	free(root);
 	free(leaf);
-	tree_leaves_follow(t, -1);
-	return 0;
-}
-
-static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick)
-{
-	struct seg *seg = malloc((t->nbranches + 1) * sizeof(*seg));
-	int ret;
-
-	if (!seg)
-		return -ENOMEM;
-	ret = place_segments(t, rng, pick, seg);
-	if (ret == 0)
-		ret = apply_depth(t, seg);
-	free(seg);
+	free(depth);
+	free(order);
 	return ret;
 }
 

@@ -242,11 +242,60 @@ static void test_helix(void)
 	tree_finish(&t);
 }
 
+/* Children of a wavy branch: 4.1 places each from the point of its parent's final (wavy,
+ * lifted) polyline it hangs on, so the constraints hold for the branches as they end up,
+ * not only for straightened stand-ins (they were off by up to the wave's depth). */
+static void test_children_of_wavy_branch(void)
+{
+	for (uint64_t seed = 1; seed <= 10; seed++) {
+		struct tree t, t2;
+		struct rng r;
+
+		tree_init(&t);
+		rng_seed(&r, 3);
+		stroke(&t, &r, 0, 0, 0, 7, 0);
+		stroke(&t, &r, 0, 3, 4, 5, 0.3);
+		for (int k = 1; k <= 5; k++) {
+			const struct branch *b = &t.branches[1];
+			struct vec3 m = b->points[b->npoints * (size_t)k / 6];
+
+			stroke(&t, &r, m.x, m.y, m.x + 0.4 * (k - 3), m.y + 1.2, 0);
+		}
+		CHECK_INT(t.nbranches, 7);
+		tree_init(&t2);
+		for (size_t i = 0; i < t.nbranches; i++)
+			CHECK(tree_add_branch(&t2, t.branches[i].parent, t.branches[i].parent_t,
+					      ORIGIN_SKETCH, t.branches[i].points, t.branches[i].radii,
+					      t.branches[i].npoints) >= 0);
+		rng_seed(&r, seed);
+		CHECK_INT(lift_tree(&t, &r, false), 0);
+		for (size_t i = 2; i < t.nbranches; i++) {
+			const struct branch *b = &t.branches[i], *p = &t.branches[1];
+			const struct branch *b2 = &t2.branches[i], *p2 = &t2.branches[1];
+			struct vec3 d = vec3_sub(end_of(b), b->points[0]), pd = vec3_sub(end_of(p), p->points[0]);
+			double amax2 = 0;
+
+			CHECK_INT(b->parent, 1);
+			for (size_t j = 2; j < t2.nbranches; j++)
+				amax2 = fmax(amax2, angle(vec3_sub(end_of(p2), p2->points[0]),
+							  vec3_sub(end_of(&t2.branches[j]),
+								   t2.branches[j].points[0])));
+			CHECK(angle(vec3_sub(end_of(b2), b2->points[0]), vec3_sub(end_of(p2), p2->points[0])) <= amax2);
+			CHECK(fabs(d.z) <= hypot(d.x, d.y) + 1e-9);
+			CHECK(vec3_len(d) <= LIFT_MAX_LENGTH_RATIO * vec3_len(pd) + 1e-9);
+			CHECK(angle(pd, d) <= LIFT_MAX_ANGLE_RATIO * amax2 + 1e-9);
+		}
+		tree_finish(&t);
+		tree_finish(&t2);
+	}
+}
+
 int main(void)
 {
 	test_constraints();
 	test_merge_and_seed();
 	test_merge_leaning_trunk();
 	test_helix();
+	test_children_of_wavy_branch();
 	return 0;
 }
