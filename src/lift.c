@@ -315,6 +315,26 @@ static struct vec3 anchor_point(const struct branch *b, struct anchor a)
 	return k + 1 < b->npoints ? vec3_lerp(b->points[k], b->points[k + 1], a.seg_t) : b->points[k];
 }
 
+/* The parameter of anchor a on b once b has depth. When a lies on a vertex, the rounding
+ * of the new arc lengths could make tree_locate() (and so tree_frame_at(), which leaves
+ * follow) give the neighbouring segment and its direction: nudge the parameter by a few
+ * ulps until it names the same segment again. */
+static double anchor_param(const struct branch *b, struct anchor a)
+{
+	double t = tree_param(b, a.segment, a.seg_t);
+
+	for (int i = 0; i < 64; i++) {
+		size_t k;
+		double f;
+
+		tree_locate(b, t, &k, &f);
+		if (k == a.segment)
+			break;
+		t = nextafter(t, k < a.segment ? 2.0 : -1.0);
+	}
+	return t;
+}
+
 /*
  * 4.3 on top of 4.1: branch b's points go from its start's depth to its end's (by arc
  * length), plus the curvature depth. Uses depth[] (npoints) as scratch.
@@ -482,11 +502,10 @@ static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick)
 	}
 	for (size_t i = 0; i < t->nbranches; i++)
 		if (t->branches[i].parent >= 0)
-			t->branches[i].parent_t = tree_param(&t->branches[t->branches[i].parent],
-							     root[i].segment, root[i].seg_t);
+			t->branches[i].parent_t =
+				anchor_param(&t->branches[t->branches[i].parent], root[i]);
 	for (size_t i = 0; i < t->nleaves; i++)
-		t->leaves[i].branch_t =
-			tree_param(&t->branches[t->leaves[i].branch], leaf[i].segment, leaf[i].seg_t);
+		t->leaves[i].branch_t = anchor_param(&t->branches[t->leaves[i].branch], leaf[i]);
 	tree_leaves_follow(t, -1);
 	ret = 0;
 out:
@@ -575,10 +594,18 @@ static int merge_turned(struct tree *a, const struct tree *b)
 			return -ENOMEM;
 		}
 		map[i] = id;
+		if (parent >= (int)first) {
+			/* on a turned branch: the same point, whatever the new rounding */
+			struct anchor at;
+
+			tree_locate(&b->branches[br->parent], br->parent_t, &at.segment, &at.seg_t);
+			a->branches[id].parent_t = anchor_param(&a->branches[parent], at);
+		}
 	}
 	free(shifts);
 	for (size_t i = 0; i < b->nleaves; i++) {
 		const struct leaf *l = &b->leaves[i];
+		struct anchor at;
 		int id;
 
 		if (map[l->branch] < (int)first)
@@ -588,7 +615,9 @@ static int merge_turned(struct tree *a, const struct tree *b)
 			free(map);
 			return -ENOMEM;
 		}
-		a->leaves[id].branch_t = l->branch_t;
+		/* the same segment (and frame) of the turned branch as of B's */
+		tree_locate(&b->branches[l->branch], l->branch_t, &at.segment, &at.seg_t);
+		a->leaves[id].branch_t = anchor_param(&a->branches[map[l->branch]], at);
 		a->leaves[id].local = NULL;
 		if (l->local) {
 			a->leaves[id].local = malloc(l->npoints * sizeof(*l->local));

@@ -290,6 +290,69 @@ static void test_children_of_wavy_branch(void)
 	}
 }
 
+/* Leaves hung exactly on a vertex of a bent branch keep that vertex's segment, and so its
+ * direction, through lifting and the merge: the branch's new arc lengths must not hand
+ * them the neighbouring segment's frame (about 4% of them got it before the fix). */
+static void test_vertex_anchors(void)
+{
+	for (uint64_t seed = 1; seed <= 20; seed++) {
+		struct tree t;
+		struct rng r;
+		struct vec3 p[40];
+		double rad[40];
+		size_t seg0[32], n0;
+
+		tree_init(&t);
+		rng_seed(&r, seed);
+		for (int i = 0; i < 40; i++) {
+			p[i] = vec3(0.01 * sin(i * 0.7), i * 0.15, 0);
+			rad[i] = 0.1;
+		}
+		CHECK(tree_add_branch(&t, -1, 0, ORIGIN_SKETCH, p, rad, 40) == 0);
+		for (int i = 0; i < 30; i++) {
+			double a = 0.2 + 0.03 * (double)seed;
+
+			/* a wavy branch, so every vertex bends */
+			p[i] = vec3(i * 0.1 * cos(a) + 0.02 * sin(i * 1.3 + (double)seed),
+				    2 + i * 0.1 * sin(a), 0);
+			rad[i] = 0.05;
+		}
+		CHECK(tree_add_branch(&t, 0, 2.0 / tree_branch_length(&t.branches[0]), ORIGIN_SKETCH, p,
+				      rad, 30) == 1);
+		for (size_t k = 1; k + 1 < 30; k++) {
+			struct vec3 lp[3] = { vec3(0, 0, 0), vec3(0.1, 0, 0), vec3(0, 0.1, 0) };
+			int id;
+			double f;
+
+			for (int q = 0; q < 3; q++)
+				lp[q] = vec3_add(lp[q], t.branches[1].points[k]);
+			id = tree_add_leaf(&t, 1, ORIGIN_SKETCH, lp, 3);
+			CHECK(id >= 0);
+			t.leaves[id].branch_t = tree_param(&t.branches[1], k - 1, 1.0);
+			CHECK_INT(tree_leaf_attach(&t, (size_t)id), 0);
+			tree_locate(&t.branches[1], t.leaves[id].branch_t, &seg0[id], &f);
+		}
+		n0 = t.nleaves;
+		CHECK_INT(lift_tree(&t, &r, true), 0);
+		CHECK_INT(t.nleaves, 2 * n0); /* the merged copies, in the same order */
+		for (size_t i = 0; i < t.nleaves; i++) {
+			const struct leaf *l = &t.leaves[i];
+			const struct branch *b = &t.branches[l->branch];
+			size_t k;
+			double f;
+			struct tree_frame fr = tree_frame_at(b, l->branch_t);
+			struct vec3 dir = vec3_norm_or(vec3_sub(b->points[seg0[i % n0] + 1],
+							       b->points[seg0[i % n0]]),
+						       vec3(0, 1, 0));
+
+			tree_locate(b, l->branch_t, &k, &f);
+			CHECK_INT(k, seg0[i % n0]);
+			CHECK(vec3_dist(fr.tangent, dir) < 1e-9);
+		}
+		tree_finish(&t);
+	}
+}
+
 int main(void)
 {
 	test_constraints();
@@ -297,5 +360,6 @@ int main(void)
 	test_merge_leaning_trunk();
 	test_helix();
 	test_children_of_wavy_branch();
+	test_vertex_anchors();
 	return 0;
 }
