@@ -282,17 +282,18 @@ static void curvature_depth(const struct branch *b, double *depth)
 
 /*
  * Among n admissible depths z[] with field values d[] (the largest is best): the
- * sparsest (the first of a tie); or with LIFT_PICK_RANDOM, any of them.
+ * sparsest, a tie (the field is symmetric in z about a trunk, and constant within a
+ * cell) broken at random; or with LIFT_PICK_RANDOM, any of them.
  */
 static double pick_depth(const double *z, const double *d, int n, double best,
 			 enum lift_pick pick, struct rng *rng)
 {
-	if (pick == LIFT_PICK_RANDOM)
-		return z[n > 1 ? rng_next(rng) % (uint64_t)n : 0];
+	int idx[CANDIDATES], m = 0;
+
 	for (int i = 0; i < n; i++)
-		if (d[i] == best)
-			return z[i];
-	return z[0];
+		if (pick == LIFT_PICK_RANDOM || d[i] >= best - 1e-6 * best)
+			idx[m++] = i;
+	return z[idx[m > 1 ? rng_next(rng) % (uint64_t)m : 0]];
 }
 
 /* A branch as 4.1 sees it: the segment from its start to its end. */
