@@ -110,10 +110,15 @@ static double hull_depth(const struct hull *h, double x, double y)
 }
 
 /* Squared distances on the ground (x, z) to every branch placed so far (squared: only
- * compared, never added, so no square roots). */
+ * compared, never added, so no square roots), in tiles of TILE x TILE cells that know
+ * their largest value: a tile farther from a new branch than that is left alone. */
+#define TILE 8
+#define TILES (LIFT_FIELD_N / TILE)
+_Static_assert(LIFT_FIELD_N % TILE == 0, "the field is made of whole tiles");
 struct field {
 	double x0, z0, cell;
 	float d[LIFT_FIELD_N * LIFT_FIELD_N];
+	float tile_max[TILES * TILES];
 };
 
 static double seg_dist2(double px, double pz, double ax, double az, double bx, double bz)
@@ -127,18 +132,47 @@ static double seg_dist2(double px, double pz, double ax, double az, double bx, d
 	return dx * dx + dz * dz;
 }
 
+/* Squared distance between [lo0, hi0] x [lo1, hi1] and [lo2, hi2] x [lo3, hi3], less a
+ * margin far larger than seg_dist2's rounding: a bound that never exceeds what it
+ * computes, so skipping changes no cell. */
+static double box_dist2_below(double xlo, double xhi, double zlo, double zhi, double sxlo,
+			      double sxhi, double szlo, double szhi)
+{
+	double dx = fmax(0, fmax(sxlo - xhi, xlo - sxhi)), dz = fmax(0, fmax(szlo - zhi, zlo - szhi));
+
+	return (dx * dx + dz * dz) * (1 - 1e-9) - 1e-9;
+}
+
 static void field_add(struct field *f, struct vec3 a, struct vec3 b)
 {
-	for (int j = 0; j < LIFT_FIELD_N; j++) {
-		double z = f->z0 + (j + 0.5) * f->cell;
+	double sxlo = fmin(a.x, b.x), sxhi = fmax(a.x, b.x), szlo = fmin(a.z, b.z), szhi = fmax(a.z, b.z);
 
-		for (int i = 0; i < LIFT_FIELD_N; i++) {
-			double x = f->x0 + (i + 0.5) * f->cell;
-			float d = (float)seg_dist2(x, z, a.x, a.z, b.x, b.z);
-			float *c = &f->d[j * LIFT_FIELD_N + i];
+	for (int tj = 0; tj < TILES; tj++) {
+		/* cell centres exactly as below, so the tile's box holds them */
+		double zlo = f->z0 + (tj * TILE + 0.5) * f->cell;
+		double zhi = f->z0 + (tj * TILE + TILE - 1 + 0.5) * f->cell;
 
-			if (d < *c)
-				*c = d;
+		for (int ti = 0; ti < TILES; ti++) {
+			float *m = &f->tile_max[tj * TILES + ti], mx = 0;
+			double xlo = f->x0 + (ti * TILE + 0.5) * f->cell;
+			double xhi = f->x0 + (ti * TILE + TILE - 1 + 0.5) * f->cell;
+
+			if (box_dist2_below(xlo, xhi, zlo, zhi, sxlo, sxhi, szlo, szhi) >= *m)
+				continue; /* no cell of the tile is farther than the new branch */
+			for (int j = tj * TILE; j < tj * TILE + TILE; j++) {
+				double z = f->z0 + (j + 0.5) * f->cell;
+
+				for (int i = ti * TILE; i < ti * TILE + TILE; i++) {
+					double x = f->x0 + (i + 0.5) * f->cell;
+					float d = (float)seg_dist2(x, z, a.x, a.z, b.x, b.z);
+					float *c = &f->d[j * LIFT_FIELD_N + i];
+
+					if (d < *c)
+						*c = d;
+					mx = *c > mx ? *c : mx;
+				}
+			}
+			*m = mx;
 		}
 	}
 }
@@ -398,6 +432,8 @@ static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick)
 	f->z0 = -0.5 * LIFT_FIELD_N * f->cell;
 	for (int i = 0; i < LIFT_FIELD_N * LIFT_FIELD_N; i++)
 		f->d[i] = INFINITY;
+	for (int i = 0; i < TILES * TILES; i++)
+		f->tile_max[i] = INFINITY;
 
 	/* The largest drawn angle between each parent and its children. */
 	for (size_t i = 0; i < t->nbranches; i++) {
