@@ -13,8 +13,10 @@ lift-sine-branch.edaha-trace  a straight trunk and one branch drawn as a sine wa
 
 The traces only draw: the tests press 3D themselves (tests/replay/test_replay_lift.c).
 Screen 1280 x 800: 80 px a metre, the ground at y = 736, x = 640 the centre line.
-Twigs leave their parents at 30 degrees or more and are at most 0.6 x as long, so no
-twig meets the parent-angle conflict described in docs/lifting.md.
+Drawn so that every rule of 4.1 can hold: twigs leave their parents at 24 degrees or
+more and are at most 0.6 x as long, no branch is longer than 1.2 x its parent (the
+broadleaf's trunk goes on past its top pair for that). docs/lifting.md says when the rules
+cannot all hold; the test asserts that they do here.
 """
 import math
 import sys
