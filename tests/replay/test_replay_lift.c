@@ -2,7 +2,7 @@
 /*
  * Lifting replays (tests/data/lift-*.edaha-trace, made by gen-lift-traces.py): each sketch
  * is replayed through the app, then the 3D button is pressed, and the assertions are on
- * skeleton.json as the exporter writes it (docs/lifting.md, "Tests"):
+ * skeleton.json as the exporter writes it (docs/lifting.md, "Tests and measurements"):
  *
  * - the first tree (origin != "merge") seen from the front is the sketch: every lifted
  *   branch's (x, y) polyline is within 1% of the sketch's height of the same branch in the
