@@ -19,7 +19,50 @@ void mesh_init(struct mesh *m);
 void mesh_finish(struct mesh *m);
 void mesh_clear(struct mesh *m);
 
-/* Bark (branches swept as tubes) and leaves (one-sided polygons, drawn double-sided). */
+/*
+ * Level of detail. The camera is orthographic at a fixed scale (the screen height always
+ * spans VIEW_HEIGHT_M, no zoom), so a branch's size on screen is its size in metres times
+ * MESH_REF_SCREEN_PX / VIEW_HEIGHT_M: pixels at a reference screen height of 1080 px, 108 px
+ * a metre. Detail follows from that alone, so it is the same on every screen and in exports:
+ *
+ * - Sides. Each ring gets the fewest sides (MESH_MIN_SIDES..MESH_MAX_SIDES) whose polygon
+ *   keeps within MESH_SIDE_ERROR_PX of the true circle, r (1 - cos(pi / sides)) in pixels:
+ *   3 sides up to 1 px of radius (9 mm), 4 to 16 mm, 8 to 60 mm, 16 from 0.21 m (a trunk;
+ *   past 0.24 m the error grows beyond half a pixel). Neighbouring rings with different
+ *   counts are stitched by angle, so a tapering branch loses sides towards its tip.
+ * - Rings. A point of a branch gets no ring when the straight tube between the rings kept
+ *   on either side stays near it: its distance from that tube's axis plus its radius's
+ *   difference from that tube's radius is at most mesh_drop_tolerance(r) =
+ *   min(MESH_DROP_ERROR_PX in metres (2.3 mm), MESH_DROP_RADIUS_FRACTION * r); the branch
+ *   turns by at most MESH_DROP_TURN_DEG there; the straight tube runs within
+ *   MESH_DROP_TURN_DEG of every segment it replaces, at most MESH_DROP_MAX_SPAN of them;
+ *   and the point would get the sides of the ring kept before it (counts change only at
+ *   kept rings). The first and last points always keep their rings; rings that stay sit
+ *   exactly on their points.
+ */
+#define MESH_REF_SCREEN_PX 1080.0
+#define MESH_SIDE_ERROR_PX 0.5
+#define MESH_MIN_SIDES 3
+#define MESH_MAX_SIDES 16
+#define MESH_DROP_ERROR_PX 0.25
+#define MESH_DROP_RADIUS_FRACTION 0.25
+#define MESH_DROP_TURN_DEG 4.0
+#define MESH_DROP_MAX_SPAN 16
+
+/* Sides of a ring of this radius (metres). */
+int mesh_ring_sides(double radius);
+/* How far (metres) a left-out point of radius r may be from the tube that replaces it. */
+double mesh_drop_tolerance(double radius);
+
+/*
+ * Bark (branches swept as tubes along rotation-minimising frames) and leaves (one-sided
+ * polygons, drawn double-sided). Each branch is a closed tube: a disc at the root, a cone
+ * at the tip. A child's root lies on its parent's axis (at parent_t); its root ring shrinks
+ * as far as needed to lie inside the parent's tube (or, near the parent's root, the
+ * grandparent's), which has few sides when thin, so no root disc shows beside its parent
+ * and the child leaves it without a gap. A child's mesh depends on it, its parent and
+ * grandparent only.
+ */
 struct tree_mesh {
 	struct mesh bark;
 	struct mesh leaves;

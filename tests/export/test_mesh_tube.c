@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Branch tubes: counts, closed surfaces, outward normals, frames, degenerate input. */
+/* Branch tubes: counts, closed surfaces, outward normals, frames, degenerate input. Level
+ * of detail and joints in detail: test_mesh_detail.c. */
 #include <errno.h>
 #include <math.h>
 #include <stdint.h>
@@ -32,14 +33,29 @@ static int add_straight(struct tree *t, size_t npoints, double len, double radiu
 	return tree_add_branch(t, -1, 0.0, ORIGIN_SKETCH, p, r, npoints);
 }
 
-/* Ring sides follow from the counts: V = P*s + 2(s + 1), F = 2 s P. */
-static size_t sides_of(const struct mesh *m, size_t npoints)
+/* Ring sides of a tube of one radius follow from the counts: V = P*s + 2(s + 1), F = 2 s P
+ * for P rings. */
+static size_t sides_of(const struct mesh *m, size_t nrings)
 {
-	size_t ntri = m->nindices / 3, s = ntri / (2 * npoints);
+	size_t ntri = m->nindices / 3, s = ntri / (2 * nrings);
 
-	CHECK_INT(ntri, 2 * s * npoints);
-	CHECK_INT(m->nvertices, npoints * s + 2 * (s + 1));
+	CHECK_INT(ntri, 2 * s * nrings);
+	CHECK_INT(m->nvertices, nrings * s + 2 * (s + 1));
 	return s;
+}
+
+/* Counts of a tube whose rings have these radii (each its own sides): V = sum s + (s0 + 1)
+ * + (sl + 1) for the rings, root disc and tip cone; F = 2 sum s. */
+static void check_counts(const struct mesh *m, size_t first_vertex, size_t first_index,
+			 const double *ring_r, size_t nrings)
+{
+	size_t sum = 0;
+
+	for (size_t i = 0; i < nrings; i++)
+		sum += (size_t)mesh_ring_sides(ring_r[i]);
+	CHECK_INT(m->nvertices - first_vertex, sum + (size_t)mesh_ring_sides(ring_r[0]) + 1 +
+						       (size_t)mesh_ring_sides(ring_r[nrings - 1]) + 1);
+	CHECK_INT((m->nindices - first_index) / 3, 2 * sum);
 }
 
 static void test_straight(void)
@@ -55,8 +71,10 @@ static void test_straight(void)
 	build(&tm, &t);
 	CHECK_INT(tm.leaves.nindices, 0);
 
-	s = sides_of(&tm.bark, 5);
-	CHECK(s >= 6 && s <= 16);
+	/* collinear points need no ring of their own (mesh.h): the ends' rings only */
+	s = sides_of(&tm.bark, 2);
+	CHECK_INT(s, mesh_ring_sides(0.1));
+	CHECK(s >= 3 && s <= 16);
 	/* A sphere-like closed surface. */
 	CHECK_INT(check_closed_surface(&tm.bark), 2);
 
@@ -75,19 +93,19 @@ static void test_straight(void)
 
 		CHECK(vec3_dot(tri_cross(&tm.bark, f), vec3_sub(mid, centre)) > 0);
 	}
-	/* Side vertices sit at the radius, on rings through the points. */
-	for (uint32_t i = 0; i < 5 * s; i++) {
+	/* Side vertices sit at the radius, on rings through the end points. */
+	for (uint32_t i = 0; i < 2 * s; i++) {
 		struct vec3 p = mesh_pos(&tm.bark, i);
 
 		CHECK_NEAR(hypot(p.x - 0.5, p.z + 0.25), 0.1, 1e-6);
-		CHECK_NEAR(p.y, 3.0 * (i / s) / 4.0, 1e-6);
+		CHECK_NEAR(p.y, 3.0 * (i / s), 1e-6);
 	}
 
 	tree_mesh_finish(&tm);
 	tree_finish(&t);
 }
 
-/* Thin twigs get few sides, trunks many: a 1,000-branch tree stays light. */
+/* Thin twigs get few sides, trunks many (see test_mesh_detail.c for more). */
 static void test_sides_adapt(void)
 {
 	struct tree t;
@@ -98,16 +116,17 @@ static void test_sides_adapt(void)
 	tree_mesh_init(&tm);
 	CHECK_INT(add_straight(&t, 3, 1.0, 0.003), 0);
 	build(&tm, &t);
-	thin = sides_of(&tm.bark, 3);
+	thin = sides_of(&tm.bark, 2);
 	tree_clear(&t);
 	CHECK_INT(add_straight(&t, 3, 1.0, 0.08), 0);
 	build(&tm, &t);
-	mid = sides_of(&tm.bark, 3);
+	mid = sides_of(&tm.bark, 2);
 	tree_clear(&t);
 	CHECK_INT(add_straight(&t, 3, 1.0, 0.4), 0);
 	build(&tm, &t);
-	thick = sides_of(&tm.bark, 3);
-	CHECK_INT(thin, 6);
+	thick = sides_of(&tm.bark, 2);
+	CHECK_INT(thin, 3);
+	CHECK_INT(mid, 10);
 	CHECK_INT(thick, 16);
 	CHECK(thin < mid && mid < thick);
 	tree_mesh_finish(&tm);
@@ -124,7 +143,7 @@ static void test_planar_frames(void)
 	double r[12];
 	struct tree t;
 	struct tree_mesh tm;
-	size_t s;
+	size_t s = 0;
 
 	for (int i = 0; i < 12; i++) {
 		double a = 1.4 * TEST_PI * i / 11;
@@ -136,14 +155,16 @@ static void test_planar_frames(void)
 	tree_mesh_init(&tm);
 	CHECK_INT(tree_add_branch(&t, -1, 0, ORIGIN_SKETCH, p, r, 12), 0);
 	build(&tm, &t);
-	s = sides_of(&tm.bark, 12);
+	/* turning 23 degrees a point: every point keeps its ring, sides shrinking with r */
+	check_counts(&tm.bark, 0, 0, r, 12);
 	CHECK_INT(check_closed_surface(&tm.bark), 2);
 	for (int i = 0; i < 12; i++) {
-		struct vec3 q = mesh_pos(&tm.bark, (uint32_t)(i * (int)s));
+		struct vec3 q = mesh_pos(&tm.bark, (uint32_t)s);
 
 		CHECK_NEAR(q.x, p[i].x, 1e-5);
 		CHECK_NEAR(q.y, p[i].y, 1e-5);
 		CHECK_NEAR(q.z, r[i], 1e-5);
+		s += (size_t)mesh_ring_sides(r[i]);
 	}
 	tree_mesh_finish(&tm);
 	tree_finish(&t);
@@ -181,7 +202,18 @@ static void test_awkward(void)
 	tree_mesh_init(&tm);
 	CHECK_INT(tree_add_branch(&t, -1, 0, ORIGIN_SKETCH, p, r, n), 0);
 	build(&tm, &t);
-	sides_of(&tm.bark, distinct);
+	/* every distinct point keeps its ring (the helix turns 28 degrees a point) */
+	{
+		double rr[40];
+		size_t k = 0;
+
+		for (size_t i = 0; i < n; i++)
+			if (i == 0 || vec3_dist(p[i], p[i - 1]) > 0)
+				rr[k++] = r[i] < 0.0005 ? 0.0005 : r[i];
+		CHECK_INT(k, distinct);
+		check_counts(&tm.bark, 0, 0, rr, k);
+	}
+	CHECK_INT(check_closed_surface(&tm.bark), 2);
 	tree_mesh_finish(&tm);
 	tree_finish(&t);
 }
@@ -213,7 +245,7 @@ static void test_degenerate(void)
 	/* bad points are skipped, bad radii clamped: the rest is a normal tube */
 	CHECK(tree_add_branch(&t, 0, 0.5, ORIGIN_SKETCH, ok_with_nan, r, 3) >= 0);
 	build(&tm, &t);
-	sides_of(&tm.bark, 2);
+	check_counts(&tm.bark, 0, 0, (const double[]){ 0.1, 0.0005 }, 2);
 	CHECK_INT(check_closed_surface(&tm.bark), 2);
 	tree_mesh_finish(&tm);
 	tree_finish(&t);
@@ -229,23 +261,26 @@ static void test_joint(void)
 	struct tree t;
 	struct tree_mesh tm;
 	uint32_t first;
-	size_t s;
+	size_t s, first_index;
 
 	tree_init(&t);
 	tree_mesh_init(&tm);
 	CHECK_INT(tree_add_branch(&t, -1, 0, ORIGIN_SKETCH, trunk, tr, 2), 0);
 	build(&tm, &t);
 	first = (uint32_t)tm.bark.nvertices;
+	first_index = tm.bark.nindices;
 	CHECK_INT(tree_add_branch(&t, 0, 0.5, ORIGIN_SKETCH, child, cr, 3), 1);
 	build(&tm, &t);
-	/* the child's vertices follow the trunk's, its root ring first */
-	s = (tm.bark.nvertices - first - 2) / 5;
-	CHECK_INT(tm.bark.nvertices - first, 3 * s + 2 * (s + 1));
+	/* the child's vertices follow the trunk's, its root ring first (the trunk leaves it
+	 * room: not shrunk); it bends 18 degrees, so its middle point keeps a ring */
+	check_counts(&tm.bark, first, first_index, cr, 3);
+	s = (size_t)mesh_ring_sides(cr[0]);
 	for (uint32_t i = first; i < first + s; i++) {
 		struct vec3 q = mesh_pos(&tm.bark, i);
 
 		CHECK(hypot(q.x, q.z) < 0.2);
 		CHECK(fabs(q.y - 2.0) < 0.2);
+		CHECK_NEAR(vec3_dist(q, child[0]), cr[0], 1e-6);
 	}
 	tree_mesh_finish(&tm);
 	tree_finish(&t);
@@ -265,8 +300,14 @@ static void test_synth(void)
 	CHECK_INT(t.nleaves, 5000);
 	build(&a, &t);
 	CHECK_INT(tree_mesh_build(&b, &t), 0);
-	/* light: well under 20 faces per branch point on average */
-	CHECK(a.bark.nindices / 3 < 20 * 16 * 1000);
+	/* light: under 10 faces per branch point on average (test_mesh_detail: the budget) */
+	{
+		size_t points = 0;
+
+		for (size_t i = 0; i < t.nbranches; i++)
+			points += t.branches[i].npoints;
+		CHECK(a.bark.nindices / 3 < 10 * points);
+	}
 	CHECK_INT(a.bark.nvertices, b.bark.nvertices);
 	CHECK_INT(a.bark.nindices, b.bark.nindices);
 	CHECK(!memcmp(a.bark.positions, b.bark.positions, a.bark.nvertices * 3 * sizeof(float)));
