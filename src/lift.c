@@ -98,6 +98,24 @@ static void hull_span(const struct hull *h, double y, double *xc, double *hw)
 	*hw = 0.5 * (hi - lo);
 }
 
+/*
+ * The second lift of 4.2 is turned 90 degrees about the vertical through the trunk's base
+ * and its first generation moved onto the first tree's trunk; where a branch of it ends up:
+ * turn_point(base, shift, p) with the shift of its first-generation ancestor. Lengths and
+ * angles are kept, so 4.1's length, angle and view rules are the same in either frame; the
+ * distance field is not, and the second lift sees it as it will be after the turn.
+ */
+struct turn {
+	struct vec3 base;
+};
+
+static struct vec3 turn_point(struct vec3 base, struct vec3 shift, struct vec3 p)
+{
+	struct vec3 d = vec3_sub(p, base);
+
+	return vec3(base.x + d.z + shift.x, p.y + shift.y, base.z - d.x + shift.z);
+}
+
 /* Largest |z| at (x, y) inside the scaled 3D hull (discs swept along y); <0: outside. */
 static double hull_depth(const struct hull *h, double x, double y)
 {
@@ -394,13 +412,19 @@ static void branch_depth(struct branch *b, const struct seg *s, double *depth)
  * final polyline it hangs on (so the constraints hold for the branch as it ends up), its
  * end's depth the sparsest (or, LIFT_PICK_RANDOM, a random) admissible one; then its
  * points get their depth at once, before its children are placed.
+ *
+ * Without a turn (the first tree), f is set up here and left holding the tree's branches.
+ * With one (the second tree of 4.2), f is the first tree's, and this lift goes on from it
+ * as if its branches were the first ones placed: f sees each branch where the merge will
+ * put it (struct turn). Its trunk, which the merge leaves out, is not added.
  */
-static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick)
+static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick, struct field *f,
+		     const struct turn *tu)
 {
 	struct hull h = { 0 };
-	struct field *f;
 	struct seg *seg;
 	struct anchor *root, *leaf;
+	struct vec3 *shift;
 	double *depth;
 	int *order;
 	size_t maxn = 1;
@@ -412,13 +436,13 @@ static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick)
 		return ret;
 	for (size_t i = 0; i < t->nbranches; i++)
 		maxn = t->branches[i].npoints > maxn ? t->branches[i].npoints : maxn;
-	f = malloc(sizeof(*f));
 	seg = malloc((t->nbranches + 1) * sizeof(*seg));
 	root = malloc((t->nbranches + 1) * sizeof(*root));
 	leaf = malloc((t->nleaves + 1) * sizeof(*leaf));
 	depth = malloc(maxn * sizeof(*depth));
 	order = malloc((t->nbranches + 1) * sizeof(*order));
-	if (!f || !seg || !root || !leaf || !depth || !order) {
+	shift = calloc(t->nbranches + 1, sizeof(*shift));
+	if (!seg || !root || !leaf || !depth || !order || !shift) {
 		ret = -ENOMEM;
 		goto out;
 	}
@@ -426,14 +450,17 @@ static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick)
 		xmin = fmin(xmin, h.p[i].x);
 		xmax = fmax(xmax, h.p[i].x);
 	}
+	/* the field covers the hull, and so the turned tree too (the trunk's base is in it) */
 	rmax = LIFT_HULL_SCALE * 0.5 * (xmax - xmin) + 1e-3;
-	f->cell = fmax(xmax - xmin + 2 * rmax, 2 * rmax) / LIFT_FIELD_N;
-	f->x0 = 0.5 * (xmin + xmax) - 0.5 * LIFT_FIELD_N * f->cell;
-	f->z0 = -0.5 * LIFT_FIELD_N * f->cell;
-	for (int i = 0; i < LIFT_FIELD_N * LIFT_FIELD_N; i++)
-		f->d[i] = INFINITY;
-	for (int i = 0; i < TILES * TILES; i++)
-		f->tile_max[i] = INFINITY;
+	if (!tu) {
+		f->cell = fmax(xmax - xmin + 2 * rmax, 2 * rmax) / LIFT_FIELD_N;
+		f->x0 = 0.5 * (xmin + xmax) - 0.5 * LIFT_FIELD_N * f->cell;
+		f->z0 = -0.5 * LIFT_FIELD_N * f->cell;
+		for (int i = 0; i < LIFT_FIELD_N * LIFT_FIELD_N; i++)
+			f->d[i] = INFINITY;
+		for (int i = 0; i < TILES * TILES; i++)
+			f->tile_max[i] = INFINITY;
+	}
 
 	/* The largest drawn angle between each parent and its children. */
 	for (size_t i = 0; i < t->nbranches; i++) {
@@ -494,6 +521,15 @@ static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick)
 
 				/* on the parent, which (an earlier generation) has its depth */
 				s->s.z = anchor_point(&t->branches[b->parent], root[id]).z;
+				/* the merge moves a turned first generation onto the first tree's
+				 * trunk (the same as this one), and the rest with it */
+				if (tu && t->branches[b->parent].parent < 0) {
+					struct vec3 on = anchor_point(&t->branches[b->parent], root[id]);
+
+					shift[id] = vec3_sub(on, turn_point(tu->base, vec3(0, 0, 0), s->s));
+				} else if (tu) {
+					shift[id] = shift[b->parent];
+				}
 				dxy = hypot(s->e.x - s->s.x, s->e.y - s->s.y);
 				/* 45..135 degrees from the view direction: |dz| <= |dxy| */
 				lo = s->s.z - dxy;
@@ -522,8 +558,10 @@ static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick)
 					double a = angle_between(pd, vec3_sub(e, s->s));
 
 					if (a <= amax + 1e-9) {
+						struct vec3 at = tu ? turn_point(tu->base, shift[id], e) : e;
+
 						cz[nadmissible] = z;
-						cd[nadmissible] = field_at(f, e.x, z);
+						cd[nadmissible] = field_at(f, at.x, at.z);
 						best = fmax(best, cd[nadmissible++]);
 					} else if (a < best_angle) {
 						best_angle = a;
@@ -534,7 +572,11 @@ static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick)
 						       best_angle_z;
 			}
 			branch_depth(b, s, depth);
-			field_add(f, s->s, s->e);
+			if (!tu)
+				field_add(f, s->s, s->e);
+			else if (b->parent >= 0)
+				field_add(f, turn_point(tu->base, shift[id], s->s),
+					  turn_point(tu->base, shift[id], s->e));
 		}
 	}
 	for (size_t i = 0; i < t->nbranches; i++)
@@ -547,7 +589,7 @@ static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick)
 	ret = 0;
 out:
 	free(h.p);
-	free(f);
+	free(shift);
 	free(seg);
 	free(root);
 	free(leaf);
@@ -679,23 +721,33 @@ int lift_tree_with(struct tree *t, struct rng *rng, bool merge, enum lift_pick p
 {
 	struct tree a, b;
 	struct rng ra, rb;
+	struct field *f;
 	int ret;
 
 	if (t->nbranches == 0 || t->lifted)
 		return 0;
+	f = malloc(sizeof(*f));
+	if (!f)
+		return -ENOMEM;
 	rng_seed(&ra, rng_next(rng));
 	rng_seed(&rb, rng_next(rng));
 	ret = copy_tree(&a, t);
 	if (ret == 0)
-		ret = lift_once(&a, &ra, pick);
+		ret = lift_once(&a, &ra, pick, f, NULL);
 	tree_init(&b);
 	if (ret == 0 && merge) {
+		/* 4.1's "all branches placed so far" for the second tree starts with the first
+		 * tree's: its branches go where both trees are sparsest, not onto the first
+		 * tree's once turned */
+		struct turn tu = { .base = t->branches[0].points[0] };
+
 		ret = copy_tree(&b, t);
 		if (ret == 0)
-			ret = lift_once(&b, &rb, pick);
+			ret = lift_once(&b, &rb, pick, f, &tu);
 		if (ret == 0)
 			ret = merge_turned(&a, &b);
 	}
+	free(f);
 	tree_finish(&b);
 	if (ret < 0) {
 		tree_finish(&a);

@@ -23,7 +23,9 @@
  * 4.2 With `merge`, this is done twice with different random streams; the second tree,
  *     turned 90 degrees about the vertical through the trunk's base, is merged into the
  *     first without its trunk (origin ORIGIN_MERGE): the branches a child leaves out
- *     because they point at the viewer.
+ *     because they point at the viewer. The second lift starts from the first tree's
+ *     distance field and sees its own branches where the merge will put them, so they go
+ *     where both trees are sparsest; the first tree is what a lift without it makes.
  *
  * Leaves follow their branches. A lifted tree (t->lifted) is left as it is. Returns 0 or
  * -ENOMEM (tree unchanged).

@@ -199,6 +199,37 @@ static void test_merge_leaning_trunk(void)
 	tree_finish(&t);
 }
 
+/* The 4.2 merge adds the turned copy and leaves the first tree exactly as a lift without
+ * the merge makes it: the second lift starts from the first tree's distance field, and
+ * never changes it for the first tree. */
+static void test_merge_keeps_first_tree(void)
+{
+	for (uint64_t seed = 1; seed <= 5; seed++) {
+		struct tree a, b;
+		struct rng r;
+
+		tree_init(&a);
+		tree_init(&b);
+		rng_seed(&r, 11);
+		broadleaf(&a, &r);
+		rng_seed(&r, 11);
+		broadleaf(&b, &r);
+		rng_seed(&r, seed);
+		CHECK_INT(lift_tree(&a, &r, false), 0);
+		rng_seed(&r, seed);
+		CHECK_INT(lift_tree(&b, &r, true), 0);
+		CHECK_INT(b.nbranches, a.nbranches + 12);
+		for (size_t i = 0; i < a.nbranches; i++) {
+			CHECK_INT(b.branches[i].npoints, a.branches[i].npoints);
+			CHECK(memcmp(a.branches[i].points, b.branches[i].points,
+				     a.branches[i].npoints * sizeof(struct vec3)) == 0);
+			CHECK(a.branches[i].parent_t == b.branches[i].parent_t);
+		}
+		tree_finish(&a);
+		tree_finish(&b);
+	}
+}
+
 static void test_helix(void)
 {
 	struct tree t;
@@ -358,6 +389,7 @@ int main(void)
 	test_constraints();
 	test_merge_and_seed();
 	test_merge_leaning_trunk();
+	test_merge_keeps_first_tree();
 	test_helix();
 	test_children_of_wavy_branch();
 	test_vertex_anchors();
