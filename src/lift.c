@@ -103,7 +103,8 @@ static void hull_span(const struct hull *h, double y, double *xc, double *hw)
  * and its first generation moved onto the first tree's trunk; where a branch of it ends up:
  * turn_point(base, shift, p) with the shift of its first-generation ancestor. Lengths and
  * angles are kept, so 4.1's length, angle and view rules are the same in either frame; the
- * distance field is not, and the second lift sees it as it will be after the turn.
+ * hull and the distance field are not, and the second lift sees them as they will be
+ * after the turn.
  */
 struct turn {
 	struct vec3 base;
@@ -116,15 +117,34 @@ static struct vec3 turn_point(struct vec3 base, struct vec3 shift, struct vec3 p
 	return vec3(base.x + d.z + shift.x, p.y + shift.y, base.z - d.x + shift.z);
 }
 
-/* Largest |z| at (x, y) inside the scaled 3D hull (discs swept along y); <0: outside. */
-static double hull_depth(const struct hull *h, double x, double y)
+/*
+ * The depths z for which the end (x, y, z) lies inside the scaled 3D hull (discs swept
+ * along y): [*lo, *hi]. With a turn (tu), the end as the merge will place it,
+ * turn_point(base, shift, (x, y, z)): z becomes its x, and x fixes its depth. Returns false
+ * if no depth is inside (only with a turn: a drawn end is inside the 2D hull); *lo = *hi
+ * is then the depth nearest the hull.
+ */
+static bool hull_range(const struct hull *h, const struct turn *tu, struct vec3 shift, double x,
+		       double y, double *lo, double *hi)
 {
-	double xc, hw, r, dx;
+	struct vec3 at0 = tu ? turn_point(tu->base, shift, vec3(x, y, 0)) : vec3(x, y, 0);
+	double xc, hw, r, w2, c = 0;
 
-	hull_span(h, fmin(fmax(y, h->ymin), h->ymax), &xc, &hw);
+	hull_span(h, fmin(fmax(at0.y, h->ymin), h->ymax), &xc, &hw);
 	r = LIFT_HULL_SCALE * hw;
-	dx = x - xc;
-	return r * r - dx * dx >= 0 ? sqrt(r * r - dx * dx) : -1.0;
+	if (tu) {
+		w2 = r * r - at0.z * at0.z;
+		c = xc - at0.x; /* the depth that turns to the hull's centre line */
+	} else {
+		w2 = r * r - (x - xc) * (x - xc);
+	}
+	if (w2 < 0) {
+		*lo = *hi = c;
+		return false;
+	}
+	*lo = tu ? c - sqrt(w2) : -sqrt(w2);
+	*hi = tu ? c + sqrt(w2) : sqrt(w2);
+	return true;
 }
 
 /* Squared distances on the ground (x, z) to every branch placed so far (squared: only
@@ -415,8 +435,8 @@ static void branch_depth(struct branch *b, const struct seg *s, double *depth)
  *
  * Without a turn (the first tree), f is set up here and left holding the tree's branches.
  * With one (the second tree of 4.2), f is the first tree's, and this lift goes on from it
- * as if its branches were the first ones placed: f sees each branch where the merge will
- * put it (struct turn). Its trunk, which the merge leaves out, is not added.
+ * as if its branches were the first ones placed: the hull test and f see each branch where
+ * the merge will put it (struct turn). Its trunk, which the merge leaves out, is not added.
  */
 static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick, struct field *f,
 		     const struct turn *tu)
@@ -516,7 +536,7 @@ static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick, struc
 			if (b->parent >= 0) {
 				const struct seg *p = &seg[b->parent];
 				struct vec3 pd = vec3_sub(p->e, p->s);
-				double plen = vec3_len(pd), dxy, lo, hi, reach, zmax;
+				double plen = vec3_len(pd), dxy, lo, hi, reach, hlo, hhi;
 				double amax = fmin(LIFT_MAX_ANGLE_RATIO * p->max_child_angle, VEC_PI);
 
 				/* on the parent, which (an earlier generation) has its depth */
@@ -544,14 +564,18 @@ static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick, struc
 				} else {
 					lo = hi = s->s.z;
 				}
-				/* inside the hull */
-				zmax = hull_depth(&h, s->e.x, s->e.y);
-				if (zmax >= 0) {
-					lo = fmax(lo, -zmax);
-					hi = fmin(hi, zmax);
+				/* inside the hull; if it leaves no depth within the length and view
+				 * rules, the hull's depth nearest the start; if it has none (a turned
+				 * end can be farther in front of or behind the trunk than the hull is
+				 * deep), the depth within those rules nearest the hull */
+				if (hull_range(&h, tu, shift[id], s->e.x, s->e.y, &hlo, &hhi)) {
+					lo = fmax(lo, hlo);
+					hi = fmin(hi, hhi);
+					if (lo > hi)
+						lo = hi = fmin(fmax(s->s.z, hlo), hhi);
+				} else {
+					lo = hi = fmin(fmax(hlo, lo), hi);
 				}
-				if (lo > hi)
-					lo = hi = fmin(fmax(s->s.z, zmax >= 0 ? -zmax : s->s.z), zmax >= 0 ? zmax : s->s.z);
 				for (int c = 0; c < CANDIDATES; c++) {
 					double z = lo + (hi - lo) * c / (CANDIDATES - 1);
 					struct vec3 e = vec3(s->e.x, s->e.y, z);

@@ -25,7 +25,9 @@
  *     first without its trunk (origin ORIGIN_MERGE): the branches a child leaves out
  *     because they point at the viewer. The second lift starts from the first tree's
  *     distance field and sees its own branches where the merge will put them, so they go
- *     where both trees are sparsest; the first tree is what a lift without it makes.
+ *     where both trees are sparsest, and its ends inside the hull as merged (or, where no
+ *     depth is, as near as the length and view rules let them); the first tree is what a
+ *     lift without it makes.
  *
  * Leaves follow their branches. A lifted tree (t->lifted) is left as it is. Returns 0 or
  * -ENOMEM (tree unchanged).

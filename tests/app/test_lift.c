@@ -230,6 +230,84 @@ static void test_merge_keeps_first_tree(void)
 	}
 }
 
+/* The 3D hull at height y, from the sketch's points by brute force (independent of
+ * lift.c): the 2D convex hull's width there is spanned by segments between points on
+ * either side of y; a disc across it, the radius scaled by sqrt(2). */
+static void brute_hull_disc(const struct tree *t2, double y, double *xc, double *r)
+{
+	double lo = INFINITY, hi = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
+
+	for (size_t i = 0; i < t2->nbranches; i++)
+		for (size_t k = 0; k < t2->branches[i].npoints; k++) {
+			ymin = fmin(ymin, t2->branches[i].points[k].y);
+			ymax = fmax(ymax, t2->branches[i].points[k].y);
+		}
+	y = fmin(fmax(y, ymin), ymax);
+	for (size_t i = 0; i < t2->nbranches; i++)
+		for (size_t k = 0; k < t2->branches[i].npoints; k++)
+			for (size_t j = 0; j < t2->nbranches; j++)
+				for (size_t m = 0; m < t2->branches[j].npoints; m++) {
+					struct vec3 p = t2->branches[i].points[k], q = t2->branches[j].points[m];
+					double x;
+
+					if (p.y > y || q.y < y)
+						continue;
+					x = q.y > p.y ? p.x + (q.x - p.x) * (y - p.y) / (q.y - p.y) : p.x;
+					lo = fmin(lo, x);
+					hi = fmax(hi, x);
+				}
+	CHECK(lo <= hi);
+	*xc = 0.5 * (lo + hi);
+	*r = LIFT_HULL_SCALE * 0.5 * (hi - lo);
+}
+
+/* On a leaning trunk the merge moves the turned copy onto the unturned trunk: the second
+ * lift must test its ends against the hull where they will be after that. Each copy's
+ * depth is its drawn x turned, which no lifting changes; where the hull has room at that
+ * depth its end is inside, elsewhere as near as that depth allows. And the view rule holds
+ * turned with it: 45..135 degrees from the x axis. */
+static void test_merge_leaning_trunk_hull(void)
+{
+	int inside = 0, outside = 0;
+
+	for (uint64_t seed = 1; seed <= 10; seed++) {
+		struct tree t, t2;
+		struct rng r;
+
+		tree_init(&t);
+		rng_seed(&r, 5);
+		stroke(&t, &r, 0, 0, 1.2, 6, 0);
+		stroke(&t, &r, 0.6, 3, 2.5, 4.5, 0);
+		stroke(&t, &r, 0.9, 4.5, -1.5, 5.5, 0);
+		stroke(&t, &r, 1.55, 3.75, 1.9, 5.2, 0);
+		tree_init(&t2);
+		for (size_t i = 0; i < t.nbranches; i++)
+			CHECK(tree_add_branch(&t2, t.branches[i].parent, t.branches[i].parent_t,
+					      ORIGIN_SKETCH, t.branches[i].points, t.branches[i].radii,
+					      t.branches[i].npoints) >= 0);
+		rng_seed(&r, seed);
+		CHECK_INT(lift_tree(&t, &r, true), 0);
+		CHECK_INT(t.nbranches, 7);
+		for (size_t i = 4; i < t.nbranches; i++) {
+			const struct branch *b = &t.branches[i];
+			struct vec3 e = end_of(b), d = vec3_sub(e, b->points[0]);
+			double xc, rad, out;
+
+			CHECK_INT(b->origin, ORIGIN_MERGE);
+			brute_hull_disc(&t2, e.y, &xc, &rad);
+			out = hypot(e.x - xc, e.z) - rad;
+			CHECK(out <= fmax(0, fabs(e.z) - rad) + 1e-9);
+			inside += out <= 1e-9;
+			outside += out > 1e-9;
+			CHECK(fabs(d.x) <= hypot(d.y, d.z) + 1e-9);
+		}
+		tree_finish(&t);
+		tree_finish(&t2);
+	}
+	fprintf(stderr, "leaning trunk: %d copies' ends inside the hull, %d as near as they can\n",
+		inside, outside);
+}
+
 static void test_helix(void)
 {
 	struct tree t;
@@ -390,6 +468,7 @@ int main(void)
 	test_merge_and_seed();
 	test_merge_leaning_trunk();
 	test_merge_keeps_first_tree();
+	test_merge_leaning_trunk_hull();
 	test_helix();
 	test_children_of_wavy_branch();
 	test_vertex_anchors();
