@@ -29,6 +29,8 @@
  * a 3D tree the copy's frame may be turned about its tangent relative to a rigid copy of
  * the child's (the normal is always chosen across the picture plane).
  *
+ * A propagation that could take the tree past TREE_MAX_BRANCHES or TREE_MAX_LEAVES is
+ * refused (-ENOSPC) and changes nothing.
  * Targets shorter than PROPAGATE_MIN_LENGTH_M get nothing (there is no size to match); a
  * source that short is refused like a childless one (-ENOENT).
  * Copies are appended target by target in id order: child branches first (in S's child
@@ -326,6 +328,12 @@ int propagate_apply(struct tree *t, int src, enum propagate_pattern p)
 	if (nb + nl >= (size_t)INT_MAX ||
 	    (ntargets && most > ((size_t)INT_MAX - nb - nl) / ntargets)) {
 		ret = -ENOMEM;
+		goto out;
+	}
+	/* ...and what could grow past the tree's limits, counting every copy as fitting */
+	if (nb + ntargets * ex.nbranches > TREE_MAX_BRANCHES ||
+	    nl + ntargets * ex.nleaves > TREE_MAX_LEAVES) {
+		ret = -ENOSPC;
 		goto out;
 	}
 

@@ -22,6 +22,7 @@ enum propagate_pattern {
 
 /* Copies src's children onto the other branches (origin ORIGIN_PROPAGATE). Returns how
  * many elements it added (0 if no branch can take them), -ENOENT if src is not a branch,
- * has no children or is shorter than PROPAGATE_MIN_LENGTH_M, -ENOMEM (the tree is then
+ * has no children or is shorter than PROPAGATE_MIN_LENGTH_M, -ENOSPC if the copies could
+ * take the tree past TREE_MAX_BRANCHES / TREE_MAX_LEAVES, -ENOMEM (the tree is then
  * unchanged). */
 int propagate_apply(struct tree *t, int src, enum propagate_pattern p);

@@ -16,6 +16,8 @@ const char *origin_name(enum origin origin)
 		return "propagate";
 	case ORIGIN_MERGE:
 		return "merge";
+	case ORIGIN_ARRANGE:
+		return "arrange";
 	}
 	return "sketch";
 }

@@ -13,6 +13,7 @@ enum origin {
 	ORIGIN_CLONE,
 	ORIGIN_PROPAGATE,
 	ORIGIN_MERGE,
+	ORIGIN_ARRANGE,
 };
 
 const char *origin_name(enum origin origin);
@@ -41,6 +42,15 @@ struct leaf {
 };
 
 #define TREE_PROFILE_N 16
+
+/*
+ * The most a tree grows to by example-based editing (propagation multiplies it: three
+ * twigs propagated twice over 1,000 branches make 16,000). An edit that could pass these
+ * is refused, so a kiosk (or a hostile drawing) cannot ask for a mesh its board cannot
+ * draw: about 1.5 M leaf triangles at most.
+ */
+#define TREE_MAX_BRANCHES 20000u
+#define TREE_MAX_LEAVES 60000u
 
 /* The model: what the skeleton, the meshes and the screen are made from. */
 struct tree {

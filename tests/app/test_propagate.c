@@ -522,8 +522,33 @@ static void test_determinism(void)
 	}
 }
 
+/* A propagation that could pass the tree's limits is refused and changes nothing. */
+static void test_limits(void)
+{
+	struct tree t;
+	int trunk, src;
+	size_t nl;
+
+	tree_init(&t);
+	trunk = add_bent(&t, -1, 0, vec3(0, 0, 0), vec3(0, 4, 0), vec3(0.3, 0, 0.2), 4.0, 8, 0.1);
+	/* 400 branches along the trunk; the first carries 200 leaves */
+	for (int i = 0; i < 400; i++)
+		CHECK(add_bent(&t, trunk, 0.1 + 0.8 * i / 400.0, vec3(0, 0, 0), vec3(1, 0.3, 0.1 * (i % 7)),
+			       vec3(0, 0.2, 0), 1.0, 4, 0.02) > 0);
+	src = 1;
+	for (int i = 0; i < 200; i++)
+		add_leaf(&t, src, 0.05 + 0.9 * i / 200.0, 0.05, true);
+	nl = t.nleaves;
+	/* 399 targets x 200 leaves = 79,800 > TREE_MAX_LEAVES */
+	CHECK_INT(propagate_apply(&t, src, PROPAGATE_FIXED_COUNT), -ENOSPC);
+	CHECK_INT(t.nleaves, nl);
+	CHECK_INT(t.nbranches, 401);
+	tree_finish(&t);
+}
+
 int main(void)
 {
+	test_limits();
 	test_fixed_count();
 	test_fixed_size();
 	test_trunk();
