@@ -6,6 +6,9 @@ set -uo pipefail
 T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-cli.XXXXXX")
 trap 'rm -rf "$T"' EXIT
 DEMO=$SRC/data/demo.edaha-trace
+ORBIT=$SRC/data/orbit.edaha-trace
+# Sketches whose 3D trees have golden pictures from the front and from 90 degrees.
+VIEW_SKETCHES="demo orbit lift-young lift-broadleaf lift-conifer lift-sine"
 OUTPUTS="screen.png model.glb model.obj model.mtl skeleton.json drawing.edaha"
 
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -29,7 +32,7 @@ same_files() { # dir1 dir2 files...
 
 t_help() {
 	edaha --help >"$T/help" || fail "--help exited $?"
-	for o in --headless --size --seed --out --replay --press --load --record --help; do
+	for o in --headless --size --seed --out --replay --press --view --load --record --help; do
 		grep -q -- "$o" "$T/help" || fail "--help does not mention $o"
 	done
 	edaha --version | grep -q '^edaha ' || fail "--version"
@@ -38,7 +41,9 @@ t_help() {
 t_usage() {
 	local args
 	for args in "--bogus" "--headless" "--headless --out $T/x --press nothing" \
-		"--headless --out $T/x --size 10x10" "--headless --out $T/x --seed -1" "--replay $DEMO" "stray"; do
+		"--headless --out $T/x --size 10x10" "--headless --out $T/x --seed -1" "--replay $DEMO" "stray" \
+		"--headless --out $T/x --view 400" "--headless --out $T/x --view 0,90" \
+		"--headless --out $T/x --view 10,x" "--view 90"; do
 		# shellcheck disable=SC2086
 		edaha $args >/dev/null 2>"$T/err"; rc=$?
 		[ $rc -eq 2 ] || fail "edaha $args: exit $rc, wanted 2"
@@ -54,6 +59,27 @@ t_golden() {
 	"$IMGCMP" "$SRC/golden/demo-screen.png" "$T/o/screen.png" || fail "screen differs from golden"
 }
 
+# The 3D trees from the front and turned by 90 degrees. The camera changes the picture
+# only: the model and the drawing's history stay the same.
+t_views() {
+	local name trace
+	for name in $VIEW_SKETCHES; do
+		trace=$SRC/data/$name.edaha-trace
+		[ -f "$trace" ] || trace=$SRC/data/$name
+		run --out "$T/$name-front" --replay "$trace" --press 3d --view 0
+		run --out "$T/$name-90" --replay "$trace" --press 3d --view 90
+		same_files "$T/$name-front" "$T/$name-90" skeleton.json model.glb
+		grep -q '^view 90 0$' "$T/$name-90/drawing.edaha" || fail "$name: the drawing does not keep the view"
+		"$IMGCMP" "$SRC/golden/$name-3d-front.png" "$T/$name-front/screen.png" || fail "$name: front view differs"
+		"$IMGCMP" "$SRC/golden/$name-3d-90.png" "$T/$name-90/screen.png" || fail "$name: 90 degree view differs"
+		cmp -s "$T/$name-front/screen.png" "$T/$name-90/screen.png" && fail "$name: turning changed nothing"
+	done
+	# a sketch is not turned
+	run --out "$T/flat" --replay "$DEMO" --view 90
+	grep -q "not 3D" "$T/stderr" || fail "--view on a sketch: no note"
+	"$IMGCMP" "$SRC/golden/demo-screen.png" "$T/flat/screen.png" || fail "--view turned a sketch"
+}
+
 t_determinism() {
 	local wacom=$SRC/data/wacom-intuos-pro-m.yml
 	# different heap garbage and rasteriser threads must not change a byte
@@ -61,6 +87,11 @@ t_determinism() {
 	MALLOC_PERTURB_=201 LP_NUM_THREADS=2 run --out "$T/b" --seed 9 --replay "$DEMO" --press leaf --replay "$wacom" --press 3d
 	# shellcheck disable=SC2086
 	same_files "$T/a" "$T/b" $OUTPUTS
+	# turned with the pen and drawn on
+	MALLOC_PERTURB_=17 LP_NUM_THREADS=0 run --out "$T/c" --seed 3 --replay "$ORBIT"
+	MALLOC_PERTURB_=201 LP_NUM_THREADS=2 run --out "$T/d" --seed 3 --replay "$ORBIT"
+	# shellcheck disable=SC2086
+	same_files "$T/c" "$T/d" $OUTPUTS
 }
 
 t_undo_redo() {
@@ -89,6 +120,16 @@ t_load() {
 	# a loaded drawing saves back unchanged
 	run --out "$T/again" --load "$T/half/drawing.edaha"
 	same_files "$T/half" "$T/again" drawing.edaha skeleton.json model.glb
+	# the same across a turned tree: split after the drag that turns it, so the second
+	# part draws on the turned tree the drawing brings back
+	cut=$(grep -n ' proximity-out ' "$ORBIT" | sed -n 6p | cut -d: -f1)
+	head -n "$cut" "$ORBIT" >"$T/o1.trace"
+	{ grep -E '^(edaha-trace|screen) ' "$ORBIT"; tail -n +"$((cut + 1))" "$ORBIT"; } >"$T/o2.trace"
+	run --out "$T/ohalf" --replay "$T/o1.trace"
+	grep -q '^view ' "$T/ohalf/drawing.edaha" || fail "the turned view is not saved"
+	run --out "$T/otwo" --load "$T/ohalf/drawing.edaha" --replay "$T/o2.trace"
+	run --out "$T/oone" --replay "$ORBIT"
+	same_files "$T/oone" "$T/otwo" skeleton.json model.glb model.obj screen.png drawing.edaha
 }
 
 t_record() {
@@ -97,14 +138,19 @@ t_record() {
 	head -n1 "$T/rec.trace" | grep -q '^edaha-trace 1' || fail "recording has no header"
 	run --out "$T/b" --replay "$T/rec.trace"
 	same_files "$T/a" "$T/b" skeleton.json model.glb screen.png
+	run --out "$T/c" --replay "$ORBIT" --record "$T/orbit.trace"
+	run --out "$T/d" --replay "$T/orbit.trace"
+	same_files "$T/c" "$T/d" skeleton.json model.glb screen.png drawing.edaha
 }
 
 t_exports_valid() {
 	run --out "$T/demo" --replay "$DEMO"
 	run --out "$T/demo3d" --replay "$DEMO" --press 3d
+	run --out "$T/orbit" --replay "$ORBIT"
 	run --out "$T/wacom" --replay "$SRC/data/wacom-intuos-pro-m.yml"
 	run --out "$T/empty"
-	"$GLTF_VALIDATE" "$T/demo/model.glb" "$T/demo3d/model.glb" "$T/wacom/model.glb" "$T/empty/model.glb" ||
+	"$GLTF_VALIDATE" "$T/demo/model.glb" "$T/demo3d/model.glb" "$T/orbit/model.glb" "$T/wacom/model.glb" \
+		"$T/empty/model.glb" ||
 		fail "glTF validator"
 	if command -v assimp >/dev/null; then
 		for f in demo/model.glb demo/model.obj demo3d/model.glb wacom/model.glb; do

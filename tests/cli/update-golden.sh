@@ -10,4 +10,11 @@ trap 'rm -rf "$out"' EXIT
 cp "$out/screen.png" tests/golden/demo-screen.png
 cp "$out/skeleton.json" tests/golden/demo-skeleton.json
 cp "$out/screen.png" docs/screenshot.png
-echo "updated tests/golden/demo-screen.png, demo-skeleton.json and docs/screenshot.png"
+# the 3D trees from the front and turned by 90 degrees (cli.sh t_views, VIEW_SKETCHES)
+for name in demo orbit lift-young lift-broadleaf lift-conifer lift-sine; do
+	"$build/platform/edaha" --headless --out "$out/$name-front" --replay "tests/data/$name.edaha-trace" --press 3d --view 0
+	"$build/platform/edaha" --headless --out "$out/$name-90" --replay "tests/data/$name.edaha-trace" --press 3d --view 90
+	cp "$out/$name-front/screen.png" "tests/golden/$name-3d-front.png"
+	cp "$out/$name-90/screen.png" "tests/golden/$name-3d-90.png"
+done
+echo "updated tests/golden/demo-screen.png, demo-skeleton.json, *-3d-front.png, *-3d-90.png and docs/screenshot.png"
