@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "arrange.h"
 #include "camera.h"
 #include "doc.h"
 #include "event.h"
@@ -27,8 +28,11 @@ enum app_mode {
 	APP_MODE_PROPAGATE,
 };
 
+/* Propagation pattern: until a pattern button is pressed, fixed count for a branch with
+ * child branches, fixed size for one with leaves only (section 3.6). */
 enum app_pattern {
-	APP_PATTERN_FIXED_COUNT = 0,
+	APP_PATTERN_AUTO = 0,
+	APP_PATTERN_FIXED_COUNT,
 	APP_PATTERN_FIXED_SIZE,
 };
 
@@ -59,6 +63,13 @@ struct app_stroke {
  * stay cuts.
  */
 #define APP_ORBIT_CLEARANCE_M 1.2
+/* A tap selects the branch it lands within this of on the screen (metres; 3%). */
+#define APP_TAP_M 0.3
+/* A clone-mode circle: the pen goes at least this far round its centre (radians), and
+ * the stroke is at least this long (metres). */
+#define APP_CIRCLE_TURN (1.5 * 3.14159265358979323846)
+#define APP_CIRCLE_MIN_M 0.3
+
 /* Degrees the camera turns per metre the pen drags (half a screen height: 90 degrees). */
 #define APP_ORBIT_DEG_PER_M 18.0
 /* After 3D is pressed the tree swings this far to one side and the other, and back. */
@@ -93,6 +104,13 @@ struct app {
 	double orbit_x, orbit_y;   /* where the pen was, screen pixels */
 	uint64_t turn_start_us;    /* the animated turn after lifting, when turning */
 	bool turning;
+	/* Example-based editing. */
+	int selected;              /* clone mode: the branch that gets children, or -1 */
+	int suggest_branch;        /* leaf mode: the branch whose leaves suggest... */
+	unsigned suggestions;      /* ...these arrangements (1u << enum arrange_pattern) */
+	struct tree_mesh previews[ARRANGE_COUNT]; /* their thumbnails' meshes */
+	uint64_t previews_serial;  /* bumped when they change */
+	bool side_held;            /* the pen tip is on a thumbnail */
 	uint64_t last_time_us;
 	uint32_t requests;
 	int failed; /* first negative errno from an allocation, sticky */
@@ -110,6 +128,8 @@ uint32_t app_take_requests(struct app *app);
 bool app_camera_at(const struct app *app, uint64_t now_us, struct camera *out);
 /* Turns a 3D tree's camera (as orbiting would). False, and nothing changes, for a sketch. */
 bool app_set_camera(struct app *app, struct camera c);
+/* The suggestion thumbnails shown, in order: how many, and their patterns. */
+size_t app_suggestions(const struct app *app, enum arrange_pattern out[ARRANGE_COUNT]);
 /* Whether a pen tip put down at screen pixel (x, y) would turn the camera. */
 bool app_would_orbit(const struct app *app, double x, double y);
 /* Rebuilds tree and meshes from the document up to its cursor. 0 or -ENOMEM. */

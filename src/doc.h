@@ -20,6 +20,12 @@ enum doc_op_kind {
 	DOC_OP_STROKE = 0, /* a pen stroke, in world metres */
 	DOC_OP_NEW,        /* clears the canvas (undoable) */
 	DOC_OP_LIFT,       /* the 3D button: the sketch becomes a 3D tree (version 2) */
+	/* Example-based editing (version 4); `branch` names the branch by its id then. */
+	DOC_OP_CLONE_ADD,    /* clone mode: one more child on `branch` */
+	DOC_OP_CLONE_REMOVE, /* clone mode: one child less */
+	DOC_OP_ARRANGE,      /* leaf mode: leaf arrangement `pattern` (enum arrange_pattern) */
+	DOC_OP_PROPAGATE,    /* propagate mode: `branch`'s children everywhere, `pattern`
+			      * (enum propagate_pattern) */
 };
 
 /* Stored as float so that what is written is exactly what is replayed. */
@@ -37,6 +43,8 @@ struct doc_op {
 	size_t npoints;
 	struct camera camera; /* strokes: the camera they were drawn in (the front view
 			       * before version 3) */
+	int branch;           /* editing ops: the branch they work on */
+	int pattern;          /* arrange, propagate: which pattern */
 };
 
 struct doc {
@@ -48,8 +56,9 @@ struct doc {
 };
 
 /* 2 added the lift op, 3 the camera (of strokes drawn on a turned 3D tree, and the
- * view when saved); older files read as before. */
-#define DOC_FORMAT_VERSION 3
+ * view when saved), 4 the editing ops (clone, arrange, propagate); older files read as
+ * before. */
+#define DOC_FORMAT_VERSION 4
 
 /*
  * Limits on a drawing, far beyond what a visitor draws in a day, so that a damaged or

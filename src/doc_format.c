@@ -8,8 +8,32 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "arrange.h"
 #include "doc.h"
+#include "propagate.h"
 #include "tree.h"
+
+static const char *const propagate_names[] = {
+	[PROPAGATE_FIXED_COUNT] = "fixed-count",
+	[PROPAGATE_FIXED_SIZE] = "fixed-size",
+};
+
+/* The editing ops' keywords, as written. */
+static const char *const edit_keywords[] = {
+	[DOC_OP_CLONE_ADD] = "clone-add",
+	[DOC_OP_CLONE_REMOVE] = "clone-remove",
+	[DOC_OP_ARRANGE] = "arrange",
+	[DOC_OP_PROPAGATE] = "propagate",
+};
+
+static const char *pattern_name(const struct doc_op *op)
+{
+	if (op->kind == DOC_OP_ARRANGE)
+		return arrange_pattern_name((enum arrange_pattern)op->pattern);
+	if (op->pattern >= 0 && op->pattern <= PROPAGATE_FIXED_SIZE)
+		return propagate_names[op->pattern];
+	return NULL;
+}
 
 #define MAX_FIELDS 8
 
@@ -45,6 +69,19 @@ int doc_serialize(const struct doc *d, const struct tree *t, struct buf *out)
 		case DOC_OP_LIFT:
 			buf_printf(out, "lift %llu\n", (unsigned long long)op->time_us);
 			break;
+		case DOC_OP_CLONE_ADD:
+		case DOC_OP_CLONE_REMOVE:
+			buf_printf(out, "%s %llu %d\n", edit_keywords[op->kind],
+				   (unsigned long long)op->time_us, op->branch);
+			break;
+		case DOC_OP_ARRANGE:
+		case DOC_OP_PROPAGATE: {
+			const char *name = pattern_name(op);
+
+			buf_printf(out, "%s %llu %d %s\n", edit_keywords[op->kind],
+				   (unsigned long long)op->time_us, op->branch, name ? name : "?");
+			break;
+		}
 		}
 	}
 	if (t) {
@@ -229,6 +266,51 @@ static int parse_stroke(struct reader *r, struct doc_op *op, uint64_t version)
 	return 0;
 }
 
+/* clone-add T B, clone-remove T B, arrange T B PATTERN, propagate T B PATTERN */
+static int parse_edit(struct reader *r, struct doc_op *op)
+{
+	bool patterned = op->kind == DOC_OP_ARRANGE || op->kind == DOC_OP_PROPAGATE;
+	uint64_t v;
+	int ret;
+
+	if ((ret = expect_fields(r, patterned ? 4 : 3, r->fields[0])) < 0 ||
+	    (ret = parse_u64(r, r->fields[1], UINT64_MAX, &op->time_us, "time")) < 0 ||
+	    (ret = parse_u64(r, r->fields[2], INT32_MAX, &v, "branch")) < 0)
+		return ret;
+	op->branch = (int)v;
+	if (op->kind == DOC_OP_ARRANGE) {
+		enum arrange_pattern p;
+
+		if (!arrange_pattern_from_name(r->fields[3], &p))
+			return error_at(r->err, -EINVAL, r->name, r->line,
+					"unknown leaf arrangement \"%s\" (whorl-add, whorl-extend, "
+					"spiral-extend)", r->fields[3]);
+		op->pattern = (int)p;
+	} else if (op->kind == DOC_OP_PROPAGATE) {
+		op->pattern = -1;
+		for (int i = 0; i <= PROPAGATE_FIXED_SIZE; i++)
+			if (strcmp(r->fields[3], propagate_names[i]) == 0)
+				op->pattern = i;
+		if (op->pattern < 0)
+			return error_at(r->err, -EINVAL, r->name, r->line,
+					"unknown propagation pattern \"%s\" (fixed-count, fixed-size)",
+					r->fields[3]);
+	}
+	return 0;
+}
+
+static bool edit_keyword(const char *kw, uint64_t version, enum doc_op_kind *kind)
+{
+	if (version < 4)
+		return false;
+	for (int k = DOC_OP_CLONE_ADD; k <= DOC_OP_PROPAGATE; k++)
+		if (strcmp(kw, edit_keywords[k]) == 0) {
+			*kind = (enum doc_op_kind)k;
+			return true;
+		}
+	return false;
+}
+
 static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 {
 	uint64_t v, nops = 0, cursor = 0;
@@ -238,6 +320,7 @@ static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 	while ((ret = reader_next(r)) > 0) {
 		const char *kw = r->fields[0];
 		struct doc_op op = { 0 };
+		enum doc_op_kind edit;
 
 		if (strcmp(kw, "end") == 0) {
 			if ((ret = expect_fields(r, 1, "end")) < 0)
@@ -281,7 +364,7 @@ static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 				return ret;
 			have_history = true;
 		} else if (strcmp(kw, "stroke") == 0 || strcmp(kw, "new") == 0 ||
-			   (version >= 2 && strcmp(kw, "lift") == 0)) {
+			   (version >= 2 && strcmp(kw, "lift") == 0) || edit_keyword(kw, version, &edit)) {
 			if (!have_history)
 				return error_at(r->err, -EINVAL, r->name, r->line,
 						"\"%s\" before the history line", kw);
@@ -289,7 +372,10 @@ static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 				return error_at(r->err, -EINVAL, r->name, r->line,
 						"more ops than the history line says (%llu)",
 						(unsigned long long)nops);
-			if (kw[0] == 's') {
+			if (edit_keyword(kw, version, &edit)) {
+				op.kind = edit;
+				ret = parse_edit(r, &op);
+			} else if (kw[0] == 's') {
 				op.kind = DOC_OP_STROKE;
 				ret = parse_stroke(r, &op, version);
 			} else {

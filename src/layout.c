@@ -104,6 +104,32 @@ bool layout_hit_view_button(const struct view *v, double x, double y)
 	return x >= b.x - pad && x < b.x + b.w + pad && y >= b.y - pad && y < b.y + b.h + pad;
 }
 
+#define THUMB_OF_BUTTON 1.6
+
+struct layout_rect layout_side_slot(const struct view *v, size_t i, bool thumbnail)
+{
+	struct metrics m = metrics(v);
+	double side = thumbnail ? round(THUMB_OF_BUTTON * m.size) : m.size;
+
+	return (struct layout_rect){ m.margin, m.margin + (double)i * (side + m.gap), side, side };
+}
+
+bool layout_side_hit(const struct view *v, double x, double y, size_t n, bool thumbnail,
+		     size_t *slot)
+{
+	double pad = 0.5 * metrics(v).gap;
+
+	for (size_t i = 0; i < n; i++) {
+		struct layout_rect r = layout_side_slot(v, i, thumbnail);
+
+		if (x >= r.x - pad && x < r.x + r.w + pad && y >= r.y - pad && y < r.y + r.h + pad) {
+			*slot = i;
+			return true;
+		}
+	}
+	return false;
+}
+
 struct layout_rect layout_bar(const struct view *v)
 {
 	struct metrics m = metrics(v);

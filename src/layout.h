@@ -47,6 +47,16 @@ bool layout_hit(const struct view *v, double x, double y, enum button *button);
 struct layout_button layout_view_button(const struct view *v);
 bool layout_hit_view_button(const struct view *v, double x, double y);
 
+/*
+ * The strip along the canvas's left edge that shows what the active mode offers: in leaf
+ * mode the suggested arrangements as thumbnails (1.6 x a button), in propagate mode the
+ * two patterns as buttons. Slot i counts from the top.
+ */
+struct layout_rect layout_side_slot(const struct view *v, size_t i, bool thumbnail);
+/* The slot of n under (x, y), with the same half-gap margin as the bar. */
+bool layout_side_hit(const struct view *v, double x, double y, size_t n, bool thumbnail,
+		     size_t *slot);
+
 /* The strip the buttons sit on. */
 struct layout_rect layout_bar(const struct view *v);
 

@@ -243,6 +243,30 @@ static void icon_view(const struct icon *ic)
 		   0.3, ic->ink);
 }
 
+/*
+ * Propagation patterns: a long and a short twig. Fixed count: three leaves on each,
+ * smaller on the short one. Fixed size: leaves of one size at one spacing, so the short
+ * twig has only those nearest its tip.
+ */
+static void icon_pattern(const struct icon *ic, bool fixed_size)
+{
+	const double y[2] = { -0.45, 0.55 }, len[2] = { 1.7, 0.95 };
+
+	for (int k = 0; k < 2; k++) {
+		double x0 = -0.85, x1 = x0 + len[k];
+		int count = fixed_size ? (k == 0 ? 4 : 2) : 3;
+
+		segment(ic, x0, y[k], x1, y[k], LINE * 0.8, ic->ink);
+		for (int i = 0; i < count; i++) {
+			/* fixed size: spaced 0.4 back from the tip; fixed count: spread evenly */
+			double x = fixed_size ? x1 - 0.4 * i - 0.1 : x0 + len[k] * (i + 1) / (count + 0.3);
+			double r = fixed_size ? 0.16 : 0.16 * (k == 0 ? 1.0 : 0.6);
+
+			disc(ic, x, y[k] - r - 0.03, r, ic->ink);
+		}
+	}
+}
+
 void icon_draw(struct batch *b, enum button button, struct pt centre, double size,
 	       struct rgba ink, struct rgba bg)
 {
@@ -277,7 +301,11 @@ void icon_draw(struct batch *b, enum button button, struct pt centre, double siz
 		icon_view(&ic);
 		break;
 	case BUTTON_FIXED_COUNT:
+		icon_pattern(&ic, false);
+		break;
 	case BUTTON_FIXED_SIZE:
+		icon_pattern(&ic, true);
+		break;
 	case BUTTON_COUNT:
 		break; /* not on the screen */
 	}

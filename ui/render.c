@@ -110,6 +110,7 @@ void render_destroy(struct render *r)
 		return;
 	render_mesh_finish(&r->bark);
 	render_mesh_finish(&r->leaves);
+	render_previews_finish(r);
 	glDeleteBuffers(1, &r->flat_vbo);
 	glDeleteProgram(r->tree_program);
 	glDeleteProgram(r->flat_program);
@@ -181,16 +182,12 @@ static int upload_tree(struct render *r, const struct app *app)
 	return 0;
 }
 
-static int draw_tree(struct render *r, const struct app *app, const struct camera_xf *xf)
+static int draw_tree(struct render *r, const struct app *app, const struct camera_xf *xf,
+		     const float light[3])
 {
-	float mvp[16], light[3];
-	struct vec3 l = camera_dir_from_view(xf, vec3(light_dir[0], light_dir[1], light_dir[2]));
+	float mvp[16];
 	int ret = upload_tree(r, app);
 
-	/* the light turns with the camera: the side a visitor looks at is always lit */
-	light[0] = (float)l.x;
-	light[1] = (float)l.y;
-	light[2] = (float)l.z;
 	view_clip_matrix(&app->view, xf, mvp);
 	glEnable(GL_DEPTH_TEST);
 	glDepthFunc(GL_LESS);
@@ -227,11 +224,19 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 	const struct view *v = &app->view;
 	struct camera cam;
 	struct camera_xf xf;
-	float proj[16];
+	struct vec3 l;
+	float proj[16], light[3];
+	enum arrange_pattern shown[ARRANGE_COUNT];
+	bool previews = app->mode == APP_MODE_LEAF && app_suggestions(app, shown) > 0;
 	int ret, r2;
 
 	(void)app_camera_at(app, now_us, &cam);
 	camera_xf_init(&xf, cam, sketch_view_pivot(&app->tree));
+	/* the light turns with the camera: the side a visitor looks at is always lit */
+	l = camera_dir_from_view(&xf, vec3(light_dir[0], light_dir[1], light_dir[2]));
+	light[0] = (float)l.x;
+	light[1] = (float)l.y;
+	light[2] = (float)l.z;
 	memset(&r->stats, 0, sizeof(r->stats));
 	if (v->width <= 0 || v->height <= 0)
 		return -EINVAL;
@@ -260,14 +265,25 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 	render_ui_ground(&r->batch, app);
 	ret = flush_batch(r, proj);
 
-	r2 = draw_tree(r, app, &xf);
+	r2 = draw_tree(r, app, &xf, light);
 	if (ret == 0)
 		ret = r2;
 
 	/* in front of everything; the cursor last so it shows over the buttons too */
 	glEnable(GL_BLEND);
+	render_ui_selection(&r->batch, app, &xf);
 	render_ui_stroke(&r->batch, app);
 	render_ui_buttons(&r->batch, app);
+	if (previews) {
+		/* the thumbnails' pictures go on their cards, under the cursor */
+		r2 = flush_batch(r, proj);
+		if (ret == 0)
+			ret = r2;
+		r2 = render_previews(r, app, &xf, light);
+		if (ret == 0)
+			ret = r2;
+		glEnable(GL_BLEND);
+	}
 	render_ui_cursor(&r->batch, app);
 	r2 = flush_batch(r, proj);
 	if (ret == 0)

@@ -7,7 +7,9 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "arrange.h"
 #include "batch.h"
+#include "camera.h"
 #include "render.h"
 
 struct app;
@@ -44,6 +46,11 @@ struct render {
 	bool uploaded;       /* the meshes hold mesh_serial's tree */
 	uint64_t mesh_serial;
 
+	/* the leaf suggestions' thumbnails */
+	struct render_mesh preview_bark[ARRANGE_COUNT], preview_leaves[ARRANGE_COUNT];
+	bool previews_uploaded;
+	uint64_t previews_serial;
+
 	struct batch batch;
 	struct render_stats stats;
 };
@@ -64,4 +71,12 @@ void render_ui_ground(struct batch *b, const struct app *app);
 void render_ui_stroke(struct batch *b, const struct app *app);
 void render_ui_buttons(struct batch *b, const struct app *app);
 void render_ui_cursor(struct batch *b, const struct app *app);
+/* The branch clone mode works on, marked over the tree as the camera xf shows it. */
+void render_ui_selection(struct batch *b, const struct app *app, const struct camera_xf *xf);
+
+/* render_preview.c: the 3D pictures inside the leaf suggestion thumbnails (the cards
+ * behind them are render_ui_buttons'). 0 or a negative errno. */
+int render_previews(struct render *r, const struct app *app, const struct camera_xf *xf,
+		    const float light[3]);
+void render_previews_finish(struct render *r);
 

@@ -35,6 +35,8 @@ static struct rgba accent(enum button button)
 	case BUTTON_LEAF:
 		return (struct rgba){ 0.24f, 0.58f, 0.22f, 1.0f };
 	case BUTTON_PROPAGATE:
+	case BUTTON_FIXED_COUNT: /* its patterns */
+	case BUTTON_FIXED_SIZE:
 		return (struct rgba){ 0.90f, 0.48f, 0.12f, 1.0f };
 	case BUTTON_EXPORT:
 		return (struct rgba){ 0.10f, 0.50f, 0.62f, 1.0f };
@@ -157,6 +159,10 @@ void render_ui_stroke(struct batch *b, const struct app *app)
 
 static bool button_active(const struct app *app, enum button button)
 {
+	if (button == BUTTON_FIXED_COUNT)
+		return app->pattern == APP_PATTERN_FIXED_COUNT;
+	if (button == BUTTON_FIXED_SIZE)
+		return app->pattern == APP_PATTERN_FIXED_SIZE;
 	switch (app->mode) {
 	case APP_MODE_CLONE:
 		return button == BUTTON_CLONE;
@@ -216,6 +222,63 @@ static void draw_button(struct batch *b, const struct app *app, const struct lay
 		  icon_ink, fill);
 }
 
+/* What the active mode offers on the left: leaf suggestions (their pictures are drawn
+ * into these cards by render_preview.c), or the two propagation patterns. */
+static void render_ui_side(struct batch *b, const struct app *app)
+{
+	const struct view *v = &app->view;
+	enum arrange_pattern shown[ARRANGE_COUNT];
+	size_t n;
+
+	if (app->mode == APP_MODE_PROPAGATE) {
+		for (size_t i = 0; i < 2; i++) {
+			struct layout_rect r = layout_side_slot(v, i, false);
+			struct layout_button lb = { i == 0 ? BUTTON_FIXED_COUNT : BUTTON_FIXED_SIZE,
+						    r.x, r.y, r.w, r.h };
+
+			draw_button(b, app, &lb);
+		}
+		return;
+	}
+	if (app->mode != APP_MODE_LEAF)
+		return;
+	n = app_suggestions(app, shown);
+	for (size_t i = 0; i < n; i++) {
+		struct layout_rect r = layout_side_slot(v, i, true);
+		struct rgba leaf = accent(BUTTON_LEAF);
+		double radius = 0.12 * r.w, border = fmax(1.5, 0.03 * r.w);
+
+		batch_rounded_rect(b, r.x, r.y + 0.04 * r.w, r.w, r.h, radius, shadow);
+		batch_rounded_rect(b, r.x, r.y, r.w, r.h, radius, button_fill);
+		batch_rounded_frame(b, r.x, r.y, r.w, r.h, radius, border, leaf);
+	}
+}
+
+void render_ui_selection(struct batch *b, const struct app *app, const struct camera_xf *xf)
+{
+	const struct branch *br;
+	struct pt p[256];
+	size_t n;
+	double s = screen_scale(&app->view);
+
+	if (app->mode != APP_MODE_CLONE || app->selected < 0 ||
+	    (size_t)app->selected >= app->tree.nbranches)
+		return;
+	br = &app->tree.branches[app->selected];
+	n = br->npoints < 256 ? br->npoints : 256;
+	for (size_t i = 0; i < n; i++) {
+		double x, y;
+		/* at most 256 points along it, ends included */
+		size_t k = n > 1 ? i * (br->npoints - 1) / (n - 1) : 0;
+
+		view_to_screen(&app->view, camera_to_view(xf, br->points[k]), &x, &y);
+		p[i] = (struct pt){ x, y };
+	}
+	/* a glow along the chosen branch in the clone button's colour */
+	batch_polyline(b, p, n, 14.0 * s, with_alpha(accent(BUTTON_CLONE), 0.35f));
+	batch_polyline(b, p, n, 5.0 * s, with_alpha(accent(BUTTON_CLONE), 0.9f));
+}
+
 void render_ui_buttons(struct batch *b, const struct app *app)
 {
 	const struct view *v = &app->view;
@@ -236,6 +299,7 @@ void render_ui_buttons(struct batch *b, const struct app *app)
 
 		draw_button(b, app, &view);
 	}
+	render_ui_side(b, app);
 }
 
 /* Two arrows chasing each other round the pen: "drag here to turn the tree". */

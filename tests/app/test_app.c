@@ -151,10 +151,19 @@ int main(void)
 		CHECK_INT(app->doc.nops, 5);
 	}
 
-	/* modes toggle; export is a request for platform/ */
+	/* modes toggle; on a sketch an editing mode makes it 3D first, as its own undoable
+	 * step (undoing it goes back to the sketch mode); export is a request for platform/ */
 	ev_button(app, BUTTON_LEAF);
 	CHECK_INT(app->mode, APP_MODE_LEAF);
+	CHECK(app->tree.lifted);
+	CHECK_INT(app->doc.ops[app->doc.cursor - 1].kind, DOC_OP_LIFT);
 	ev_button(app, BUTTON_LEAF);
+	CHECK_INT(app->mode, APP_MODE_SKETCH);
+	ev_button(app, BUTTON_CLONE);
+	CHECK_INT(app->mode, APP_MODE_CLONE);
+	CHECK_INT(app->doc.ops[app->doc.cursor - 2].kind, DOC_OP_STROKE); /* already 3D */
+	ev_button(app, BUTTON_UNDO);
+	CHECK(!app->tree.lifted);
 	CHECK_INT(app->mode, APP_MODE_SKETCH);
 	ev_button(app, BUTTON_EXPORT);
 	CHECK_INT(app_take_requests(app), APP_REQUEST_EXPORT);

@@ -3,7 +3,9 @@
 #include <errno.h>
 #include <string.h>
 
+#include "arrange.h"
 #include "doc.h"
+#include "propagate.h"
 #include "test.h"
 #include "tree.h"
 
@@ -101,7 +103,21 @@ static void test_errors(void)
 {
 	expect_error("", "bad.edaha: empty file");
 	expect_error("hello\n", "bad.edaha:1: not an edaha drawing");
-	expect_error("# c\nedaha-drawing 4\n", "bad.edaha:2: drawing format version 4");
+	expect_error("# c\nedaha-drawing 5\n", "bad.edaha:2: drawing format version 5");
+	/* the editing ops came with version 4 */
+	expect_error("edaha-drawing 3\nseed 1\nhistory 1 1\nclone-add 5 0\n", "bad.edaha:4: unknown line");
+	expect_error("edaha-drawing 4\nseed 1\nhistory 1 1\nclone-add 5\n",
+		     "bad.edaha:4: expected 3 fields for clone-add, got 2");
+	expect_error("edaha-drawing 4\nseed 1\nhistory 1 1\nclone-remove 5 -1\n",
+		     "bad.edaha:4: bad branch \"-1\"");
+	expect_error("edaha-drawing 4\nseed 1\nhistory 1 1\nclone-add 5 4294967296\n",
+		     "bad.edaha:4: bad branch");
+	expect_error("edaha-drawing 4\nseed 1\nhistory 1 1\narrange 5 0 whorl\n",
+		     "bad.edaha:4: unknown leaf arrangement \"whorl\"");
+	expect_error("edaha-drawing 4\nseed 1\nhistory 1 1\npropagate 5 0 fixed\n",
+		     "bad.edaha:4: unknown propagation pattern \"fixed\"");
+	expect_error("edaha-drawing 4\nseed 1\nhistory 1 1\npropagate 5 0\n",
+		     "bad.edaha:4: expected 4 fields for propagate, got 3");
 	expect_error("edaha-drawing 0\n", "bad.edaha:1: drawing format version 0");
 	/* version 1 files have no lift op */
 	expect_error("edaha-drawing 1\nseed 1\nhistory 1 1\nlift 5\nend\n", "bad.edaha:4: unknown line");
@@ -157,8 +173,37 @@ static void test_versions(void)
 	CHECK_INT(doc_serialize(&d, NULL, &b), 0);
 	/* read as version 2, written as the newest: a front-view drawing needs no camera */
 	CHECK(b.len > 0 && strstr((const char *)b.data, "\nlift 9\n") &&
-	      strncmp((const char *)b.data, "edaha-drawing 3\n", 16) == 0 &&
+	      strncmp((const char *)b.data, "edaha-drawing 4\n", 16) == 0 &&
 	      !strstr((const char *)b.data, "view"));
+	buf_finish(&b);
+	doc_finish(&d);
+}
+
+/* Version 4: the editing ops round-trip. */
+static void test_edit_ops(void)
+{
+	static const char v4[] = "edaha-drawing 4\nseed 4\nhistory 6 6\nlift 2\nclone-add 3 0\n"
+				 "clone-remove 4 0\narrange 5 2 whorl-add\narrange 6 2 spiral-extend\n"
+				 "propagate 7 1 fixed-size\nend\n";
+	struct error err = { { 0 } };
+	struct doc d;
+	struct buf b;
+
+	CHECK_INT(doc_parse(v4, sizeof(v4) - 1, "v4", &d, &err), 0);
+	CHECK_INT(d.nops, 6);
+	CHECK(d.ops[1].kind == DOC_OP_CLONE_ADD && d.ops[1].branch == 0 && d.ops[1].time_us == 3);
+	CHECK(d.ops[2].kind == DOC_OP_CLONE_REMOVE);
+	CHECK(d.ops[3].kind == DOC_OP_ARRANGE && d.ops[3].branch == 2 &&
+	      d.ops[3].pattern == ARRANGE_WHORL_ADD);
+	CHECK(d.ops[4].pattern == ARRANGE_SPIRAL_EXTEND);
+	CHECK(d.ops[5].kind == DOC_OP_PROPAGATE && d.ops[5].branch == 1 &&
+	      d.ops[5].pattern == PROPAGATE_FIXED_SIZE);
+	buf_init(&b);
+	CHECK_INT(doc_serialize(&d, NULL, &b), 0);
+	CHECK(b.len == sizeof(v4) - 1 + strlen("# The history is the drawing; the tree section is a summary for other tools.\n"));
+	CHECK(strstr((const char *)b.data, "lift 2\nclone-add 3 0\nclone-remove 4 0\narrange 5 2 "
+					   "whorl-add\narrange 6 2 spiral-extend\npropagate 7 1 "
+					   "fixed-size\nend\n"));
 	buf_finish(&b);
 	doc_finish(&d);
 }
@@ -201,6 +246,7 @@ int main(void)
 {
 	test_versions();
 	test_camera();
+	test_edit_ops();
 	test_history();
 	test_roundtrip();
 	test_errors();

@@ -57,6 +57,9 @@ t_golden() {
 	for f in $OUTPUTS; do [ -s "$T/o/$f" ] || fail "missing $f"; done
 	"$JSONCMP" --eps 1e-5 "$SRC/golden/demo-skeleton.json" "$T/o/skeleton.json" || fail "skeleton differs from golden"
 	"$IMGCMP" "$SRC/golden/demo-screen.png" "$T/o/screen.png" || fail "screen differs from golden"
+	# leaf mode with its suggestions: the thumbnail strip
+	run --out "$T/leaf" --replay "$SRC/data/edit-leaf-suggest.edaha-trace"
+	"$IMGCMP" "$SRC/golden/edit-leaf-suggest.png" "$T/leaf/screen.png" || fail "leaf suggestions differ from golden"
 }
 
 # The 3D trees from the front and turned by 90 degrees. The camera changes the picture

@@ -17,4 +17,6 @@ for name in demo orbit lift-young lift-broadleaf lift-conifer lift-sine; do
 	cp "$out/$name-front/screen.png" "tests/golden/$name-3d-front.png"
 	cp "$out/$name-90/screen.png" "tests/golden/$name-3d-90.png"
 done
-echo "updated tests/golden/demo-screen.png, demo-skeleton.json, *-3d-front.png, *-3d-90.png and docs/screenshot.png"
+"$build/platform/edaha" --headless --out "$out/leaf" --replay tests/data/edit-leaf-suggest.edaha-trace
+cp "$out/leaf/screen.png" tests/golden/edit-leaf-suggest.png
+echo "updated tests/golden/edit-leaf-suggest.png; tests/golden/demo-screen.png, demo-skeleton.json, *-3d-front.png, *-3d-90.png and docs/screenshot.png"
