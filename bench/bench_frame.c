@@ -6,6 +6,9 @@
  * upload (what the pen's hover costs), and reading the frame back (what --headless and
  * the golden tests pay). Medians of FRAMES frames; glFinish() so the time is the work
  * done, not the work queued.
+ * Then the tree propagation makes: 20 leaves on one branch propagated (fixed count) onto
+ * every branch of 250..1,000-branch trees, up to 20,000 leaves: the propagation's time,
+ * and the frame's time and draw calls.
  */
 #include <GLES2/gl2.h>
 #include <errno.h>
@@ -17,6 +20,7 @@
 #include "bench_util.h"
 #include "egl_headless.h"
 #include "mesh.h"
+#include "propagate.h"
 #include "render.h"
 #include "synth_tree.h"
 
@@ -104,6 +108,78 @@ static int measure(struct bench *b, int nbranches, struct result *res)
 	return b->failed;
 }
 
+static const int prop_sizes[] = { 250, 500, 1000 };
+#define NPROP (sizeof(prop_sizes) / sizeof(prop_sizes[0]))
+#define PROP_LEAVES 20
+
+/* A tree of n branches whose last twig (no children: only leaves are copied) carries 20
+ * leaves, then propagated everywhere. */
+static int measure_propagated(struct bench *b, int n, struct result *res, double *prop_s,
+			      size_t *nleaves)
+{
+	struct tree t;
+	struct render_stats st;
+	bool *drop = NULL;
+	double t0;
+	int r;
+
+	tree_init(&t);
+	r = synth_tree(&t, n, PROP_LEAVES, SEED);
+	if (r == 0 && !(drop = calloc(t.nleaves + 1, sizeof(*drop))))
+		r = -ENOMEM;
+	if (r == 0) {
+		int src = (int)t.nbranches - 1;
+
+		for (size_t i = 0; i < t.nleaves; i++)
+			drop[i] = t.leaves[i].branch != src;
+		tree_remove_leaves(&t, drop);
+		t0 = bench_now();
+		r = propagate_apply(&t, src, PROPAGATE_FIXED_COUNT);
+		*prop_s = bench_now() - t0;
+		*nleaves = t.nleaves;
+	}
+	if (r >= 0)
+		r = tree_mesh_build(&b->app.mesh, &t);
+	free(drop);
+	tree_finish(&t);
+	if (r < 0) {
+		fprintf(stderr, "bench_frame: propagating on %d branches: %s\n", n, strerror(-r));
+		return r;
+	}
+	res->upload_s = bench_run(upload_frame, b, FRAMES);
+	res->steady_s = bench_run(steady_frame, b, FRAMES);
+	render_get_stats(b->render, &st);
+	res->triangles = st.triangles;
+	res->tree_triangles = st.tree_triangles;
+	res->draw_calls = st.draw_calls;
+	return b->failed;
+}
+
+static int propagated(struct bench *b)
+{
+	struct result res[NPROP];
+	double prop_s[NPROP], prev_size = 0, prev_s = 0;
+	size_t nleaves[NPROP];
+
+	for (size_t i = 0; i < NPROP; i++)
+		if (measure_propagated(b, prop_sizes[i], &res[i], &prop_s[i], &nleaves[i]) < 0)
+			return -1;
+	printf("\npropagated: %d leaves on one branch copied onto every branch (fixed count)\n",
+	       PROP_LEAVES);
+	for (size_t i = 0; i < NPROP; i++)
+		printf("  %4d branches: %6zu leaves, %8zu tree triangles, %u draw calls a frame\n",
+		       prop_sizes[i], nleaves[i], res[i].tree_triangles, res[i].draw_calls);
+	for (size_t i = 0; i < NPROP; i++)
+		bench_row("propagate (one run)", prop_sizes[i], prop_s[i], &prev_size, &prev_s);
+	prev_size = prev_s = 0;
+	for (size_t i = 0; i < NPROP; i++)
+		bench_row("frame with upload", prop_sizes[i], res[i].upload_s, &prev_size, &prev_s);
+	prev_size = prev_s = 0;
+	for (size_t i = 0; i < NPROP; i++)
+		bench_row("frame, steady", prop_sizes[i], res[i].steady_s, &prev_size, &prev_s);
+	return 0;
+}
+
 int main(void)
 {
 	struct bench b = { 0 };
@@ -160,6 +236,8 @@ int main(void)
 	for (size_t i = 0; i < NSIZES; i++)
 		bench_row("read back (resolve + read)", sizes[i], res[i].readback_s, &prev_size,
 			  &prev_s);
+	if (propagated(&b) < 0)
+		goto out;
 	status = 0;
 out:
 	render_destroy(b.render);
