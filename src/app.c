@@ -67,7 +67,7 @@ static int apply_op(struct app *app, const struct doc_op *op)
 	case DOC_OP_CLONE_ADD: {
 		int ret = clone_add(&app->tree, op->branch, &app->rng);
 
-		return ret == -ENOENT ? SKETCH_GREW : ret < 0 ? ret : SKETCH_GREW;
+		return ret == -ENOENT || ret == -ENOSPC ? SKETCH_GREW : ret < 0 ? ret : SKETCH_GREW;
 	}
 	case DOC_OP_CLONE_REMOVE: {
 		int ret = clone_remove(&app->tree, op->branch);

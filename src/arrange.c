@@ -52,8 +52,9 @@
  * To the tip: the last repeat is the last one at or before the tip (s <= L + 1e-6 m,
  * branch_t clamped to 1), so the top set is within one spacing of the tip. A pattern is
  * suggested only if it adds at least one leaf and the leaves it adds hold at most
- * ARRANGE_MAX_NEW_POINTS = 200,000 points together, an empty leaf counting as one (a
- * damaged drawing cannot ask for a gigabyte of leaves).
+ * ARRANGE_MAX_NEW_POINTS = 200,000 points together, an empty leaf counting as one, and
+ * the tree stays within TREE_MAX_LEAVES (a damaged drawing cannot ask for a gigabyte of
+ * leaves).
  *
  * What a branch suggests, for example: one leaf: whorl-add; a set: whorl-add; a set and a
  * leaf above it: whorl-add, whorl-extend; two or more single leaves: spiral-extend (and
@@ -268,7 +269,9 @@ static int push_add(struct plan *pl, const struct tree *t, struct job j)
 		pl->add[pl->nadd] = j;
 	pl->nadd++;
 	pl->npoints += t->leaves[j.from].npoints ? t->leaves[j.from].npoints : 1;
-	return pl->npoints > ARRANGE_MAX_NEW_POINTS ? -E2BIG : 0;
+	/* nor past the tree's own limit, however many times patterns are applied */
+	return pl->npoints > ARRANGE_MAX_NEW_POINTS || t->nleaves + pl->nadd > TREE_MAX_LEAVES ?
+		       -E2BIG : 0;
 }
 
 static void push_move(struct plan *pl, struct job j)

@@ -348,6 +348,8 @@ int clone_add(struct tree *t, int parent, struct rng *rng)
 
 	if (parent < 0 || (size_t)parent >= t->nbranches)
 		return -ENOENT;
+	if (t->nbranches >= TREE_MAX_BRANCHES)
+		return -ENOSPC;
 	ret = gather(t, parent, &c, &n);
 	if (ret < 0)
 		return ret;

@@ -28,8 +28,9 @@ struct clone_turtle clone_turtle_at(const struct branch *parent, double t);
 
 /* Adds one child to branch `parent` (origin ORIGIN_CLONE). Returns the new branch's id,
  * -ENOENT if parent is not a branch or has no child branch to learn from (none with two
- * points and a root apart from its tip), -ENOMEM (tree unchanged). Draws one number from
- * rng (none on -ENOENT). */
+ * points and a root apart from its tip), -ENOSPC if the tree has TREE_MAX_BRANCHES
+ * already, -ENOMEM (tree unchanged). Draws one number from rng (none on -ENOENT or
+ * -ENOSPC). */
 int clone_add(struct tree *t, int parent, struct rng *rng);
 
 /* Removes parent's newest child branch (the highest id), with everything attached to it.
