@@ -47,10 +47,11 @@ struct leaf {
  * The most a tree grows to by example-based editing (propagation multiplies it: three
  * twigs propagated twice over 1,000 branches make 16,000). An edit that could pass these
  * is refused, so a kiosk (or a hostile drawing) cannot ask for a mesh its board cannot
- * draw: about 1.5 M leaf triangles at most.
+ * draw, nor an export a USB stick cannot take: 30,000 leaves are about 1 M triangles
+ * and an 80 MB OBJ. (20 leaves on each of 1,000 branches fit.)
  */
-#define TREE_MAX_BRANCHES 20000u
-#define TREE_MAX_LEAVES 60000u
+#define TREE_MAX_BRANCHES 10000u
+#define TREE_MAX_LEAVES 30000u
 
 /* The model: what the skeleton, the meshes and the screen are made from. */
 struct tree {

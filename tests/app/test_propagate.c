@@ -540,6 +540,7 @@ static void test_limits(void)
 		add_leaf(&t, src, 0.05 + 0.9 * i / 200.0, 0.05, true);
 	nl = t.nleaves;
 	/* 399 targets x 200 leaves = 79,800 > TREE_MAX_LEAVES */
+	CHECK(399u * 200u > TREE_MAX_LEAVES);
 	CHECK_INT(propagate_apply(&t, src, PROPAGATE_FIXED_COUNT), -ENOSPC);
 	CHECK_INT(t.nleaves, nl);
 	CHECK_INT(t.nbranches, 401);
