@@ -29,13 +29,19 @@
  *   direction; if one of the pair has no direction the other's down angle is used, if
  *   neither has, the mean over all children with one.
  *
- * Rotation angle: so that the children look evenly spread seen along head, but never
- *   more than CLONE_MAX_ROTATION_DEG from up (branches do not grow downwards): the angle
- *   in [-120, 120] degrees farthest from every existing child's rotation angle. That is
- *   the middle of the widest angular gap between them when it is in range; otherwise
- *   another gap's middle or an end of the range, whichever is farther from its nearest
- *   child (gap middles first on a tie, then +120, then -120). Children along head have
- *   no rotation angle and do not count; with none at all the new one gets 0 (up).
+ * Rotation angle: so that the children look evenly spread seen along head. On an
+ *   upright parent (head at the new parent_t within CLONE_UPRIGHT_DEG, 30 degrees, of the
+ *   vertical, up or down) the rotation angle does not change how far a child points
+ *   down, and up is only world +z or the direction of a slight lean: the angle is the
+ *   middle of the widest angular gap between the existing children's rotation angles,
+ *   over the full circle (on a tie the gap starting at the lowest angle), so no side of
+ *   a trunk stays bare. On an inclined parent it is never more than
+ *   CLONE_MAX_ROTATION_DEG from up (branches do not grow downwards): the angle in
+ *   [-120, 120] degrees farthest from every existing child's rotation angle. That is the
+ *   middle of the widest angular gap between them when it is in range; otherwise another
+ *   gap's middle or an end of the range, whichever is farther from its nearest child (gap
+ *   middles first on a tie, then +120, then -120). Children along head have no rotation
+ *   angle and do not count; with none at all the new one gets 0 (up).
  *
  * Shape: a sibling S picked with one rng draw among the children with a direction (two
  *   or more points, root apart from tip; there are none: -ENOENT). S's polyline is
@@ -63,6 +69,7 @@
 #include <stdlib.h>
 
 #define MAX_ROTATION (CLONE_MAX_ROTATION_DEG * VEC_PI / 180.0)
+#define UPRIGHT (CLONE_UPRIGHT_DEG * VEC_PI / 180.0)
 /* A chord, or a direction's part across head, shorter than this has no direction. */
 #define DIR_EPS 1e-12
 
@@ -258,14 +265,15 @@ static double clearance(const double *rot, size_t m, double phi)
 }
 
 /*
- * The angle in [-MAX_ROTATION, MAX_ROTATION] farthest from all m angles in rot (sorted
- * here). Within one gap between neighbouring angles the distance to the nearest rises
- * to the gap's middle and falls again, so the best allowed angle is a gap's middle or an
- * end of the range.
+ * The angle in [-limit, limit] farthest from all m angles in rot (sorted here); limit is
+ * MAX_ROTATION or, for the full circle, VEC_PI. Within one gap between neighbouring
+ * angles the distance to the nearest rises to the gap's middle and falls again, so the
+ * best allowed angle is a gap's middle or an end of the range. On the full circle every
+ * middle is in range and the widest gap's is as far as any angle gets: no ends.
  */
-static double pick_rotation(double *rot, size_t m)
+static double pick_rotation(double *rot, size_t m, double limit)
 {
-	static const double ends[] = { MAX_ROTATION, -MAX_ROTATION };
+	const double ends[] = { limit, -limit };
 	double best = -1.0, phi = 0.0;
 
 	if (m == 0)
@@ -277,12 +285,12 @@ static double pick_rotation(double *rot, size_t m)
 
 		if (mid > VEC_PI)
 			mid -= 2.0 * VEC_PI;
-		if (fabs(mid) <= MAX_ROTATION && half > best) {
+		if (fabs(mid) <= limit && half > best) {
 			best = half;
 			phi = mid;
 		}
 	}
-	for (size_t i = 0; i < 2; i++) {
+	for (size_t i = 0; i < 2 && limit < VEC_PI; i++) {
 		double d = clearance(rot, m, ends[i]);
 
 		if (d > best) {
@@ -342,7 +350,7 @@ int clone_add(struct tree *t, int parent, struct rng *rng)
 	const struct child *sib;
 	struct clone_turtle tu;
 	struct vec3 dir, *points;
-	double *rot, *radii, tnew, w, len, r, down, phi;
+	double *rot, *radii, tnew, w, len, r, down, incline, phi;
 	size_t n, m = 0, nshape = 0, pick;
 	int ret;
 
@@ -371,13 +379,15 @@ int clone_add(struct tree *t, int parent, struct rng *rng)
 	len = lerp(a.length, b.length, w);
 	r = lerp(a.radius, b.radius, w);
 	down = down_angle(&a, &b, w, c, n);
+	tu = clone_turtle_at(&t->branches[parent], tnew);
 	for (size_t i = 0; i < n; i++)
 		if (c[i].has_rot)
 			rot[m++] = c[i].rot;
-	phi = pick_rotation(rot, m);
+	/* from the vertical line: a hanging parent is upright too */
+	incline = atan2(hypot(tu.head.x, tu.head.z), fabs(tu.head.y));
+	phi = pick_rotation(rot, m, incline > UPRIGHT ? MAX_ROTATION : VEC_PI);
 	free(rot);
 
-	tu = clone_turtle_at(&t->branches[parent], tnew);
 	dir = vec3_add(vec3_scale(tu.head, cos(down)),
 		       vec3_scale(vec3_add(vec3_scale(tu.up, cos(phi)), vec3_scale(tu.left, sin(phi))),
 				  sin(down)));

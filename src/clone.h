@@ -10,8 +10,13 @@
  * the count; and one less. The rules are at the top of clone.c.
  */
 
-/* A new child's rotation angle about the parent's head stays within this of up. */
+/* A new child's rotation angle about the parent's head stays within this of up, where
+ * the parent is inclined (see CLONE_UPRIGHT_DEG). */
 #define CLONE_MAX_ROTATION_DEG 120.0
+/* A parent whose head at the new child's parameter is within this of the vertical (up or
+ * down) is upright: the rotation angle does not change how far a child points down, so
+ * it is chosen over the full circle, not within CLONE_MAX_ROTATION_DEG of up. */
+#define CLONE_UPRIGHT_DEG 30.0
 /* Below this |up - (up . head) head| the head counts as vertical and the turtle's up is
  * world +z (towards the front viewer) instead of the world up made perpendicular. */
 #define CLONE_VERTICAL_EPS 1e-9

@@ -3,8 +3,9 @@
  * Cloning (src/clone.c, seed 000 sections 3.4 and 4.4), checked against rules computed
  * here on their own: the turtle frame (head = the parent's tangent, up = world up made
  * perpendicular, +z when head is vertical), the widest gap between neighbouring children,
- * interpolation from that pair, rotation within 120 degrees of up and as far as allowed
- * from the other children, a sibling's shape in its own chord frame; determinism; and
+ * interpolation from that pair, rotation as far as allowed from the other children (over
+ * the full circle on a parent within 30 degrees of the vertical, within 120 degrees of up
+ * on an inclined one), a sibling's shape in its own chord frame; determinism; and
  * clone_remove giving back the tree exactly. On hand-built trees and on a lifted drawing.
  */
 #include <errno.h>
@@ -86,6 +87,70 @@ static double clearance(const double *rot, size_t m, double phi)
 	for (size_t i = 0; i < m; i++)
 		d = fmin(d, angle_dist(phi, rot[i]));
 	return d;
+}
+
+/* How far the farthest direction around the parent (the full circle, 0.25 degree steps)
+ * is from the nearest of m rotation angles. */
+static double worst_clearance(const double *rot, size_t m)
+{
+	double worst = 0;
+
+	for (double g = -180; g <= 180; g += 0.25)
+		worst = fmax(worst, clearance(rot, m, g * DEG));
+	return worst;
+}
+
+/* Upright: the head within 30 degrees of the vertical line (pointing up or down). */
+static bool upright_at(const struct tree *t, int parent, double pt)
+{
+	struct vec3 h = turtle(&t->branches[parent], pt).head;
+
+	return acos(fmin(1.0, fabs(h.y))) <= 30 * DEG;
+}
+
+/* Which rule check_add saw, so a test can tell it exercised the one it means to. */
+static size_t nupright, ninclined;
+
+/*
+ * The new rotation phi against the n others: on an upright parent no angle on the full
+ * circle is farther from them, on an inclined one phi is within 120 degrees of up and no
+ * angle there is farther; the middle of the widest angular gap when that is allowed (and
+ * clearly the widest).
+ */
+static void check_rotation(const double *rot, size_t n, double phi, bool upright)
+{
+	double lim = upright ? 180 : 120, best = -1, mid = 0, second = -1;
+
+	if (upright) {
+		nupright++;
+	} else {
+		ninclined++;
+		CHECK(fabs(phi) <= CLONE_MAX_ROTATION_DEG * DEG + EPS);
+		CHECK(fabs(phi) <= 120 * DEG + EPS);
+	}
+	for (double g = -lim; g <= lim; g += 0.05)
+		CHECK(clearance(rot, n, g * DEG) <= clearance(rot, n, phi) + EPS);
+	for (size_t i = 0; i < n; i++) {
+		double lo = rot[i], hi = HUGE_VAL;
+
+		for (size_t j = 0; j < n; j++) {
+			double d = fmod(rot[j] - lo + 4 * VEC_PI, 2 * VEC_PI);
+
+			if (j != i && d > 0 && lo + d < hi)
+				hi = lo + d;
+		}
+		if (hi == HUGE_VAL)
+			hi = lo + 2 * VEC_PI;
+		if (hi - lo > best) {
+			second = best;
+			best = hi - lo;
+			mid = remainder(lo + 0.5 * (hi - lo), 2 * VEC_PI);
+		} else if (hi - lo > second) {
+			second = hi - lo;
+		}
+	}
+	if ((upright || fabs(mid) <= 120 * DEG) && best - second > 1e-6)
+		CHECK_NEAR(angle_dist(phi, mid), 0, EPS);
 }
 
 /* parent's children (ids) in parent_t order */
@@ -199,7 +264,7 @@ static int check_add(struct tree *t, int parent, struct rng *rng)
 	size_t n = kids(t, parent, k), before = t->nbranches;
 	struct pair p = widest(t, parent);
 	const struct branch *a, *b, *c;
-	double rot[MAXK], la, lb, da, db, len, down, phi, best = -1, mid = 0, second = -1;
+	double rot[MAXK], la, lb, da, db, len, down;
 	struct turtle tu;
 
 	for (size_t i = 0; i < n; i++)
@@ -237,34 +302,8 @@ static int check_add(struct tree *t, int parent, struct rng *rng)
 	CHECK(between(down, da, db, EPS));
 	CHECK_NEAR(down, 0.5 * (da + db), EPS);
 
-	/* rotation: within 120 degrees of up, and no allowed angle is farther from the rest */
-	phi = rot_of(t, c);
-	CHECK(fabs(phi) <= CLONE_MAX_ROTATION_DEG * DEG + EPS);
-	CHECK(fabs(phi) <= 120 * DEG + EPS);
-	for (double g = -120; g <= 120; g += 0.05)
-		CHECK(clearance(rot, n, g * DEG) <= clearance(rot, n, phi) + EPS);
-	/* the middle of the widest angular gap when it is in range (and clearly the widest) */
-	for (size_t i = 0; i < n; i++) {
-		double lo = rot[i], hi = HUGE_VAL;
-
-		for (size_t j = 0; j < n; j++) {
-			double d = fmod(rot[j] - lo + 4 * VEC_PI, 2 * VEC_PI);
-
-			if (j != i && d > 0 && lo + d < hi)
-				hi = lo + d;
-		}
-		if (hi == HUGE_VAL)
-			hi = lo + 2 * VEC_PI;
-		if (hi - lo > best) {
-			second = best;
-			best = hi - lo;
-			mid = remainder(lo + 0.5 * (hi - lo), 2 * VEC_PI);
-		} else if (hi - lo > second) {
-			second = hi - lo;
-		}
-	}
-	if (fabs(mid) <= 120 * DEG && best - second > 1e-6)
-		CHECK_NEAR(angle_dist(phi, mid), 0, EPS);
+	/* rotation: the full circle on an upright parent, within 120 degrees of up otherwise */
+	check_rotation(rot, n, rot_of(t, c), upright_at(t, parent, c->parent_t));
 
 	/* shape: one of the siblings, in its chord frame, scaled */
 	tu = turtle(&t->branches[parent], c->parent_t);
@@ -377,11 +416,25 @@ static int add_trunk(struct tree *t, bool vertical)
 	return tree_add_branch(t, -1, 0, ORIGIN_SKETCH, pts, radii, 13);
 }
 
-/*
- * A trunk (0) with five children at uneven gaps all round it (1..5), child 2 tilted with
- * three children of its own (6..8), a leaf on child 1.
- */
-static void conifer(struct tree *t, bool vertical)
+/* A straight trunk from the origin, 6 long, leaning `lean` degrees from world up towards
+ * azimuth `az` (degrees about world up from +x towards -z); 180 hangs straight down. */
+static int add_straight_trunk(struct tree *t, double lean, double az)
+{
+	struct vec3 d = vec3(sin(lean * DEG) * cos(az * DEG), cos(lean * DEG),
+			     -sin(lean * DEG) * sin(az * DEG));
+	struct vec3 pts[13];
+	double radii[13];
+
+	for (int i = 0; i < 13; i++) {
+		pts[i] = vec3_scale(d, 0.5 * i);
+		radii[i] = 0.2 - 0.013 * i;
+	}
+	return tree_add_branch(t, -1, 0, ORIGIN_SKETCH, pts, radii, 13);
+}
+
+/* Five children at uneven gaps all round trunk 0 (1..5), child 2 tilted with three
+ * children of its own (6..8), a leaf on child 1. */
+static void conifer_children(struct tree *t)
 {
 	static const double pt[] = { 0.12, 0.3, 0.41, 0.66, 0.9 };
 	static const double rot[] = { 10, 100, -80, 170, -150 };
@@ -389,8 +442,6 @@ static void conifer(struct tree *t, bool vertical)
 	static const double len[] = { 2.2, 1.9, 1.6, 1.2, 0.7 };
 	const struct vec3 leaf[] = { vec3(1, 4, 0), vec3(1.1, 4.2, 0), vec3(0.9, 4.2, 0.1) };
 
-	tree_init(t);
-	CHECK_INT(add_trunk(t, vertical), 0);
 	for (int i = 0; i < 5; i++)
 		CHECK_INT(add_child(t, 0, pt[i], rot[i], down[i], len[i], 0.1 + 0.03 * i,
 				    0.08 - 0.01 * i, (size_t)(4 + i)),
@@ -401,6 +452,15 @@ static void conifer(struct tree *t, bool vertical)
 	CHECK_INT(tree_add_leaf(t, 1, ORIGIN_SKETCH, leaf, 3), 0);
 	t->leaves[0].branch_t = 0.5;
 	t->lifted = true;
+}
+
+/* A drawn trunk (0), slightly bent and leaning by a few degrees (upright), or a straight
+ * vertical one, with conifer_children. */
+static void conifer(struct tree *t, bool vertical)
+{
+	tree_init(t);
+	CHECK_INT(add_trunk(t, vertical), 0);
+	conifer_children(t);
 }
 
 /* n checked adds on parent, then n removes back to the tree it started as. */
@@ -470,22 +530,96 @@ static void test_trunk_ten(void)
 static void test_branch_ten(void)
 {
 	struct tree t;
+	size_t up0 = nupright, in0 = ninclined;
 
 	conifer(&t, false);
 	CHECK(fabs(clone_turtle_at(&t.branches[2], 0.5).head.y) < 0.9);
 	adds_then_removes(&t, 2, 5, 10);
+	/* every add on it kept within 120 degrees of up */
+	CHECK_INT(nupright, up0);
+	CHECK_INT(ninclined, in0 + 10);
 	tree_finish(&t);
 }
 
-/* A straight vertical trunk: rotation is measured from world +z and kept within 120
- * degrees of it. */
+/*
+ * An upright trunk: up is world +z (vertical) or the horizontal direction of the lean, so
+ * a 120-degree window about it would leave a wedge of the trunk bare for good. Each add
+ * takes the middle of the widest angular gap over the full circle; after 60 no direction
+ * round the trunk is more than 5 degrees from a child, and some clones turn more than
+ * 120 degrees from up.
+ */
+static void upright_spread(struct tree *t, uint64_t seed)
+{
+	struct rng rng;
+	int k[MAXK];
+	double rot[MAXK];
+	size_t n, up0 = nupright, in0 = ninclined, beyond = 0;
+
+	adds_then_removes(t, 0, seed, 10);
+	CHECK_INT(nupright, up0 + 10);
+	CHECK_INT(ninclined, in0);
+	rng_seed(&rng, seed);
+	for (int i = 0; i < 60; i++) {
+		int id = check_add(t, 0, &rng); /* before indexing: t->branches may move */
+
+		beyond += fabs(rot_of(t, &t->branches[id])) > 120 * DEG + 1e-6;
+	}
+	CHECK(beyond > 0);
+	n = kids(t, 0, k);
+	CHECK_INT(n, 65);
+	for (size_t i = 0; i < n; i++)
+		rot[i] = rot_of(t, &t->branches[k[i]]);
+	CHECK(worst_clearance(rot, n) < 5 * DEG);
+}
+
 static void test_vertical_trunk(void)
 {
 	struct tree t;
 
 	conifer(&t, true);
-	adds_then_removes(&t, 0, 3, 10);
+	CHECK(clone_turtle_at(&t.branches[0], 0.5).up.z == 1); /* the +z fallback */
+	upright_spread(&t, 3);
 	tree_finish(&t);
+}
+
+static void test_leaning_trunk(void)
+{
+	struct tree t;
+
+	tree_init(&t);
+	CHECK_INT(add_straight_trunk(&t, 10, 40), 0);
+	conifer_children(&t);
+	/* up is the lean's horizontal direction, turned up by 10 degrees */
+	CHECK_NEAR(clone_turtle_at(&t.branches[0], 0.5).up.y, sin(10 * DEG), 1e-12);
+	upright_spread(&t, 4);
+	tree_finish(&t);
+}
+
+/*
+ * The 30 degrees: one child at rotation 30 on a straight parent; the clone goes opposite
+ * it (-150) within 30 degrees of the vertical line, up or down, and to the nearest
+ * allowed angle (-120) beyond.
+ */
+static void test_upright_limit(void)
+{
+	static const double lean[] = { 0, 10, 29, 31, 45, 90, 135, 149, 151, 170, 180 };
+
+	CHECK(CLONE_UPRIGHT_DEG == 30.0);
+	for (size_t i = 0; i < sizeof(lean) / sizeof(lean[0]); i++) {
+		bool upright = lean[i] < 30 || lean[i] > 150;
+		struct tree t;
+		struct rng rng;
+		int id;
+
+		tree_init(&t);
+		CHECK_INT(add_straight_trunk(&t, lean[i], 70), 0);
+		CHECK_INT(add_child(&t, 0, 0.3, 30, 60, 1.5, 0.1, 0.05, 5), 1);
+		CHECK(upright_at(&t, 0, 0.65) == upright);
+		rng_seed(&rng, 1);
+		id = check_add(&t, 0, &rng);
+		CHECK_NEAR(rot_of(&t, &t.branches[id]), (upright ? -150 : -120) * DEG, EPS);
+		tree_finish(&t);
+	}
 }
 
 /* Many more: every add still keeps to the rules and the spread keeps filling in. */
@@ -505,9 +639,8 @@ static void test_many(void)
 	CHECK_INT(n, 65);
 	for (size_t i = 0; i < n; i++)
 		rot[i] = rot_of(&t, &t.branches[k[i]]);
-	/* no allowed rotation is more than 10 degrees from some child */
-	for (double g = -120; g <= 120; g += 0.25)
-		worst = fmax(worst, clearance(rot, n, g * DEG));
+	/* the drawn trunk is upright: no rotation is more than 10 degrees from some child */
+	worst = worst_clearance(rot, n);
 	CHECK(worst < 10 * DEG);
 	/* the new ones stay within the span of the children there were */
 	for (size_t i = 9; i < t.nbranches; i++)
@@ -564,8 +697,8 @@ static void test_single_child(void)
 		CHECK_NEAR(t.branches[id].parent_t, want[i], 1e-15);
 		CHECK_NEAR(tree_branch_length(&t.branches[id]), tree_branch_length(&t.branches[1]),
 			   1e-12);
-		/* opposite the child is 210 degrees from up: the nearest allowed is -120 */
-		CHECK_NEAR(rot_of(&t, &t.branches[id]), -120 * DEG, EPS);
+		/* the drawn trunk is upright: opposite the child, 210 degrees from up */
+		CHECK_NEAR(rot_of(&t, &t.branches[id]), -150 * DEG, EPS);
 		adds_then_removes(&t, 0, 2, 10);
 		tree_finish(&t);
 	}
@@ -632,11 +765,19 @@ static void test_degenerate(void)
 	CHECK_INT(tree_add_branch(&t, 0, 0.2, ORIGIN_SKETCH, kid, radii, 3), 1);
 	CHECK_INT(tree_add_branch(&t, 0, 0.7, ORIGIN_SKETCH, kid2, radii, 2), 2);
 	for (int i = 0; i < 5; i++) {
+		int k[MAXK];
+		double rot[MAXK];
+		size_t n = kids(&t, 0, k);
+
+		for (size_t j = 0; j < n; j++)
+			rot[j] = rot_of(&t, &t.branches[k[j]]);
 		id = clone_add(&t, 0, &rng);
 		CHECK(id >= 3);
 		CHECK(finite_branch(&t.branches[id]));
 		CHECK(memcmp(&t.branches[id].points[0], &still[0], sizeof(still[0])) == 0);
-		CHECK(fabs(rot_of(&t, &t.branches[id])) <= 120 * DEG + EPS);
+		/* its head is world up: upright, the full circle */
+		CHECK(upright_at(&t, 0, t.branches[id].parent_t));
+		check_rotation(rot, n, rot_of(&t, &t.branches[id]), true);
 	}
 	tree_finish(&t);
 
@@ -755,6 +896,8 @@ int main(void)
 	test_trunk_ten();
 	test_branch_ten();
 	test_vertical_trunk();
+	test_leaning_trunk();
+	test_upright_limit();
 	test_many();
 	test_determinism();
 	test_single_child();
