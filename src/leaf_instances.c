@@ -68,14 +68,11 @@ static bool finite3(struct vec3 v)
 	return isfinite(v.x) && isfinite(v.y) && isfinite(v.z);
 }
 
+/* One multiply a value: keys only spread candidates over the table. */
 static uint64_t mix(uint64_t h, uint64_t v)
 {
-	/* FNV-1a over the value's bytes, then a splitmix finaliser at the end */
-	for (int i = 0; i < 8; i++) {
-		h ^= (v >> (8 * i)) & 0xff;
-		h *= 0x100000001b3ull;
-	}
-	return h;
+	h = (h ^ v) * 0x9e3779b97f4a7c15ull;
+	return h ^ (h >> 29);
 }
 
 static uint64_t finalise(uint64_t h)
