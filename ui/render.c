@@ -22,7 +22,7 @@ static const char tree_vs[] =
 	"	gl_Position = u_mvp * vec4(a_position, 1.0);\n"
 	"}\n";
 
-static const char tree_fs[] =
+const char render_tree_fs[] =
 	"precision mediump float;\n"
 	"uniform vec3 u_color;\n"
 	"uniform vec3 u_light;\n"
@@ -81,7 +81,8 @@ struct render *render_create(void)
 	batch_init(&r->batch);
 	drain_gl_errors();
 
-	r->tree_program = render_program("tree", tree_vs, tree_fs, tree_attribs, tree_locations, 2);
+	r->tree_program =
+		render_program("tree", tree_vs, render_tree_fs, tree_attribs, tree_locations, 2);
 	r->flat_program = render_program("flat", flat_vs, flat_fs, flat_attribs, flat_locations, 2);
 	if (!r->tree_program || !r->flat_program)
 		goto fail;
@@ -94,6 +95,8 @@ struct render *render_create(void)
 
 	r->uint_indices = render_gl_major_version() >= 3 ||
 			  render_has_extension("GL_OES_element_index_uint");
+	/* a program that will not build leaves the merged leaves, as on GLES 2 */
+	r->instanced = render_gl_major_version() >= 3 && render_instanced_create(r) == 0;
 	if (glGetError() != GL_NO_ERROR) {
 		fprintf(stderr, "render: GL error while setting up\n");
 		goto fail;
@@ -110,6 +113,7 @@ void render_destroy(struct render *r)
 		return;
 	render_mesh_finish(&r->bark);
 	render_mesh_finish(&r->leaves);
+	render_instanced_finish(r);
 	render_previews_finish(r);
 	glDeleteBuffers(1, &r->flat_vbo);
 	glDeleteProgram(r->tree_program);
@@ -163,17 +167,37 @@ static int flush_batch(struct render *r, const float proj[16])
 	return 0;
 }
 
-static int upload_tree(struct render *r, const struct app *app)
+/* The leaves are app->tree's, drawn instanced, when instancing is on and there are leaves;
+ * an app whose leaves are only in app->mesh (the render tests' hand-made scenes) has its
+ * merged leaves drawn. */
+static bool leaves_instanced(const struct render *r, const struct app *app)
 {
+	return r->instanced && app->tree.nleaves > 0 && app->mesh.leaves.nindices > 0;
+}
+
+int render_upload_tree(struct render *r, const struct app *app)
+{
+	bool inst = leaves_instanced(r, app);
 	int ret;
 
-	if (r->uploaded && r->mesh_serial == app->mesh_serial)
+	if (r->uploaded && r->mesh_serial == app->mesh_serial && r->uploaded_instanced == inst)
 		return 0;
 	/* not marked uploaded until both succeed, so a failure is retried next frame */
 	r->uploaded = false;
+	r->upload_bytes = 0;
 	ret = render_mesh_upload(&r->bark, &app->mesh.bark, r->uint_indices);
-	if (ret == 0)
+	r->upload_bytes += r->bark.bytes;
+	if (ret == 0 && inst) {
+		/* the leaves go one way or the other: the unused copy gives its memory back */
+		render_mesh_finish(&r->leaves);
+		ret = render_instanced_upload(r, &app->tree);
+	} else if (ret == 0) {
+		if (r->instanced)
+			render_instanced_clear(r);
 		ret = render_mesh_upload(&r->leaves, &app->mesh.leaves, r->uint_indices);
+		r->upload_bytes += r->leaves.bytes;
+	}
+	r->uploaded_instanced = inst;
 	r->stats.uploads += 2;
 	if (ret < 0)
 		return ret;
@@ -186,7 +210,7 @@ static int draw_tree(struct render *r, const struct app *app, const struct camer
 		     const float light[3])
 {
 	float mvp[16];
-	int ret = upload_tree(r, app);
+	int ret = render_upload_tree(r, app);
 
 	view_clip_matrix(&app->view, xf, mvp);
 	glEnable(GL_DEPTH_TEST);
@@ -208,7 +232,13 @@ static int draw_tree(struct render *r, const struct app *app, const struct camer
 	glDisable(GL_CULL_FACE);
 	glUniform1i(r->tree_two_sided, 1);
 	glUniform3fv(r->tree_color, 1, leaf_color);
-	render_mesh_draw(r, &r->leaves);
+	if (r->uploaded_instanced) {
+		/* the leaves that are no shape's copies, merged; then a call a shape */
+		render_mesh_draw(r, &r->inst.loose);
+		render_instanced_draw(r, mvp, light, leaf_color);
+	} else {
+		render_mesh_draw(r, &r->leaves);
+	}
 
 	glDisable(GL_DEPTH_TEST);
 	return ret;

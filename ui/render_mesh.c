@@ -43,6 +43,7 @@ static int upload_expanded(struct render_mesh *rm, const struct mesh *m)
 	free(positions);
 	free(normals);
 	rm->indexed = false;
+	rm->bytes = 2 * n * 3 * sizeof(float);
 	return 0;
 }
 
@@ -52,6 +53,7 @@ int render_mesh_upload(struct render_mesh *rm, const struct mesh *m, bool uint_i
 
 	rm->count = 0;
 	rm->ntriangles = 0;
+	rm->bytes = 0;
 	if (m->nindices > INT_MAX || m->nindices % 3 != 0)
 		return -EINVAL;
 	/* an index past the vertices would read outside the buffer: refuse the mesh */
@@ -68,6 +70,7 @@ int render_mesh_upload(struct render_mesh *rm, const struct mesh *m, bool uint_i
 		buffer_data(&rm->indices, GL_ELEMENT_ARRAY_BUFFER, m->nindices * sizeof(uint32_t),
 			    m->indices);
 		rm->indexed = true;
+		rm->bytes = 2 * m->nvertices * 3 * sizeof(float) + m->nindices * sizeof(uint32_t);
 	} else {
 		r = upload_expanded(rm, m);
 		if (r < 0)

@@ -10,16 +10,19 @@
 #include "arrange.h"
 #include "batch.h"
 #include "camera.h"
+#include "leaf_instances.h"
 #include "render.h"
 
 struct app;
 struct mesh;
+struct tree;
 
 /* Attribute locations, bound before linking so all programs agree. */
 enum {
 	ATTR_POSITION = 0,
 	ATTR_NORMAL = 1, /* tree program */
 	ATTR_COLOR = 1,  /* flat program */
+	ATTR_ROW0 = 2,   /* instanced leaves: the rows of each instance's 3x4 matrix, 2..4 */
 };
 
 /* A tree mesh on the GPU. */
@@ -28,6 +31,23 @@ struct render_mesh {
 	GLsizei count;     /* indices to draw, or vertices when not indexed */
 	bool indexed;      /* false: expanded to a plain triangle list */
 	size_t ntriangles;
+	size_t bytes;      /* uploaded by the last render_mesh_upload */
+};
+
+/*
+ * Leaves drawn instanced (GLES 3, render_instanced.c): each shape leaf_instances finds
+ * with copies is one mesh drawn once for all of them, each instance's 3x4 matrix a vertex
+ * attribute that advances per instance; the leaves no other is a copy of, merged, drawn
+ * as before with the tree program.
+ */
+struct render_instanced {
+	GLuint program;
+	GLint mvp, color, light, two_sided;
+	struct render_mesh shapes[LEAF_INSTANCES_MAX_SHAPES];
+	size_t first[LEAF_INSTANCES_MAX_SHAPES], count[LEAF_INSTANCES_MAX_SHAPES];
+	size_t nshapes;
+	GLuint matrices; /* 12 floats an instance, shape by shape */
+	struct render_mesh loose;
 };
 
 struct render {
@@ -42,9 +62,16 @@ struct render {
 	/* GLES 3 or OES_element_index_uint; without it meshes are expanded on upload */
 	bool uint_indices;
 
+	/* GLES 3 with the instanced program: leaves of app->tree are drawn instanced (tests
+	 * may turn it off to draw the merged app->mesh.leaves, as GLES 2 does) */
+	bool instanced;
+
 	struct render_mesh bark, leaves;
+	struct render_instanced inst;
 	bool uploaded;       /* the meshes hold mesh_serial's tree */
+	bool uploaded_instanced; /* ...its leaves in inst, not in leaves */
 	uint64_t mesh_serial;
+	size_t upload_bytes; /* what the last upload of the tree sent to the GPU */
 
 	/* the leaf suggestions' thumbnails */
 	struct render_mesh preview_bark[ARRANGE_COUNT], preview_leaves[ARRANGE_COUNT];
@@ -54,6 +81,12 @@ struct render {
 	struct batch batch;
 	struct render_stats stats;
 };
+
+/* render.c: the tree program's fragment shader (the instanced program shares it) */
+extern const char render_tree_fs[];
+/* Uploads the tree's meshes if mesh_serial changed (render_frame does it first): for
+ * benchmarks. 0 or a negative errno. */
+int render_upload_tree(struct render *r, const struct app *app);
 
 /* render_gl.c: a linked program with attributes at the given locations, or 0 (stderr says why). */
 GLuint render_program(const char *name, const char *vertex_src, const char *fragment_src,
@@ -65,6 +98,18 @@ int render_gl_major_version(void);
 int render_mesh_upload(struct render_mesh *rm, const struct mesh *m, bool uint_indices);
 void render_mesh_draw(struct render *r, const struct render_mesh *rm);
 void render_mesh_finish(struct render_mesh *rm);
+
+/* render_instanced.c (GLES 3 only). create: 0, or -1 (stderr says why; draw merged).
+ * upload: the shapes, their matrices and the loose leaves of t; 0 or a negative errno
+ * (then nothing is drawn until the next upload). draw: with the tree program's lighting,
+ * counted in r->stats. */
+int render_instanced_create(struct render *r);
+int render_instanced_upload(struct render *r, const struct tree *t);
+void render_instanced_draw(struct render *r, const float mvp[16], const float light[3],
+			   const float color[3]);
+/* Frees the GPU copies (the program stays until finish). */
+void render_instanced_clear(struct render *r);
+void render_instanced_finish(struct render *r);
 
 /* render_ui.c: the 2D layers, added to r->batch. */
 void render_ui_ground(struct batch *b, const struct app *app);

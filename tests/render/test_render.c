@@ -2,14 +2,17 @@
 /*
  * The renderer beyond its pictures: meshes upload only when mesh_serial changes, the
  * expanded-index fallback draws the same pixels, broken meshes are refused, strokes are
- * antialiased, and the draw-call count stays small.
+ * antialiased, the draw-call count stays small, and leaves drawn instanced (GLES 3) look
+ * as the merged ones do, at a call a shape.
  */
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "app.h"
+#include "arrange.h"
 #include "egl_headless.h"
+#include "propagate.h"
 #include "render.h"
 #include "render_private.h"
 #include "scene.h"
@@ -93,6 +96,178 @@ static void test_upload_only_on_serial(void)
 	render_destroy(r);
 	fixture_finish(&f);
 	scene_finish(&app);
+}
+
+/* A branch from root (or from the point at pt on parent) along dir, curving to bend. */
+static int add_bent(struct tree *t, int parent, double pt, struct vec3 root, struct vec3 dir,
+		    struct vec3 bend, double len, double r0)
+{
+	struct vec3 p[8];
+	double r[8], l0;
+	int id;
+
+	if (parent >= 0)
+		root = tree_frame_at(&t->branches[parent], pt).origin;
+	for (int k = 0; k < 8; k++) {
+		double s = k / 7.0;
+
+		p[k] = vec3_add(vec3_scale(dir, s), vec3_scale(bend, s * s));
+		r[k] = r0 * (1.0 - 0.7 * s);
+	}
+	l0 = vec3_polyline_length(p, 8);
+	for (int k = 0; k < 8; k++)
+		p[k] = vec3_add(root, vec3_scale(p[k], len / l0));
+	id = tree_add_branch(t, parent, parent >= 0 ? pt : 0.0, ORIGIN_SKETCH, p, r, 8);
+	CHECK(id >= 0);
+	return id;
+}
+
+/* A lobed leaf of n points beside branch b at u, tilted out of the picture plane. */
+static void add_leaf(struct tree *t, int b, double u, double size, int n, double lobe)
+{
+	struct tree_frame f = tree_frame_at(&t->branches[b], u);
+	struct vec3 p[16];
+	int id;
+
+	for (int i = 0; i < n; i++) {
+		double a = 2.0 * VEC_PI * i / n, l = i % 2 ? lobe : 1.0;
+		struct vec3 across = vec3_scale(f.normal, size * l * (1.0 + cos(a)));
+		struct vec3 along = vec3_scale(f.tangent, 0.5 * size * l * sin(a));
+		struct vec3 out = vec3_scale(f.binormal, 0.4 * size * (1.0 + cos(a)));
+
+		p[i] = vec3_add(f.origin, vec3_add(across, vec3_add(along, out)));
+	}
+	id = tree_add_leaf(t, b, ORIGIN_SKETCH, p, (size_t)n);
+	CHECK(id >= 0);
+	t->leaves[id].branch_t = u;
+	CHECK_INT(tree_leaf_attach(t, (size_t)id), 0);
+}
+
+/*
+ * An app holding a 3D tree of 24 branches made as a visitor would: a leaf drawn on one
+ * branch and whorl-added, another drawn there, propagated onto every branch (fixed
+ * count), then one more leaf drawn by hand: 2 shapes with copies, one leaf of its own.
+ * Meshes as app.c builds them.
+ */
+static void leafy_app(struct app *app, int width, int height, struct camera cam)
+{
+	struct tree *t = &app->tree;
+	int trunk, s;
+
+	memset(app, 0, sizeof(*app));
+	view_init(&app->view, width, height);
+	tree_init(t);
+	tree_mesh_init(&app->mesh);
+	trunk = add_bent(t, -1, 0, vec3(0, 0, 0), vec3(0, 1, 0), vec3(0.4, 0, 0.3), 6.0, 0.3);
+	for (int k = 0; k < 23; k++) {
+		double a = 2.4 * k, up = 0.3 + 0.03 * k;
+		int parent = k < 8 ? trunk : 1 + (k % 8);
+
+		struct vec3 dir = vec3(cos(a), up + (k < 8 ? 0.2 : 0.6), sin(a));
+
+		add_bent(t, parent, 0.35 + 0.025 * k, vec3(0, 0, 0), dir,
+			 vec3(0, 0.3, 0.1 * (k % 3)), k < 8 ? 2.2 - 0.1 * k : 0.9,
+			 k < 8 ? 0.08 : 0.03);
+	}
+	s = 3;
+	add_leaf(t, s, 0.8, 0.22, 9, 0.6);
+	CHECK_INT(arrange_apply(t, s, ARRANGE_WHORL_ADD), 1);
+	add_leaf(t, s, 0.5, 0.18, 7, 0.8);
+	CHECK(propagate_apply(t, s, PROPAGATE_FIXED_COUNT) > 40);
+	add_leaf(t, 0, 0.55, 0.3, 8, 0.5);
+	t->lifted = true;
+	app->camera = cam;
+	CHECK_INT(tree_mesh_build(&app->mesh, t), 0);
+	app->mesh_serial = 1;
+}
+
+static void leafy_finish(struct app *app)
+{
+	tree_mesh_finish(&app->mesh);
+	tree_finish(&app->tree);
+	memset(app, 0, sizeof(*app));
+}
+
+/* Pixels whose channels differ by more than max_diff. */
+static size_t differing(const uint8_t *a, const uint8_t *b, size_t size, int max_diff)
+{
+	size_t n = 0;
+
+	for (size_t i = 0; i < size; i += 4) {
+		bool d = false;
+
+		for (int c = 0; c < 4; c++)
+			d = d || abs((int)a[i + c] - (int)b[i + c]) > max_diff;
+		n += d;
+	}
+	return n;
+}
+
+/* Leaves drawn instanced (GLES 3) and merged (GLES 2's way, forced): the same picture
+ * within imgcmp's golden tolerance, from the front and turned; a call a shape with
+ * copies, one for the leaves that are no copies; less uploaded. */
+static void test_instanced(void)
+{
+	static const struct camera cams[] = { { 0.0f, 0.0f }, { 70.0f, 35.0f },
+					      { 200.0f, -20.0f } };
+	struct fixture f;
+	struct app app;
+	struct render *inst, *merged;
+	struct render_stats si, sm;
+	struct leaf_instances li;
+
+	fixture_init(&f, 640, 400);
+	inst = render_create();
+	merged = render_create();
+	CHECK(inst && merged);
+	CHECK(inst->instanced); /* Mesa gives GLES 3 */
+	merged->instanced = false;
+	for (size_t c = 0; c < sizeof(cams) / sizeof(cams[0]); c++) {
+		size_t diff;
+
+		leafy_app(&app, 640, 400, cams[c]);
+		app.mesh_serial = 10 * (c + 1); /* a new tree to the renderers */
+		leaf_instances_init(&li);
+		CHECK_INT(leaf_instances_build(&li, &app.tree), 0);
+		CHECK_INT(li.ninstanced_shapes, 2);
+		CHECK_INT(li.ninstanced, app.tree.nleaves - 1);
+
+		draw(&f, inst, &app, f.a);
+		render_get_stats(inst, &si);
+		draw(&f, merged, &app, f.b);
+		render_get_stats(merged, &sm);
+		CHECK(inst->uploaded_instanced && !merged->uploaded_instanced);
+		CHECK_INT(si.uploads, 2);
+		CHECK_INT(sm.uploads, 2);
+		/* ground, bark, the loose leaf, 2 shapes, stroke + buttons + cursor */
+		CHECK_INT(sm.draw_calls, 4);
+		CHECK_INT(si.draw_calls, 3 + 1 + li.ninstanced_shapes);
+		CHECK_INT(si.tree_triangles, sm.tree_triangles);
+		CHECK_INT(si.triangles, sm.triangles);
+		CHECK(inst->upload_bytes < merged->upload_bytes);
+
+		diff = differing(f.a, f.b, f.size, 8);
+		fprintf(stderr, "instanced vs merged, camera %zu: %zu pixels differ by more "
+				"than 8, %zu by more than 0; %zu vs %zu bytes uploaded\n",
+			c, diff, differing(f.a, f.b, f.size, 0), inst->upload_bytes,
+			merged->upload_bytes);
+		CHECK(diff <= f.size / 4 / 1000);
+		/* the leaves are there: the picture differs without them */
+		app.tree.nleaves = 0;
+		app.mesh.leaves.nindices = 0;
+		app.mesh_serial++;
+		draw(&f, inst, &app, f.b);
+		render_get_stats(inst, &si);
+		CHECK(!inst->uploaded_instanced);
+		CHECK_INT(si.draw_calls, 3);
+		CHECK(differing(f.a, f.b, f.size, 8) > 1000);
+		app.tree.nleaves = li.ninstances;
+		leaf_instances_finish(&li);
+		leafy_finish(&app);
+	}
+	render_destroy(inst);
+	render_destroy(merged);
+	fixture_finish(&f);
 }
 
 /* GLES 2 without OES_element_index_uint expands meshes: same pixels. */
@@ -274,6 +449,7 @@ int main(void)
 	test_turn();
 	test_upload_only_on_serial();
 	test_expanded_indices();
+	test_instanced();
 	test_bad_mesh();
 	test_empty();
 	test_antialiased_stroke();
