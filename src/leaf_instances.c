@@ -94,9 +94,11 @@ struct leaf_facts {
 
 static bool leaf_facts(const struct leaf *l, struct leaf_facts *f)
 {
+	const struct vec3 *p = l->points;
 	size_t n = l->npoints;
-	double perimeter = 0.0;
+	double edges2 = 0.0, steps;
 	uint64_t h = 0xcbf29ce484222325ull;
+	struct vec3 prev;
 
 	f->c = vec3(0, 0, 0);
 	f->size = f->norm2 = 0.0;
@@ -104,28 +106,35 @@ static bool leaf_facts(const struct leaf *l, struct leaf_facts *f)
 	if (n < 3)
 		return false;
 	for (size_t k = 0; k < n; k++) {
-		if (!finite3(l->points[k]))
+		if (!finite3(p[k]))
 			return false;
-		f->c = vec3_add(f->c, l->points[k]);
+		f->c = vec3_add(f->c, p[k]);
 	}
 	f->c = vec3_scale(f->c, 1.0 / (double)n);
+	prev = p[n - 1];
 	for (size_t k = 0; k < n; k++) {
-		struct vec3 e = vec3_sub(l->points[k], f->c);
+		struct vec3 e = vec3_sub(p[k], f->c), d = vec3_sub(p[k], prev);
 		double e2 = vec3_dot(e, e);
 
 		f->norm2 += e2;
 		if (e2 > f->size)
 			f->size = e2;
-		perimeter += vec3_dist(l->points[k], l->points[(k + 1) % n]);
+		edges2 += vec3_dot(d, d);
+		prev = p[k];
 	}
 	f->size = sqrt(f->size);
-	if (!(f->size > 0) || !(perimeter > 0) || !isfinite(f->norm2))
+	if (!(f->size > 0) || !(edges2 > 0) || !isfinite(f->norm2) || !isfinite(edges2))
 		return false;
+	/* squared edge lengths as fractions of their sum: no square roots, the same for
+	 * every turn, scale and move of the outline */
+	steps = LEAF_INSTANCES_KEY_STEPS / edges2;
 	h = mix(h, (uint64_t)n);
+	prev = p[n - 1];
 	for (size_t k = 0; k < n; k++) {
-		double q = vec3_dist(l->points[k], l->points[(k + 1) % n]) / perimeter;
+		struct vec3 d = vec3_sub(p[k], prev);
 
-		h = mix(h, (uint64_t)floor(q * LEAF_INSTANCES_KEY_STEPS + 0.5));
+		h = mix(h, (uint64_t)(vec3_dot(d, d) * steps + 0.5));
+		prev = p[k];
 	}
 	f->key = finalise(h);
 	return true;
@@ -143,11 +152,6 @@ static bool frame_of(struct vec3 a, struct vec3 b, struct vec3 fr[3])
 	fr[2] = vec3_scale(x, 1.0 / lx);
 	fr[1] = vec3_cross(fr[2], fr[0]);
 	return true;
-}
-
-static double comp(struct vec3 v, int i)
-{
-	return i == 0 ? v.x : i == 1 ? v.y : v.z;
 }
 
 static struct vec3 apply(const double xf[12], struct vec3 d)
@@ -179,14 +183,18 @@ static bool fit(const struct leaf_shape *s, const struct leaf *base, const struc
 		return false;
 	scale = sqrt(f->norm2 / s->norm2);
 	/* M = scale * G F^T: takes the base's frame to the leaf's */
-	for (int r = 0; r < 3; r++) {
-		for (int c = 0; c < 3; c++) {
-			double m = 0.0;
+	{
+		const double gm[3][3] = { { g[0].x, g[0].y, g[0].z },
+					  { g[1].x, g[1].y, g[1].z },
+					  { g[2].x, g[2].y, g[2].z } };
+		const double fm[3][3] = { { s->frame[0].x, s->frame[0].y, s->frame[0].z },
+					  { s->frame[1].x, s->frame[1].y, s->frame[1].z },
+					  { s->frame[2].x, s->frame[2].y, s->frame[2].z } };
 
-			for (int j = 0; j < 3; j++)
-				m += comp(g[j], r) * comp(s->frame[j], c);
-			xf[4 * r + c] = scale * m;
-		}
+		for (int r = 0; r < 3; r++)
+			for (int c = 0; c < 3; c++)
+				xf[4 * r + c] = scale * (gm[0][r] * fm[0][c] + gm[1][r] * fm[1][c] +
+							 gm[2][r] * fm[2][c]);
 	}
 	xf[3] = f->c.x;
 	xf[7] = f->c.y;

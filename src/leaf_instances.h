@@ -23,10 +23,10 @@
  * the leaf give another; the rotation takes one to the other and the scale is the ratio
  * of the outlines' root-mean-square sizes. It is accepted when every point lands within
  * LEAF_INSTANCES_TOLERANCE x the leaf's size (its largest distance from its centroid).
- * Candidates are found by a key, the point count and the edge lengths as fractions of
- * the perimeter quantised to 1/LEAF_INSTANCES_KEY_STEPS, hashed: grouping costs about
- * the same for every leaf. Leaves with a non-finite point, fewer than 3 points or all on
- * a line (no frame) are shapes of their own and never matched.
+ * Candidates are found by a key, the point count and the squared edge lengths as
+ * fractions of their sum quantised to 1/LEAF_INSTANCES_KEY_STEPS, hashed: grouping costs
+ * about the same for every leaf. Leaves with a non-finite point, fewer than 3 points or
+ * all on a line (no frame) are shapes of their own and never matched.
  *
  * Which shapes are drawn instanced: those with at least LEAF_INSTANCES_MIN_COPIES
  * instances, at most LEAF_INSTANCES_MAX_SHAPES of them (the ones with the most instances;
