@@ -47,6 +47,7 @@ int render_instanced_create(struct render *r)
 					    ATTR_ROW0 + 2 };
 	struct render_instanced *in = &r->inst;
 
+	leaf_instances_init(&in->li);
 	in->program = render_program("instanced leaves", instanced_vs, render_tree_fs, attribs,
 				     locations, 5);
 	if (!in->program)
@@ -68,6 +69,7 @@ void render_instanced_clear(struct render *r)
 	glDeleteBuffers(1, &in->matrices);
 	in->matrices = 0;
 	in->nshapes = 0;
+	leaf_instances_finish(&in->li);
 }
 
 void render_instanced_finish(struct render *r)
@@ -117,17 +119,13 @@ static int upload(struct render *r, const struct leaf_instances *li)
 
 int render_instanced_upload(struct render *r, const struct tree *t)
 {
-	struct leaf_instances li;
 	int ret;
 
 	r->inst.nshapes = 0;
 	r->inst.loose.count = 0;
-	/* built afresh each time and let go: the GPU holds what is drawn */
-	leaf_instances_init(&li);
-	ret = leaf_instances_build(&li, t);
+	ret = leaf_instances_build(&r->inst.li, t);
 	if (ret == 0)
-		ret = upload(r, &li);
-	leaf_instances_finish(&li);
+		ret = upload(r, &r->inst.li);
 	if (ret < 0) {
 		r->inst.nshapes = 0;
 		r->inst.loose.count = 0;

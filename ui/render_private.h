@@ -48,6 +48,9 @@ struct render_instanced {
 	size_t nshapes;
 	GLuint matrices; /* 12 floats an instance, shape by shape */
 	struct render_mesh loose;
+	/* the grouping, kept between uploads: its arrays are reused (an edit regroups every
+	 * leaf; warm, that is ~0.3 us a leaf on the 2-core VM) */
+	struct leaf_instances li;
 };
 
 struct render {
