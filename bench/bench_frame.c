@@ -8,7 +8,10 @@
  * done, not the work queued.
  * Then the tree propagation makes: 20 leaves on one branch propagated (fixed count) onto
  * every branch of 250..1,000-branch trees, up to 20,000 leaves: the propagation's time,
- * and the frame's time and draw calls.
+ * and, with the leaves drawn instanced (GLES 3: a call a leaf shape, leaf_instances.c) and
+ * merged (one mesh of every leaf, as on GLES 2): the frame's time and draw calls, the
+ * upload alone (what follows an edit: grouping the leaves included) and the bytes it
+ * sends to the GPU.
  */
 #include <GLES2/gl2.h>
 #include <errno.h>
@@ -22,6 +25,7 @@
 #include "mesh.h"
 #include "propagate.h"
 #include "render.h"
+#include "render_private.h"
 #include "synth_tree.h"
 
 #define WIDTH 1280
@@ -34,8 +38,8 @@ static const int sizes[] = { 62, 125, 250, 500 };
 #define NSIZES (sizeof(sizes) / sizeof(sizes[0]))
 
 struct result {
-	double upload_s, steady_s, readback_s;
-	size_t triangles, tree_triangles;
+	double upload_s, steady_s, readback_s, upload_only_s;
+	size_t triangles, tree_triangles, upload_bytes, leaf_bytes;
 	unsigned draw_calls;
 };
 
@@ -71,6 +75,31 @@ static void steady_frame(void *arg)
 	frame(arg);
 }
 
+/* The tree's upload alone, as after an edit. */
+static void upload_only(void *arg)
+{
+	struct bench *b = arg;
+	int r;
+
+	b->app.mesh_serial++;
+	r = render_upload_tree(b->render, &b->app);
+	if (r < 0 && !b->failed) {
+		fprintf(stderr, "bench_frame: upload: %s\n", strerror(-r));
+		b->failed = r;
+	}
+	glFinish();
+}
+
+/* Replaces the app's tree (taking t's contents) and builds its meshes. */
+static int set_tree(struct bench *b, struct tree *t)
+{
+	tree_finish(&b->app.tree);
+	b->app.tree = *t;
+	tree_init(t);
+	b->app.mesh_serial++;
+	return tree_mesh_build(&b->app.mesh, &b->app.tree);
+}
+
 static void readback(void *arg)
 {
 	struct bench *b = arg;
@@ -91,7 +120,7 @@ static int measure(struct bench *b, int nbranches, struct result *res)
 	tree_init(&t);
 	r = synth_tree(&t, nbranches, LEAVES_PER_BRANCH, SEED);
 	if (r == 0)
-		r = tree_mesh_build(&b->app.mesh, &t);
+		r = set_tree(b, &t);
 	tree_finish(&t);
 	if (r < 0) {
 		fprintf(stderr, "bench_frame: building a %d-branch tree: %s\n", nbranches,
@@ -112,13 +141,33 @@ static const int prop_sizes[] = { 250, 500, 1000 };
 #define NPROP (sizeof(prop_sizes) / sizeof(prop_sizes[0]))
 #define PROP_LEAVES 20
 
+/* Frames, upload and stats of the app's tree, leaves instanced or merged. */
+static int measure_mode(struct bench *b, bool instanced, struct result *res)
+{
+	bool could = b->render->instanced;
+	struct render_stats st;
+
+	b->render->instanced = could && instanced;
+	res->upload_s = bench_run(upload_frame, b, FRAMES);
+	res->upload_bytes = b->render->upload_bytes;
+	res->leaf_bytes = res->upload_bytes - b->render->bark.bytes;
+	res->steady_s = bench_run(steady_frame, b, FRAMES);
+	render_get_stats(b->render, &st);
+	res->triangles = st.triangles;
+	res->tree_triangles = st.tree_triangles;
+	res->draw_calls = st.draw_calls;
+	res->upload_only_s = bench_run(upload_only, b, FRAMES);
+	b->render->instanced = could;
+	return b->failed;
+}
+
 /* A tree of n branches whose last twig (no children: only leaves are copied) carries 20
- * leaves, then propagated everywhere. */
-static int measure_propagated(struct bench *b, int n, struct result *res, double *prop_s,
-			      size_t *nleaves)
+ * leaves, then propagated everywhere. res[0] instanced, res[1] merged. */
+static int measure_propagated(struct bench *b, int n, struct result res[2], double *prop_s,
+			      size_t *nleaves, size_t *nshapes)
 {
 	struct tree t;
-	struct render_stats st;
+	struct leaf_instances li;
 	bool *drop = NULL;
 	double t0;
 	int r;
@@ -139,44 +188,79 @@ static int measure_propagated(struct bench *b, int n, struct result *res, double
 		*nleaves = t.nleaves;
 	}
 	if (r >= 0)
-		r = tree_mesh_build(&b->app.mesh, &t);
+		r = set_tree(b, &t);
 	free(drop);
 	tree_finish(&t);
+	leaf_instances_init(&li);
+	if (r >= 0)
+		r = leaf_instances_build(&li, &b->app.tree);
+	*nshapes = li.ninstanced_shapes;
+	leaf_instances_finish(&li);
 	if (r < 0) {
 		fprintf(stderr, "bench_frame: propagating on %d branches: %s\n", n, strerror(-r));
 		return r;
 	}
-	res->upload_s = bench_run(upload_frame, b, FRAMES);
-	res->steady_s = bench_run(steady_frame, b, FRAMES);
-	render_get_stats(b->render, &st);
-	res->triangles = st.triangles;
-	res->tree_triangles = st.tree_triangles;
-	res->draw_calls = st.draw_calls;
-	return b->failed;
+	if (measure_mode(b, true, &res[0]) < 0 || measure_mode(b, false, &res[1]) < 0)
+		return -1;
+	return 0;
+}
+
+static void rows(const char *name, const struct result res[][2], int mode,
+		 double (*get)(const struct result *))
+{
+	double prev_size = 0, prev_s = 0;
+
+	for (size_t i = 0; i < NPROP; i++)
+		bench_row(name, prop_sizes[i], get(&res[i][mode]), &prev_size, &prev_s);
+}
+
+static double get_upload(const struct result *r)
+{
+	return r->upload_s;
+}
+
+static double get_steady(const struct result *r)
+{
+	return r->steady_s;
+}
+
+static double get_upload_only(const struct result *r)
+{
+	return r->upload_only_s;
 }
 
 static int propagated(struct bench *b)
 {
-	struct result res[NPROP];
+	struct result res[NPROP][2];
 	double prop_s[NPROP], prev_size = 0, prev_s = 0;
-	size_t nleaves[NPROP];
+	size_t nleaves[NPROP], nshapes[NPROP];
 
 	for (size_t i = 0; i < NPROP; i++)
-		if (measure_propagated(b, prop_sizes[i], &res[i], &prop_s[i], &nleaves[i]) < 0)
+		if (measure_propagated(b, prop_sizes[i], res[i], &prop_s[i], &nleaves[i],
+				       &nshapes[i]) < 0)
 			return -1;
-	printf("\npropagated: %d leaves on one branch copied onto every branch (fixed count)\n",
-	       PROP_LEAVES);
-	for (size_t i = 0; i < NPROP; i++)
-		printf("  %4d branches: %6zu leaves, %8zu tree triangles, %u draw calls a frame\n",
-		       prop_sizes[i], nleaves[i], res[i].tree_triangles, res[i].draw_calls);
+	printf("\npropagated: %d leaves on one branch copied onto every branch (fixed count); "
+	       "leaves instanced (%s) and merged\n",
+	       PROP_LEAVES, b->render->instanced ? "GLES 3" : "not on this GLES 2 context");
+	for (size_t i = 0; i < NPROP; i++) {
+		printf("  %4d branches: %6zu leaves, %8zu tree triangles\n", prop_sizes[i],
+		       nleaves[i], res[i][0].tree_triangles);
+		printf("      instanced: %2zu leaf shapes, %3u draw calls a frame, %9zu bytes "
+		       "uploaded (leaves %9zu)\n",
+		       nshapes[i], res[i][0].draw_calls, res[i][0].upload_bytes,
+		       res[i][0].leaf_bytes);
+		printf("      merged:                 %3u draw calls a frame, %9zu bytes "
+		       "uploaded (leaves %9zu)\n",
+		       res[i][1].draw_calls, res[i][1].upload_bytes, res[i][1].leaf_bytes);
+	}
 	for (size_t i = 0; i < NPROP; i++)
 		bench_row("propagate (one run)", prop_sizes[i], prop_s[i], &prev_size, &prev_s);
-	prev_size = prev_s = 0;
-	for (size_t i = 0; i < NPROP; i++)
-		bench_row("frame with upload", prop_sizes[i], res[i].upload_s, &prev_size, &prev_s);
-	prev_size = prev_s = 0;
-	for (size_t i = 0; i < NPROP; i++)
-		bench_row("frame, steady", prop_sizes[i], res[i].steady_s, &prev_size, &prev_s);
+	rows("upload, instanced", res, 0, get_upload_only);
+	rows("upload, merged", res, 1, get_upload_only);
+	rows("frame with upload, instanced", res, 0, get_upload);
+	rows("frame with upload, merged", res, 1, get_upload);
+	rows("frame, steady, instanced", res, 0, get_steady);
+	rows("frame, steady, merged", res, 1, get_steady);
 	return 0;
 }
 
@@ -198,6 +282,7 @@ int main(void)
 		goto out;
 	/* what the kiosk shows while a child hovers: the tree, the buttons, the pen's ring */
 	view_init(&b.app.view, WIDTH, HEIGHT);
+	tree_init(&b.app.tree);
 	tree_mesh_init(&b.app.mesh);
 	b.app.pen.in_proximity = true;
 	b.app.pen.x = 400;
@@ -219,7 +304,7 @@ int main(void)
 	}
 
 	printf("bench_frame: %dx%d, llvmpipe, median of %d frames; size = branches "
-	       "(%d leaves each)\n",
+	       "(%d leaves each, every one its own shape)\n",
 	       WIDTH, HEIGHT, FRAMES, LEAVES_PER_BRANCH);
 	printf("first frame (render_create, shader compile, empty tree): %.3f ms\n", first_s * 1e3);
 	for (size_t i = 0; i < NSIZES; i++)
@@ -242,6 +327,7 @@ int main(void)
 out:
 	render_destroy(b.render);
 	tree_mesh_finish(&b.app.mesh);
+	tree_finish(&b.app.tree);
 	free(b.rgba);
 	egl_headless_destroy(b.egl);
 	return status;
