@@ -485,7 +485,8 @@ static int build(struct leaf_instances *li, const struct tree *t)
 			li->ntriangles += li->shapes[s].mesh.nindices / 3 * li->shapes[s].count;
 		}
 	}
-	if (r == 0)
+	/* with nothing instanced it would be the tree's whole leaves mesh, built already */
+	if (r == 0 && li->ninstanced_shapes > 0)
 		r = loose_mesh(li, t);
 	return r;
 }

@@ -33,7 +33,9 @@
  * ties: the earlier). Every other leaf (a drawn leaf nothing was copied from, and any
  * beyond that number of shapes) goes into one merged mesh, `loose`, built by
  * tree_mesh_build's code in world coordinates: a frame never costs more than
- * LEAF_INSTANCES_MAX_SHAPES + 1 draw calls for leaves, whatever a drawing holds.
+ * LEAF_INSTANCES_MAX_SHAPES + 1 draw calls for leaves, whatever a drawing holds. When no
+ * shape is instanced, loose is left empty: it would be tree_mesh_build's leaves mesh, which
+ * the caller has (ninstanced_shapes == 0 says so).
  *
  * An instanced shape's mesh is its base outline about the centroid (b_k - c)
  * triangulated by mesh.c (tree_mesh_append on a one-leaf tree): the triangles a merged
@@ -80,7 +82,8 @@ struct leaf_instances {
 	float *matrices;       /* xf as float, 12 an instance, in the order of instances */
 	size_t cap_matrices;   /* in instances */
 	size_t ninstanced_shapes;
-	struct mesh loose;     /* the leaves of shapes not instanced, in leaf order, world */
+	struct mesh loose;     /* the leaves of shapes not instanced, in leaf order, world;
+				* empty when no shape is instanced (see above) */
 	size_t ntriangles;     /* drawn instanced: each instanced shape's triangles x its count */
 
 	/* scratch, kept between builds */

@@ -190,7 +190,7 @@ int render_upload_tree(struct render *r, const struct app *app)
 	if (ret == 0 && inst) {
 		/* the leaves go one way or the other: the unused copy gives its memory back */
 		render_mesh_finish(&r->leaves);
-		ret = render_instanced_upload(r, &app->tree);
+		ret = render_instanced_upload(r, &app->tree, &app->mesh.leaves);
 	} else if (ret == 0) {
 		if (r->instanced)
 			render_instanced_clear(r);

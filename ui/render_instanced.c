@@ -79,7 +79,7 @@ void render_instanced_finish(struct render *r)
 	r->inst.program = 0;
 }
 
-static int upload(struct render *r, const struct leaf_instances *li)
+static int upload(struct render *r, const struct leaf_instances *li, const struct mesh *merged)
 {
 	struct render_instanced *in = &r->inst;
 	size_t k = 0;
@@ -96,8 +96,9 @@ static int upload(struct render *r, const struct leaf_instances *li)
 		r->upload_bytes += in->shapes[k].bytes;
 		k++;
 	}
+	/* nothing instanced: every leaf is loose, and the merged mesh is all of them */
 	if (ret == 0)
-		ret = render_mesh_upload(&in->loose, &li->loose, r->uint_indices);
+		ret = render_mesh_upload(&in->loose, k ? &li->loose : merged, r->uint_indices);
 	if (ret < 0)
 		return ret;
 	r->upload_bytes += in->loose.bytes;
@@ -117,7 +118,7 @@ static int upload(struct render *r, const struct leaf_instances *li)
 	return 0;
 }
 
-int render_instanced_upload(struct render *r, const struct tree *t)
+int render_instanced_upload(struct render *r, const struct tree *t, const struct mesh *merged)
 {
 	int ret;
 
@@ -125,7 +126,7 @@ int render_instanced_upload(struct render *r, const struct tree *t)
 	r->inst.loose.count = 0;
 	ret = leaf_instances_build(&r->inst.li, t);
 	if (ret == 0)
-		ret = upload(r, &r->inst.li);
+		ret = upload(r, &r->inst.li, merged);
 	if (ret < 0) {
 		r->inst.nshapes = 0;
 		r->inst.loose.count = 0;

@@ -103,11 +103,11 @@ void render_mesh_draw(struct render *r, const struct render_mesh *rm);
 void render_mesh_finish(struct render_mesh *rm);
 
 /* render_instanced.c (GLES 3 only). create: 0, or -1 (stderr says why; draw merged).
- * upload: the shapes, their matrices and the loose leaves of t; 0 or a negative errno
- * (then nothing is drawn until the next upload). draw: with the tree program's lighting,
- * counted in r->stats. */
+ * upload: the shapes, their matrices and the loose leaves of t (`merged`, t's leaves
+ * mesh, when no shape has copies); 0 or a negative errno (then nothing is drawn until the
+ * next upload). draw: with the tree program's lighting, counted in r->stats. */
 int render_instanced_create(struct render *r);
-int render_instanced_upload(struct render *r, const struct tree *t);
+int render_instanced_upload(struct render *r, const struct tree *t, const struct mesh *merged);
 void render_instanced_draw(struct render *r, const float mvp[16], const float light[3],
 			   const float color[3]);
 /* Frees the GPU copies (the program stays until finish). */

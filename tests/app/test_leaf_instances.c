@@ -4,7 +4,8 @@
  * instances of the leaf they copy; a different leaf is a shape of its own; each leaf comes
  * back from its shape and matrix within 1e-6 (double) and float precision (what the GPU
  * gets); the shapes' triangles are the ones mesh.c makes for each leaf; the leaves not
- * drawn instanced make the same mesh tree_mesh_build does; the cap on instanced shapes;
+ * drawn instanced make the same mesh tree_mesh_build does (none is built when no shape
+ * is instanced); the cap on instanced shapes;
  * degenerate leaves; determinism; allocation failures. Trees are built by hand, bent and
  * out of the picture plane. */
 #include <errno.h>
@@ -220,6 +221,12 @@ static void check_meshes(const struct leaf_instances *li, const struct tree *t)
 			rest.leaves[rest.nleaves++] = t->leaves[i];
 	}
 	CHECK_INT(rest.nleaves, n);
+	if (li->ninstanced_shapes == 0) {
+		/* nothing instanced: the whole leaves mesh is the caller's */
+		CHECK_INT(li->loose.nvertices + li->loose.nindices, 0);
+		free(rest.leaves);
+		return;
+	}
 	tree_mesh_init(&loose);
 	CHECK_INT(tree_mesh_append(&loose, &rest, 0, 0), 0);
 	CHECK_INT(loose.leaves.nvertices, li->loose.nvertices);
@@ -296,6 +303,29 @@ static void test_propagate_arrange(void)
 	CHECK(li.loose.nindices > 0);
 	check_all(&li, &t);
 
+	leaf_instances_finish(&li);
+	tree_finish(&t);
+}
+
+/* Leaves drawn by hand, none a copy: every one its own shape, none instanced, no loose
+ * mesh built (it would be tree_mesh_build's). */
+static void test_no_copies(void)
+{
+	struct tree t;
+	struct leaf_instances li;
+	int s = build_branches(&t);
+
+	for (int k = 0; k < 6; k++)
+		add_leaf(&t, s, 0.2 + 0.1 * k, 0.05, 7, 0.5 + 0.05 * k);
+	leaf_instances_init(&li);
+	CHECK_INT(leaf_instances_build(&li, &t), 0);
+	CHECK_INT(li.nshapes, 6);
+	CHECK_INT(li.ninstanced_shapes, 0);
+	CHECK_INT(li.ninstanced, 0);
+	CHECK_INT(li.ninstances, 6);
+	CHECK_INT(li.loose.nindices, 0);
+	CHECK_INT(li.ntriangles, 0);
+	check_all(&li, &t);
 	leaf_instances_finish(&li);
 	tree_finish(&t);
 }
@@ -614,6 +644,7 @@ int main(void)
 {
 	test_propagate_arrange();
 	test_fixed_size();
+	test_no_copies();
 	test_by_hand();
 	test_degenerate();
 	test_cap();

@@ -146,10 +146,10 @@ static void add_leaf(struct tree *t, int b, double u, double size, int n, double
 /*
  * An app holding a 3D tree of 24 branches made as a visitor would: a leaf drawn on one
  * branch and whorl-added, another drawn there, propagated onto every branch (fixed
- * count), then one more leaf drawn by hand: 2 shapes with copies, one leaf of its own.
- * Meshes as app.c builds them.
+ * count), then one more leaf drawn by hand: 2 shapes with copies, one leaf of its own
+ * (without copies: 3 leaves of their own). Meshes as app.c builds them.
  */
-static void leafy_app(struct app *app, int width, int height, struct camera cam)
+static void leafy_app(struct app *app, int width, int height, struct camera cam, bool copies)
 {
 	struct tree *t = &app->tree;
 	int trunk, s;
@@ -171,9 +171,11 @@ static void leafy_app(struct app *app, int width, int height, struct camera cam)
 	}
 	s = 3;
 	add_leaf(t, s, 0.8, 0.22, 9, 0.6);
-	CHECK_INT(arrange_apply(t, s, ARRANGE_WHORL_ADD), 1);
+	if (copies)
+		CHECK_INT(arrange_apply(t, s, ARRANGE_WHORL_ADD), 1);
 	add_leaf(t, s, 0.5, 0.18, 7, 0.8);
-	CHECK(propagate_apply(t, s, PROPAGATE_FIXED_COUNT) > 40);
+	if (copies)
+		CHECK(propagate_apply(t, s, PROPAGATE_FIXED_COUNT) > 40);
 	add_leaf(t, 0, 0.55, 0.3, 8, 0.5);
 	t->lifted = true;
 	app->camera = cam;
@@ -225,7 +227,7 @@ static void test_instanced(void)
 	for (size_t c = 0; c < sizeof(cams) / sizeof(cams[0]); c++) {
 		size_t diff;
 
-		leafy_app(&app, 640, 400, cams[c]);
+		leafy_app(&app, 640, 400, cams[c], true);
 		app.mesh_serial = 10 * (c + 1); /* a new tree to the renderers */
 		leaf_instances_init(&li);
 		CHECK_INT(leaf_instances_build(&li, &app.tree), 0);
@@ -265,6 +267,22 @@ static void test_instanced(void)
 		leaf_instances_finish(&li);
 		leafy_finish(&app);
 	}
+
+	/* no copies: the merged leaves mesh, drawn in one call, uploaded as it is */
+	leafy_app(&app, 640, 400, cams[1], false);
+	app.mesh_serial = 100;
+	draw(&f, inst, &app, f.a);
+	render_get_stats(inst, &si);
+	draw(&f, merged, &app, f.b);
+	render_get_stats(merged, &sm);
+	CHECK(inst->uploaded_instanced);
+	CHECK_INT(inst->inst.nshapes, 0);
+	CHECK_INT(si.draw_calls, 4);
+	CHECK_INT(si.tree_triangles, sm.tree_triangles);
+	CHECK_INT(inst->upload_bytes, merged->upload_bytes);
+	CHECK(memcmp(f.a, f.b, f.size) == 0);
+	leafy_finish(&app);
+
 	render_destroy(inst);
 	render_destroy(merged);
 	fixture_finish(&f);
