@@ -192,8 +192,7 @@ int render_upload_tree(struct render *r, const struct app *app)
 		render_mesh_finish(&r->leaves);
 		ret = render_instanced_upload(r, &app->tree, &app->mesh.leaves);
 	} else if (ret == 0) {
-		if (r->instanced)
-			render_instanced_clear(r);
+		render_instanced_clear(r); /* GL names 0 and empty arrays on GLES 2: no-ops */
 		ret = render_mesh_upload(&r->leaves, &app->mesh.leaves, r->uint_indices);
 		r->upload_bytes += r->leaves.bytes;
 	}
