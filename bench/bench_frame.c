@@ -18,6 +18,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "app.h"
 #include "bench_util.h"
@@ -135,6 +136,65 @@ static int measure(struct bench *b, int nbranches, struct result *res)
 	res->draw_calls = st.draw_calls;
 	res->readback_s = bench_run(readback, b, FRAMES);
 	return b->failed;
+}
+
+/*
+ * The kiosk's CPU cost a frame by leaf count: the main thread's CPU time in render_frame
+ * (building the UI, submitting draws; llvmpipe rasterises on its own threads, a real GPU
+ * on the GPU), with an upload and steady, and the draw calls. Trees of 100, 1,000 and
+ * 20,000 leaves (10 x 10, 100 x 10, 1,000 x 20 synthetic leaves, all drawn leaves).
+ */
+static const int leaf_trees[][2] = { { 10, 10 }, { 100, 10 }, { 1000, 20 } };
+#define NLEAF_TREES (sizeof(leaf_trees) / sizeof(leaf_trees[0]))
+
+static double thread_cpu_s(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int frame_cpu(struct bench *b)
+{
+	double up[FRAMES], steady[FRAMES], prev_n = 0, prev_s = 0, prev_n2 = 0, prev_s2 = 0;
+
+	printf("\nframe CPU time (main thread, render_frame before glFinish) by leaf count\n");
+	for (size_t i = 0; i < NLEAF_TREES; i++) {
+		struct render_stats st;
+		struct tree t;
+		int n = leaf_trees[i][0] * leaf_trees[i][1];
+		int r;
+
+		tree_init(&t);
+		r = synth_tree(&t, leaf_trees[i][0], leaf_trees[i][1], SEED);
+		if (r == 0)
+			r = set_tree(b, &t);
+		tree_finish(&t);
+		if (r < 0)
+			return r;
+		for (int k = 0; k < FRAMES; k++) {
+			double t0;
+
+			b->app.mesh_serial++;
+			t0 = thread_cpu_s();
+			if (render_frame(b->render, &b->app) < 0)
+				return -EIO;
+			up[k] = thread_cpu_s() - t0;
+			glFinish();
+			t0 = thread_cpu_s();
+			if (render_frame(b->render, &b->app) < 0)
+				return -EIO;
+			steady[k] = thread_cpu_s() - t0;
+			glFinish();
+		}
+		render_get_stats(b->render, &st);
+		printf("  %6d leaves on %4d branches: %u draw calls a frame, %zu tree triangles\n", n,
+		       leaf_trees[i][0], st.draw_calls, st.tree_triangles);
+		bench_row("frame CPU, with upload", n, bench_median(up, FRAMES), &prev_n, &prev_s);
+		bench_row("frame CPU, steady", n, bench_median(steady, FRAMES), &prev_n2, &prev_s2);
+	}
+	return 0;
 }
 
 static const int prop_sizes[] = { 250, 500, 1000 };
@@ -322,6 +382,8 @@ int main(void)
 		bench_row("read back (resolve + read)", sizes[i], res[i].readback_s, &prev_size,
 			  &prev_s);
 	if (propagated(&b) < 0)
+		goto out;
+	if (frame_cpu(&b) < 0)
 		goto out;
 	status = 0;
 out:
