@@ -1,0 +1,37 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+/*
+ * What the app's files share: app.c (events, the document, the sketch), app_modes.c
+ * (clone, leaf and propagate modes) and app_view.c (the orbit camera, on-screen hits).
+ * Not for the app's users.
+ */
+#include "app.h"
+
+/* The pen can report positions off the screen (and traces any finite number): what is
+ * drawn is what lands on the screen. */
+static inline double app_clamp(double v, double lo, double hi)
+{
+	return v < lo ? lo : v > hi ? hi : v;
+}
+
+/* app.c */
+/* Records an edit and applies it on top of the current tree. 0, -ENOMEM, -ENOSPC. */
+int app_push_op(struct app *app, struct doc_op *op);
+int app_press_button(struct app *app, enum button button, uint64_t time_us);
+
+/* app_modes.c */
+int app_push_edit(struct app *app, enum doc_op_kind kind, int branch, int pattern,
+		  uint64_t time_us);
+void app_clear_suggestions(struct app *app);
+int app_update_suggestions(struct app *app, int b);
+int app_refresh_mode_state(struct app *app);
+int app_mode_stroke(struct app *app, double len, bool *taken);
+int app_set_mode(struct app *app, enum app_mode mode, uint64_t time_us);
+bool app_thumbnail_hit(const struct app *app, double x, double y, enum arrange_pattern *p);
+
+/* app_view.c */
+void app_camera_store(struct app *app, struct camera c);
+void app_camera_follow_tree(struct app *app);
+bool app_ui_hit(const struct app *app, double x, double y, enum button *button);
+void app_orbit_to(struct app *app, const struct event *ev);
