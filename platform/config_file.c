@@ -1,0 +1,602 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * /etc/edaha/edaha.conf: YAML read with libyaml's document loader (the file is small and
+ * capped at CONFIG_MAX_BYTES). docs/config.md describes the keys.
+ */
+#include "config_file.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <yaml.h>
+
+#include "fileio.h"
+
+struct cfg_parser {
+	const char *name;
+	struct error *err;
+	FILE *warn;
+	yaml_document_t doc;
+	struct config *c;
+};
+
+static int fail(struct cfg_parser *p, const yaml_node_t *n, const char *fmt, ...)
+	__attribute__((format(printf, 3, 4)));
+
+static unsigned long line_of(const yaml_node_t *n)
+{
+	return n ? (unsigned long)n->start_mark.line + 1 : 0;
+}
+
+static int fail(struct cfg_parser *p, const yaml_node_t *n, const char *fmt, ...)
+{
+	char msg[sizeof(p->err->msg)];
+	va_list ap;
+
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof(msg), fmt, ap);
+	va_end(ap);
+	return error_at(p->err, -EINVAL, p->name, line_of(n), "%s", msg);
+}
+
+static void warn_unknown(struct cfg_parser *p, const yaml_node_t *key, const char *section)
+{
+	if (!p->warn)
+		return;
+	/* the key text is the user's: printed cut short, non-printable bytes as '?' */
+	char k[CONFIG_NAME_MAX];
+	size_t n = key->data.scalar.length < sizeof(k) - 1 ? key->data.scalar.length : sizeof(k) - 1;
+
+	for (size_t i = 0; i < n; i++) {
+		unsigned char ch = key->data.scalar.value[i];
+
+		k[i] = ch >= 0x20 && ch < 0x7f ? (char)ch : '?';
+	}
+	k[n] = '\0';
+	/* a failed warning is no reason to stop the kiosk */
+	(void)fprintf(p->warn, "%s:%lu: warning: unknown key \"%s\" in %s, ignored\n", p->name,
+		      line_of(key), k, section);
+}
+
+static const char *kind(const yaml_node_t *n)
+{
+	switch (n->type) {
+	case YAML_SCALAR_NODE:
+		return "a scalar";
+	case YAML_SEQUENCE_NODE:
+		return "a list";
+	case YAML_MAPPING_NODE:
+		return "a mapping";
+	default:
+		return "nothing";
+	}
+}
+
+/* A scalar's text (NUL-terminated by libyaml); NULL if n is no scalar or holds a NUL. */
+static const char *text(const yaml_node_t *n)
+{
+	if (n->type != YAML_SCALAR_NODE)
+		return NULL;
+	if (strlen((const char *)n->data.scalar.value) != n->data.scalar.length)
+		return NULL;
+	return (const char *)n->data.scalar.value;
+}
+
+static bool plain(const yaml_node_t *n)
+{
+	return n->type == YAML_SCALAR_NODE && n->data.scalar.style == YAML_PLAIN_SCALAR_STYLE;
+}
+
+static bool is_null(const yaml_node_t *n)
+{
+	const char *s = text(n);
+
+	return plain(n) && s && (!*s || strcmp(s, "~") == 0 || strcmp(s, "null") == 0);
+}
+
+static int get_string(struct cfg_parser *p, const yaml_node_t *n, const char *what, char *out,
+		      size_t size)
+{
+	const char *s = text(n);
+
+	if (!s)
+		return n->type == YAML_SCALAR_NODE
+			       ? fail(p, n, "%s holds a NUL byte", what)
+			       : fail(p, n, "expected a string for %s, got %s", what, kind(n));
+	if (!*s)
+		return fail(p, n, "%s is empty", what);
+	if (strlen(s) >= size)
+		return fail(p, n, "%s is longer than %zu characters", what, size - 1);
+	for (const char *q = s; *q; q++)
+		if ((unsigned char)*q < 0x20 || *q == 0x7f)
+			return fail(p, n, "%s holds a control character", what);
+	memcpy(out, s, strlen(s) + 1);
+	return 0;
+}
+
+/* A decimal integer within lo..hi: digits with an optional minus, nothing else. */
+static int get_int(struct cfg_parser *p, const yaml_node_t *n, const char *what, long lo,
+		   long hi, long *v)
+{
+	const char *s = text(n);
+	char *end;
+	long x;
+
+	if (!s || !plain(n))
+		return fail(p, n, "expected an integer for %s, got %s", what,
+			    n->type == YAML_SCALAR_NODE ? "a quoted string" : kind(n));
+	if (!((s[0] >= '0' && s[0] <= '9') || (s[0] == '-' && s[1] >= '0' && s[1] <= '9')))
+		return fail(p, n, "%s \"%.40s\" is not an integer", what, s);
+	errno = 0;
+	x = strtol(s, &end, 10);
+	if (*end)
+		return fail(p, n, "%s \"%.40s\" is not an integer", what, s);
+	if (errno == ERANGE || x < lo || x > hi)
+		return fail(p, n, "%s %.40s out of range %ld..%ld", what, s, lo, hi);
+	*v = x;
+	return 0;
+}
+
+static int get_bool(struct cfg_parser *p, const yaml_node_t *n, const char *what, bool *v)
+{
+	const char *s = text(n);
+
+	if (s && plain(n)) {
+		if (strcmp(s, "true") == 0 || strcmp(s, "yes") == 0 || strcmp(s, "on") == 0) {
+			*v = true;
+			return 0;
+		}
+		if (strcmp(s, "false") == 0 || strcmp(s, "no") == 0 || strcmp(s, "off") == 0) {
+			*v = false;
+			return 0;
+		}
+	}
+	return fail(p, n, "expected true or false for %s", what);
+}
+
+static int get_rotation(struct cfg_parser *p, const yaml_node_t *n, const char *what, int *v)
+{
+	long x;
+	int r = get_int(p, n, what, -100000, 100000, &x);
+
+	if (r < 0)
+		return r;
+	if (x != 0 && x != 90 && x != 180 && x != 270)
+		return fail(p, n, "%s must be 0, 90, 180 or 270, not %ld", what, x);
+	*v = (int)x;
+	return 0;
+}
+
+static int get_fraction(struct cfg_parser *p, const yaml_node_t *n, const char *what, double *v)
+{
+	const char *s = text(n);
+	char *end;
+	double x;
+
+	if (!s || !plain(n) || !*s)
+		return fail(p, n, "expected a number for %s", what);
+	errno = 0;
+	x = strtod(s, &end);
+	if (*end || errno == ERANGE || !isfinite(x) ||
+	    !((s[0] >= '0' && s[0] <= '9') || s[0] == '.' || s[0] == '-'))
+		return fail(p, n, "%s \"%.40s\" is not a number", what, s);
+	if (x < 0.0 || x > 1.0)
+		return fail(p, n, "%s %.40s out of range 0..1", what, s);
+	*v = x;
+	return 0;
+}
+
+/*
+ * Calls fn for each pair of the mapping n; duplicate keys are errors, non-scalar keys
+ * too. A null value (an empty section) counts as an empty mapping.
+ */
+typedef int (*pair_fn)(struct cfg_parser *p, const yaml_node_t *key, const char *k,
+		       const yaml_node_t *value, void *data);
+
+static int for_each_pair(struct cfg_parser *p, const yaml_node_t *n, const char *what,
+			 pair_fn fn, void *data)
+{
+	yaml_node_pair_t *start, *top;
+
+	if (is_null(n))
+		return 0;
+	if (n->type != YAML_MAPPING_NODE)
+		return fail(p, n, "expected a mapping for %s, got %s", what, kind(n));
+	start = n->data.mapping.pairs.start;
+	top = n->data.mapping.pairs.top;
+	for (yaml_node_pair_t *pair = start; pair < top; pair++) {
+		const yaml_node_t *key = yaml_document_get_node(&p->doc, pair->key);
+		const yaml_node_t *value = yaml_document_get_node(&p->doc, pair->value);
+		const char *k;
+		int r;
+
+		if (!key || !value)
+			return fail(p, n, "broken YAML node in %s", what);
+		k = text(key);
+		if (!k)
+			return fail(p, key, "expected a plain key in %s, got %s", what, kind(key));
+		for (yaml_node_pair_t *q = start; q < pair; q++) {
+			const yaml_node_t *other = yaml_document_get_node(&p->doc, q->key);
+			const char *o = other ? text(other) : NULL;
+
+			if (o && strcmp(o, k) == 0)
+				return fail(p, key, "duplicate key \"%.40s\" in %s (first on line %lu)",
+					    k, what, line_of(other));
+		}
+		if ((r = fn(p, key, k, value, data)) < 0)
+			return r;
+	}
+	return 0;
+}
+
+/* ---- display -------------------------------------------------------------------- */
+
+/* Digits only (no sign, no space), at most 5 of them; advances *s. */
+static bool digits(const char **s, unsigned *v)
+{
+	unsigned x = 0;
+	int n = 0;
+
+	while (**s >= '0' && **s <= '9' && n < 6) {
+		x = x * 10 + (unsigned)(**s - '0');
+		(*s)++;
+		n++;
+	}
+	*v = x;
+	return n > 0 && n <= 5;
+}
+
+static int parse_mode(struct cfg_parser *p, const yaml_node_t *n)
+{
+	const char *s = text(n), *q;
+	unsigned w, h, hz = 0;
+
+	if (!s)
+		return fail(p, n, "expected a mode like 1920x1080 or 1920x1080@60, got %s", kind(n));
+	if (strcmp(s, "preferred") == 0 || strcmp(s, "auto") == 0) {
+		p->c->display.mode_w = p->c->display.mode_h = p->c->display.mode_hz = 0;
+		return 0;
+	}
+	q = s;
+	if (!digits(&q, &w) || *q++ != 'x' || !digits(&q, &h) ||
+	    (*q == '@' && (q++, !digits(&q, &hz))) || *q)
+		return fail(p, n, "display mode \"%.40s\" is not WIDTHxHEIGHT[@HZ]", s);
+	if (w < 1 || w > 16384 || h < 1 || h > 16384 || hz > 1000)
+		return fail(p, n, "display mode \"%.40s\" out of range", s);
+	p->c->display.mode_w = (int)w;
+	p->c->display.mode_h = (int)h;
+	p->c->display.mode_hz = (int)hz;
+	return 0;
+}
+
+/* "auto" (or null) for card/connector means "find one". */
+static int get_auto_string(struct cfg_parser *p, const yaml_node_t *n, const char *what,
+			   char *out, size_t size)
+{
+	const char *s = text(n);
+
+	if (is_null(n) || (s && plain(n) && strcmp(s, "auto") == 0)) {
+		out[0] = '\0';
+		return 0;
+	}
+	return get_string(p, n, what, out, size);
+}
+
+static int display_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
+			const yaml_node_t *v, void *data)
+{
+	(void)data;
+	if (strcmp(k, "card") == 0)
+		return get_auto_string(p, v, "display.card", p->c->display.card,
+				       sizeof(p->c->display.card));
+	if (strcmp(k, "connector") == 0)
+		return get_auto_string(p, v, "display.connector", p->c->display.connector,
+				       sizeof(p->c->display.connector));
+	if (strcmp(k, "mode") == 0)
+		return parse_mode(p, v);
+	if (strcmp(k, "rotation") == 0)
+		return get_rotation(p, v, "display.rotation", &p->c->display.rotation);
+	warn_unknown(p, key, "display");
+	return 0;
+}
+
+/* ---- input ---------------------------------------------------------------------- */
+
+static int parse_area(struct cfg_parser *p, const yaml_node_t *n)
+{
+	const char *s = text(n);
+	double v[4];
+	size_t count;
+
+	if (s && plain(n) && strcmp(s, "fit") == 0) {
+		p->c->input.area = CONFIG_AREA_FIT;
+		return 0;
+	}
+	if (s && plain(n) && strcmp(s, "stretch") == 0) {
+		p->c->input.area = CONFIG_AREA_STRETCH;
+		return 0;
+	}
+	if (n->type != YAML_SEQUENCE_NODE)
+		return fail(p, n, "input.area must be fit, stretch or [left, top, right, bottom]");
+	count = (size_t)(n->data.sequence.items.top - n->data.sequence.items.start);
+	if (count != 4)
+		return fail(p, n, "input.area: expected 4 numbers [left, top, right, bottom], got %zu",
+			    count);
+	for (size_t i = 0; i < 4; i++) {
+		const yaml_node_t *item =
+			yaml_document_get_node(&p->doc, n->data.sequence.items.start[i]);
+		int r;
+
+		if (!item)
+			return fail(p, n, "broken YAML node in input.area");
+		if ((r = get_fraction(p, item, "input.area", &v[i])) < 0)
+			return r;
+	}
+	if (!(v[2] - v[0] >= 0.01) || !(v[3] - v[1] >= 0.01))
+		return fail(p, n, "input.area: right must exceed left and bottom top (by 0.01 at least)");
+	p->c->input.area = CONFIG_AREA_RECT;
+	memcpy(p->c->input.area_rect, v, sizeof(v));
+	return 0;
+}
+
+static int input_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
+		      const yaml_node_t *v, void *data)
+{
+	(void)data;
+	if (strcmp(k, "rotation") == 0)
+		return get_rotation(p, v, "input.rotation", &p->c->input.rotation);
+	if (strcmp(k, "area") == 0)
+		return parse_area(p, v);
+	warn_unknown(p, key, "input");
+	return 0;
+}
+
+/* ---- gpio ----------------------------------------------------------------------- */
+
+struct line_ctx {
+	struct config_gpio_line *line;
+	bool output;
+	const char *what;
+	bool have_chip, have_line;
+};
+
+static int line_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
+		     const yaml_node_t *v, void *data)
+{
+	struct line_ctx *l = data;
+	char what[96];
+
+	snprintf(what, sizeof(what), "%s.%s", l->what, k);
+	if (strcmp(k, "chip") == 0) {
+		l->have_chip = true;
+		return get_string(p, v, what, l->line->chip, sizeof(l->line->chip));
+	}
+	if (strcmp(k, "line") == 0) {
+		long off;
+		int r;
+
+		l->have_line = true;
+		/* a plain integer is an offset; anything else (or quoted) a line name */
+		if (plain(v) && text(v) && text(v)[0] >= '0' && text(v)[0] <= '9') {
+			if ((r = get_int(p, v, what, 0, 65535, &off)) < 0)
+				return r;
+			l->line->offset = (int)off;
+			l->line->name[0] = '\0';
+			return 0;
+		}
+		l->line->offset = -1;
+		return get_string(p, v, what, l->line->name, sizeof(l->line->name));
+	}
+	if (strcmp(k, "active_low") == 0)
+		return get_bool(p, v, what, &l->line->active_low);
+	if (strcmp(k, "pull_up") == 0 && !l->output)
+		return get_bool(p, v, what, &l->line->pull_up);
+	warn_unknown(p, key, l->what);
+	return 0;
+}
+
+struct lines_ctx {
+	struct config_gpio_line *lines;
+	bool output;
+	const char *section;
+};
+
+static int lines_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
+		      const yaml_node_t *v, void *data)
+{
+	struct lines_ctx *ls = data;
+	char what[64];
+	enum button b;
+	int r;
+
+	if (!button_from_name(k, &b))
+		return fail(p, key, "unknown button \"%.40s\" in %s", k, ls->section);
+	if (ls->output && !config_button_is_mode(b))
+		return fail(p, key, "%s: only the modes 3d, clone, leaf and propagate have LEDs, not %s",
+			    ls->section, k);
+	snprintf(what, sizeof(what), "%s.%s", ls->section, k);
+	struct config_gpio_line *line = &ls->lines[b];
+	struct line_ctx l = { .line = line, .output = ls->output, .what = what };
+
+	memset(line, 0, sizeof(*line));
+	line->offset = -1;
+	line->conf_line = line_of(key);
+	if (v->type != YAML_MAPPING_NODE)
+		return fail(p, v, "expected a mapping {chip, line, ...} for %s, got %s", what,
+			    kind(v));
+	if ((r = for_each_pair(p, v, what, line_pair, &l)) < 0)
+		return r;
+	if (!l.have_chip)
+		return fail(p, v, "%s has no chip", what);
+	if (!l.have_line)
+		return fail(p, v, "%s has no line", what);
+	line->set = true;
+	return 0;
+}
+
+static int gpio_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
+		     const yaml_node_t *v, void *data)
+{
+	(void)data;
+	if (strcmp(k, "debounce_ms") == 0) {
+		long ms;
+		int r = get_int(p, v, "gpio.debounce_ms", 0, CONFIG_DEBOUNCE_MS_MAX, &ms);
+
+		if (r == 0)
+			p->c->gpio.debounce_ms = (int)ms;
+		return r;
+	}
+	if (strcmp(k, "buttons") == 0) {
+		struct lines_ctx ls = { p->c->gpio.buttons, false, "gpio.buttons" };
+
+		return for_each_pair(p, v, "gpio.buttons", lines_pair, &ls);
+	}
+	if (strcmp(k, "leds") == 0) {
+		struct lines_ctx ls = { p->c->gpio.leds, true, "gpio.leds" };
+
+		return for_each_pair(p, v, "gpio.leds", lines_pair, &ls);
+	}
+	warn_unknown(p, key, "gpio");
+	return 0;
+}
+
+/* ---- top level ------------------------------------------------------------------ */
+
+static int top_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
+		    const yaml_node_t *v, void *data)
+{
+	(void)data;
+	if (strcmp(k, "display") == 0)
+		return for_each_pair(p, v, "display", display_pair, NULL);
+	if (strcmp(k, "input") == 0)
+		return for_each_pair(p, v, "input", input_pair, NULL);
+	if (strcmp(k, "gpio") == 0)
+		return for_each_pair(p, v, "gpio", gpio_pair, NULL);
+	if (strcmp(k, "language") == 0) {
+		const char *s = text(v);
+
+		if (s && plain(v) && strcmp(s, "en") == 0)
+			p->c->language = CONFIG_LANG_EN;
+		else if (s && plain(v) && strcmp(s, "ja") == 0)
+			p->c->language = CONFIG_LANG_JA;
+		else
+			return fail(p, v, "language must be en or ja");
+		return 0;
+	}
+	warn_unknown(p, key, "the top level");
+	return 0;
+}
+
+bool config_button_is_mode(enum button b)
+{
+	return b == BUTTON_3D || b == BUTTON_CLONE || b == BUTTON_LEAF || b == BUTTON_PROPAGATE;
+}
+
+void config_defaults(struct config *c)
+{
+	memset(c, 0, sizeof(*c));
+	c->input.area = CONFIG_AREA_FIT;
+	c->input.area_rect[2] = c->input.area_rect[3] = 1.0;
+	c->gpio.debounce_ms = CONFIG_DEBOUNCE_MS_DEFAULT;
+	for (int b = 0; b < BUTTON_COUNT; b++)
+		c->gpio.buttons[b].offset = c->gpio.leds[b].offset = -1;
+	c->language = CONFIG_LANG_EN;
+}
+
+static int yaml_fail(struct cfg_parser *p, const yaml_parser_t *y, const char *data,
+		     size_t len)
+{
+	unsigned long line;
+
+	if (y->error == YAML_MEMORY_ERROR)
+		return error_at(p->err, -ENOMEM, p->name, 0, "out of memory");
+	if (y->error == YAML_READER_ERROR) {
+		size_t end = y->problem_offset < len ? y->problem_offset : len;
+
+		line = 1;
+		for (size_t i = 0; i < end; i++)
+			line += data[i] == '\n';
+		return error_at(p->err, -EINVAL, p->name, line, "not YAML text: %s",
+				y->problem ? y->problem : "unreadable");
+	}
+	line = (unsigned long)y->problem_mark.line + 1;
+	return error_at(p->err, -EINVAL, p->name, line, "YAML error: %s%s%s",
+			y->problem ? y->problem : "error", y->context ? " " : "",
+			y->context ? y->context : "");
+}
+
+int config_parse(const char *data, size_t len, const char *name, struct config *c, FILE *warn,
+		 struct error *err)
+{
+	struct cfg_parser p = { .name = name, .err = err, .warn = warn };
+	struct config tmp;
+	yaml_parser_t y;
+	yaml_node_t *root;
+	int r;
+
+	config_defaults(c);
+	if (len > CONFIG_MAX_BYTES)
+		return error_at(err, -EINVAL, name, 0, "larger than %d bytes", CONFIG_MAX_BYTES);
+	config_defaults(&tmp);
+	p.c = &tmp;
+	if (!yaml_parser_initialize(&y))
+		return error_at(err, -ENOMEM, name, 0, "out of memory");
+	yaml_parser_set_input_string(&y, (const unsigned char *)data, len);
+	if (!yaml_parser_load(&y, &p.doc)) {
+		r = yaml_fail(&p, &y, data, len);
+		yaml_parser_delete(&y);
+		return r;
+	}
+	root = yaml_document_get_root_node(&p.doc);
+	if (root) { /* no root: an empty file, the defaults */
+		yaml_document_t second;
+
+		/* one document only: a second one is probably a mistake */
+		if (!yaml_parser_load(&y, &second)) {
+			r = yaml_fail(&p, &y, data, len);
+			goto out;
+		}
+		bool more = yaml_document_get_root_node(&second) != NULL;
+		unsigned long at = more ? line_of(yaml_document_get_root_node(&second)) : 0;
+
+		yaml_document_delete(&second);
+		if (more) {
+			r = error_at(err, -EINVAL, name, at, "a second YAML document; one is expected");
+			goto out;
+		}
+		if (is_null(root))
+			r = 0;
+		else if (root->type != YAML_MAPPING_NODE)
+			r = fail(&p, root, "expected a mapping (display:, input:, gpio:, ...) at the top, got %s",
+				 kind(root));
+		else
+			r = for_each_pair(&p, root, "the top level", top_pair, NULL);
+	} else {
+		r = 0;
+	}
+out:
+	yaml_document_delete(&p.doc);
+	yaml_parser_delete(&y);
+	if (r == 0)
+		*c = tmp;
+	return r;
+}
+
+int config_load(const char *path, struct config *c, FILE *warn, struct error *err)
+{
+	char *data;
+	size_t len;
+	int r;
+
+	config_defaults(c);
+	r = fileio_read_all(path, CONFIG_MAX_BYTES, &data, &len, err);
+	if (r == -ENOENT)
+		return 0;
+	if (r < 0)
+		return r;
+	r = config_parse(data, len, path, c, warn, err);
+	free(data);
+	return r;
+}

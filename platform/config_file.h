@@ -1,0 +1,76 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+/*
+ * The kiosk's configuration, /etc/edaha/edaha.conf (YAML, docs/config.md): the display,
+ * how the tablet maps onto it, the GPIO buttons and LEDs, the language. A missing file
+ * means the defaults; every error names "file:line"; unknown keys are warnings.
+ */
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdio.h>
+
+#include "error.h"
+#include "event.h"
+
+#define CONFIG_PATH "/etc/edaha/edaha.conf"
+/* Larger files are refused: a configuration is a page of text. */
+#define CONFIG_MAX_BYTES (64 * 1024)
+#define CONFIG_NAME_MAX 64
+#define CONFIG_DEBOUNCE_MS_DEFAULT 20
+#define CONFIG_DEBOUNCE_MS_MAX 1000
+
+enum config_language { CONFIG_LANG_EN = 0, CONFIG_LANG_JA };
+
+enum config_area {
+	CONFIG_AREA_FIT = 0, /* the largest part of the tablet with the display's aspect */
+	CONFIG_AREA_STRETCH, /* the whole tablet onto the whole display */
+	CONFIG_AREA_RECT,    /* input.area_rect of the (rotated) tablet onto the display */
+};
+
+/* One GPIO line, found by chip label (or name, "gpiochip0") and line name or offset. */
+struct config_gpio_line {
+	bool set;
+	char chip[CONFIG_NAME_MAX];
+	char name[CONFIG_NAME_MAX]; /* line name, "" when offset is used */
+	int offset;                 /* -1 when name is used */
+	bool active_low;
+	bool pull_up; /* inputs only */
+	unsigned long conf_line; /* where it was configured, for messages */
+};
+
+struct config {
+	struct {
+		char card[256];                 /* "" = the first card that can modeset */
+		char connector[CONFIG_NAME_MAX]; /* "" = the first connected one */
+		int mode_w, mode_h, mode_hz;    /* 0 = the preferred mode; hz 0 = any */
+		int rotation;                   /* 0, 90, 180, 270 degrees clockwise */
+	} display;
+	struct {
+		int rotation; /* the tablet turned clockwise on the desk: 0, 90, 180, 270 */
+		enum config_area area;
+		double area_rect[4]; /* left, top, right, bottom in 0..1 (CONFIG_AREA_RECT) */
+	} input;
+	struct {
+		int debounce_ms;
+		struct config_gpio_line buttons[BUTTON_COUNT];
+		struct config_gpio_line leds[BUTTON_COUNT]; /* mode buttons only */
+	} gpio;
+	enum config_language language;
+};
+
+void config_defaults(struct config *c);
+
+/*
+ * Parses a configuration (name is used in messages). Fills *c (defaults first) and
+ * returns 0, or -EINVAL / -ENOMEM with "name:line: ..." in err. Warnings (unknown keys)
+ * go to warn as "name:line: warning: ..." lines; warn may be NULL.
+ */
+int config_parse(const char *data, size_t len, const char *name, struct config *c, FILE *warn,
+		 struct error *err);
+
+/* Reads and parses path: a missing file gives the defaults and 0; -errno otherwise. */
+int config_load(const char *path, struct config *c, FILE *warn, struct error *err);
+
+/* The buttons that are modes (and may have an LED): 3d, clone, leaf, propagate. */
+bool config_button_is_mode(enum button b);

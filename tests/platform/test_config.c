@@ -1,0 +1,221 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * config_parse / config_load: defaults, a file with every key, unknown keys as warnings
+ * with their lines, and every malformed file in tests/malformed/config failing at the
+ * line its EXPECT file names.
+ *   test_config DATA_DIR MALFORMED_DIR
+ */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "config_file.h"
+#include "fileio.h"
+#include "test.h"
+
+static char *path_of(const char *dir, const char *name)
+{
+	size_t n = strlen(dir) + strlen(name) + 2;
+	char *p = malloc(n);
+
+	CHECK(p);
+	snprintf(p, n, "%s/%s", dir, name);
+	return p;
+}
+
+static void check_defaults(const struct config *c)
+{
+	CHECK(c->display.card[0] == '\0');
+	CHECK(c->display.connector[0] == '\0');
+	CHECK_INT(c->display.mode_w, 0);
+	CHECK_INT(c->display.rotation, 0);
+	CHECK_INT(c->input.rotation, 0);
+	CHECK_INT(c->input.area, CONFIG_AREA_FIT);
+	CHECK_INT(c->gpio.debounce_ms, CONFIG_DEBOUNCE_MS_DEFAULT);
+	CHECK_INT(c->language, CONFIG_LANG_EN);
+	for (int b = 0; b < BUTTON_COUNT; b++) {
+		CHECK(!c->gpio.buttons[b].set);
+		CHECK(!c->gpio.leds[b].set);
+	}
+}
+
+static void test_defaults(void)
+{
+	static const char *const empty[] = { "", "\n", "# nothing\n", "---\n", "~\n", "{}\n",
+					     "display:\ninput:\ngpio:\n" };
+	struct config c;
+	struct error err;
+
+	for (size_t i = 0; i < sizeof(empty) / sizeof(empty[0]); i++) {
+		memset(&c, 0x5a, sizeof(c));
+		CHECK_INT(config_parse(empty[i], strlen(empty[i]), "t", &c, NULL, &err), 0);
+		check_defaults(&c);
+	}
+	memset(&c, 0x5a, sizeof(c));
+	CHECK_INT(config_load("/nonexistent/edaha/edaha.conf", &c, NULL, &err), 0);
+	check_defaults(&c);
+	/* a directory is not a missing file */
+	CHECK(config_load("/", &c, NULL, &err) < 0);
+	check_defaults(&c);
+}
+
+static void test_good(const char *dir)
+{
+	char *path = path_of(dir, "edaha.conf");
+	const struct config_gpio_line *l;
+	struct config c;
+	struct error err;
+	char *out = NULL;
+	size_t outlen = 0;
+	FILE *warn = open_memstream(&out, &outlen);
+
+	CHECK(warn);
+	if (config_load(path, &c, warn, &err) < 0) {
+		fprintf(stderr, "%s\n", err.msg);
+		CHECK(0);
+	}
+	CHECK_INT(fclose(warn), 0);
+	CHECK_INT(outlen, 0); /* no warnings */
+	free(out);
+	CHECK(strcmp(c.display.card, "/dev/dri/card1") == 0);
+	CHECK(strcmp(c.display.connector, "HDMI-A-1") == 0);
+	CHECK_INT(c.display.mode_w, 1920);
+	CHECK_INT(c.display.mode_h, 1080);
+	CHECK_INT(c.display.mode_hz, 60);
+	CHECK_INT(c.display.rotation, 90);
+	CHECK_INT(c.input.rotation, 180);
+	CHECK_INT(c.input.area, CONFIG_AREA_RECT);
+	CHECK_NEAR(c.input.area_rect[0], 0.1, 1e-12);
+	CHECK_NEAR(c.input.area_rect[1], 0.2, 1e-12);
+	CHECK_NEAR(c.input.area_rect[2], 0.9, 1e-12);
+	CHECK_NEAR(c.input.area_rect[3], 0.8, 1e-12);
+	CHECK_INT(c.gpio.debounce_ms, 30);
+	CHECK_INT(c.language, CONFIG_LANG_JA);
+
+	l = &c.gpio.buttons[BUTTON_3D];
+	CHECK(l->set && strcmp(l->chip, "pinctrl-bcm2711") == 0 && strcmp(l->name, "GPIO17") == 0);
+	CHECK_INT(l->offset, -1);
+	CHECK(l->active_low && l->pull_up);
+	CHECK_INT(l->conf_line, 13);
+	l = &c.gpio.buttons[BUTTON_CLONE];
+	CHECK(l->set && l->name[0] == '\0');
+	CHECK_INT(l->offset, 27);
+	l = &c.gpio.buttons[BUTTON_LEAF]; /* quoted digits: a line name */
+	CHECK(l->set && strcmp(l->name, "22") == 0 && l->offset == -1);
+	CHECK(!l->active_low && !l->pull_up);
+	l = &c.gpio.buttons[BUTTON_PROPAGATE];
+	CHECK(l->set && strcmp(l->chip, "kiosk-buttons") == 0 &&
+	      strcmp(l->name, "btn-propagate") == 0);
+	l = &c.gpio.buttons[BUTTON_EXPORT];
+	CHECK(l->set && l->offset == 3 && !l->active_low);
+	CHECK(!c.gpio.buttons[BUTTON_UNDO].set);
+	CHECK(!c.gpio.buttons[BUTTON_NEW].set);
+	l = &c.gpio.leds[BUTTON_3D];
+	CHECK(l->set && strcmp(l->name, "GPIO5") == 0);
+	l = &c.gpio.leds[BUTTON_LEAF];
+	CHECK(l->set && l->offset == 6 && l->active_low);
+	CHECK(!c.gpio.leds[BUTTON_CLONE].set);
+	free(path);
+
+	/* the other spellings */
+	static const char more[] = "display:\n  card: auto\n  connector: auto\n"
+				   "  mode: preferred\ninput:\n  area: stretch\n";
+	CHECK_INT(config_parse(more, strlen(more), "more", &c, NULL, &err), 0);
+	CHECK(c.display.card[0] == '\0' && c.display.connector[0] == '\0');
+	CHECK_INT(c.display.mode_w, 0);
+	CHECK_INT(c.input.area, CONFIG_AREA_STRETCH);
+	static const char mode[] = "display:\n  mode: 800x480\n";
+	CHECK_INT(config_parse(mode, strlen(mode), "mode", &c, NULL, &err), 0);
+	CHECK_INT(c.display.mode_w, 800);
+	CHECK_INT(c.display.mode_h, 480);
+	CHECK_INT(c.display.mode_hz, 0);
+}
+
+static void test_unknown_keys(const char *dir)
+{
+	char *path = path_of(dir, "unknown-keys.conf");
+	struct config c;
+	struct error err;
+	char *out = NULL;
+	size_t outlen = 0;
+	FILE *warn = open_memstream(&out, &outlen);
+	static const char *const expect[] = { ":2: warning: unknown key \"brightness\" in display",
+					      ":5: warning: unknown key \"hand\" in input",
+					      ":6: warning: unknown key \"colour\" in the top level",
+					      ":9: warning: unknown key \"blink\" in gpio.buttons.new" };
+
+	CHECK(warn);
+	CHECK_INT(config_load(path, &c, warn, &err), 0);
+	CHECK_INT(fclose(warn), 0);
+	CHECK_INT(c.input.rotation, 270);
+	CHECK(c.gpio.buttons[BUTTON_NEW].set);
+	for (size_t i = 0; i < sizeof(expect) / sizeof(expect[0]); i++) {
+		if (!strstr(out, expect[i])) {
+			fprintf(stderr, "missing warning %s in:\n%s", expect[i], out);
+			CHECK(0);
+		}
+	}
+	CHECK(strncmp(out, path, strlen(path)) == 0);
+	free(out);
+	free(path);
+}
+
+static void test_malformed(const char *dir)
+{
+	char *expect = path_of(dir, "EXPECT");
+	char *data;
+	size_t len;
+	struct error err;
+	int count = 0;
+
+	CHECK_INT(fileio_read_all(expect, 1 << 20, &data, &len, &err), 0);
+	for (char *line = strtok(data, "\n"); line; line = strtok(NULL, "\n")) {
+		char name[128], want[160], *path;
+		unsigned long at;
+		struct config c;
+
+		if (line[0] == '#')
+			continue;
+		CHECK(sscanf(line, "%127s %lu", name, &at) == 2);
+		path = path_of(dir, name);
+		memset(&c, 0x5a, sizeof(c));
+		if (config_load(path, &c, NULL, &err) != -EINVAL) {
+			fprintf(stderr, "%s: not refused with -EINVAL\n", path);
+			CHECK(0);
+		}
+		check_defaults(&c); /* nothing half-parsed */
+		snprintf(want, sizeof(want), "%s:%lu: ", path, at);
+		if (strncmp(err.msg, want, strlen(want)) != 0) {
+			fprintf(stderr, "%s: expected \"%s...\", got \"%s\"\n", name, want, err.msg);
+			CHECK(0);
+		}
+		printf("%s\n", err.msg);
+		free(path);
+		count++;
+	}
+	CHECK(count >= 20);
+	free(data);
+	free(expect);
+
+	/* too large */
+	size_t big = CONFIG_MAX_BYTES + 1;
+	char *huge = malloc(big);
+	struct config c;
+
+	CHECK(huge);
+	memset(huge, '#', big);
+	CHECK_INT(config_parse(huge, big, "huge", &c, NULL, &err), -EINVAL);
+	CHECK(strncmp(err.msg, "huge: ", 6) == 0);
+	free(huge);
+}
+
+int main(int argc, char **argv)
+{
+	CHECK(argc == 3);
+	test_defaults();
+	test_good(argv[1]);
+	test_unknown_keys(argv[1]);
+	test_malformed(argv[2]);
+	return 0;
+}
