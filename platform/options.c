@@ -38,6 +38,12 @@ void options_usage(FILE *f)
 	      "  --view YAW[,PITCH]  show a 3D tree turned: the camera's azimuth (90 = from\n"
 	      "                      the right) and height in degrees, after all input\n"
 	      "\n"
+	      "Kiosk test runs (no effect on a normal kiosk):\n"
+	      "  --kiosk-frames N    draw a new frame every vblank, as if the drawing changed\n"
+	      "                      each time, and exit after N frames are shown; prints\n"
+	      "                      the frame rate and the time to the first frame\n"
+	      "  --screenshot FILE   with --kiosk-frames: write the last frame as a PNG\n"
+	      "\n"
 	      "Any mode:\n"
 	      "  --record FILE       write every input event to FILE as an edaha trace\n"
 	      "  --help              show this help\n"
@@ -124,10 +130,21 @@ static bool parse_view(const char *s, double *yaw, double *pitch)
 	return *end == '\0';
 }
 
+static bool parse_frames(const char *s, unsigned long *n)
+{
+	uint64_t v;
+
+	/* a bound, so that a typo cannot keep a test VM busy for hours */
+	if (!parse_seed(s, &v) || v < 1 || v > 1000000)
+		return false;
+	*n = (unsigned long)v;
+	return true;
+}
+
 int options_parse(struct options *o, int argc, char **argv)
 {
 	enum { OPT_HEADLESS = 256, OPT_SIZE, OPT_SEED, OPT_OUT, OPT_LOAD, OPT_REPLAY, OPT_PRESS,
-	       OPT_VIEW, OPT_RECORD, OPT_HELP, OPT_VERSION };
+	       OPT_VIEW, OPT_RECORD, OPT_HELP, OPT_VERSION, OPT_KIOSK_FRAMES, OPT_SCREENSHOT };
 	static const struct option longopts[] = {
 		{ "headless", no_argument, NULL, OPT_HEADLESS },
 		{ "size", required_argument, NULL, OPT_SIZE },
@@ -138,6 +155,8 @@ int options_parse(struct options *o, int argc, char **argv)
 		{ "press", required_argument, NULL, OPT_PRESS },
 		{ "view", required_argument, NULL, OPT_VIEW },
 		{ "record", required_argument, NULL, OPT_RECORD },
+		{ "kiosk-frames", required_argument, NULL, OPT_KIOSK_FRAMES },
+		{ "screenshot", required_argument, NULL, OPT_SCREENSHOT },
 		{ "help", no_argument, NULL, OPT_HELP },
 		{ "version", no_argument, NULL, OPT_VERSION },
 		{ NULL, 0, NULL, 0 },
@@ -195,6 +214,15 @@ int options_parse(struct options *o, int argc, char **argv)
 						   "pitch -20..75)", optarg);
 			o->view_given = true;
 			break;
+		case OPT_KIOSK_FRAMES:
+			if (!parse_frames(optarg, &o->kiosk_frames))
+				return usage_error("bad --kiosk-frames \"%s\" (expected 1..1000000)", optarg);
+			break;
+		case OPT_SCREENSHOT:
+			if (!optarg[0])
+				return usage_error("%s needs a file name", "--screenshot");
+			o->screenshot = optarg;
+			break;
 		case OPT_HELP:
 			o->help = true;
 			break;
@@ -212,6 +240,11 @@ int options_parse(struct options *o, int argc, char **argv)
 	if (!o->headless && (o->out_dir || o->nsteps || o->view_given))
 		return usage_error("%s needs --headless",
 				   o->out_dir ? "--out" : o->nsteps ? "--replay/--press" : "--view");
+	if (o->headless && (o->kiosk_frames || o->screenshot))
+		return usage_error("%s is for the kiosk, not --headless",
+				   o->kiosk_frames ? "--kiosk-frames" : "--screenshot");
+	if (o->screenshot && !o->kiosk_frames)
+		return usage_error("%s needs --kiosk-frames N", "--screenshot");
 	if (o->headless && (!o->out_dir || !o->out_dir[0]))
 		return usage_error("%s needs --out DIR", "--headless");
 	return 0;

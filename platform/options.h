@@ -32,6 +32,9 @@ struct options {
 	double view_yaw, view_pitch; /* degrees */
 	struct step *steps;
 	size_t nsteps;
+	/* kiosk test runs: stop after this many frames (0: run until a signal)... */
+	unsigned long kiosk_frames;
+	const char *screenshot; /* ...and write the last one here */
 };
 
 /* Parses argv. Returns 0, or 2 (usage error, message printed) as an exit status. */
