@@ -1,0 +1,123 @@
+#!/bin/bash
+# Runs a command in a throw-away QEMU guest: Debian's own kernel (linux-image-amd64) with a
+# busybox initramfs, this machine's root filesystem shared read-only over 9p under a tmpfs
+# overlay (so host-built binaries and their libraries run unchanged), a bochs-display for
+# KMS and a writable results folder. TCG, not KVM: a nested KVM guest hangs in early boot.
+#
+#   vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] -- COMMAND [ARGS...]
+#     -t  time limit for the whole VM (default 120)
+#     -o  host DIR mounted read-write at /out in the guest
+#     -g  display device (default bochs: bochs-display at 1280x800)
+#   Environment: KVER (kernel version, default the newest in /lib/modules),
+#   VM_CACHE (where the initramfs is kept, default /tmp/edaha-vm-cache), VM_VERBOSE=1.
+#
+# COMMAND runs as root with the caller's working directory; its exit status becomes
+# ours. 77 (meson's "skipped") when QEMU or the kernel is missing, 125 when the guest
+# never reported one (boot failure, time limit).
+# Packages: qemu-system-x86 linux-image-amd64 busybox-static cpio kmod udev.
+set -euo pipefail
+
+limit=120 out="" gpu=bochs
+while getopts "t:o:g:" opt; do
+	case $opt in
+	t) limit=$OPTARG ;;
+	o) mkdir -p "$OPTARG"; out=$(realpath "$OPTARG") ;;
+	g) gpu=$OPTARG ;;
+	*) exit 2 ;;
+	esac
+done
+shift $((OPTIND - 1))
+[ "${1:-}" = "--" ] && shift
+[ $# -ge 1 ] || { echo "usage: vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] -- COMMAND..." >&2; exit 2; }
+
+skip() { echo "vm: SKIP: $*"; exit 77; }
+command -v qemu-system-x86_64 >/dev/null || skip "no qemu-system-x86_64 (apt-get install qemu-system-x86)"
+[ -x /bin/busybox ] || skip "no /bin/busybox (apt-get install busybox-static)"
+command -v cpio >/dev/null || skip "no cpio"
+kver=${KVER:-$(ls /lib/modules 2>/dev/null | sort -V | tail -1)}
+kernel=/boot/vmlinuz-$kver
+[ -n "$kver" ] && [ -r "$kernel" ] || skip "no readable kernel /boot/vmlinuz-* (apt-get install linux-image-amd64)"
+
+cache=${VM_CACHE:-/tmp/edaha-vm-cache}/$kver
+initrd=$cache/initrd.cpio.gz
+
+# The initramfs only loads what reaching the host root needs (9p over virtio, overlay),
+# mounts it and switches to it; /job/guest.sh then does the rest on the real root.
+build_initrd() {
+	local root=$cache/root m
+	rm -rf "$root"
+	mkdir -p "$root"/{bin,dev,proc,sys,host,newroot,job,lib/modules}
+	cp /bin/busybox "$root/bin/busybox"
+	for m in sh mount mkdir insmod switch_root cat; do ln -s busybox "$root/bin/$m"; done
+	for m in virtio_pci 9pnet_virtio 9p overlay; do modprobe -S "$kver" --show-depends $m; done |
+		awk '$1 == "insmod" && !seen[$2]++ { print $2 }' > "$cache/modules"
+	while read -r m; do
+		cp "$m" "$root/lib/modules/"
+		echo "insmod /lib/modules/$(basename "$m")"
+	done < "$cache/modules" > "$root/modules.sh"
+	cat > "$root/init" <<'EOF'
+#!/bin/sh
+mount -t proc proc /proc; mount -t sysfs sys /sys; mount -t devtmpfs dev /dev
+. /modules.sh
+mount -t 9p -o trans=virtio,version=9p2000.L,ro,cache=loose hostroot /host
+mount -t 9p -o trans=virtio,version=9p2000.L,rw job /job
+mkdir -p /rw && mount -t tmpfs -o size=1G tmpfs /rw && mkdir -p /rw/upper /rw/work
+mount -t overlay -o lowerdir=/host,upperdir=/rw/upper,workdir=/rw/work overlay /newroot
+for d in proc sys dev job; do mkdir -p /newroot/$d; mount -o move /$d /newroot/$d; done
+mount -t tmpfs tmpfs /newroot/run
+exec switch_root /newroot /bin/sh /job/guest.sh
+EOF
+	chmod +x "$root/init"
+	(cd "$root" && find . | cpio -o -H newc --quiet | gzip -1) > "$initrd.tmp"
+	mv "$initrd.tmp" "$initrd"
+}
+mkdir -p "$cache"
+# rebuilt when this script changes, so a fix to init reaches every later run
+{ [ -s "$initrd" ] && [ "$initrd" -nt "$0" ]; } || build_initrd
+
+job=$(mktemp -d /tmp/edaha-vm-job.XXXXXX)
+trap 'rm -rf "$job"' EXIT
+printf '%q ' "$@" > "$job/cmd"
+printf 'OUT=%q\nCWD=%q\nVERBOSE=%q\nGPU=%q\n' "$out" "$PWD" "${VM_VERBOSE:-}" "$gpu" > "$job/env"
+cat > "$job/guest.sh" <<'EOF'
+#!/bin/sh
+# PID 1 in the guest, on the overlay root
+export PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin HOME=/root TERM=dumb
+. /job/env
+mkdir -p /dev/pts && mount -t devpts devpts /dev/pts
+if [ -n "$OUT" ]; then mkdir -p /out && mount -t 9p -o trans=virtio,version=9p2000.L,rw out /out; fi
+[ -n "$VERBOSE" ] && echo "vm: userspace up at $(cut -d' ' -f1 /proc/uptime) s"
+# the display driver, loaded here: udev is not asked to go through every PCI device
+case $GPU in bochs) modprobe bochs ;; virtio) modprobe virtio_gpu ;; esac
+# udev fills in the device database libinput and Mesa's loader read
+/lib/systemd/systemd-udevd --daemon --resolve-names=never 2>/dev/null &&
+	udevadm trigger --action=add --subsystem-match=input --subsystem-match=drm &&
+	udevadm settle -t 10
+[ -n "$VERBOSE" ] && echo "vm: udev settled at $(cut -d' ' -f1 /proc/uptime) s"
+cd "$CWD" && sh -c "$(cat /job/cmd)" < /dev/null
+echo $? > /job/rc
+sync
+exec /bin/busybox poweroff -f
+EOF
+
+qemu=(qemu-system-x86_64 -accel tcg,thread=multi -cpu max -smp 2 -m 2048
+	-nographic -no-reboot -nodefaults -serial stdio
+	-kernel "$kernel" -initrd "$initrd"
+	-append "console=ttyS0 quiet loglevel=3 panic=-1 rdinit=/init"
+	-fsdev local,id=hostroot,path=/,security_model=none,readonly=on,multidevs=remap
+	-device virtio-9p-pci,fsdev=hostroot,mount_tag=hostroot
+	-fsdev local,id=job,path="$job",security_model=none
+	-device virtio-9p-pci,fsdev=job,mount_tag=job)
+case $gpu in
+bochs) qemu+=(-device bochs-display,xres=1280,yres=800) ;;
+virtio) qemu+=(-device virtio-gpu-pci,xres=1280,yres=800) ;;
+none) ;;
+*) echo "vm: unknown display $gpu" >&2; exit 2 ;;
+esac
+if [ -n "$out" ]; then
+	qemu+=(-fsdev local,id=out,path="$out",security_model=none -device virtio-9p-pci,fsdev=out,mount_tag=out)
+fi
+timeout "$limit" "${qemu[@]}" < /dev/null || echo "vm: qemu exited with status $?" >&2
+rc=$(cat "$job/rc" 2>/dev/null || echo 125)
+[ "$rc" = 125 ] && echo "vm: the guest reported no exit status (boot failure or time limit $limit s)" >&2
+exit "$rc"
