@@ -123,8 +123,7 @@ static int request(struct gpio_line *l, bool output, const char **why)
 	if (!s || !lc || !rc)
 		goto out;
 	*why = "bad line settings";
-	if (gpiod_line_settings_set_active_low(s, c->active_low), 0)
-		goto out;
+	gpiod_line_settings_set_active_low(s, c->active_low);
 	if (output) {
 		if (gpiod_line_settings_set_direction(s, GPIOD_LINE_DIRECTION_OUTPUT) < 0 ||
 		    gpiod_line_settings_set_output_value(s, GPIOD_LINE_VALUE_INACTIVE) < 0)
@@ -189,7 +188,8 @@ static int read_edges(struct gpio *g, struct gpio_line *l,
 	if (n < 0)
 		return -errno;
 	for (int i = 0; i < n; i++) {
-		struct gpiod_edge_event *e = gpiod_edge_event_buffer_get_event(g->events, (unsigned long)i);
+		struct gpiod_edge_event *e =
+			gpiod_edge_event_buffer_get_event(g->events, (unsigned long)i);
 
 		if (!e)
 			continue;
