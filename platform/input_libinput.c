@@ -45,6 +45,7 @@ struct input {
 	struct event last; /* position, tool, pressure, tilt of the last event */
 	double mouse_x, mouse_y;
 	int32_t touch_slot;
+	bool debug;
 };
 
 static int open_restricted(const char *path, int flags, void *user_data)
@@ -393,6 +394,9 @@ int input_dispatch(void *data)
 	if (r < 0)
 		return r;
 	while ((e = libinput_get_event(in->li))) {
+		if (in->debug)
+			fprintf(stderr, "edaha: input: libinput event %d\n",
+				(int)libinput_event_get_type(e));
 		switch (libinput_event_get_type(e)) {
 		case LIBINPUT_EVENT_DEVICE_ADDED:
 			device_added(in, libinput_event_get_device(e));
@@ -456,6 +460,10 @@ struct input *input_create(const struct config *cfg, int screen_w, int screen_h,
 		error_set(err, -ENOMEM, "input: libinput_udev_create_context failed");
 		goto fail;
 	}
+	/* EDAHA_INPUT_DEBUG=1: libinput's own debug log on stderr, and every event type */
+	in->debug = getenv("EDAHA_INPUT_DEBUG") && strcmp(getenv("EDAHA_INPUT_DEBUG"), "1") == 0;
+	if (in->debug)
+		libinput_log_set_priority(in->li, LIBINPUT_LOG_PRIORITY_DEBUG);
 	r = libinput_udev_assign_seat(in->li, INPUT_SEAT);
 	if (r != 0) {
 		error_set(err, -ENODEV, "input: cannot assign seat %s (udev running?)", INPUT_SEAT);

@@ -1,0 +1,38 @@
+#!/bin/bash
+# System test of the pen input (not registered in meson test yet): boots a VM (vm.sh),
+# makes a virtual pen tablet with uinput (uinput_pen, driven by pen.script) and records
+# what platform/input_libinput.c makes of it through libinput's udev backend
+# (input_probe, an edaha trace). Checks the pen and eraser strokes, the stylus button,
+# the positions (the tablet's 16:10 onto the 1280x800 screen) and that the tablet
+# unplugged and plugged back mid-session is picked up again; then replays the trace with
+# `edaha --headless`.
+# Environment: EDAHA, VM, UINPUT_PEN, INPUT_PROBE (from the build: tests/platform/).
+set -uo pipefail
+: "${EDAHA:?}" "${VM:?}" "${UINPUT_PEN:?}" "${INPUT_PROBE:?}"
+HERE=$(cd "$(dirname "$0")" && pwd)
+T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-pen.XXXXXX")
+trap 'rm -rf "$T"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# udev is slow under TCG: uinput_pen waits 3 s after each plug before it writes.
+"$VM" -t 150 -g none -o "$T/vm" -- sh -c 'modprobe uinput || exit 3; "$0" --config /nonexistent --seconds 20 >/out/probe.trace 2>/out/probe.err & sleep 1.5; "$1" <"$2" 2>/out/pen.err; wait $!' \
+	"$INPUT_PROBE" "$UINPUT_PEN" "$HERE/pen.script"
+rc=$?
+[ $rc -eq 77 ] && exit 77
+cat "$T/vm/pen.err" "$T/vm/probe.err" 2>/dev/null | grep -v '^event[0-9]* *-\|^libinput info'
+[ $rc -eq 0 ] || fail "the VM job exited $rc"
+tr=$T/vm/probe.trace
+count() { grep -c -- "$1" "$tr"; }
+[ "$(grep -c 'virtual pen added' "$T/vm/probe.err")" -eq 2 ] || fail "the tablet was not added twice (hotplug)"
+[ "$(count ' proximity-in pen ')" -eq 1 ] || fail "expected one pen proximity-in"
+[ "$(count ' tip-down pen ')" -eq 1 ] || fail "expected one pen tip-down"
+[ "$(count ' motion pen ')" -ge 5 ] || fail "expected pen motion"
+[ "$(count ' pen-button stylus pressed ')" -eq 1 ] || fail "expected the stylus button"
+[ "$(count ' proximity-in eraser ')" -eq 1 ] || fail "expected the eraser after the replug"
+[ "$(count ' tip-down eraser ')" -eq 1 ] || fail "expected an eraser tip-down"
+# the pen's tip came down at the tablet's centre: the screen's centre
+awk '$2 == "tip-down" && $3 == "pen" { if ($4 < 635 || $4 > 645 || $5 < 395 || $5 > 405) exit 1 }' "$tr" ||
+	fail "the tip-down is not at the screen's centre"
+"$EDAHA" --headless --replay "$tr" --out "$T/out" >"$T/replay.log" 2>&1 ||
+	{ cat "$T/replay.log" >&2; fail "edaha --headless does not replay the recorded trace"; }
+echo "system-pen: OK ($(grep -c . "$tr") lines of trace)"
