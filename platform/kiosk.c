@@ -270,8 +270,12 @@ static void draw_frame(struct kiosk *k)
 		return;
 	}
 	k->frames++;
-	if (k->frames == 1)
+	if (k->frames == 1) {
 		k->first_frame_us = now_us();
+		/* the kiosk is up: a line for the journal (and for tests to wait on) */
+		fprintf(stderr, "edaha: first frame on screen %.1f ms after start\n",
+			(double)(k->first_frame_us - k->start_us) / 1000.0);
+	}
 }
 
 static void on_flip(struct kiosk *k)
@@ -372,7 +376,8 @@ static void print_stats(const struct kiosk *k)
 
 	if (!k->frames)
 		return;
-	fprintf(stderr, "edaha: %lu frames; first on screen %.1f ms after start", k->frames, first_ms);
+	fprintf(stderr, "edaha: %lu frame%s; first on screen %.1f ms after start", k->frames,
+		k->frames == 1 ? "" : "s", first_ms);
 	if (k->frames > 1 && k->last_frame_us > k->first_frame_us)
 		fprintf(stderr, "; %.1f frames/s after it",
 			(double)(k->frames - 1) * 1e6 / (double)(k->last_frame_us - k->first_frame_us));

@@ -3,7 +3,9 @@
 # `edaha --kiosk-frames 30 --screenshot` on its real DRM device (modeset, GBM, EGL, page
 # flips) and checks on the host that the last frame shows the kiosk: the same picture as a
 # headless render of the same empty drawing, within imgcmp's tolerance. Prints the frame
-# rate and the time to the first frame (from an emulated CPU and llvmpipe: slow).
+# rate and the time to the first frame (from an emulated CPU and llvmpipe: slow). Then
+# starts the kiosk plainly and checks that, with nothing happening, it draws its first
+# frame only and ends cleanly on SIGTERM.
 # Environment from meson: EDAHA, IMGCMP, VM, EDAHA_GL_PRELOAD (ASan builds).
 set -uo pipefail
 : "${EDAHA:?}" "${IMGCMP:?}" "${VM:?}"
@@ -25,13 +27,18 @@ env "${host_env[@]}" "$EDAHA" --headless --out "$T/headless" >"$T/headless.log" 
 	{ cat "$T/headless.log" >&2; fail "headless render exited $?"; }
 
 # llvmpipe's 256-bit vectors are slow under TCG; 128-bit ones halve the frame time there
-"$VM" -t 240 -o "$T/vm" -- env "${guest_env[@]}" sh -c \
-	'"$0" --kiosk-frames "$1" --screenshot /out/kiosk.png 2>/out/kiosk.log' "$EDAHA" "$FRAMES"
+"$VM" -t 300 -o "$T/vm" -- env "${guest_env[@]}" \
+	"$(dirname "$0")/display_guest.sh" "$EDAHA" "$FRAMES" /out
 rc=$?
 [ $rc -eq 77 ] && exit 77 # vm.sh said why it skips
-grep -v '^MESA-LOADER\|^failed to load driver\|^pci id for fd\|^kmsro' "$T/vm/kiosk.log" 2>/dev/null
-[ $rc -eq 0 ] || fail "edaha --kiosk-frames $FRAMES in the VM exited $rc"
+for log in kiosk idle; do
+	grep -v '^MESA-LOADER\|^failed to load driver\|^pci id for fd\|^kmsro' "$T/vm/$log.log" 2>/dev/null
+done
+[ $rc -eq 0 ] || fail "edaha in the VM exited $rc"
 grep -q "^edaha: $FRAMES frames" "$T/vm/kiosk.log" || fail "the log does not say $FRAMES frames were shown"
+# idle: one frame (the first), then nothing until SIGTERM ended it cleanly
+grep -q "^edaha: Terminated, stopping" "$T/vm/idle.log" || fail "the idle kiosk did not stop on SIGTERM"
+grep -q "^edaha: 1 frame;" "$T/vm/idle.log" || fail "the idle kiosk drew more than its first frame"
 # Multisampled edges are resolved by a different path than the headless framebuffer's:
 # a few hundred edge pixels differ; a missing or misplaced button or colour would not fit.
 "$IMGCMP" --max-diff 64 --max-fraction 0.005 --diff "$T/diff.png" \
