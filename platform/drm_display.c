@@ -342,6 +342,14 @@ void drm_display_destroy(struct drm_display *d)
 				strerror(errno));
 	}
 	drmModeFreeCrtc(d->saved_crtc);
+	/* buffers go back to the surface while EGL's side of it still exists: Mesa's release
+	 * looks the buffer up in the EGL surface, which eglDestroySurface frees (and with it
+	 * every buffer, whose framebuffers destroy_fb removes) */
+	if (d->front)
+		gbm_surface_release_buffer(d->surface, d->front);
+	if (d->next && d->next != d->front)
+		gbm_surface_release_buffer(d->surface, d->next);
+	d->front = d->next = NULL;
 	if (d->dpy != EGL_NO_DISPLAY) {
 		eglMakeCurrent(d->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
 		if (d->egl_surface != EGL_NO_SURFACE)
@@ -352,11 +360,6 @@ void drm_display_destroy(struct drm_display *d)
 		/* frees EGL's per-thread state, which would otherwise outlive us */
 		eglReleaseThread();
 	}
-	/* buffers go back to the surface before it goes; their framebuffers with them */
-	if (d->front)
-		gbm_surface_release_buffer(d->surface, d->front);
-	if (d->next && d->next != d->front)
-		gbm_surface_release_buffer(d->surface, d->next);
 	if (d->surface)
 		gbm_surface_destroy(d->surface);
 	if (d->gbm)
