@@ -13,6 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/epoll.h>
+#include <sys/timerfd.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "gpio_debounce.h"
@@ -29,6 +31,7 @@ struct gpio_line {
 	const struct config_gpio_line *conf;
 	int fd;
 	struct gpio_debounce db;
+	bool recheck; /* a change was dropped in the window: read the line when it closes */
 #if EDAHA_GPIOD_V2
 	struct gpiod_line_request *req;
 	unsigned int offset;
@@ -40,6 +43,7 @@ struct gpio_line {
 
 struct gpio {
 	int epfd;
+	int timerfd; /* fires when a debounce window with a dropped change closes */
 	input_emit_fn emit;
 	void *data;
 	struct config cfg;
@@ -303,29 +307,96 @@ static int read_edges(struct gpio *g, struct gpio_line *l,
 
 /* ---- common --------------------------------------------------------------------- */
 
-static void edge(struct gpio *g, struct gpio_line *l, bool pressed, uint64_t t_us)
+static uint64_t now_us(void)
+{
+	struct timespec ts;
+
+	if (clock_gettime(CLOCK_MONOTONIC, &ts) < 0)
+		return 0;
+	return (uint64_t)ts.tv_sec * 1000000u + (uint64_t)ts.tv_nsec / 1000u;
+}
+
+static void emit_button(struct gpio *g, struct gpio_line *l, bool pressed, uint64_t t_us)
 {
 	struct event ev = { .type = EVENT_BUTTON };
 
-	if (!gpio_debounce_edge(&l->db, pressed, t_us))
-		return;
 	ev.time_us = t_us;
 	ev.button = (int)l->button;
 	ev.pressed = pressed;
 	g->emit(g->data, &ev);
 }
 
+/* Arms the timer for when l's window closes (an earlier deadline already set wins). */
+static void arm(struct gpio *g, const struct gpio_line *l)
+{
+	struct itimerspec old, it = { 0 };
+	uint64_t now = now_us(), due = l->db.last_us + l->db.window_us;
+	uint64_t in = due > now ? due - now + 1000u : 1000u; /* a millisecond past the edge */
+
+	if (timerfd_gettime(g->timerfd, &old) == 0 &&
+	    (old.it_value.tv_sec || old.it_value.tv_nsec) &&
+	    (uint64_t)old.it_value.tv_sec * 1000000u + (uint64_t)old.it_value.tv_nsec / 1000u <= in)
+		return;
+	it.it_value.tv_sec = (time_t)(in / 1000000u);
+	it.it_value.tv_nsec = (long)(in % 1000000u) * 1000L;
+	if (timerfd_settime(g->timerfd, 0, &it, NULL) < 0)
+		fprintf(stderr, "edaha: gpio: timerfd_settime: %s\n", strerror(errno));
+}
+
+static void edge(struct gpio *g, struct gpio_line *l, bool pressed, uint64_t t_us)
+{
+	if (gpio_debounce_edge(&l->db, pressed, t_us)) {
+		emit_button(g, l, pressed, t_us);
+		return;
+	}
+	/* dropped in the window: the line may settle on the other state with no edge to come */
+	if (pressed != l->db.pressed) {
+		l->recheck = true;
+		arm(g, l);
+	}
+}
+
+/* The window closed: each line that dropped a change is read, and follows its level. */
+static void settle(struct gpio *g)
+{
+	uint64_t expirations, now = now_us();
+
+	if (read(g->timerfd, &expirations, sizeof(expirations)) < 0 && errno != EAGAIN)
+		fprintf(stderr, "edaha: gpio: timerfd: %s\n", strerror(errno));
+	for (int i = 0; i < g->nbuttons; i++) {
+		struct gpio_line *l = &g->buttons[i];
+		int v;
+
+		if (!l->recheck)
+			continue;
+		if (l->db.have_time && now < l->db.last_us + l->db.window_us) {
+			arm(g, l); /* a change was accepted since: its window is still open */
+			continue;
+		}
+		l->recheck = false;
+		v = line_value(l);
+		if (v >= 0 && gpio_debounce_edge(&l->db, v == 1, now))
+			emit_button(g, l, v == 1, now);
+	}
+}
+
 int gpio_dispatch(void *data)
 {
 	struct gpio *g = data;
-	struct epoll_event ready[BUTTON_COUNT];
-	int n = epoll_wait(g->epfd, ready, BUTTON_COUNT, 0);
+	struct epoll_event ready[BUTTON_COUNT + 1];
+	int n = epoll_wait(g->epfd, ready, BUTTON_COUNT + 1, 0);
 
 	if (n < 0)
 		return errno == EINTR ? 0 : -errno;
 	for (int i = 0; i < n; i++) {
 		struct gpio_line *l = ready[i].data.ptr;
-		int r = read_edges(g, l, edge);
+		int r;
+
+		if (!l) {
+			settle(g);
+			continue;
+		}
+		r = read_edges(g, l, edge);
 
 		if (r < 0 && r != -EAGAIN && r != -EINTR)
 			return r;
@@ -345,10 +416,19 @@ struct gpio *gpio_create(const struct config *cfg, input_emit_fn emit, void *dat
 	g->emit = emit;
 	g->data = data;
 	g->cfg = *cfg;
+	g->timerfd = -1;
 	g->epfd = epoll_create1(EPOLL_CLOEXEC);
 	if (g->epfd < 0) {
 		error_set(err, -errno, "gpio: epoll_create1: %s", strerror(errno));
 		free(g);
+		return NULL;
+	}
+	g->timerfd = timerfd_create(CLOCK_MONOTONIC, TFD_CLOEXEC | TFD_NONBLOCK);
+	struct epoll_event te = { .events = EPOLLIN, .data.ptr = NULL };
+
+	if (g->timerfd < 0 || epoll_ctl(g->epfd, EPOLL_CTL_ADD, g->timerfd, &te) < 0) {
+		error_set(err, -errno, "gpio: timerfd: %s", strerror(errno));
+		gpio_destroy(g);
 		return NULL;
 	}
 #if EDAHA_GPIOD_V2
@@ -419,6 +499,8 @@ void gpio_destroy(struct gpio *g)
 	if (g->events)
 		gpiod_edge_event_buffer_free(g->events);
 #endif
+	if (g->timerfd >= 0 && close(g->timerfd) < 0)
+		fprintf(stderr, "edaha: gpio: close: %s\n", strerror(errno));
 	if (g->epfd >= 0 && close(g->epfd) < 0)
 		fprintf(stderr, "edaha: gpio: close: %s\n", strerror(errno));
 	free(g);

@@ -7,12 +7,13 @@ H=$(dirname "$0")
 sleep 4
 "$H/gpio_sim.sh" press 0; sleep 0.5
 echo "after-3d $("$H/gpio_sim.sh" value 5) $("$H/gpio_sim.sh" value 6)" >>/out/leds
-"$H/gpio_sim.sh" release 0; sleep 0.5
-# shell commands under TCG take a good part of a second: no bounces can be made here
-# (gpio_debounce.c has its unit test); a press and release well apart
-"$H/gpio_sim.sh" press 1; sleep 0.5; "$H/gpio_sim.sh" release 1; sleep 0.5
+"$H/gpio_sim.sh" release 0; sleep 1.5
+# a press and release within debounce_ms (1000): the release is dropped at its edge
+# and read from the line when the window closes
+"$H/gpio_sim.sh" press 1; sleep 0.2; "$H/gpio_sim.sh" release 1; sleep 1.5
 echo "after-clone $("$H/gpio_sim.sh" value 5) $("$H/gpio_sim.sh" value 6)" >>/out/leds
-"$H/gpio_sim.sh" press 3; sleep 0.5; "$H/gpio_sim.sh" release 3
-sleep 1
+"$H/gpio_sim.sh" press 3; sleep 1.5; "$H/gpio_sim.sh" release 3; sleep 1.5
+# a bouncing press: press, release, press within the window: one press, no release
+"$H/gpio_sim.sh" press 2; "$H/gpio_sim.sh" release 2; "$H/gpio_sim.sh" press 2; sleep 2
 kill $! 2>/dev/null
 wait
