@@ -19,8 +19,8 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 rc=$?
 [ $rc -eq 77 ] && exit 77
 cat "$T/vm/probe.err" 2>/dev/null
-# 143: input_probe stopped by the guest script once it is done
-[ $rc -eq 0 ] || [ $rc -eq 143 ] || fail "the VM job exited $rc"
+[ $rc -eq 0 ] || fail "the VM job exited $rc"
+grep -q 'input_probe: [0-9]* events' "$T/vm/probe.err" || fail "input_probe did not end cleanly"
 tr=$T/vm/probe.trace
 grep -q 'input_probe: 4 GPIO buttons, 2 LEDs' "$T/vm/probe.err" || fail "not 4 buttons and 2 LEDs"
 grep -q 'button undo (chip "no-such-chip".*no such chip' "$T/vm/probe.err" || fail "no warning for the missing chip"

@@ -4,10 +4,12 @@
  * on stdout (replayable with `edaha --replay`): the pen tablet, mouse or touchscreen
  * through platform/input_libinput.c and the GPIO buttons through platform/gpio.c, for the
  * VM tests. A mode button pressed lights its LED (gpio_set_mode).
+ * SIGTERM or SIGINT end it early, cleanly (the modules are destroyed, LEDs put out).
  *   input_probe [--config FILE] [--seconds N] [--screen WxH]
  */
 #include <errno.h>
 #include <poll.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,6 +44,14 @@ static void emit(void *data, const struct event *ev)
 		gpio_set_mode(p->gpio, (enum button)ev->button);
 }
 
+static volatile sig_atomic_t stop;
+
+static void on_signal(int sig)
+{
+	(void)sig;
+	stop = 1;
+}
+
 static double now_s(void)
 {
 	struct timespec ts;
@@ -63,6 +73,13 @@ int main(int argc, char **argv)
 	struct kiosk_source src[2];
 	struct pollfd pfd[2];
 
+	struct sigaction sa = { .sa_handler = on_signal };
+
+	if (sigemptyset(&sa.sa_mask) < 0 || sigaction(SIGTERM, &sa, NULL) < 0 ||
+	    sigaction(SIGINT, &sa, NULL) < 0) {
+		fprintf(stderr, "input_probe: sigaction: %s\n", strerror(errno));
+		return 1;
+	}
 	for (int i = 1; i < argc; i++) {
 		if (strcmp(argv[i], "--config") == 0 && i + 1 < argc)
 			conf = argv[++i];
@@ -98,7 +115,7 @@ int main(int argc, char **argv)
 	src[1] = gpio_source(probe.gpio);
 	for (int i = 0; i < 2; i++)
 		pfd[i] = (struct pollfd){ .fd = src[i].fd, .events = POLLIN };
-	for (double end = now_s() + seconds; now_s() < end;) {
+	for (double end = now_s() + seconds; !stop && now_s() < end;) {
 		int n = poll(pfd, 2, 50);
 
 		if (n < 0 && errno != EINTR) {
