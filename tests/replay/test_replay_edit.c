@@ -20,45 +20,13 @@
 #include <string.h>
 
 #include "app.h"
-#include "export.h"
+#include "replay_util.h"
 #include "test.h"
-#include "trace.h"
 
 #define W 1280
 #define H 800
 
 static const char *dir;
-
-static struct app *replay(const char *name)
-{
-	char path[4096];
-	struct trace t;
-	struct error err = { { 0 } };
-	struct app *app = app_create(W, H, 11);
-
-	CHECK(app);
-	snprintf(path, sizeof(path), "%s/%s", dir, name);
-	trace_init(&t);
-	if (trace_load(path, W, H, &t, &err) < 0) {
-		fprintf(stderr, "%s\n", err.msg);
-		exit(1);
-	}
-	for (size_t i = 0; i < t.nevents; i++)
-		app_handle_event(app, &t.events[i]);
-	trace_finish(&t);
-	CHECK_INT(app->failed, 0);
-	return app;
-}
-
-static char *skeleton_text(const struct tree *t)
-{
-	struct buf b;
-
-	buf_init(&b);
-	CHECK_INT(export_skeleton(t, &b), 0);
-	CHECK_INT(buf_append(&b, "", 1), 0);
-	return (char *)b.data;
-}
 
 /* The drawing the app would save loads back to the same skeleton. */
 static void check_reload(const struct app *app)
@@ -74,8 +42,8 @@ static void check_reload(const struct app *app)
 	CHECK_INT(doc_serialize(&app->doc, &app->tree, &b), 0);
 	CHECK_INT(doc_parse((const char *)b.data, b.len, "reload", &d, &err), 0);
 	CHECK_INT(app_load_doc(again, &d), 0);
-	s1 = skeleton_text(&app->tree);
-	s2 = skeleton_text(&again->tree);
+	s1 = replay_skeleton_text(&app->tree);
+	s2 = replay_skeleton_text(&again->tree);
 	CHECK(strcmp(s1, s2) == 0);
 	free(s1);
 	free(s2);
@@ -108,14 +76,6 @@ struct skel {
 	struct sleaf *l;
 };
 
-static json_object *get(json_object *o, const char *key)
-{
-	json_object *v;
-
-	CHECK(json_object_object_get_ex(o, key, &v));
-	return v;
-}
-
 static struct vec3 *points(json_object *pts, size_t *n)
 {
 	struct vec3 *p;
@@ -135,14 +95,14 @@ static struct vec3 *points(json_object *pts, size_t *n)
 
 static struct skel parse(const struct tree *t)
 {
-	char *text = skeleton_text(t);
+	char *text = replay_skeleton_text(t);
 	json_object *j = json_tokener_parse(text), *br, *lv;
 	struct skel s;
 
 	CHECK(j);
 	free(text);
-	br = get(j, "branches");
-	lv = get(j, "leaves");
+	br = replay_get(j, "branches");
+	lv = replay_get(j, "leaves");
 	s.nb = json_object_array_length(br);
 	s.nl = json_object_array_length(lv);
 	s.b = calloc(s.nb + 1, sizeof(*s.b));
@@ -151,18 +111,18 @@ static struct skel parse(const struct tree *t)
 	for (size_t i = 0; i < s.nb; i++) {
 		json_object *o = json_object_array_get_idx(br, i);
 
-		s.b[i].parent = json_object_get_int(get(o, "parent"));
-		s.b[i].parent_t = json_object_get_double(get(o, "parent_t"));
-		snprintf(s.b[i].origin, sizeof(s.b[i].origin), "%s", json_object_get_string(get(o, "origin")));
-		s.b[i].p = points(get(o, "points"), &s.b[i].n);
+		s.b[i].parent = json_object_get_int(replay_get(o, "parent"));
+		s.b[i].parent_t = json_object_get_double(replay_get(o, "parent_t"));
+		snprintf(s.b[i].origin, sizeof(s.b[i].origin), "%s", json_object_get_string(replay_get(o, "origin")));
+		s.b[i].p = points(replay_get(o, "points"), &s.b[i].n);
 	}
 	for (size_t i = 0; i < s.nl; i++) {
 		json_object *o = json_object_array_get_idx(lv, i);
 
-		s.l[i].branch = json_object_get_int(get(o, "branch"));
-		s.l[i].branch_t = json_object_get_double(get(o, "branch_t"));
-		snprintf(s.l[i].origin, sizeof(s.l[i].origin), "%s", json_object_get_string(get(o, "origin")));
-		s.l[i].p = points(get(o, "points"), &s.l[i].n);
+		s.l[i].branch = json_object_get_int(replay_get(o, "branch"));
+		s.l[i].branch_t = json_object_get_double(replay_get(o, "branch_t"));
+		snprintf(s.l[i].origin, sizeof(s.l[i].origin), "%s", json_object_get_string(replay_get(o, "origin")));
+		s.l[i].p = points(replay_get(o, "points"), &s.l[i].n);
 	}
 	json_object_put(j);
 	return s;
@@ -270,14 +230,14 @@ static void check_clones(const struct skel *s, int parent, size_t first_clone, s
 
 static void test_clone(void)
 {
-	struct app *base = replay("edit-clone-select.edaha-trace");
-	struct app *taps = replay("edit-clone-taps.edaha-trace");
-	struct app *circles = replay("edit-clone-circles.edaha-trace");
-	struct app *cw = replay("edit-clone-cw.edaha-trace");
-	struct app *branch = replay("edit-clone-branch.edaha-trace");
+	struct app *base = replay_trace(dir, "edit-clone-select.edaha-trace", W, H, 11);
+	struct app *taps = replay_trace(dir, "edit-clone-taps.edaha-trace", W, H, 11);
+	struct app *circles = replay_trace(dir, "edit-clone-circles.edaha-trace", W, H, 11);
+	struct app *cw = replay_trace(dir, "edit-clone-cw.edaha-trace", W, H, 11);
+	struct app *branch = replay_trace(dir, "edit-clone-branch.edaha-trace", W, H, 11);
 	struct skel s0 = parse(&base->tree), st = parse(&taps->tree), sc = parse(&cw->tree);
 	struct skel sb = parse(&branch->tree);
-	char *a = skeleton_text(&base->tree), *b = skeleton_text(&circles->tree);
+	char *a = replay_skeleton_text(&base->tree), *b = replay_skeleton_text(&circles->tree);
 
 	CHECK(base->tree.lifted && base->mode == APP_MODE_CLONE && base->selected == 0);
 	/* ten taps: ten children on the trunk */
@@ -353,7 +313,7 @@ static size_t leaves_on(const struct skel *s, int b, const struct sleaf **out)
 
 static void test_whorl(void)
 {
-	struct app *app = replay("edit-leaf-whorl.edaha-trace");
+	struct app *app = replay_trace(dir, "edit-leaf-whorl.edaha-trace", W, H, 11);
 	struct skel s = parse(&app->tree);
 	const struct sleaf *l[64];
 	double a[64];
@@ -407,7 +367,7 @@ static size_t groups(const struct skel *s, int b, double *t, const struct sleaf 
 
 static void test_extend(const char *trace, int b, size_t set)
 {
-	struct app *app = replay(trace);
+	struct app *app = replay_trace(dir, trace, W, H, 11);
 	struct skel s = parse(&app->tree);
 	const struct sleaf *first[64];
 	double t[64], L = length(&s.b[b]), step, turn;
@@ -434,7 +394,7 @@ static void test_extend(const char *trace, int b, size_t set)
 
 static void test_suggestions(void)
 {
-	struct app *app = replay("edit-leaf-suggest.edaha-trace");
+	struct app *app = replay_trace(dir, "edit-leaf-suggest.edaha-trace", W, H, 11);
 	enum arrange_pattern p[ARRANGE_COUNT];
 
 	/* leaf mode shows what the pair and the leaf above suggest */
@@ -450,7 +410,7 @@ static void test_suggestions(void)
 
 static void test_propagate(const char *trace, bool fixed_size)
 {
-	struct app *app = replay(trace);
+	struct app *app = replay_trace(dir, trace, W, H, 11);
 	struct skel s = parse(&app->tree);
 	int src = -1, ntargets = 0;
 	double Ls;

@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "app.h"
+#include "replay_util.h"
 #include "export.h"
 #include "lift.h"
 #include "test.h"
@@ -33,37 +34,14 @@
 
 static const char *dir;
 
-static void press(struct app *app, enum button b)
-{
-	struct event e = { .type = EVENT_BUTTON, .time_us = app->last_time_us + 100000,
-			   .button = (int)b, .pressed = true };
-
-	app_handle_event(app, &e);
-	e.pressed = false;
-	app_handle_event(app, &e);
-}
-
 /* The trace's events through the app, with the drawing's seed; then 3D if asked. */
 static struct app *replay(const char *name, uint64_t seed, bool lift)
 {
-	char path[4096];
-	struct trace t;
-	struct error err = { { 0 } };
-	struct app *app = app_create(W, H, seed);
+	struct app *app = replay_trace(dir, name, W, H, seed);
 
-	CHECK(app);
-	snprintf(path, sizeof(path), "%s/%s", dir, name);
-	trace_init(&t);
-	if (trace_load(path, W, H, &t, &err) < 0) {
-		fprintf(stderr, "%s\n", err.msg);
-		exit(1);
-	}
-	for (size_t i = 0; i < t.nevents; i++)
-		app_handle_event(app, &t.events[i]);
-	trace_finish(&t);
 	if (lift) {
 		CHECK(!app->tree.lifted);
-		press(app, BUTTON_3D);
+		replay_press(app, BUTTON_3D);
 		CHECK(app->tree.lifted);
 	}
 	CHECK_INT(app->failed, 0);
@@ -90,14 +68,6 @@ struct skel {
 	struct sbranch *b;
 };
 
-static json_object *get(json_object *o, const char *key)
-{
-	json_object *v;
-
-	CHECK(json_object_object_get_ex(o, key, &v));
-	return v;
-}
-
 static struct skel parse(const struct tree *t)
 {
 	struct buf b;
@@ -108,16 +78,16 @@ static struct skel parse(const struct tree *t)
 	j = json_tokener_parse((const char *)b.data);
 	CHECK(j);
 	buf_finish(&b);
-	br = get(j, "branches");
+	br = replay_get(j, "branches");
 	s.n = json_object_array_length(br);
 	s.b = calloc(s.n + 1, sizeof(*s.b));
 	CHECK(s.b);
 	for (size_t i = 0; i < s.n; i++) {
-		json_object *o = json_object_array_get_idx(br, i), *pts = get(o, "points");
+		json_object *o = json_object_array_get_idx(br, i), *pts = replay_get(o, "points");
 
-		CHECK_INT(json_object_get_int(get(o, "id")), i);
-		s.b[i].parent = json_object_get_int(get(o, "parent"));
-		s.b[i].merged = strcmp(json_object_get_string(get(o, "origin")), "merge") == 0;
+		CHECK_INT(json_object_get_int(replay_get(o, "id")), i);
+		s.b[i].parent = json_object_get_int(replay_get(o, "parent"));
+		s.b[i].merged = strcmp(json_object_get_string(replay_get(o, "origin")), "merge") == 0;
 		s.b[i].n = json_object_array_length(pts);
 		s.b[i].p = calloc(s.b[i].n + 1, sizeof(*s.b[i].p));
 		CHECK(s.b[i].p && s.b[i].n >= 2);

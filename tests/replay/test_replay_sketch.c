@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "app.h"
+#include "replay_util.h"
 #include "export.h"
 #include "test.h"
 #include "trace.h"
@@ -22,68 +23,30 @@ static const char *dir;
 static double to_px_x(double x) { return x * H / 10.0 + W / 2.0; }
 static double to_px_y(double y) { return 0.92 * H - y * H / 10.0; }
 
-static struct app *replay(const char *name)
-{
-	char path[4096];
-	struct trace t;
-	struct error err = { { 0 } };
-	struct app *app = app_create(W, H, 1);
-
-	CHECK(app);
-	snprintf(path, sizeof(path), "%s/%s", dir, name);
-	trace_init(&t);
-	if (trace_load(path, W, H, &t, &err) < 0) {
-		fprintf(stderr, "%s\n", err.msg);
-		exit(1);
-	}
-	for (size_t i = 0; i < t.nevents; i++)
-		app_handle_event(app, &t.events[i]);
-	trace_finish(&t);
-	CHECK_INT(app->failed, 0);
-	return app;
-}
-
 static json_object *skeleton(const struct app *app)
 {
-	struct buf b;
-	json_object *j;
-
-	buf_init(&b);
-	CHECK_INT(export_skeleton(&app->tree, &b), 0);
-	CHECK_INT(buf_append(&b, "", 1), 0);
-	j = json_tokener_parse((const char *)b.data);
-	CHECK(j);
-	buf_finish(&b);
-	return j;
-}
-
-static json_object *get(json_object *o, const char *key)
-{
-	json_object *v;
-
-	CHECK(json_object_object_get_ex(o, key, &v));
-	return v;
+	return replay_skeleton_json(&app->tree);
 }
 
 static json_object *branch(json_object *s, int i)
 {
-	return json_object_array_get_idx(get(s, "branches"), (size_t)i);
+	return json_object_array_get_idx(replay_get(s, "branches"), (size_t)i);
 }
 
 static size_t count(json_object *s, const char *what)
 {
-	return json_object_array_length(get(s, what));
+	return json_object_array_length(replay_get(s, what));
 }
 
 static int parent(json_object *s, int i)
 {
-	return json_object_get_int(get(branch(s, i), "parent"));
+	return json_object_get_int(replay_get(branch(s, i), "parent"));
 }
 
 /* point k of branch i (k < 0 counts from the end), in screen pixels */
 static void point_px(json_object *s, int i, int k, double *x, double *y)
 {
-	json_object *pts = get(branch(s, i), "points");
+	json_object *pts = replay_get(branch(s, i), "points");
 	size_t n = json_object_array_length(pts);
 	json_object *p = json_object_array_get_idx(pts, k < 0 ? n + (size_t)k : (size_t)k);
 
@@ -93,20 +56,10 @@ static void point_px(json_object *s, int i, int k, double *x, double *y)
 
 static double radius(json_object *s, int i, int k)
 {
-	json_object *r = get(branch(s, i), "radii");
+	json_object *r = replay_get(branch(s, i), "radii");
 	size_t n = json_object_array_length(r);
 
 	return json_object_get_double(json_object_array_get_idx(r, k < 0 ? n + (size_t)k : (size_t)k));
-}
-
-static void press(struct app *app, enum button b)
-{
-	struct event e = { .type = EVENT_BUTTON, .time_us = app->last_time_us + 100000,
-			   .button = (int)b, .pressed = true };
-
-	app_handle_event(app, &e);
-	e.pressed = false;
-	app_handle_event(app, &e);
 }
 
 /* undo then redo restores identical skeleton and drawing bytes */
@@ -117,8 +70,8 @@ static void undo_redo_identical(struct app *app)
 	buf_init(&s0), buf_init(&d0), buf_init(&s1), buf_init(&d1);
 	CHECK_INT(export_skeleton(&app->tree, &s0), 0);
 	CHECK_INT(doc_serialize(&app->doc, &app->tree, &d0), 0);
-	press(app, BUTTON_UNDO);
-	press(app, BUTTON_REDO);
+	replay_press(app, BUTTON_UNDO);
+	replay_press(app, BUTTON_REDO);
 	CHECK_INT(export_skeleton(&app->tree, &s1), 0);
 	CHECK_INT(doc_serialize(&app->doc, &app->tree, &d1), 0);
 	CHECK(s0.len == s1.len && memcmp(s0.data, s1.data, s0.len) == 0);
@@ -128,7 +81,7 @@ static void undo_redo_identical(struct app *app)
 
 static void test_branch_across(void)
 {
-	struct app *app = replay("sketch-branch-across.edaha-trace");
+	struct app *app = replay_trace(dir, "sketch-branch-across.edaha-trace", W, H, 1);
 	json_object *s = skeleton(app);
 	double x, y;
 
@@ -149,7 +102,7 @@ static void test_branch_across(void)
 	CHECK_NEAR(x, 640, 0.5); /* the trunk is the line x = 640 */
 	/* the leaf loop is a leaf on b1 */
 	CHECK_INT(count(s, "leaves"), 1);
-	CHECK_INT(json_object_get_int(get(json_object_array_get_idx(get(s, "leaves"), 0), "branch")), 1);
+	CHECK_INT(json_object_get_int(replay_get(json_object_array_get_idx(replay_get(s, "leaves"), 0), "branch")), 1);
 	/* the drawing: 5 pen strokes, all in effect */
 	CHECK_INT(app->doc.nops, 5);
 	CHECK_INT(app->doc.cursor, 5);
@@ -160,7 +113,7 @@ static void test_branch_across(void)
 
 static void test_cut(void)
 {
-	struct app *app = replay("sketch-cut.edaha-trace");
+	struct app *app = replay_trace(dir, "sketch-cut.edaha-trace", W, H, 1);
 	json_object *s = skeleton(app);
 	double x, y;
 
@@ -179,7 +132,7 @@ static void test_cut(void)
 
 static void test_erase(void)
 {
-	struct app *app = replay("sketch-erase.edaha-trace");
+	struct app *app = replay_trace(dir, "sketch-erase.edaha-trace", W, H, 1);
 	json_object *s = skeleton(app);
 
 	/* crossed twice: b1 erased from its base with b2 and the leaf; the trunk stays */
@@ -193,7 +146,7 @@ static void test_erase(void)
 
 static void test_eraser(void)
 {
-	struct app *app = replay("sketch-eraser.edaha-trace");
+	struct app *app = replay_trace(dir, "sketch-eraser.edaha-trace", W, H, 1);
 	json_object *s = skeleton(app);
 
 	/* the eraser tap took b2 only; the drawing keeps the eraser stroke */
@@ -207,7 +160,7 @@ static void test_eraser(void)
 
 static void test_outlines(void)
 {
-	struct app *app = replay("sketch-outlines.edaha-trace");
+	struct app *app = replay_trace(dir, "sketch-outlines.edaha-trace", W, H, 1);
 	json_object *s = skeleton(app);
 	double x, y;
 
