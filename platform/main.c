@@ -61,7 +61,7 @@ static int kiosk_main(const struct options *o)
 		return 2;
 	}
 	/* a broken configuration is the installer's to fix: say where, and stop */
-	if (config_load(CONFIG_PATH, &conf, stderr, &err) < 0) {
+	if (config_load(o->config ? o->config : CONFIG_PATH, &conf, stderr, &err) < 0) {
 		fprintf(stderr, "edaha: %s\n", err.msg);
 		return 2;
 	}

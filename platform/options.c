@@ -37,6 +37,9 @@ void options_usage(FILE *f)
 	      "                      given.\n"
 	      "  --view YAW[,PITCH]  show a 3D tree turned: the camera's azimuth (90 = from\n"
 	      "                      the right) and height in degrees, after all input\n"
+	      "  --idle SECONDS      show the screen this long after the last input, as the\n"
+	      "                      kiosk would (messages fade after 4 s, the attract\n"
+	      "                      screen comes after 90 s)\n"
 	      "\n"
 	      "Kiosk test runs (no effect on a normal kiosk):\n"
 	      "  --kiosk-frames N    draw a new frame every vblank, as if the drawing changed\n"
@@ -44,7 +47,14 @@ void options_usage(FILE *f)
 	      "                      the frame rate and the time to the first frame\n"
 	      "  --screenshot FILE   with --kiosk-frames: write the last frame as a PNG\n"
 	      "\n"
+	      "Kiosk:\n"
+	      "  --config FILE       the configuration (default /etc/edaha/edaha.conf)\n"
+	      "  --stats             on exit, print how long pen input took to reach the\n"
+	      "                      screen (percentiles) and the frame rate\n"
+	      "\n"
 	      "Any mode:\n"
+	      "  --lang en|ja        language of the on-screen labels (default: the\n"
+	      "                      configuration's, else en)\n"
 	      "  --record FILE       write every input event to FILE as an edaha trace\n"
 	      "  --help              show this help\n"
 	      "  --version           show the version\n"
@@ -141,10 +151,20 @@ static bool parse_frames(const char *s, unsigned long *n)
 	return true;
 }
 
+static bool parse_idle(const char *s, double *seconds)
+{
+	char *end;
+
+	errno = 0;
+	*seconds = strtod(s, &end);
+	return !errno && end != s && !*end && *seconds >= 0.0 && *seconds <= 86400.0;
+}
+
 int options_parse(struct options *o, int argc, char **argv)
 {
 	enum { OPT_HEADLESS = 256, OPT_SIZE, OPT_SEED, OPT_OUT, OPT_LOAD, OPT_REPLAY, OPT_PRESS,
-	       OPT_VIEW, OPT_RECORD, OPT_HELP, OPT_VERSION, OPT_KIOSK_FRAMES, OPT_SCREENSHOT };
+	       OPT_VIEW, OPT_RECORD, OPT_HELP, OPT_VERSION, OPT_KIOSK_FRAMES, OPT_SCREENSHOT,
+	       OPT_CONFIG, OPT_STATS, OPT_LANG, OPT_IDLE };
 	static const struct option longopts[] = {
 		{ "headless", no_argument, NULL, OPT_HEADLESS },
 		{ "size", required_argument, NULL, OPT_SIZE },
@@ -157,6 +177,10 @@ int options_parse(struct options *o, int argc, char **argv)
 		{ "record", required_argument, NULL, OPT_RECORD },
 		{ "kiosk-frames", required_argument, NULL, OPT_KIOSK_FRAMES },
 		{ "screenshot", required_argument, NULL, OPT_SCREENSHOT },
+		{ "config", required_argument, NULL, OPT_CONFIG },
+		{ "stats", no_argument, NULL, OPT_STATS },
+		{ "lang", required_argument, NULL, OPT_LANG },
+		{ "idle", required_argument, NULL, OPT_IDLE },
 		{ "help", no_argument, NULL, OPT_HELP },
 		{ "version", no_argument, NULL, OPT_VERSION },
 		{ NULL, 0, NULL, 0 },
@@ -223,6 +247,24 @@ int options_parse(struct options *o, int argc, char **argv)
 				return usage_error("%s needs a file name", "--screenshot");
 			o->screenshot = optarg;
 			break;
+		case OPT_CONFIG:
+			if (!optarg[0])
+				return usage_error("%s needs a file name", "--config");
+			o->config = optarg;
+			break;
+		case OPT_STATS:
+			o->stats = true;
+			break;
+		case OPT_LANG:
+			if (strcmp(optarg, "en") != 0 && strcmp(optarg, "ja") != 0)
+				return usage_error("bad --lang \"%s\" (expected en or ja)", optarg);
+			o->lang = optarg;
+			break;
+		case OPT_IDLE:
+			if (!parse_idle(optarg, &o->idle_s))
+				return usage_error("bad --idle \"%s\" (expected seconds, 0..86400)", optarg);
+			o->idle_given = true;
+			break;
 		case OPT_HELP:
 			o->help = true;
 			break;
@@ -237,12 +279,14 @@ int options_parse(struct options *o, int argc, char **argv)
 		return usage_error("unexpected argument \"%s\"", argv[optind]);
 	if (o->help || o->version)
 		return 0;
-	if (!o->headless && (o->out_dir || o->nsteps || o->view_given))
+	if (!o->headless && (o->out_dir || o->nsteps || o->view_given || o->idle_given))
 		return usage_error("%s needs --headless",
-				   o->out_dir ? "--out" : o->nsteps ? "--replay/--press" : "--view");
-	if (o->headless && (o->kiosk_frames || o->screenshot))
+				   o->out_dir ? "--out" : o->nsteps ? "--replay/--press" :
+				   o->view_given ? "--view" : "--idle");
+	if (o->headless && (o->kiosk_frames || o->screenshot || o->config || o->stats))
 		return usage_error("%s is for the kiosk, not --headless",
-				   o->kiosk_frames ? "--kiosk-frames" : "--screenshot");
+				   o->kiosk_frames ? "--kiosk-frames" : o->screenshot ? "--screenshot" :
+				   o->config ? "--config" : "--stats");
 	if (o->screenshot && !o->kiosk_frames)
 		return usage_error("%s needs --kiosk-frames N", "--screenshot");
 	if (o->headless && (!o->out_dir || !o->out_dir[0]))

@@ -35,6 +35,11 @@ struct options {
 	/* kiosk test runs: stop after this many frames (0: run until a signal)... */
 	unsigned long kiosk_frames;
 	const char *screenshot; /* ...and write the last one here */
+	const char *config;     /* kiosk: the configuration file (default CONFIG_PATH) */
+	bool stats;             /* kiosk: print the responsiveness figures on exit */
+	const char *lang;       /* "en", "ja", or NULL: the configuration's (kiosk), en */
+	bool idle_given;        /* headless: render this long after the last input */
+	double idle_s;
 };
 
 /* Parses argv. Returns 0, or 2 (usage error, message printed) as an exit status. */

@@ -41,6 +41,21 @@ enum app_request {
 	APP_REQUEST_EXPORT = 1u << 0,
 };
 
+/*
+ * Short messages the kiosk shows over the canvas for APP_STATUS_US after the platform
+ * reports how something it was asked for went (ui/ has their words in each language).
+ * Extend at the end: the values are not stored anywhere, but tests name them.
+ */
+enum app_status {
+	APP_STATUS_NONE = 0,
+	APP_STATUS_SAVED,       /* the export was written */
+	APP_STATUS_SAVE_FAILED, /* the export could not be written */
+	APP_STATUS_COUNT,
+};
+#define APP_STATUS_US 4000000u
+/* With nothing touched for this long the kiosk shows its attract screen (0: never). */
+#define APP_ATTRACT_US_DEFAULT (90u * 1000000u)
+
 struct app_point {
 	double x, y; /* screen pixels */
 	double pressure;
@@ -111,7 +126,10 @@ struct app {
 	struct tree_mesh previews[ARRANGE_COUNT]; /* their thumbnails' meshes */
 	uint64_t previews_serial;  /* bumped when they change */
 	bool side_held;            /* the pen tip is on a thumbnail */
-	uint64_t last_time_us;
+	uint64_t last_time_us;     /* of the last event: idle time counts from it */
+	uint64_t attract_after_us; /* idle time before the attract screen; 0: never */
+	enum app_status status;    /* the last message, shown from status_us on */
+	uint64_t status_us;
 	uint32_t requests;
 	int failed; /* first negative errno from an allocation, sticky */
 };
@@ -132,5 +150,12 @@ bool app_set_camera(struct app *app, struct camera c);
 size_t app_suggestions(const struct app *app, enum arrange_pattern out[ARRANGE_COUNT]);
 /* Whether a pen tip put down at screen pixel (x, y) would turn the camera. */
 bool app_would_orbit(const struct app *app, double x, double y);
+/* The platform's answer to a request (or any news for the visitor), shown from now_us. */
+void app_set_status(struct app *app, enum app_status status, uint64_t now_us);
+/* The message on screen at now_us (APP_STATUS_NONE when none), and until when it shows. */
+enum app_status app_status_at(const struct app *app, uint64_t now_us, uint64_t *until_us);
+/* Whether the attract screen shows at now_us; *from_us says when it does (or did) begin
+ * (UINT64_MAX: never, attract_after_us is 0). Any event ends it. */
+bool app_attract_at(const struct app *app, uint64_t now_us, uint64_t *from_us);
 /* Rebuilds tree and meshes from the document up to its cursor. 0 or -ENOMEM. */
 int app_rebuild(struct app *app);

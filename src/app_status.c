@@ -1,0 +1,37 @@
+/* SPDX-License-Identifier: MIT */
+/* What the kiosk tells the visitor between edits: status messages and the attract screen.
+ * Both are functions of the app's clock (event times) and the time asked about, so a
+ * headless run can render any moment and the kiosk knows when to wake up next. */
+#include <stdint.h>
+
+#include "app.h"
+
+void app_set_status(struct app *app, enum app_status status, uint64_t now_us)
+{
+	if (status < APP_STATUS_NONE || status >= APP_STATUS_COUNT)
+		status = APP_STATUS_NONE;
+	app->status = status;
+	app->status_us = now_us;
+}
+
+enum app_status app_status_at(const struct app *app, uint64_t now_us, uint64_t *until_us)
+{
+	uint64_t until = app->status_us + APP_STATUS_US;
+
+	if (until_us)
+		*until_us = until;
+	if (app->status == APP_STATUS_NONE || now_us < app->status_us || now_us >= until)
+		return APP_STATUS_NONE;
+	return app->status;
+}
+
+bool app_attract_at(const struct app *app, uint64_t now_us, uint64_t *from_us)
+{
+	uint64_t from = UINT64_MAX;
+
+	if (app->attract_after_us && app->last_time_us <= UINT64_MAX - app->attract_after_us)
+		from = app->last_time_us + app->attract_after_us;
+	if (from_us)
+		*from_us = from;
+	return now_us >= from;
+}
