@@ -462,6 +462,33 @@ static int gpio_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k
 	return 0;
 }
 
+/* ---- kiosk ---------------------------------------------------------------------- */
+
+static int kiosk_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
+		      const yaml_node_t *v, void *data)
+{
+	(void)data;
+	if (strcmp(k, "attract_after") == 0) {
+		long s;
+		int r = get_int(p, v, "kiosk.attract_after", 0, CONFIG_ATTRACT_S_MAX, &s);
+
+		if (r == 0)
+			p->c->kiosk.attract_after_s = (int)s;
+		return r;
+	}
+	if (strcmp(k, "export_dir") == 0) {
+		int r = get_string(p, v, "kiosk.export_dir", p->c->kiosk.export_dir,
+				   sizeof(p->c->kiosk.export_dir));
+
+		/* relative to what? the service's working directory is no place for a visitor's tree */
+		if (r == 0 && p->c->kiosk.export_dir[0] != '/')
+			return fail(p, v, "kiosk.export_dir must be an absolute path");
+		return r;
+	}
+	warn_unknown(p, key, "kiosk");
+	return 0;
+}
+
 /* ---- top level ------------------------------------------------------------------ */
 
 static int top_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
@@ -474,6 +501,8 @@ static int top_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
 		return for_each_pair(p, v, "input", input_pair, NULL);
 	if (strcmp(k, "gpio") == 0)
 		return for_each_pair(p, v, "gpio", gpio_pair, NULL);
+	if (strcmp(k, "kiosk") == 0)
+		return for_each_pair(p, v, "kiosk", kiosk_pair, NULL);
 	if (strcmp(k, "language") == 0) {
 		const char *s = text(v);
 
@@ -503,6 +532,8 @@ void config_defaults(struct config *c)
 	for (int b = 0; b < BUTTON_COUNT; b++)
 		c->gpio.buttons[b].offset = c->gpio.leds[b].offset = -1;
 	c->language = CONFIG_LANG_EN;
+	c->kiosk.attract_after_s = CONFIG_ATTRACT_S_DEFAULT;
+	memcpy(c->kiosk.export_dir, CONFIG_EXPORT_DIR_DEFAULT, sizeof(CONFIG_EXPORT_DIR_DEFAULT));
 }
 
 static int yaml_fail(struct cfg_parser *p, const yaml_parser_t *y, const char *data,

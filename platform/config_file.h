@@ -19,6 +19,10 @@
 #define CONFIG_NAME_MAX 64
 #define CONFIG_DEBOUNCE_MS_DEFAULT 20
 #define CONFIG_DEBOUNCE_MS_MAX 1000
+#define CONFIG_ATTRACT_S_DEFAULT 90
+#define CONFIG_ATTRACT_S_MAX 86400
+/* Where export writes until a USB stick takes its place (issue 7). */
+#define CONFIG_EXPORT_DIR_DEFAULT "/var/lib/edaha/export"
 
 enum config_language { CONFIG_LANG_EN = 0, CONFIG_LANG_JA };
 
@@ -57,6 +61,10 @@ struct config {
 		struct config_gpio_line leds[BUTTON_COUNT]; /* mode buttons only */
 	} gpio;
 	enum config_language language;
+	struct {
+		int attract_after_s; /* idle seconds before the attract screen; 0: never */
+		char export_dir[256]; /* absolute: where export writes the files */
+	} kiosk;
 };
 
 void config_defaults(struct config *c);

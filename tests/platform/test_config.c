@@ -34,6 +34,8 @@ static void check_defaults(const struct config *c)
 	CHECK_INT(c->input.area, CONFIG_AREA_FIT);
 	CHECK_INT(c->gpio.debounce_ms, CONFIG_DEBOUNCE_MS_DEFAULT);
 	CHECK_INT(c->language, CONFIG_LANG_EN);
+	CHECK_INT(c->kiosk.attract_after_s, CONFIG_ATTRACT_S_DEFAULT);
+	CHECK(strcmp(c->kiosk.export_dir, CONFIG_EXPORT_DIR_DEFAULT) == 0);
 	for (int b = 0; b < BUTTON_COUNT; b++) {
 		CHECK(!c->gpio.buttons[b].set);
 		CHECK(!c->gpio.leds[b].set);
@@ -92,6 +94,8 @@ static void test_good(const char *dir)
 	CHECK_NEAR(c.input.area_rect[3], 0.8, 1e-12);
 	CHECK_INT(c.gpio.debounce_ms, 30);
 	CHECK_INT(c.language, CONFIG_LANG_JA);
+	CHECK_INT(c.kiosk.attract_after_s, 300);
+	CHECK(strcmp(c.kiosk.export_dir, "/media/usb/edaha") == 0);
 
 	l = &c.gpio.buttons[BUTTON_3D];
 	CHECK(l->set && strcmp(l->chip, "pinctrl-bcm2711") == 0 && strcmp(l->name, "GPIO17") == 0);
