@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "app.h"
+#include "docfile.h"
 #include "egl_headless.h"
 #include "fileio.h"
 #include "output.h"
@@ -71,15 +72,8 @@ static int load_doc(struct run *r, const char *path)
 {
 	struct error err = { { 0 } };
 	struct doc doc;
-	char *data;
-	size_t len;
-	int ret;
+	int ret = docfile_read(path, &doc, &err);
 
-	ret = fileio_read_all(path, DOC_MAX_FILE_BYTES, &data, &len, &err);
-	if (ret == 0) {
-		ret = doc_parse(data, len, path, &doc, &err);
-		free(data);
-	}
 	if (ret < 0) {
 		fprintf(stderr, "edaha: %s\n", err.msg);
 		return input_status(ret);

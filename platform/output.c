@@ -15,8 +15,8 @@ static int write_buf(const char *dir, const char *name, struct buf *b, int ret, 
 	return fileio_write_atomic(dir, name, b->data, b->len, err);
 }
 
-int output_write_all(const struct app *app, const char *dir, const uint8_t *rgba,
-		     struct error *err)
+int output_write(const struct app *app, const char *dir, const struct output_names *n,
+		 const uint8_t *rgba, struct error *err)
 {
 	struct buf a, b;
 	int ret;
@@ -24,30 +24,41 @@ int output_write_all(const struct app *app, const char *dir, const uint8_t *rgba
 	buf_init(&a);
 	buf_init(&b);
 	ret = fileio_mkdirs(dir, err);
-	if (ret == 0)
-		ret = write_buf(dir, "model.glb", &a, export_glb(&app->mesh, &a), err);
-	if (ret == 0) {
+	if (ret == 0 && n->glb)
+		ret = write_buf(dir, n->glb, &a, export_glb(&app->mesh, &a), err);
+	if (ret == 0 && n->obj && n->mtl) {
 		buf_reset(&a);
-		ret = export_obj(&app->mesh, "model.mtl", &a, &b);
-		ret = write_buf(dir, "model.obj", &a, ret, err);
+		ret = export_obj(&app->mesh, n->mtl, &a, &b);
+		ret = write_buf(dir, n->obj, &a, ret, err);
 		if (ret == 0)
-			ret = write_buf(dir, "model.mtl", &b, 0, err);
+			ret = write_buf(dir, n->mtl, &b, 0, err);
 	}
-	if (ret == 0) {
+	if (ret == 0 && n->skeleton) {
 		buf_reset(&a);
-		ret = write_buf(dir, "skeleton.json", &a, export_skeleton(&app->tree, &a), err);
+		ret = write_buf(dir, n->skeleton, &a, export_skeleton(&app->tree, &a), err);
 	}
-	if (ret == 0) {
+	if (ret == 0 && n->drawing) {
 		buf_reset(&a);
-		ret = write_buf(dir, "drawing.edaha", &a, doc_serialize(&app->doc, &app->tree, &a), err);
+		ret = write_buf(dir, n->drawing, &a, doc_serialize(&app->doc, &app->tree, &a), err);
 	}
-	if (ret == 0 && rgba) {
+	if (ret == 0 && n->png && rgba) {
 		buf_reset(&a);
 		ret = pngio_encode_rgba(rgba, app->view.width, app->view.height, &a, err);
 		if (ret == 0)
-			ret = fileio_write_atomic(dir, "screen.png", a.data, a.len, err);
+			ret = fileio_write_atomic(dir, n->png, a.data, a.len, err);
 	}
 	buf_finish(&a);
 	buf_finish(&b);
 	return ret;
+}
+
+int output_write_all(const struct app *app, const char *dir, const uint8_t *rgba,
+		     struct error *err)
+{
+	static const struct output_names headless = {
+		.glb = "model.glb", .obj = "model.obj", .mtl = "model.mtl",
+		.skeleton = "skeleton.json", .drawing = "drawing.edaha", .png = "screen.png",
+	};
+
+	return output_write(app, dir, &headless, rgba, err);
 }

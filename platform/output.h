@@ -6,9 +6,20 @@
 #include "app.h"
 #include "error.h"
 
+/* The names of the files a drawing is saved as; NULL: that file is not written. */
+struct output_names {
+	const char *glb, *obj, *mtl, *skeleton, *drawing, *png;
+};
+
 /*
- * The files a drawing is saved as: model.glb, model.obj + model.mtl, skeleton.json and
- * drawing.edaha, plus screen.png when a picture is given. Same state, same bytes.
+ * Writes the drawing into dir (created when missing) under those names, each file
+ * atomically; the picture only when rgba (app->view's size) is given. Same state, same
+ * bytes. 0, or a negative errno with a message naming the file.
  */
+int output_write(const struct app *app, const char *dir, const struct output_names *names,
+		 const uint8_t *rgba, struct error *err);
+
+/* A headless run's files: model.glb, model.obj + model.mtl, skeleton.json and
+ * drawing.edaha, plus screen.png when a picture is given. */
 int output_write_all(const struct app *app, const char *dir, const uint8_t *rgba,
 		     struct error *err);
