@@ -15,7 +15,9 @@
 
 #include "app.h"
 #include "buf.h"
+#include "export_dir.h"
 #include "fileio.h"
+#include "latency.h"
 #include "pngio.h"
 #include "render.h"
 #include "trace.h"
@@ -23,6 +25,11 @@
 /* A flip that has not completed in this long will not: the display is gone. */
 #define KIOSK_FLIP_TIMEOUT_MS 1000
 #define KIOSK_MAX_SOURCES 16
+/* Pen events waiting for the frame that shows them; a slow frame under a fast pen
+ * drops the excess from the figures, not from the drawing. */
+#define KIOSK_MAX_PENDING 1024
+/* How often the journal gets the pen-to-screen figures while visitors draw. */
+#define KIOSK_STATS_LOG_US (300u * 1000000u)
 
 /*
  * What a frame shows, apart from the clock: when none of it changed since the last
@@ -41,6 +48,13 @@ struct kiosk_look {
 	struct camera camera;
 	int selected;
 	unsigned suggestions;
+	enum app_status status; /* the message on screen */
+	bool attract;           /* the attract screen */
+};
+
+/* A pen event on its way to the screen: its kernel time, and frames shown before it. */
+struct kiosk_pending {
+	uint64_t time_us, shown;
 };
 
 struct kiosk {
@@ -52,6 +66,8 @@ struct kiosk {
 	struct kiosk_source sources[KIOSK_MAX_SOURCES];
 	size_t nsources;
 	int signal_fd, timer_fd;
+	int ui_timer_fd;         /* wakes the loop when a message or the attract screen changes */
+	uint64_t ui_deadline_us; /* what it is set to; UINT64_MAX: nothing to wait for */
 	sigset_t old_mask;
 	bool mask_set;
 	struct kiosk_look drawn; /* what the screen shows */
@@ -63,6 +79,18 @@ struct kiosk {
 	unsigned long frames;
 	uint64_t start_us, first_frame_us, last_frame_us;
 	uint8_t *shot; /* the last frame's pixels, with --screenshot */
+	/* pen-to-screen latency: events not drawn yet, events in the frame being flipped */
+	struct latency *lat;
+	struct kiosk_pending *pending, *inflight;
+	size_t npending, ninflight;
+	uint64_t shown;          /* frames that reached the screen */
+	uint64_t stats_logged_us, stats_logged_n;
+	/* export: asked for; the next frame is read back for its picture, then written */
+	bool export_asked, export_ready;
+	uint8_t *pixels;
+	enum button mode_lit;    /* what mode_changed was last told */
+	void (*mode_changed)(void *data, enum button mode);
+	void *mode_data;
 };
 
 static uint64_t now_us(void)
@@ -74,9 +102,11 @@ static uint64_t now_us(void)
 	return (uint64_t)ts.tv_sec * 1000000u + (uint64_t)ts.tv_nsec / 1000u;
 }
 
-static void look_of(const struct app *app, struct kiosk_look *l)
+static void look_of(const struct app *app, uint64_t now_us, struct kiosk_look *l)
 {
 	memset(l, 0, sizeof(*l)); /* padding too, though only fields are compared */
+	l->status = app_status_at(app, now_us, NULL);
+	l->attract = app_attract_at(app, now_us, NULL);
 	l->mesh_serial = app->mesh_serial;
 	l->previews_serial = app->previews_serial;
 	l->stroke_points = app->stroke.npoints;
@@ -108,7 +138,33 @@ static bool look_equal(const struct kiosk_look *a, const struct kiosk_look *b)
 	       a->side_held == b->side_held && a->mode == b->mode && a->pattern == b->pattern &&
 	       memcmp(a->buttons, b->buttons, sizeof(a->buttons)) == 0 &&
 	       a->camera.yaw == b->camera.yaw && a->camera.pitch == b->camera.pitch &&
-	       a->selected == b->selected && a->suggestions == b->suggestions;
+	       a->selected == b->selected && a->suggestions == b->suggestions &&
+	       a->status == b->status && a->attract == b->attract;
+}
+
+/* Whether frames must keep coming at now_us without any input: the turn into 3D, a
+ * message fading out. */
+static bool animating_at(const struct app *app, uint64_t now_us, bool turning)
+{
+	uint64_t until;
+
+	if (turning)
+		return true;
+	return app_status_at(app, now_us, &until) != APP_STATUS_NONE &&
+	       now_us + APP_STATUS_FADE_US >= until;
+}
+
+/* The next moment the screen changes with no input (UINT64_MAX: none): a message
+ * starts fading or ends, the attract screen begins. */
+static uint64_t next_change(const struct app *app, uint64_t now_us)
+{
+	uint64_t until, from, next = UINT64_MAX;
+
+	if (app_status_at(app, now_us, &until) != APP_STATUS_NONE)
+		next = now_us + APP_STATUS_FADE_US < until ? until - APP_STATUS_FADE_US : until;
+	if (!app_attract_at(app, now_us, &from) && from < next)
+		next = from;
+	return next;
 }
 
 /* Whether the next vblank should show a new frame. */
@@ -116,9 +172,9 @@ static bool frame_due(const struct kiosk *k)
 {
 	struct kiosk_look now;
 
-	if (k->cfg.frames || !k->drawn_valid || k->animating)
+	if (k->cfg.frames || !k->drawn_valid || k->animating || k->export_asked)
 		return true;
-	look_of(k->app, &now);
+	look_of(k->app, now_us(), &now);
 	return !look_equal(&now, &k->drawn);
 }
 
@@ -153,17 +209,22 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 
 	if (!k) {
 		fputs("edaha: out of memory\n", stderr);
+		if (cfg->doc)
+			doc_finish(cfg->doc);
 		return NULL;
 	}
 	k->cfg = *cfg;
-	k->signal_fd = k->timer_fd = -1;
+	k->signal_fd = k->timer_fd = k->ui_timer_fd = -1;
+	k->ui_deadline_us = UINT64_MAX;
+	k->mode_lit = (enum button)-1; /* tells the LEDs the first mode, whatever it is */
 	k->start_us = now_us();
 	if (open_signals(k) < 0) {
 		fprintf(stderr, "edaha: cannot watch for signals: %s\n", strerror(errno));
 		goto fail;
 	}
 	k->timer_fd = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
-	if (k->timer_fd < 0) {
+	k->ui_timer_fd = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
+	if (k->timer_fd < 0 || k->ui_timer_fd < 0) {
 		fprintf(stderr, "edaha: no timerfd: %s\n", strerror(errno));
 		goto fail;
 	}
@@ -176,11 +237,25 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 	fprintf(stderr, "edaha: kiosk on %s, GLES %d\n", drm_display_describe(k->display),
 		drm_display_gles3(k->display) ? 3 : 2);
 	k->render = render_create();
-	k->app = app_create(w, h, cfg->seed);
-	if (!k->render || !k->app) {
+	k->app = app_create(w, h, cfg->doc ? cfg->doc->seed : cfg->seed);
+	k->lat = calloc(1, sizeof(*k->lat));
+	k->pending = calloc(KIOSK_MAX_PENDING, sizeof(*k->pending));
+	k->inflight = calloc(KIOSK_MAX_PENDING, sizeof(*k->inflight));
+	if (!k->render || !k->app || !k->lat || !k->pending || !k->inflight) {
 		fputs("edaha: cannot set up the renderer\n", stderr);
 		goto fail;
 	}
+	latency_init(k->lat);
+	if (cfg->doc) {
+		if (app_load_doc(k->app, cfg->doc) < 0) {
+			fputs("edaha: out of memory loading the drawing\n", stderr);
+			goto fail;
+		}
+		k->cfg.doc = NULL; /* the app has it now */
+	}
+	/* idle time counts from the start: a kiosk nobody uses shows its attract screen */
+	k->app->attract_after_us = cfg->attract_after_us;
+	k->app->last_time_us = k->start_us;
 	if (cfg->screenshot && !(k->shot = malloc((size_t)w * (size_t)h * 4))) {
 		fputs("edaha: out of memory\n", stderr);
 		goto fail;
@@ -206,9 +281,17 @@ void kiosk_destroy(struct kiosk *k)
 	render_destroy(k->render);
 	drm_display_destroy(k->display);
 	app_destroy(k->app);
+	if (k->cfg.doc)
+		doc_finish(k->cfg.doc);
 	free(k->shot);
+	free(k->pixels);
+	free(k->lat);
+	free(k->pending);
+	free(k->inflight);
 	if (k->timer_fd >= 0)
 		close(k->timer_fd);
+	if (k->ui_timer_fd >= 0)
+		close(k->ui_timer_fd);
 	if (k->signal_fd >= 0)
 		close(k->signal_fd);
 	if (k->mask_set)
@@ -224,13 +307,29 @@ int kiosk_add_source(struct kiosk *k, const struct kiosk_source *src)
 	return 0;
 }
 
+void kiosk_set_mode_listener(struct kiosk *k, void (*fn)(void *data, enum button mode),
+			     void *data)
+{
+	k->mode_changed = fn;
+	k->mode_data = data;
+}
+
 void kiosk_size(const struct kiosk *k, int *width, int *height)
 {
 	drm_display_size(k->display, width, height);
 }
 
+static bool is_pen(const struct event *ev)
+{
+	return ev->type == EVENT_PROXIMITY_IN || ev->type == EVENT_PROXIMITY_OUT ||
+	       ev->type == EVENT_TIP_DOWN || ev->type == EVENT_TIP_UP ||
+	       ev->type == EVENT_MOTION || ev->type == EVENT_PEN_BUTTON;
+}
+
 void kiosk_feed(struct kiosk *k, const struct event *ev)
 {
+	if (is_pen(ev) && k->npending < KIOSK_MAX_PENDING)
+		k->pending[k->npending++] = (struct kiosk_pending){ ev->time_us, k->shown };
 	if (k->rec && trace_writer_write(k->rec, ev) < 0) {
 		fprintf(stderr, "edaha: %s: cannot write the recording; recording stops\n",
 			k->cfg.record);
@@ -248,19 +347,60 @@ static void fail(struct kiosk *k, const char *what, int err)
 	k->quit = true;
 }
 
+static void log_latency(struct kiosk *k, FILE *f)
+{
+	char line[256];
+
+	latency_format(k->lat, line, sizeof(line));
+	fprintf(f, "edaha: %s\n", line);
+	k->stats_logged_n = k->lat->n;
+}
+
+/* A frame reached the screen at now: the pen events it carried have their latency. */
+static void frame_shown(struct kiosk *k, uint64_t now)
+{
+	k->shown++;
+	k->last_frame_us = now;
+	for (size_t i = 0; i < k->ninflight; i++) {
+		const struct kiosk_pending *e = &k->inflight[i];
+
+		/* a timestamp from the future (a clock mismatch) counts as no wait */
+		latency_add(k->lat, now > e->time_us ? now - e->time_us : 0,
+			    (unsigned)(k->shown - e->shown));
+	}
+	k->ninflight = 0;
+	if (k->lat->n > k->stats_logged_n && now - k->stats_logged_us >= KIOSK_STATS_LOG_US) {
+		k->stats_logged_us = now;
+		log_latency(k, stderr);
+	}
+}
+
 static void draw_frame(struct kiosk *k)
 {
 	uint64_t t = now_us();
 	struct camera cam;
 	bool last = k->cfg.frames && k->frames + 1 == k->cfg.frames;
+	size_t room, n;
 	int ret;
 
-	k->animating = app_camera_at(k->app, t, &cam);
-	look_of(k->app, &k->drawn);
+	k->animating = animating_at(k->app, t, app_camera_at(k->app, t, &cam));
+	look_of(k->app, t, &k->drawn);
 	k->drawn_valid = true;
 	ret = render_frame_at(k->render, k->app, t);
 	if (ret == 0 && last && k->shot)
 		ret = drm_display_read_rgba(k->display, k->shot);
+	if (ret == 0 && k->export_asked) {
+		int w, h;
+
+		/* the export's picture is the frame the visitor sees as the button is pressed */
+		kiosk_size(k, &w, &h);
+		if (!k->pixels)
+			k->pixels = malloc((size_t)w * (size_t)h * 4);
+		if (k->pixels && drm_display_read_rgba(k->display, k->pixels) < 0)
+			fputs("edaha: export: cannot read the screen back; no picture\n", stderr);
+		k->export_asked = false;
+		k->export_ready = true;
+	}
 	if (ret == 0)
 		ret = drm_display_present(k->display);
 	if (ret == 0 && drm_display_flip_pending(k->display))
@@ -269,7 +409,16 @@ static void draw_frame(struct kiosk *k)
 		fail(k, "cannot show a frame", ret);
 		return;
 	}
+	/* the pen events so far are in this frame */
+	room = KIOSK_MAX_PENDING - k->ninflight;
+	n = k->npending < room ? k->npending : room;
+	memcpy(k->inflight + k->ninflight, k->pending, n * sizeof(*k->pending));
+	k->ninflight += n;
+	k->npending = 0;
 	k->frames++;
+	/* a modeset shows its frame at once, with no flip event */
+	if (!drm_display_flip_pending(k->display))
+		frame_shown(k, now_us());
 	if (k->frames == 1) {
 		k->first_frame_us = now_us();
 		/* the kiosk is up: a line for the journal (and for tests to wait on) */
@@ -287,7 +436,7 @@ static void on_flip(struct kiosk *k)
 		return;
 	}
 	if (!drm_display_flip_pending(k->display)) {
-		k->last_frame_us = now_us();
+		frame_shown(k, now_us());
 		ret = set_timer(k, 0); /* disarms the flip watchdog */
 		if (ret < 0)
 			fail(k, "timer", ret);
@@ -325,16 +474,81 @@ static void on_source(struct kiosk *k, size_t i)
 	}
 }
 
+/* Writes the export the last frame was read back for, and tells the visitor. */
+static void run_export(struct kiosk *k)
+{
+	struct error err = { { 0 } };
+	char base[32];
+	int ret;
+
+	k->export_ready = false;
+	ret = export_dir_write(k->app, k->cfg.export_dir, k->pixels, base, sizeof(base), &err);
+	if (ret < 0)
+		fprintf(stderr, "edaha: export failed: %s\n", err.msg);
+	else
+		fprintf(stderr, "edaha: exported %s/%s.glb, .obj, .mtl, .png, .edaha\n",
+			k->cfg.export_dir, base);
+	app_set_status(k->app, ret < 0 ? APP_STATUS_SAVE_FAILED : APP_STATUS_SAVED, now_us());
+}
+
+/* The mode the screen shows, as the button whose LED says so. */
+static enum button mode_button(const struct app *app)
+{
+	switch (app->mode) {
+	case APP_MODE_CLONE:
+		return BUTTON_CLONE;
+	case APP_MODE_LEAF:
+		return BUTTON_LEAF;
+	case APP_MODE_PROPAGATE:
+		return BUTTON_PROPAGATE;
+	case APP_MODE_SKETCH:
+		break;
+	}
+	return app->tree.lifted ? BUTTON_3D : BUTTON_COUNT;
+}
+
 /* Things the app asks of the platform between frames. */
 static void take_requests(struct kiosk *k)
 {
 	uint32_t req = app_take_requests(k->app);
+	enum button mode = mode_button(k->app);
 
 	if (req & APP_REQUEST_EXPORT)
-		fputs("edaha: export asked for; saving to USB is not in the kiosk yet\n", stderr);
+		k->export_asked = true;
+	if (mode != k->mode_lit) {
+		k->mode_lit = mode;
+		if (k->mode_changed)
+			k->mode_changed(k->mode_data, mode);
+	}
 	if (k->app->failed) {
 		fail(k, "the app failed", k->app->failed);
 	}
+}
+
+/* Sets the UI timer for the next change nobody causes (a message fading, the attract
+ * screen): the loop sleeps in poll() until then. */
+static void arm_ui_timer(struct kiosk *k)
+{
+	uint64_t next = next_change(k->app, now_us());
+	struct itimerspec it = { { 0, 0 }, { 0, 0 } };
+
+	if (next == k->ui_deadline_us)
+		return;
+	k->ui_deadline_us = next;
+	if (next != UINT64_MAX)
+		it.it_value = (struct timespec){ (time_t)(next / 1000000u),
+						 (long)(next % 1000000u) * 1000 };
+	if (timerfd_settime(k->ui_timer_fd, TFD_TIMER_ABSTIME, &it, NULL) < 0)
+		fail(k, "timer", -errno);
+}
+
+static void on_ui_timer(struct kiosk *k)
+{
+	uint64_t expirations;
+
+	/* nothing else to do: frame_due() sees what changed */
+	if (read(k->ui_timer_fd, &expirations, sizeof(expirations)) == (ssize_t)sizeof(expirations))
+		k->ui_deadline_us = UINT64_MAX;
 }
 
 static int write_screenshot(struct kiosk *k)
@@ -370,24 +584,38 @@ static int write_screenshot(struct kiosk *k)
 	return ret;
 }
 
-static void print_stats(const struct kiosk *k)
+static void print_stats(struct kiosk *k, FILE *f)
 {
 	double first_ms = (double)(k->first_frame_us - k->start_us) / 1000.0;
 
 	if (!k->frames)
 		return;
-	fprintf(stderr, "edaha: %lu frame%s; first on screen %.1f ms after start", k->frames,
+	fprintf(f, "edaha: %lu frame%s; first on screen %.1f ms after start", k->frames,
 		k->frames == 1 ? "" : "s", first_ms);
 	if (k->frames > 1 && k->last_frame_us > k->first_frame_us)
-		fprintf(stderr, "; %.1f frames/s after it",
+		fprintf(f, "; %.1f frames/s after it",
 			(double)(k->frames - 1) * 1e6 / (double)(k->last_frame_us - k->first_frame_us));
-	fputc('\n', stderr);
+	fputc('\n', f);
+	log_latency(k, f);
+}
+
+/* The screen as it is now, for --screenshot when the kiosk stops (not shown: read). */
+static int take_final_shot(struct kiosk *k)
+{
+	int ret = render_frame_at(k->render, k->app, now_us());
+
+	if (ret == 0)
+		ret = drm_display_read_rgba(k->display, k->shot);
+	if (ret < 0)
+		fprintf(stderr, "edaha: screenshot: cannot read the screen: %s\n", strerror(-ret));
+	return ret;
 }
 
 int kiosk_run(struct kiosk *k)
 {
-	struct pollfd fds[3 + KIOSK_MAX_SOURCES];
+	struct pollfd fds[4 + KIOSK_MAX_SOURCES];
 
+	take_requests(k); /* the LEDs show the first mode */
 	while (!k->quit) {
 		size_t n = 0, nsrc = k->nsources;
 
@@ -396,15 +624,21 @@ int kiosk_run(struct kiosk *k)
 				break;
 			if (frame_due(k))
 				draw_frame(k);
+			else
+				k->npending = 0; /* pen events that changed nothing on the screen */
+			if (k->export_ready)
+				run_export(k);
 			if (k->quit)
 				break;
 			/* a modeset shows its frame at once: go round for the next one */
-			if (!drm_display_flip_pending(k->display) && k->cfg.frames)
+			if (!drm_display_flip_pending(k->display) && (k->cfg.frames || frame_due(k)))
 				continue;
 		}
+		arm_ui_timer(k);
 		fds[n++] = (struct pollfd){ .fd = drm_display_fd(k->display), .events = POLLIN };
 		fds[n++] = (struct pollfd){ .fd = k->signal_fd, .events = POLLIN };
 		fds[n++] = (struct pollfd){ .fd = k->timer_fd, .events = POLLIN };
+		fds[n++] = (struct pollfd){ .fd = k->ui_timer_fd, .events = POLLIN };
 		for (size_t i = 0; i < nsrc; i++)
 			fds[n++] = (struct pollfd){ .fd = k->sources[i].fd, .events = POLLIN };
 		if (poll(fds, n, -1) < 0) {
@@ -418,15 +652,22 @@ int kiosk_run(struct kiosk *k)
 			on_flip(k);
 		if (fds[2].revents)
 			on_timer(k);
+		if (fds[3].revents)
+			on_ui_timer(k);
 		/* backwards, so that dropping a failed source leaves the rest in place */
 		for (size_t i = nsrc; i-- > 0;) {
-			if (fds[3 + i].revents)
+			if (fds[4 + i].revents)
 				on_source(k, i);
 		}
 		take_requests(k);
 	}
-	print_stats(k);
-	if (k->status == 0 && k->shot && k->frames >= k->cfg.frames && write_screenshot(k) < 0)
+	print_stats(k, stderr);
+	if (k->cfg.stats)
+		print_stats(k, stdout);
+	if (k->status == 0 && k->shot && !k->cfg.frames && k->frames && take_final_shot(k) < 0)
+		k->status = 1;
+	if (k->status == 0 && k->shot && k->frames >= k->cfg.frames && k->frames &&
+	    write_screenshot(k) < 0)
 		k->status = 1;
 	return k->status;
 }

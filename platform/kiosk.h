@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 #pragma once
 
+#include <stdbool.h>
 #include <stdint.h>
 
+#include "doc.h"
 #include "drm_display.h"
 #include "event.h"
 #include "kiosk_source.h"
@@ -18,11 +20,17 @@ struct kiosk;
 struct kiosk_config {
 	struct drm_display_config display;
 	uint64_t seed;          /* of a new drawing */
+	struct doc *doc;        /* a drawing to continue, taken (even on failure); NULL: new */
 	const char *record;     /* write every event fed as an edaha trace; NULL: no */
+	const char *export_dir; /* where export writes (export_dir.h) */
+	uint64_t attract_after_us; /* idle time before the attract screen; 0: never */
+	bool stats;             /* print the responsiveness figures on stdout at the end */
 	/* Test runs: draw a frame every vblank as if the app changed each time, and stop
 	 * after this many frames are on screen (0: run until a signal). */
 	unsigned long frames;
-	const char *screenshot; /* with frames: the last frame as a PNG */
+	/* The last frame as a PNG: with frames, after them; otherwise the screen as it was
+	 * when the kiosk stopped (a signal). */
+	const char *screenshot;
 };
 
 /* Opens the display and makes the app at the display's size. NULL (message printed). */
@@ -30,6 +38,11 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg);
 void kiosk_destroy(struct kiosk *k);
 /* Polls src->fd from now on (copied). 0 or -ENOMEM. */
 int kiosk_add_source(struct kiosk *k, const struct kiosk_source *src);
+/* Told at the start and whenever the mode shown changes (the GPIO LEDs follow it):
+ * BUTTON_3D for a 3D tree being sketched on, BUTTON_CLONE/LEAF/PROPAGATE, BUTTON_COUNT
+ * for a 2D sketch. */
+void kiosk_set_mode_listener(struct kiosk *k, void (*fn)(void *data, enum button mode),
+			     void *data);
 /* Screen size, so that input can map a tablet onto it. */
 void kiosk_size(const struct kiosk *k, int *width, int *height);
 /* For sources' dispatch: one event into the app (and the recording). */

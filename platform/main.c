@@ -5,7 +5,11 @@
 #include "headless.h"
 #include "options.h"
 #if HAVE_DRM
+#include <errno.h>
+#include <stdint.h>
+
 #include "config_file.h"
+#include "docfile.h"
 #include "kiosk.h"
 #endif
 #if HAVE_DRM && HAVE_LIBINPUT
@@ -25,6 +29,13 @@ static void feed(void *data, const struct event *ev)
 	kiosk_feed(data, ev);
 }
 
+#if HAVE_GPIOD
+static void light_mode(void *data, enum button mode)
+{
+	gpio_set_mode(data, mode);
+}
+#endif
+
 static int add_source(struct kiosk *k, struct kiosk_source src)
 {
 	int ret = kiosk_add_source(k, &src);
@@ -43,9 +54,11 @@ static int kiosk_main(const struct options *o)
 		.record = o->record,
 		.frames = o->kiosk_frames,
 		.screenshot = o->screenshot,
+		.stats = o->stats,
 	};
 	struct config conf;
 	struct error err = { { 0 } };
+	struct doc doc;
 	struct kiosk *k;
 	int status = 1, w, h;
 #if HAVE_LIBINPUT
@@ -56,14 +69,24 @@ static int kiosk_main(const struct options *o)
 #endif
 
 	(void)w, (void)h;
-	if (o->load) {
-		fputs("edaha: --load is not in the kiosk yet; use it with --headless\n", stderr);
-		return 2;
-	}
 	/* a broken configuration is the installer's to fix: say where, and stop */
 	if (config_load(o->config ? o->config : CONFIG_PATH, &conf, stderr, &err) < 0) {
 		fprintf(stderr, "edaha: %s\n", err.msg);
 		return 2;
+	}
+	cfg.export_dir = conf.kiosk.export_dir;
+	cfg.attract_after_us = (uint64_t)conf.kiosk.attract_after_s * 1000000u;
+	if (o->load) {
+		int ret = docfile_read(o->load, &doc, &err);
+
+		if (ret < 0) {
+			fprintf(stderr, "edaha: %s\n", err.msg);
+			return ret == -ENOMEM || ret == -EIO ? 1 : 2;
+		}
+		if (o->seed_given && doc.seed != o->seed)
+			fprintf(stderr, "edaha: %s keeps its own seed %llu; --seed ignored\n", o->load,
+				(unsigned long long)doc.seed);
+		cfg.doc = &doc;
 	}
 	cfg.display.card = conf.display.card[0] ? conf.display.card : NULL;
 	cfg.display.connector = conf.display.connector[0] ? conf.display.connector : NULL;
@@ -88,6 +111,8 @@ static int kiosk_main(const struct options *o)
 		fprintf(stderr, "edaha: warning: no GPIO buttons: %s\n", err.msg);
 	else if (gpio_button_count(g) > 0 && add_source(k, gpio_source(g)) < 0)
 		goto out;
+	if (g && gpio_led_count(g) > 0)
+		kiosk_set_mode_listener(k, light_mode, g);
 #endif
 	status = kiosk_run(k);
 #if HAVE_LIBINPUT || HAVE_GPIOD

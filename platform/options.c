@@ -45,7 +45,8 @@ void options_usage(FILE *f)
 	      "  --kiosk-frames N    draw a new frame every vblank, as if the drawing changed\n"
 	      "                      each time, and exit after N frames are shown; prints\n"
 	      "                      the frame rate and the time to the first frame\n"
-	      "  --screenshot FILE   with --kiosk-frames: write the last frame as a PNG\n"
+	      "  --screenshot FILE   write the last frame as a PNG: after --kiosk-frames N,\n"
+	      "                      or the screen as it is when the kiosk stops\n"
 	      "\n"
 	      "Kiosk:\n"
 	      "  --config FILE       the configuration (default /etc/edaha/edaha.conf)\n"
@@ -287,8 +288,6 @@ int options_parse(struct options *o, int argc, char **argv)
 		return usage_error("%s is for the kiosk, not --headless",
 				   o->kiosk_frames ? "--kiosk-frames" : o->screenshot ? "--screenshot" :
 				   o->config ? "--config" : "--stats");
-	if (o->screenshot && !o->kiosk_frames)
-		return usage_error("%s needs --kiosk-frames N", "--screenshot");
 	if (o->headless && (!o->out_dir || !o->out_dir[0]))
 		return usage_error("%s needs --out DIR", "--headless");
 	return 0;

@@ -53,6 +53,7 @@ enum app_status {
 	APP_STATUS_COUNT,
 };
 #define APP_STATUS_US 4000000u
+#define APP_STATUS_FADE_US 500000u /* the last part of it, fading out */
 /* With nothing touched for this long the kiosk shows its attract screen (0: never). */
 #define APP_ATTRACT_US_DEFAULT (90u * 1000000u)
 
