@@ -11,40 +11,11 @@
 #include "config_file.h"
 #include "docfile.h"
 #include "kiosk.h"
-#endif
-#if HAVE_DRM && HAVE_LIBINPUT
-#include "input_libinput.h"
-#endif
-#if HAVE_DRM && HAVE_GPIOD
-#include "gpio.h"
+#include "kiosk_input.h"
 #endif
 
 /* The kiosk needs the DRM/GBM display back-end; a build without it is headless only. */
 #define KIOSK_AVAILABLE HAVE_DRM
-
-#if HAVE_DRM
-/* The input modules hand their events to the loop's app. */
-static void feed(void *data, const struct event *ev)
-{
-	kiosk_feed(data, ev);
-}
-
-#if HAVE_GPIOD
-static void light_mode(void *data, enum button mode)
-{
-	gpio_set_mode(data, mode);
-}
-#endif
-
-static int add_source(struct kiosk *k, struct kiosk_source src)
-{
-	int ret = kiosk_add_source(k, &src);
-
-	if (ret < 0)
-		fputs("edaha: out of memory\n", stderr);
-	return ret;
-}
-#endif
 
 static int kiosk_main(const struct options *o)
 {
@@ -59,16 +30,10 @@ static int kiosk_main(const struct options *o)
 	struct config conf;
 	struct error err = { { 0 } };
 	struct doc doc;
+	struct kiosk_input *in;
 	struct kiosk *k;
-	int status = 1, w, h;
-#if HAVE_LIBINPUT
-	struct input *in = NULL;
-#endif
-#if HAVE_GPIOD
-	struct gpio *g = NULL;
-#endif
+	int status = 1;
 
-	(void)w, (void)h;
 	/* a broken configuration is the installer's to fix: say where, and stop */
 	if (config_load(o->config ? o->config : CONFIG_PATH, &conf, stderr, &err) < 0) {
 		fprintf(stderr, "edaha: %s\n", err.msg);
@@ -96,34 +61,10 @@ static int kiosk_main(const struct options *o)
 	k = kiosk_create(&cfg);
 	if (!k)
 		return 1;
-#if HAVE_LIBINPUT
-	/* without a pen the kiosk still shows itself (and its buttons may still work) */
-	kiosk_size(k, &w, &h);
-	in = input_create(&conf, w, h, feed, k, &err);
-	if (!in)
-		fprintf(stderr, "edaha: warning: no pen input: %s\n", err.msg);
-	else if (add_source(k, input_source(in)) < 0)
-		goto out;
-#endif
-#if HAVE_GPIOD
-	g = gpio_create(&conf, feed, k, &err);
-	if (!g)
-		fprintf(stderr, "edaha: warning: no GPIO buttons: %s\n", err.msg);
-	else if (gpio_button_count(g) > 0 && add_source(k, gpio_source(g)) < 0)
-		goto out;
-	if (g && gpio_led_count(g) > 0)
-		kiosk_set_mode_listener(k, light_mode, g);
-#endif
-	status = kiosk_run(k);
-#if HAVE_LIBINPUT || HAVE_GPIOD
-out:
-#endif
-#if HAVE_GPIOD
-	gpio_destroy(g);
-#endif
-#if HAVE_LIBINPUT
-	input_destroy(in);
-#endif
+	in = kiosk_input_create(&conf, k);
+	if (in)
+		status = kiosk_run(k);
+	kiosk_input_destroy(in);
 	kiosk_destroy(k);
 	return status;
 #else

@@ -12,6 +12,8 @@
  *   button stylus|stylus2 0|1
  *   sleep MS
  *   unplug / plug      the device goes away / comes back (hotplug)
+ *   sh COMMAND...      runs a shell command and waits for it (a GPIO button pressed
+ *                      between strokes); a failing command ends the script
  * libinput forces a tool out of proximity after some 50 ms without events: keep moving.
  *   uinput_pen [--direct] < script
  */
@@ -121,7 +123,7 @@ static void unplug(void)
 int main(int argc, char **argv)
 {
 	bool direct = argc > 1 && strcmp(argv[1], "--direct") == 0;
-	char line[256];
+	char line[512];
 	unsigned long n = 0;
 
 	if (getenv("UINPUT_PEN_WAIT_MS"))
@@ -171,6 +173,14 @@ int main(int argc, char **argv)
 			syn();
 		} else if (strcmp(word, "sleep") == 0 && sscanf(line, "%*s %ld", &ms) == 1) {
 			sleep_ms(ms);
+		} else if (strcmp(word, "sh") == 0) {
+			int status = system(line + strspn(line, " \t") + 2);
+
+			if (status != 0) {
+				fprintf(stderr, "uinput_pen: stdin:%lu: %s failed (%d)\n", n, line, status);
+				unplug();
+				return 1;
+			}
 		} else if (strcmp(word, "unplug") == 0) {
 			unplug();
 		} else if (strcmp(word, "plug") == 0) {

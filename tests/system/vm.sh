@@ -4,10 +4,11 @@
 # overlay (so host-built binaries and their libraries run unchanged), a bochs-display for
 # KMS and a writable results folder. TCG, not KVM: a nested KVM guest hangs in early boot.
 #
-#   vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] -- COMMAND [ARGS...]
+#   vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] [-s WxH] -- COMMAND [ARGS...]
 #     -t  time limit for the whole VM (default 120)
 #     -o  host DIR mounted read-write at /out in the guest
-#     -g  display device (default bochs: bochs-display at 1280x800)
+#     -g  display device (default bochs: bochs-display)
+#     -s  the display's preferred mode (default 1280x800)
 #   Environment: KVER (kernel version, default the newest in /lib/modules),
 #   VM_CACHE (where the initramfs is kept, default /tmp/edaha-vm-cache), VM_VERBOSE=1.
 #
@@ -17,18 +18,20 @@
 # Packages: qemu-system-x86 linux-image-amd64 busybox-static cpio kmod udev.
 set -euo pipefail
 
-limit=120 out="" gpu=bochs
-while getopts "t:o:g:" opt; do
+limit=120 out="" gpu=bochs size=1280x800
+while getopts "t:o:g:s:" opt; do
 	case $opt in
 	t) limit=$OPTARG ;;
 	o) mkdir -p "$OPTARG"; out=$(realpath "$OPTARG") ;;
 	g) gpu=$OPTARG ;;
+	s) size=$OPTARG ;;
 	*) exit 2 ;;
 	esac
 done
 shift $((OPTIND - 1))
 [ "${1:-}" = "--" ] && shift
-[ $# -ge 1 ] || { echo "usage: vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] -- COMMAND..." >&2; exit 2; }
+[ $# -ge 1 ] || { echo "usage: vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] [-s WxH] -- COMMAND..." >&2; exit 2; }
+case $size in [1-9]*x[1-9]*) ;; *) echo "vm: bad size $size" >&2; exit 2 ;; esac
 
 skip() { echo "vm: SKIP: $*"; exit 77; }
 command -v qemu-system-x86_64 >/dev/null || skip "no qemu-system-x86_64 (apt-get install qemu-system-x86)"
@@ -109,8 +112,8 @@ qemu=(qemu-system-x86_64 -accel tcg,thread=multi -cpu max -smp 2 -m 2048
 	-fsdev local,id=job,path="$job",security_model=none
 	-device virtio-9p-pci,fsdev=job,mount_tag=job)
 case $gpu in
-bochs) qemu+=(-device bochs-display,xres=1280,yres=800) ;;
-virtio) qemu+=(-device virtio-gpu-pci,xres=1280,yres=800) ;;
+bochs) qemu+=(-device "bochs-display,xres=${size%x*},yres=${size#*x}") ;;
+virtio) qemu+=(-device "virtio-gpu-pci,xres=${size%x*},yres=${size#*x}") ;;
 none) ;;
 *) echo "vm: unknown display $gpu" >&2; exit 2 ;;
 esac

@@ -1,0 +1,46 @@
+#!/bin/sh
+# The guest half of kiosk.sh: edaha as the kiosk on the VM's DRM device, a session drawn
+# with the virtual pen (uinput_pen, kiosk.script) and the GPIO buttons (gpio-sim).
+#   kiosk_guest.sh EDAHA UINPUT_PEN KMOD_DIR
+# Writes to /out: kiosk.log, stats.txt, session.edaha-trace, final.png, leds, export/.
+edaha=$1 pen=$2 kmod=$3
+H=$(dirname "$0")
+modprobe uinput || exit 3
+"$H/gpio_sim.sh" setup "$kmod" || exit 3
+export GPIO="$H/gpio_sim.sh"
+"$edaha" --config "$H/kiosk.conf" --record /out/session.edaha-trace --screenshot /out/final.png \
+	--stats >/out/stats.txt 2>/out/kiosk.log &
+pid=$!
+# bounded waits: the first frame takes ~10 s under TCG
+wait_for() { # PATTERN SECONDS
+	i=0
+	while ! grep -q "$1" /out/kiosk.log && [ $i -lt "$2" ]; do
+		sleep 1
+		i=$((i + 1))
+	done
+	grep -q "$1" /out/kiosk.log
+}
+wait_for "first frame on screen" 150 || echo "kiosk_guest: no first frame" >&2
+: >/tmp/leds
+# for the script: wait until the kiosk has picked the tablet up N times (udev under TCG
+# takes seconds, and events before that go nowhere)
+cat >/tmp/tablet_added <<'EOS'
+#!/bin/sh
+i=0
+while [ "$(grep -c 'edaha virtual pen added' /out/kiosk.log)" -lt "$1" ] && [ $i -lt 300 ]; do
+	sleep 0.2
+	i=$((i + 1))
+done
+sleep 0.3
+EOS
+chmod +x /tmp/tablet_added
+export TABLET_ADDED=/tmp/tablet_added
+UINPUT_PEN_WAIT_MS=0 "$pen" <"$H/kiosk.script" 2>/out/pen.err || echo "kiosk_guest: uinput_pen failed" >&2
+wait_for "edaha: export" 60 || echo "kiosk_guest: no export" >&2
+sleep 6 # the "saved" message goes (4 s) before the last frame is taken
+kill -TERM $pid
+wait $pid
+rc=$?
+cp /tmp/leds /out/leds
+mkdir -p /out/export && cp -r /tmp/export/. /out/export/ 2>/dev/null
+exit $rc
