@@ -81,6 +81,8 @@ struct kiosk {
 	uint8_t *shot; /* the last frame's pixels, with --screenshot */
 	/* pen-to-screen latency: events not drawn yet, events in the frame being flipped */
 	struct latency *lat;
+	struct latency *frame_time; /* from starting to draw a frame to it being on screen */
+	uint64_t frame_start_us;
 	struct kiosk_pending *pending, *inflight;
 	size_t npending, ninflight;
 	uint64_t shown;          /* frames that reached the screen */
@@ -239,13 +241,15 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 	k->render = render_create();
 	k->app = app_create(w, h, cfg->doc ? cfg->doc->seed : cfg->seed);
 	k->lat = calloc(1, sizeof(*k->lat));
+	k->frame_time = calloc(1, sizeof(*k->frame_time));
 	k->pending = calloc(KIOSK_MAX_PENDING, sizeof(*k->pending));
 	k->inflight = calloc(KIOSK_MAX_PENDING, sizeof(*k->inflight));
-	if (!k->render || !k->app || !k->lat || !k->pending || !k->inflight) {
+	if (!k->render || !k->app || !k->lat || !k->frame_time || !k->pending || !k->inflight) {
 		fputs("edaha: cannot set up the renderer\n", stderr);
 		goto fail;
 	}
 	latency_init(k->lat);
+	latency_init(k->frame_time);
 	if (cfg->doc) {
 		if (app_load_doc(k->app, cfg->doc) < 0) {
 			fputs("edaha: out of memory loading the drawing\n", stderr);
@@ -286,6 +290,7 @@ void kiosk_destroy(struct kiosk *k)
 	free(k->shot);
 	free(k->pixels);
 	free(k->lat);
+	free(k->frame_time);
 	free(k->pending);
 	free(k->inflight);
 	if (k->timer_fd >= 0)
@@ -361,6 +366,7 @@ static void frame_shown(struct kiosk *k, uint64_t now)
 {
 	k->shown++;
 	k->last_frame_us = now;
+	latency_add(k->frame_time, now - k->frame_start_us, 1);
 	for (size_t i = 0; i < k->ninflight; i++) {
 		const struct kiosk_pending *e = &k->inflight[i];
 
@@ -383,6 +389,7 @@ static void draw_frame(struct kiosk *k)
 	size_t room, n;
 	int ret;
 
+	k->frame_start_us = t;
 	k->animating = animating_at(k->app, t, app_camera_at(k->app, t, &cam));
 	look_of(k->app, t, &k->drawn);
 	k->drawn_valid = true;
@@ -590,12 +597,16 @@ static void print_stats(struct kiosk *k, FILE *f)
 
 	if (!k->frames)
 		return;
+	/* the kiosk draws only on change: frames/s means something with --kiosk-frames only */
 	fprintf(f, "edaha: %lu frame%s; first on screen %.1f ms after start", k->frames,
 		k->frames == 1 ? "" : "s", first_ms);
-	if (k->frames > 1 && k->last_frame_us > k->first_frame_us)
+	if (k->cfg.frames && k->frames > 1 && k->last_frame_us > k->first_frame_us)
 		fprintf(f, "; %.1f frames/s after it",
 			(double)(k->frames - 1) * 1e6 / (double)(k->last_frame_us - k->first_frame_us));
-	fputc('\n', f);
+	fprintf(f, "; drawing to on screen: median %.1f ms, p90 %.1f ms, max %.1f ms\n",
+		(double)latency_percentile(k->frame_time, 0.5) / 1000.0,
+		(double)latency_percentile(k->frame_time, 0.9) / 1000.0,
+		(double)k->frame_time->max_us / 1000.0);
 	log_latency(k, f);
 }
 

@@ -32,7 +32,8 @@ same_files() { # dir1 dir2 files...
 
 t_help() {
 	edaha --help >"$T/help" || fail "--help exited $?"
-	for o in --headless --size --seed --out --replay --press --view --load --record --help; do
+	for o in --headless --size --seed --out --replay --press --view --load --record --help \
+		--idle --lang --config --stats --kiosk-frames --screenshot; do
 		grep -q -- "$o" "$T/help" || fail "--help does not mention $o"
 	done
 	edaha --version | grep -q '^edaha ' || fail "--version"
@@ -43,7 +44,9 @@ t_usage() {
 	for args in "--bogus" "--headless" "--headless --out $T/x --press nothing" \
 		"--headless --out $T/x --size 10x10" "--headless --out $T/x --seed -1" "--replay $DEMO" "stray" \
 		"--headless --out $T/x --view 400" "--headless --out $T/x --view 0,90" \
-		"--headless --out $T/x --view 10,x" "--view 90"; do
+		"--headless --out $T/x --view 10,x" "--view 90" "--lang fr" "--idle 5" \
+		"--headless --out $T/x --idle -1" "--headless --out $T/x --idle nan" \
+		"--headless --out $T/x --stats" "--headless --out $T/x --config /etc/edaha.conf"; do
 		# shellcheck disable=SC2086
 		edaha $args >/dev/null 2>"$T/err"; rc=$?
 		[ $rc -eq 2 ] || fail "edaha $args: exit $rc, wanted 2"
