@@ -14,6 +14,6 @@ echo "after-3d $("$H/gpio_sim.sh" value 5) $("$H/gpio_sim.sh" value 6)" >>/out/l
 echo "after-clone $("$H/gpio_sim.sh" value 5) $("$H/gpio_sim.sh" value 6)" >>/out/leds
 "$H/gpio_sim.sh" press 3; sleep 1.5; "$H/gpio_sim.sh" release 3; sleep 1.5
 # a bouncing press: press, release, press within the window: one press, no release
-"$H/gpio_sim.sh" press 2; "$H/gpio_sim.sh" release 2; "$H/gpio_sim.sh" press 2; sleep 2
+"$H/gpio_sim.sh" bounce 2; sleep 2
 kill $! 2>/dev/null
 wait

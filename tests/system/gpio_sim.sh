@@ -5,6 +5,7 @@
 #                                btn-3d btn-clone btn-leaf btn-export btn-propagate, 5 and 6
 #                                led-3d led-clone
 #   gpio_sim.sh press N | release N   pulls button line N down (pressed, active-low) or up
+#   gpio_sim.sh bounce N         press, release, press at once (a bouncing contact)
 #   gpio_sim.sh value N          prints line N's value (an LED the kiosk drives)
 set -e
 C=/sys/kernel/config/gpio-sim/kiosk
@@ -26,7 +27,8 @@ setup)
 	echo 1 > $C/live
 	;;
 press) echo pull-down > "$(sim "$2")/pull" ;;
+bounce) p=$(sim "$2")/pull; echo pull-down >"$p"; echo pull-up >"$p"; echo pull-down >"$p" ;;
 release) echo pull-up > "$(sim "$2")/pull" ;;
 value) cat "$(sim "$2")/value" ;;
-*) echo "usage: gpio_sim.sh setup KMOD_DIR | press N | release N | value N" >&2; exit 2 ;;
+*) echo "usage: gpio_sim.sh setup KMOD_DIR | press N | release N | bounce N | value N" >&2; exit 2 ;;
 esac

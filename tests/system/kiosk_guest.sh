@@ -22,19 +22,7 @@ wait_for() { # PATTERN SECONDS
 }
 wait_for "first frame on screen" 150 || echo "kiosk_guest: no first frame" >&2
 : >/tmp/leds
-# for the script: wait until the kiosk has picked the tablet up N times (udev under TCG
-# takes seconds, and events before that go nowhere)
-cat >/tmp/tablet_added <<'EOS'
-#!/bin/sh
-i=0
-while [ "$(grep -c 'edaha virtual pen added' /out/kiosk.log)" -lt "$1" ] && [ $i -lt 300 ]; do
-	sleep 0.2
-	i=$((i + 1))
-done
-sleep 0.3
-EOS
-chmod +x /tmp/tablet_added
-export TABLET_ADDED=/tmp/tablet_added
+export TABLET_ADDED="$H/tablet_added.sh /out/kiosk.log"
 UINPUT_PEN_WAIT_MS=0 "$pen" <"$H/kiosk.script" 2>/out/pen.err || echo "kiosk_guest: uinput_pen failed" >&2
 wait_for "edaha: export" 60 || echo "kiosk_guest: no export" >&2
 sleep 6 # the "saved" message goes (4 s) before the last frame is taken

@@ -1,5 +1,5 @@
 #!/bin/bash
-# System test of the pen input (not registered in meson test yet): boots a VM (vm.sh),
+# System test of the pen input: boots a VM (vm.sh),
 # makes a virtual pen tablet with uinput (uinput_pen, driven by pen.script) and records
 # what platform/input_libinput.c makes of it through libinput's udev backend
 # (input_probe, an edaha trace). Checks the pen and eraser strokes, the stylus button,
@@ -14,9 +14,10 @@ T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-pen.XXXXXX")
 trap 'rm -rf "$T"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-# udev is slow under TCG: uinput_pen waits 3 s after each plug before it writes.
-"$VM" -t 150 -g none -o "$T/vm" -- sh -c 'modprobe uinput || exit 3; "$0" --config /nonexistent --seconds 20 >/out/probe.trace 2>/out/probe.err & sleep 1.5; "$1" <"$2" 2>/out/pen.err; wait $!' \
-	"$INPUT_PROBE" "$UINPUT_PEN" "$HERE/pen.script"
+# udev is slow under TCG: the script waits until input_probe has the tablet (tablet_added.sh).
+# input_probe stops on SIGTERM once the script is done (its --seconds is only a bound).
+"$VM" -t 200 -g none -o "$T/vm" -- sh -c 'modprobe uinput || exit 3; "$0" --config /nonexistent --seconds 150 >/out/probe.trace 2>/out/probe.err & p=$!; sleep 1.5; TABLET_ADDED="$3 /out/probe.err" "$1" <"$2" 2>/out/pen.err; sleep 1; kill -TERM $p; wait $p' \
+	"$INPUT_PROBE" "$UINPUT_PEN" "$HERE/pen.script" "$HERE/tablet_added.sh"
 rc=$?
 [ $rc -eq 77 ] && exit 77
 cat "$T/vm/pen.err" "$T/vm/probe.err" 2>/dev/null | grep -v '^event[0-9]* *-\|^libinput info'
