@@ -69,5 +69,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	}
 	if (c.language != CONFIG_LANG_EN && c.language != CONFIG_LANG_JA)
 		abort();
+	if (c.kiosk.attract_after_s < 0 || c.kiosk.attract_after_s > CONFIG_ATTRACT_S_MAX)
+		abort();
+	if (c.kiosk.export_dir[0] != '/' || !memchr(c.kiosk.export_dir, '\0', sizeof(c.kiosk.export_dir)))
+		abort();
 	return 0;
 }
