@@ -4,10 +4,12 @@
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "app.h"
 #include "egl_headless.h"
 #include "fileio.h"
+#include "font_file.h"
 #include "output.h"
 #include "render.h"
 #include "trace.h"
@@ -114,6 +116,27 @@ static int load_traces(const struct options *o, struct trace *traces)
 	return 0;
 }
 
+/* The labels' font and language; a headless screen without its words would be wrong. */
+static int set_text(struct render *render, const struct options *o)
+{
+	struct error err = { { 0 } };
+	enum render_lang lang = o->lang && !strcmp(o->lang, "ja") ? RENDER_LANG_JA : RENDER_LANG_EN;
+	const char *used;
+	char *font;
+	size_t len;
+	int ret = font_file_read(NULL, &font, &len, &used, &err);
+
+	if (ret < 0) {
+		fprintf(stderr, "edaha: %s\n", err.msg);
+		return ret;
+	}
+	ret = render_set_text(render, font, len, lang);
+	if (ret < 0)
+		fprintf(stderr, "edaha: %s: cannot use this font for the labels\n", used);
+	free(font);
+	return ret;
+}
+
 static int render_and_write(struct run *r)
 {
 	const struct options *o = r->o;
@@ -132,6 +155,8 @@ static int render_and_write(struct run *r)
 	rgba = malloc((size_t)o->width * (size_t)o->height * 4);
 	if (!render || !rgba)
 		fprintf(stderr, "edaha: cannot set up the renderer\n");
+	else if (set_text(render, o) < 0)
+		; /* said why */
 	else if (render_frame(render, r->app) < 0 || egl_headless_read_rgba(egl, rgba) < 0)
 		fprintf(stderr, "edaha: rendering failed\n");
 	else

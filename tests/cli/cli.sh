@@ -32,7 +32,7 @@ same_files() { # dir1 dir2 files...
 
 t_help() {
 	edaha --help >"$T/help" || fail "--help exited $?"
-	for o in --headless --size --seed --out --replay --press --view --load --record --help; do
+	for o in --headless --size --seed --out --replay --press --view --load --record --lang --help; do
 		grep -q -- "$o" "$T/help" || fail "--help does not mention $o"
 	done
 	edaha --version | grep -q '^edaha ' || fail "--version"
@@ -43,7 +43,8 @@ t_usage() {
 	for args in "--bogus" "--headless" "--headless --out $T/x --press nothing" \
 		"--headless --out $T/x --size 10x10" "--headless --out $T/x --seed -1" "--replay $DEMO" "stray" \
 		"--headless --out $T/x --view 400" "--headless --out $T/x --view 0,90" \
-		"--headless --out $T/x --view 10,x" "--view 90"; do
+		"--headless --out $T/x --view 10,x" "--view 90" \
+		"--headless --out $T/x --lang fr"; do
 		# shellcheck disable=SC2086
 		edaha $args >/dev/null 2>"$T/err"; rc=$?
 		[ $rc -eq 2 ] || fail "edaha $args: exit $rc, wanted 2"
@@ -81,6 +82,17 @@ t_views() {
 	run --out "$T/flat" --replay "$DEMO" --view 90
 	grep -q "not 3D" "$T/stderr" || fail "--view on a sketch: no note"
 	"$IMGCMP" "$SRC/golden/demo-screen.png" "$T/flat/screen.png" || fail "--view turned a sketch"
+}
+
+# The labels in Japanese: another screen, the same drawing and model.
+t_lang() {
+	run --out "$T/en" --replay "$DEMO"
+	run --out "$T/ja" --replay "$DEMO" --lang ja
+	"$IMGCMP" "$SRC/golden/demo-screen-ja.png" "$T/ja/screen.png" || fail "Japanese labels differ from golden"
+	cmp -s "$T/en/screen.png" "$T/ja/screen.png" && fail "--lang ja changed nothing"
+	same_files "$T/en" "$T/ja" skeleton.json model.glb model.obj drawing.edaha
+	run --out "$T/en2" --replay "$DEMO" --lang en
+	same_files "$T/en" "$T/en2" screen.png
 }
 
 t_determinism() {

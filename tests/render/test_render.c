@@ -2,8 +2,9 @@
 /*
  * The renderer beyond its pictures: meshes upload only when mesh_serial changes, the
  * expanded-index fallback draws the same pixels, broken meshes are refused, strokes are
- * antialiased, the draw-call count stays small, and leaves drawn instanced (GLES 3) look
- * as the merged ones do, at a call a shape.
+ * antialiased, the draw-call count stays small (labels included), leaves drawn instanced
+ * (GLES 3) look as the merged ones do, at a call a shape, and a missing or broken font
+ * leaves the icons.
  */
 #include <errno.h>
 #include <stdlib.h>
@@ -11,7 +12,10 @@
 
 #include "app.h"
 #include "arrange.h"
+#include "layout.h"
 #include "egl_headless.h"
+#include "font.h"
+#include "font_file.h"
 #include "propagate.h"
 #include "render.h"
 #include "render_private.h"
@@ -462,8 +466,96 @@ static void test_turn(void)
 	app_destroy(app);
 }
 
+static char *font_data;
+static size_t font_len;
+
+static void load_font(void)
+{
+	struct error err;
+	const char *used;
+
+	if (font_file_read(NULL, &font_data, &font_len, &used, &err) < 0) {
+		fprintf(stderr, "%s\n", err.msg);
+		CHECK(0);
+	}
+}
+
+static struct render *labelled(enum render_lang lang)
+{
+	struct render *r = render_create();
+
+	CHECK(r);
+	CHECK_INT(render_set_text(r, font_data, font_len, lang), 0);
+	return r;
+}
+
+/* Labels cost no draw call of their own: the kiosk scene draws in as many calls with
+ * them as without; they change the picture, and so does the language. */
+static void test_labels_batched(void)
+{
+	struct fixture f;
+	struct app app;
+	struct render *plain, *en, *ja;
+	struct render_stats sp, se;
+	uint8_t *c;
+
+	CHECK_INT(scene_build(&app, "kiosk"), 0);
+	fixture_init(&f, app.view.width, app.view.height);
+	c = malloc(f.size);
+	CHECK(c);
+	plain = render_create();
+	CHECK(plain);
+	en = labelled(RENDER_LANG_EN);
+	ja = labelled(RENDER_LANG_JA);
+	draw(&f, plain, &app, f.a);
+	render_get_stats(plain, &sp);
+	draw(&f, en, &app, f.b);
+	render_get_stats(en, &se);
+	CHECK_INT(se.draw_calls, sp.draw_calls);
+	CHECK_INT(se.draw_calls, 4);
+	/* two triangles a glyph more */
+	CHECK(se.triangles > sp.triangles + 2 * 20);
+	CHECK(differing(f.a, f.b, f.size, 8) > 500);
+	draw(&f, ja, &app, c);
+	CHECK(differing(f.b, c, f.size, 8) > 500);
+	/* the canvas is the same in all three: only the bar changed */
+	{
+		struct layout_rect bar = layout_bar(&app.view);
+		size_t row = (size_t)app.view.width * 4;
+
+		for (int y = 0; y < app.view.height; y += 7)
+			CHECK(memcmp(f.a + y * row, c + y * row, (size_t)(bar.x - 12) * 4) == 0);
+	}
+	/* the same again: the glyphs are cached, none is rasterised a second time */
+	{
+		size_t glyphs = font_cached(en->text.font);
+
+		CHECK(glyphs >= 15); /* the distinct letters of the eight labels */
+		draw(&f, en, &app, c);
+		CHECK_INT(font_cached(en->text.font), glyphs);
+		CHECK(memcmp(f.b, c, f.size) == 0);
+	}
+
+	/* no font, or one FreeType cannot read: icons only, as without */
+	CHECK_INT(render_set_text(en, NULL, 0, RENDER_LANG_EN), 0);
+	draw(&f, en, &app, c);
+	CHECK(memcmp(f.a, c, f.size) == 0);
+	CHECK_INT(render_set_text(ja, "junk", 4, RENDER_LANG_JA), -EINVAL);
+	draw(&f, ja, &app, c);
+	CHECK(memcmp(f.a, c, f.size) == 0);
+
+	free(c);
+	render_destroy(plain);
+	render_destroy(en);
+	render_destroy(ja);
+	fixture_finish(&f);
+	scene_finish(&app);
+}
+
 int main(void)
 {
+	load_font();
+	test_labels_batched();
 	test_turn();
 	test_upload_only_on_serial();
 	test_expanded_indices();
@@ -471,5 +563,6 @@ int main(void)
 	test_bad_mesh();
 	test_empty();
 	test_antialiased_stroke();
+	free(font_data);
 	return 0;
 }
