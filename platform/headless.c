@@ -2,6 +2,7 @@
 #include "headless.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -137,6 +138,22 @@ static int set_text(struct render *render, const struct options *o)
 	return ret;
 }
 
+/*
+ * The moment shown: the settled screen, or with --idle what the kiosk shows that long
+ * after the last input (a step of the turn into 3D, a message, the attract screen).
+ */
+static int draw(struct render *render, const struct run *r)
+{
+	uint64_t idle_us;
+
+	if (!r->o->idle_given)
+		return render_frame(render, r->app);
+	r->app->attract_after_us = APP_ATTRACT_US_DEFAULT;
+	/* --idle is at most a day: no overflow */
+	idle_us = (uint64_t)llround(r->o->idle_s * 1e6);
+	return render_frame_at(render, r->app, r->app->last_time_us + idle_us);
+}
+
 static int render_and_write(struct run *r)
 {
 	const struct options *o = r->o;
@@ -157,7 +174,7 @@ static int render_and_write(struct run *r)
 		fprintf(stderr, "edaha: cannot set up the renderer\n");
 	else if (set_text(render, o) < 0)
 		; /* said why */
-	else if (render_frame(render, r->app) < 0 || egl_headless_read_rgba(egl, rgba) < 0)
+	else if (draw(render, r) < 0 || egl_headless_read_rgba(egl, rgba) < 0)
 		fprintf(stderr, "edaha: rendering failed\n");
 	else
 		ret = 0;

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The frame: paper and ground, the lit tree, then stroke, buttons and cursor on top. */
+/* The frame: paper and ground, the lit tree, then stroke, buttons, messages and cursor on top. */
 #include "render.h"
 
 #include <errno.h>
@@ -340,6 +340,12 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 		if (ret == 0)
 			ret = r2;
 		glEnable(GL_BLEND);
+	}
+	/* the messages over the canvas; UINT64_MAX, the settled view, has none */
+	if (now_us != UINT64_MAX) {
+		render_ui_status(&r->batch, &r->text, app, now_us);
+		if (app_attract_at(app, now_us, NULL))
+			render_ui_attract(&r->batch, &r->text, app);
 	}
 	render_ui_cursor(&r->batch, app);
 	r2 = flush_batch(r, proj);

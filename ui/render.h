@@ -8,7 +8,8 @@ struct app;
 
 /*
  * Draws what the kiosk shows for an app state: the tree, the stroke under the pen, the
- * hover cursor and the on-screen buttons with their labels. Needs a current GLES context (2.0 or later); draws into the bound framebuffer at
+ * hover cursor, the on-screen buttons with their labels, status messages and the attract
+ * screen. Needs a current GLES context (2.0 or later); draws into the bound framebuffer at
  * app->view's size. Same state, same pixels. The tree's meshes are uploaded to the GPU
  * only when app->mesh_serial changes.
  */
@@ -19,6 +20,10 @@ enum render_lang {
 	RENDER_LANG_EN = 0,
 	RENDER_LANG_JA,
 };
+
+/* A status message fades out over the last this of its APP_STATUS_US: the kiosk draws
+ * frames then. */
+#define RENDER_STATUS_FADE_US 500000u
 
 /* NULL if the context lacks what is needed (a message says why on stderr). */
 struct render *render_create(void);
@@ -37,7 +42,9 @@ int render_set_text(struct render *r, const void *font, size_t len, enum render_
  */
 int render_frame(struct render *r, const struct app *app);
 /* The same at a moment of the app's clock: the animated turn into 3D shows its step at
- * now_us (render_frame shows the settled view). */
+ * now_us, a status message shows while app_status_at says so (fading at the end), the
+ * attract screen while app_attract_at does. render_frame shows the settled view, without
+ * either. */
 int render_frame_at(struct render *r, const struct app *app, uint64_t now_us);
 
 /* What the last render_frame() did: for benchmarks and tests. */

@@ -147,6 +147,12 @@ void render_ui_cursor(struct batch *b, const struct app *app);
 /* The branch clone mode works on, marked over the tree as the camera xf shows it. */
 void render_ui_selection(struct batch *b, const struct app *app, const struct camera_xf *xf);
 
+/* render_overlay.c: over the canvas, under the cursor: the status message at now_us, and
+ * the attract screen. */
+void render_ui_status(struct batch *b, const struct ui_text *t, const struct app *app,
+		      uint64_t now_us);
+void render_ui_attract(struct batch *b, const struct ui_text *t, const struct app *app);
+
 /* render_preview.c: the 3D pictures inside the leaf suggestion thumbnails (the cards
  * behind them are render_ui_buttons'). 0 or a negative errno. */
 int render_previews(struct render *r, const struct app *app, const struct camera_xf *xf,

@@ -32,7 +32,7 @@ same_files() { # dir1 dir2 files...
 
 t_help() {
 	edaha --help >"$T/help" || fail "--help exited $?"
-	for o in --headless --size --seed --out --replay --press --view --load --record --lang --help; do
+	for o in --headless --size --seed --out --replay --press --view --load --record --lang --idle --help; do
 		grep -q -- "$o" "$T/help" || fail "--help does not mention $o"
 	done
 	edaha --version | grep -q '^edaha ' || fail "--version"
@@ -44,7 +44,8 @@ t_usage() {
 		"--headless --out $T/x --size 10x10" "--headless --out $T/x --seed -1" "--replay $DEMO" "stray" \
 		"--headless --out $T/x --view 400" "--headless --out $T/x --view 0,90" \
 		"--headless --out $T/x --view 10,x" "--view 90" \
-		"--headless --out $T/x --lang fr"; do
+		"--headless --out $T/x --lang fr" "--headless --out $T/x --idle -1" \
+		"--headless --out $T/x --idle soon" "--idle 5"; do
 		# shellcheck disable=SC2086
 		edaha $args >/dev/null 2>"$T/err"; rc=$?
 		[ $rc -eq 2 ] || fail "edaha $args: exit $rc, wanted 2"
@@ -93,6 +94,37 @@ t_lang() {
 	same_files "$T/en" "$T/ja" skeleton.json model.glb model.obj drawing.edaha
 	run --out "$T/en2" --replay "$DEMO" --lang en
 	same_files "$T/en" "$T/en2" screen.png
+}
+
+# --idle: the screen as the kiosk shows it that long after the last input. Nothing but the
+# picture changes, and only when something on it is timed: the attract screen after 90 s
+# (the same at any later moment), the turn into 3D during its first 2.4 s.
+t_idle() {
+	run --out "$T/now" --replay "$DEMO"
+	run --out "$T/i0" --replay "$DEMO" --idle 0
+	run --out "$T/i89" --replay "$DEMO" --idle 89.9
+	same_files "$T/now" "$T/i0" $OUTPUTS
+	same_files "$T/now" "$T/i89" $OUTPUTS
+	run --out "$T/i120" --replay "$DEMO" --idle 120
+	"$IMGCMP" "$SRC/golden/demo-attract.png" "$T/i120/screen.png" || fail "attract screen differs from golden"
+	same_files "$T/now" "$T/i120" skeleton.json model.glb model.obj drawing.edaha
+	run --out "$T/i90" --replay "$DEMO" --idle 90
+	run --out "$T/iday" --replay "$DEMO" --idle 86400
+	same_files "$T/i120" "$T/i90" screen.png
+	same_files "$T/i120" "$T/iday" screen.png
+	run --out "$T/ja" --replay "$DEMO" --idle 120 --lang ja
+	"$IMGCMP" "$SRC/golden/demo-attract-ja.png" "$T/ja/screen.png" || fail "Japanese attract screen differs from golden"
+	# with nothing drawn the kiosk invites as well
+	run --out "$T/empty"
+	run --out "$T/empty-idle" --idle 100
+	"$IMGCMP" --max-fraction 0.1 "$T/empty/screen.png" "$T/empty-idle/screen.png" &&
+		fail "no attract screen over an empty drawing"
+	# the turn into 3D: a step of it half a second in, settled after
+	run --out "$T/3d" --replay "$DEMO" --press 3d
+	run --out "$T/3d-turning" --replay "$DEMO" --press 3d --idle 0.5
+	run --out "$T/3d-settled" --replay "$DEMO" --press 3d --idle 10
+	cmp -s "$T/3d/screen.png" "$T/3d-turning/screen.png" && fail "--idle 0.5 after 3d shows no turn"
+	same_files "$T/3d" "$T/3d-settled" $OUTPUTS
 }
 
 t_determinism() {

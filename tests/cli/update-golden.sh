@@ -19,7 +19,11 @@ for name in demo orbit lift-young lift-broadleaf lift-conifer lift-sine; do
 done
 "$build/platform/edaha" --headless --out "$out/leaf" --replay tests/data/edit-leaf-suggest.edaha-trace
 cp "$out/leaf/screen.png" tests/golden/edit-leaf-suggest.png
-# the labels in Japanese (cli.sh t_lang)
+# the labels in Japanese, and the attract screen (cli.sh t_lang, t_idle)
 "$build/platform/edaha" --headless --out "$out/ja" --replay tests/data/demo.edaha-trace --lang ja
 cp "$out/ja/screen.png" tests/golden/demo-screen-ja.png
-echo "updated tests/golden/edit-leaf-suggest.png, demo-screen-ja.png; tests/golden/demo-screen.png, demo-skeleton.json, *-3d-front.png, *-3d-90.png and docs/screenshot.png"
+"$build/platform/edaha" --headless --out "$out/idle" --replay tests/data/demo.edaha-trace --idle 120
+cp "$out/idle/screen.png" tests/golden/demo-attract.png
+"$build/platform/edaha" --headless --out "$out/idle-ja" --replay tests/data/demo.edaha-trace --idle 120 --lang ja
+cp "$out/idle-ja/screen.png" tests/golden/demo-attract-ja.png
+echo "updated tests/golden/edit-leaf-suggest.png, demo-screen-ja.png, demo-attract.png, demo-attract-ja.png; tests/golden/demo-screen.png, demo-skeleton.json, *-3d-front.png, *-3d-90.png and docs/screenshot.png"

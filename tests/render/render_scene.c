@@ -28,8 +28,8 @@ static struct render *renderer(const char *scene)
 
 	if (!r)
 		return NULL;
-	(void)scene;
-	ret = render_set_text(r, font_data, font_len, RENDER_LANG_EN);
+	ret = render_set_text(r, font_data, font_len,
+			      scene_japanese(scene) ? RENDER_LANG_JA : RENDER_LANG_EN);
 	if (ret < 0) {
 		fprintf(stderr, "render-scene: render_set_text: %s\n", strerror(-ret));
 		render_destroy(r);
@@ -39,9 +39,9 @@ static struct render *renderer(const char *scene)
 }
 
 static int render_once(struct render *r, struct egl_headless *egl, const struct app *app,
-		       uint8_t *rgba)
+		       uint64_t now_us, uint8_t *rgba)
 {
-	int ret = render_frame(r, app);
+	int ret = render_frame_at(r, app, now_us);
 
 	if (ret < 0) {
 		fprintf(stderr, "render-scene: render_frame: %s\n", strerror(-ret));
@@ -92,6 +92,7 @@ int main(int argc, char **argv)
 	bool twice = argc == 4 && !strcmp(argv[1], "--twice");
 	const char *scene, *out, *font_name;
 	char *font = NULL;
+	uint64_t now_us;
 	size_t size;
 	int ret, status = 1;
 
@@ -104,6 +105,7 @@ int main(int argc, char **argv)
 	}
 	scene = argv[argc - 2];
 	out = argv[argc - 1];
+	now_us = scene_time_us(scene);
 	if (font_file_read(NULL, &font, &font_len, &font_name, &err) < 0) {
 		fprintf(stderr, "render-scene: %s\n", err.msg);
 		return 1;
@@ -129,19 +131,19 @@ int main(int argc, char **argv)
 		fprintf(stderr, "render-scene: cannot set up the renderer\n");
 		goto out;
 	}
-	if (render_once(r, egl, &app, rgba) < 0)
+	if (render_once(r, egl, &app, now_us, rgba) < 0)
 		goto out;
 
 	if (twice) {
 		/* the same renderer (no upload this time), then a new one (uploads again) */
-		if (render_once(r, egl, &app, again) < 0)
+		if (render_once(r, egl, &app, now_us, again) < 0)
 			goto out;
 		if (memcmp(rgba, again, size) != 0) {
 			fprintf(stderr, "render-scene: %s: a second frame differs\n", scene);
 			goto out;
 		}
 		fresh = renderer(scene);
-		if (!fresh || render_once(fresh, egl, &app, again) < 0)
+		if (!fresh || render_once(fresh, egl, &app, now_us, again) < 0)
 			goto out;
 		if (memcmp(rgba, again, size) != 0) {
 			fprintf(stderr, "render-scene: %s: a new renderer draws differently\n", scene);
