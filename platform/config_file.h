@@ -3,8 +3,9 @@
 
 /*
  * The kiosk's configuration, /etc/edaha/edaha.conf (YAML, docs/config.md): the display,
- * how the tablet maps onto it, the GPIO buttons and LEDs, the language. A missing file
- * means the defaults; every error names "file:line"; unknown keys are warnings.
+ * how the tablet maps onto it, the GPIO buttons and LEDs, the language and the font of
+ * the labels. A missing file means the defaults; every error names "file:line"; unknown
+ * keys are warnings.
  */
 #include <stdbool.h>
 #include <stddef.h>
@@ -57,6 +58,7 @@ struct config {
 		struct config_gpio_line leds[BUTTON_COUNT]; /* mode buttons only */
 	} gpio;
 	enum config_language language;
+	char font[256]; /* the labels' font file; "" = the first of font_file_defaults */
 };
 
 void config_defaults(struct config *c);

@@ -6,6 +6,7 @@
 #include "drm_display.h"
 #include "event.h"
 #include "kiosk_source.h"
+#include "render.h"
 
 /*
  * The kiosk's main loop: one poll() over the DRM fd, the input sources, a timerfd and a
@@ -23,6 +24,9 @@ struct kiosk_config {
 	 * after this many frames are on screen (0: run until a signal). */
 	unsigned long frames;
 	const char *screenshot; /* with frames: the last frame as a PNG */
+	enum render_lang language; /* of the words on the screen */
+	const void *font;       /* the labels' font file's bytes, NULL: icons alone; */
+	size_t font_len;        /* the renderer keeps a copy */
 };
 
 /* Opens the display and makes the app at the display's size. NULL (message printed). */

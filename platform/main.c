@@ -1,11 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "config.h"
 #include "headless.h"
 #include "options.h"
 #if HAVE_DRM
 #include "config_file.h"
+#include "font_file.h"
 #include "kiosk.h"
 #endif
 #if HAVE_DRM && HAVE_LIBINPUT
@@ -33,6 +36,21 @@ static int add_source(struct kiosk *k, struct kiosk_source src)
 		fputs("edaha: out of memory\n", stderr);
 	return ret;
 }
+
+/* The labels' font: the configured one, else the defaults; without one the kiosk still
+ * runs, its buttons showing their icons. NULL then. */
+static char *kiosk_font(const struct config *conf, size_t *len)
+{
+	struct error err = { { 0 } };
+	const char *used;
+	char *font = NULL;
+
+	if (conf->font[0] && font_file_read(conf->font, &font, len, &used, &err) < 0)
+		fprintf(stderr, "edaha: warning: %s; trying the default fonts\n", err.msg);
+	if (!font && font_file_read(NULL, &font, len, &used, &err) < 0)
+		fprintf(stderr, "edaha: warning: %s: the buttons show icons alone\n", err.msg);
+	return font;
+}
 #endif
 
 static int kiosk_main(const struct options *o)
@@ -47,6 +65,7 @@ static int kiosk_main(const struct options *o)
 	struct config conf;
 	struct error err = { { 0 } };
 	struct kiosk *k;
+	char *font;
 	int status = 1, w, h;
 #if HAVE_LIBINPUT
 	struct input *in = NULL;
@@ -70,9 +89,18 @@ static int kiosk_main(const struct options *o)
 	cfg.display.width = conf.display.mode_w;
 	cfg.display.height = conf.display.mode_h;
 	cfg.display.refresh = conf.display.mode_hz;
+	/* --lang over the configuration's */
+	if (o->lang)
+		cfg.language = strcmp(o->lang, "ja") == 0 ? RENDER_LANG_JA : RENDER_LANG_EN;
+	else
+		cfg.language = conf.language == CONFIG_LANG_JA ? RENDER_LANG_JA : RENDER_LANG_EN;
+	font = kiosk_font(&conf, &cfg.font_len);
+	cfg.font = font;
 	k = kiosk_create(&cfg);
-	if (!k)
+	if (!k) {
+		free(font);
 		return 1;
+	}
 #if HAVE_LIBINPUT
 	/* without a pen the kiosk still shows itself (and its buttons may still work) */
 	kiosk_size(k, &w, &h);
@@ -100,6 +128,7 @@ out:
 	input_destroy(in);
 #endif
 	kiosk_destroy(k);
+	free(font);
 	return status;
 #else
 	(void)o;
