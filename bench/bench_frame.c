@@ -1,17 +1,19 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Headless frame time at the kiosk's 1280x800: synthetic trees of 62..500 branches with
- * 10 leaves each, drawn by the renderer into llvmpipe. For each tree: a frame that
- * uploads the meshes (what follows a finished stroke), a steady frame with nothing to
- * upload (what the pen's hover costs), and reading the frame back (what --headless and
- * the golden tests pay). Medians of FRAMES frames; glFinish() so the time is the work
- * done, not the work queued.
+ * 10 leaves each, drawn by the renderer into llvmpipe, the buttons labelled (the font
+ * platform/font_file.c finds; the glyphs go into the UI's one draw call). For each tree:
+ * a frame that uploads the meshes (what follows a finished stroke), a steady frame with
+ * nothing to upload (what the pen's hover costs), and reading the frame back (what
+ * --headless and the golden tests pay). Medians of FRAMES frames; glFinish() so the time
+ * is the work done, not the work queued.
  * Then the tree propagation makes: 20 leaves on one branch propagated (fixed count) onto
  * every branch of 250..1,000-branch trees, up to 20,000 leaves: the propagation's time,
  * and, with the leaves drawn instanced (GLES 3: a call a leaf shape, leaf_instances.c) and
  * merged (one mesh of every leaf, as on GLES 2): the frame's time and draw calls, the
  * upload alone (what follows an edit: grouping the leaves included) and the bytes it
- * sends to the GPU.
+ * sends to the GPU. Last, the main thread's CPU time a frame by leaf count, and on the
+ * smallest tree what the labels cost: frames with and without them, interleaved.
  */
 #include <GLES2/gl2.h>
 #include <errno.h>
@@ -23,6 +25,7 @@
 #include "app.h"
 #include "bench_util.h"
 #include "egl_headless.h"
+#include "font_file.h"
 #include "mesh.h"
 #include "propagate.h"
 #include "render.h"
@@ -50,6 +53,8 @@ struct bench {
 	struct app app;
 	uint8_t *rgba;
 	int failed;
+	const char *font; /* the labels' font file */
+	size_t font_len;
 };
 
 static void frame(struct bench *b)
@@ -155,6 +160,40 @@ static double thread_cpu_s(void)
 	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* What the labels cost a frame: steady frames of the app's tree with and without them,
+ * interleaved so that the machine's load falls on both alike. */
+static int labels_cost(struct bench *b)
+{
+	double cpu[2][FRAMES], wall[2][FRAMES];
+	struct render_stats st[2];
+
+	for (int k = 0; k < FRAMES; k++) {
+		for (int labelled = 1; labelled >= 0; labelled--) {
+			double t0, w0;
+
+			if (render_set_text(b->render, labelled ? b->font : NULL, b->font_len,
+					    RENDER_LANG_EN) < 0 ||
+			    render_frame(b->render, &b->app) < 0) /* the glyphs rasterised again */
+				return -EIO;
+			glFinish();
+			w0 = bench_now();
+			t0 = thread_cpu_s();
+			if (render_frame(b->render, &b->app) < 0)
+				return -EIO;
+			cpu[labelled][k] = thread_cpu_s() - t0;
+			glFinish();
+			wall[labelled][k] = bench_now() - w0;
+			render_get_stats(b->render, &st[labelled]);
+		}
+	}
+	printf("  labels on/off: %u/%u draw calls, %zu/%zu triangles; steady frame CPU %.3f/%.3f ms,"
+	       " with the rasteriser %.3f/%.3f ms\n",
+	       st[1].draw_calls, st[0].draw_calls, st[1].triangles, st[0].triangles,
+	       1e3 * bench_median(cpu[1], FRAMES), 1e3 * bench_median(cpu[0], FRAMES),
+	       1e3 * bench_median(wall[1], FRAMES), 1e3 * bench_median(wall[0], FRAMES));
+	return render_set_text(b->render, b->font, b->font_len, RENDER_LANG_EN);
+}
+
 static int frame_cpu(struct bench *b)
 {
 	double up[FRAMES], steady[FRAMES], prev_n = 0, prev_s = 0, prev_n2 = 0, prev_s2 = 0;
@@ -193,6 +232,9 @@ static int frame_cpu(struct bench *b)
 		       leaf_trees[i][0], st.draw_calls, st.tree_triangles);
 		bench_row("frame CPU, with upload", n, bench_median(up, FRAMES), &prev_n, &prev_s);
 		bench_row("frame CPU, steady", n, bench_median(steady, FRAMES), &prev_n2, &prev_s2);
+		/* on the smallest tree, where the labels are the largest share */
+		if (i == 0 && labels_cost(b) < 0)
+			return -EIO;
 	}
 	return 0;
 }
@@ -330,6 +372,9 @@ int main(void)
 	struct result res[NSIZES];
 	struct error err;
 	double t0, first_s, prev_size, prev_s;
+	const char *font_name;
+	char *font = NULL;
+	size_t font_len;
 	int status = 1;
 
 	b.egl = egl_headless_create(WIDTH, HEIGHT, &err);
@@ -348,11 +393,22 @@ int main(void)
 	b.app.pen.x = 400;
 	b.app.pen.y = 300;
 
-	/* the first frame compiles the shaders (and llvmpipe its pipelines) */
+	if (font_file_read(NULL, &font, &font_len, &font_name, &err) < 0) {
+		fprintf(stderr, "bench_frame: %s\n", err.msg);
+		goto out;
+	}
+	/* the first frame compiles the shaders (and llvmpipe its pipelines) and rasterises
+	 * the labels' glyphs */
 	t0 = bench_now();
 	b.render = render_create();
 	if (!b.render) {
 		fprintf(stderr, "bench_frame: render_create failed\n");
+		goto out;
+	}
+	b.font = font;
+	b.font_len = font_len;
+	if (render_set_text(b.render, font, font_len, RENDER_LANG_EN) < 0) {
+		fprintf(stderr, "bench_frame: %s: render_set_text failed\n", font_name);
 		goto out;
 	}
 	frame(&b);
@@ -366,7 +422,8 @@ int main(void)
 	printf("bench_frame: %dx%d, llvmpipe, median of %d frames; size = branches "
 	       "(%d leaves each, every one its own shape)\n",
 	       WIDTH, HEIGHT, FRAMES, LEAVES_PER_BRANCH);
-	printf("first frame (render_create, shader compile, empty tree): %.3f ms\n", first_s * 1e3);
+	printf("first frame (render_create, shader compile, labels' glyphs, empty tree): %.3f ms\n",
+	       first_s * 1e3);
 	for (size_t i = 0; i < NSIZES; i++)
 		printf("  %4d branches: %8zu tree triangles, %8zu triangles, %u draw calls a frame\n",
 		       sizes[i], res[i].tree_triangles, res[i].triangles, res[i].draw_calls);
@@ -391,6 +448,7 @@ out:
 	tree_mesh_finish(&b.app.mesh);
 	tree_finish(&b.app.tree);
 	free(b.rgba);
+	free(font);
 	egl_headless_destroy(b.egl);
 	return status;
 }

@@ -271,7 +271,7 @@ static int parse_mode(struct cfg_parser *p, const yaml_node_t *n)
 	return 0;
 }
 
-/* "auto" (or null) for card/connector means "find one". */
+/* "auto" (or null) for card, connector and font means "find one". */
 static int get_auto_string(struct cfg_parser *p, const yaml_node_t *n, const char *what,
 			   char *out, size_t size)
 {
@@ -503,6 +503,8 @@ static int top_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
 		return for_each_pair(p, v, "gpio", gpio_pair, NULL);
 	if (strcmp(k, "kiosk") == 0)
 		return for_each_pair(p, v, "kiosk", kiosk_pair, NULL);
+	if (strcmp(k, "font") == 0)
+		return get_auto_string(p, v, "font", p->c->font, sizeof(p->c->font));
 	if (strcmp(k, "language") == 0) {
 		const char *s = text(v);
 

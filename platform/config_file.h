@@ -3,8 +3,9 @@
 
 /*
  * The kiosk's configuration, /etc/edaha/edaha.conf (YAML, docs/config.md): the display,
- * how the tablet maps onto it, the GPIO buttons and LEDs, the language. A missing file
- * means the defaults; every error names "file:line"; unknown keys are warnings.
+ * how the tablet maps onto it, the GPIO buttons and LEDs, the language and the font of
+ * the labels. A missing file means the defaults; every error names "file:line"; unknown
+ * keys are warnings.
  */
 #include <stdbool.h>
 #include <stddef.h>
@@ -65,6 +66,7 @@ struct config {
 		int attract_after_s; /* idle seconds before the attract screen; 0: never */
 		char export_dir[256]; /* absolute: where export writes the files */
 	} kiosk;
+	char font[256]; /* the labels' font file; "" = the first of font_file_defaults */
 };
 
 void config_defaults(struct config *c);

@@ -2,13 +2,16 @@
 #include "headless.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "app.h"
 #include "docfile.h"
 #include "egl_headless.h"
 #include "fileio.h"
+#include "font_file.h"
 #include "output.h"
 #include "render.h"
 #include "trace.h"
@@ -108,6 +111,43 @@ static int load_traces(const struct options *o, struct trace *traces)
 	return 0;
 }
 
+/* The labels' font and language; a headless screen without its words would be wrong. */
+static int set_text(struct render *render, const struct options *o)
+{
+	struct error err = { { 0 } };
+	enum render_lang lang = o->lang && !strcmp(o->lang, "ja") ? RENDER_LANG_JA : RENDER_LANG_EN;
+	const char *used;
+	char *font;
+	size_t len;
+	int ret = font_file_read(NULL, &font, &len, &used, &err);
+
+	if (ret < 0) {
+		fprintf(stderr, "edaha: %s\n", err.msg);
+		return ret;
+	}
+	ret = render_set_text(render, font, len, lang);
+	if (ret < 0)
+		fprintf(stderr, "edaha: %s: cannot use this font for the labels\n", used);
+	free(font);
+	return ret;
+}
+
+/*
+ * The moment shown: the settled screen, or with --idle what the kiosk shows that long
+ * after the last input (a step of the turn into 3D, a message, the attract screen).
+ */
+static int draw(struct render *render, const struct run *r)
+{
+	uint64_t idle_us;
+
+	if (!r->o->idle_given)
+		return render_frame(render, r->app);
+	r->app->attract_after_us = APP_ATTRACT_US_DEFAULT;
+	/* --idle is at most a day: no overflow */
+	idle_us = (uint64_t)llround(r->o->idle_s * 1e6);
+	return render_frame_at(render, r->app, r->app->last_time_us + idle_us);
+}
+
 static int render_and_write(struct run *r)
 {
 	const struct options *o = r->o;
@@ -126,7 +166,9 @@ static int render_and_write(struct run *r)
 	rgba = malloc((size_t)o->width * (size_t)o->height * 4);
 	if (!render || !rgba)
 		fprintf(stderr, "edaha: cannot set up the renderer\n");
-	else if (render_frame(render, r->app) < 0 || egl_headless_read_rgba(egl, rgba) < 0)
+	else if (set_text(render, o) < 0)
+		; /* said why */
+	else if (draw(render, r) < 0 || egl_headless_read_rgba(egl, rgba) < 0)
 		fprintf(stderr, "edaha: rendering failed\n");
 	else
 		ret = 0;

@@ -239,6 +239,9 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 	fprintf(stderr, "edaha: kiosk on %s, GLES %d\n", drm_display_describe(k->display),
 		drm_display_gles3(k->display) ? 3 : 2);
 	k->render = render_create();
+	if (k->render && render_set_text(k->render, cfg->font, cfg->font_len, cfg->language) < 0)
+		fputs("edaha: warning: the labels' font cannot be used: icons only\n", stderr);
+	k->cfg.font = NULL; /* the renderer's copy is the one that lasts */
 	k->app = app_create(w, h, cfg->doc ? cfg->doc->seed : cfg->seed);
 	k->lat = calloc(1, sizeof(*k->lat));
 	k->frame_time = calloc(1, sizeof(*k->frame_time));

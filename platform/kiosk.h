@@ -8,6 +8,7 @@
 #include "drm_display.h"
 #include "event.h"
 #include "kiosk_source.h"
+#include "render.h"
 
 /*
  * The kiosk's main loop: one poll() over the DRM fd, the input sources, a timerfd and a
@@ -31,6 +32,9 @@ struct kiosk_config {
 	/* The last frame as a PNG: with frames, after them; otherwise the screen as it was
 	 * when the kiosk stopped (a signal). */
 	const char *screenshot;
+	enum render_lang language; /* of the words on the screen */
+	const void *font;       /* the labels' font file's bytes, NULL: icons alone; */
+	size_t font_len;        /* the renderer keeps a copy */
 };
 
 /* Opens the display and makes the app at the display's size. NULL (message printed). */

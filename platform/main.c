@@ -1,5 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "config.h"
 #include "headless.h"
@@ -10,12 +12,30 @@
 
 #include "config_file.h"
 #include "docfile.h"
+#include "font_file.h"
 #include "kiosk.h"
 #include "kiosk_input.h"
 #endif
 
 /* The kiosk needs the DRM/GBM display back-end; a build without it is headless only. */
 #define KIOSK_AVAILABLE HAVE_DRM
+
+#if HAVE_DRM
+/* The labels' font: the configured one, else the defaults; without one the kiosk still
+ * runs, its buttons showing their icons. NULL then. */
+static char *kiosk_font(const struct config *conf, size_t *len)
+{
+	struct error err = { { 0 } };
+	const char *used;
+	char *font = NULL;
+
+	if (conf->font[0] && font_file_read(conf->font, &font, len, &used, &err) < 0)
+		fprintf(stderr, "edaha: warning: %s; trying the default fonts\n", err.msg);
+	if (!font && font_file_read(NULL, &font, len, &used, &err) < 0)
+		fprintf(stderr, "edaha: warning: %s: the buttons show icons alone\n", err.msg);
+	return font;
+}
+#endif
 
 static int kiosk_main(const struct options *o)
 {
@@ -32,6 +52,7 @@ static int kiosk_main(const struct options *o)
 	struct doc doc;
 	struct kiosk_input *in;
 	struct kiosk *k;
+	char *font;
 	int status = 1;
 
 	/* a broken configuration is the installer's to fix: say where, and stop */
@@ -58,9 +79,20 @@ static int kiosk_main(const struct options *o)
 	cfg.display.width = conf.display.mode_w;
 	cfg.display.height = conf.display.mode_h;
 	cfg.display.refresh = conf.display.mode_hz;
+	/* --lang over the configuration's */
+	if (o->lang)
+		cfg.language = strcmp(o->lang, "ja") == 0 ? RENDER_LANG_JA : RENDER_LANG_EN;
+	else
+		cfg.language = conf.language == CONFIG_LANG_JA ? RENDER_LANG_JA : RENDER_LANG_EN;
+	font = kiosk_font(&conf, &cfg.font_len);
+	cfg.font = font;
 	k = kiosk_create(&cfg);
-	if (!k)
+	if (!k) {
+		free(font);
 		return 1;
+	}
+	/* the renderer has its own copy */
+	free(font);
 	in = kiosk_input_create(&conf, k);
 	if (in)
 		status = kiosk_run(k);

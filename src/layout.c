@@ -12,17 +12,21 @@ static const enum button bar_order[LAYOUT_NBUTTONS] = {
 #define LAYOUT_NTOP 4
 
 /*
- * A button's side is a fraction of the screen height, so the bar looks the same at any
- * resolution: ~5 cm on a kiosk screen 50 cm tall. On a narrow screen the width limits it
- * so the canvas keeps most of the screen. Spacing follows the button size.
+ * A button's height is a fraction of the screen height, so the bar looks the same at any
+ * resolution: ~5 cm on a kiosk screen 50 cm tall. It is over half as wide again: room for
+ * an icon with a label under it that reads from a metre away (あたらしく, the longest).
+ * On a narrow screen the width limits it so the canvas keeps most of the screen. Spacing
+ * follows the button size.
  */
 #define BUTTON_OF_HEIGHT 0.10
-#define BUTTON_OF_WIDTH 0.2
+#define BUTTON_OF_WIDTH 0.15
+#define WIDTH_OF_BUTTON 1.55 /* width : height */
 #define MARGIN_OF_BUTTON 0.2 /* bar edge to button */
 #define GAP_OF_BUTTON 0.15   /* between buttons of a group */
 
 struct metrics {
-	double size;   /* button side */
+	double size;   /* button height */
+	double wide;   /* button width */
 	double margin; /* bar edge to button */
 	double gap;    /* between buttons of a group */
 	double bar_x;  /* left edge of the bar */
@@ -36,9 +40,10 @@ static struct metrics metrics(const struct view *v)
 	struct metrics m;
 
 	m.size = fmax(1.0, round(fmin(BUTTON_OF_HEIGHT * h, BUTTON_OF_WIDTH * w)));
+	m.wide = round(WIDTH_OF_BUTTON * m.size);
 	m.margin = round(MARGIN_OF_BUTTON * m.size);
 	m.gap = round(GAP_OF_BUTTON * m.size);
-	m.bar_x = w - (m.size + 2.0 * m.margin);
+	m.bar_x = w - (m.wide + 2.0 * m.margin);
 	return m;
 }
 
@@ -47,7 +52,7 @@ static void button_rect(const struct view *v, const struct metrics *m, size_t i,
 {
 	b->button = bar_order[i];
 	b->x = m->bar_x + m->margin;
-	b->w = m->size;
+	b->w = m->wide;
 	b->h = m->size;
 	if (i < LAYOUT_NTOP) {
 		b->y = m->margin + (double)i * (m->size + m->gap);
@@ -92,7 +97,7 @@ struct layout_button layout_view_button(const struct view *v)
 {
 	struct metrics m = metrics(v);
 
-	return (struct layout_button){ BUTTON_VIEW, m.margin, v->height - m.margin - m.size, m.size,
+	return (struct layout_button){ BUTTON_VIEW, m.margin, v->height - m.margin - m.size, m.wide,
 				       m.size };
 }
 
@@ -110,8 +115,9 @@ struct layout_rect layout_side_slot(const struct view *v, size_t i, bool thumbna
 {
 	struct metrics m = metrics(v);
 	double side = thumbnail ? round(THUMB_OF_BUTTON * m.size) : m.size;
+	double wide = thumbnail ? side : m.wide;
 
-	return (struct layout_rect){ m.margin, m.margin + (double)i * (side + m.gap), side, side };
+	return (struct layout_rect){ m.margin, m.margin + (double)i * (side + m.gap), wide, side };
 }
 
 bool layout_side_hit(const struct view *v, double x, double y, size_t n, bool thumbnail,

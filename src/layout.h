@@ -9,10 +9,11 @@
 
 /*
  * Where the on-screen buttons are: a strip along the right edge of the screen with
- * large, square, pen-friendly buttons. The four kiosk modes sit at the top, the
- * actions at the bottom, with a wider gap between the groups so the two kinds read
- * apart. Pure geometry in screen pixels (origin top left, y down): the renderer draws
- * from it and the app hit-tests taps with it, so both always agree.
+ * large pen-friendly buttons, over half as wide again as tall (an icon over a label).
+ * The four kiosk modes sit at the top, the actions at the bottom, with a wider gap
+ * between the groups so the two kinds read apart. Pure geometry in screen pixels (origin
+ * top left, y down): the renderer draws from it and the app hit-tests taps with it, so
+ * both always agree.
  */
 
 /* Buttons in the bar, top to bottom. */
@@ -49,8 +50,8 @@ bool layout_hit_view_button(const struct view *v, double x, double y);
 
 /*
  * The strip along the canvas's left edge that shows what the active mode offers: in leaf
- * mode the suggested arrangements as thumbnails (1.6 x a button), in propagate mode the
- * two patterns as buttons. Slot i counts from the top.
+ * mode the suggested arrangements as square thumbnails (1.6 x a button's height), in
+ * propagate mode the two patterns as buttons. Slot i counts from the top.
  */
 struct layout_rect layout_side_slot(const struct view *v, size_t i, bool thumbnail);
 /* The slot of n under (x, y), with the same half-gap margin as the bar. */

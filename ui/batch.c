@@ -56,17 +56,24 @@ fail:
 	return false;
 }
 
+static void vertex_uv(struct batch *b, struct pt p, double u, double v, struct rgba c)
+{
+	float *f = b->v + b->nvertices * BATCH_FLOATS_PER_VERTEX;
+
+	f[0] = (float)p.x;
+	f[1] = (float)p.y;
+	f[2] = (float)u;
+	f[3] = (float)v;
+	f[4] = c.r;
+	f[5] = c.g;
+	f[6] = c.b;
+	f[7] = c.a;
+	b->nvertices++;
+}
+
 static void vertex(struct batch *b, struct pt p, struct rgba c)
 {
-	float *v = b->v + b->nvertices * BATCH_FLOATS_PER_VERTEX;
-
-	v[0] = (float)p.x;
-	v[1] = (float)p.y;
-	v[2] = c.r;
-	v[3] = c.g;
-	v[4] = c.b;
-	v[5] = c.a;
-	b->nvertices++;
+	vertex_uv(b, p, BATCH_SOLID_UV, BATCH_SOLID_UV, c);
 }
 
 void batch_triangle(struct batch *b, struct pt p0, struct pt p1, struct pt p2, struct rgba c)
@@ -287,4 +294,19 @@ void batch_rounded_frame(struct batch *b, double x, double y, double w, double h
 
 		batch_quad(b, outer[i], outer[j], inner[j], inner[i], c);
 	}
+}
+
+void batch_image(struct batch *b, double x, double y, double w, double h, double u, double v,
+		 struct rgba c)
+{
+	struct pt tl = { x, y }, tr = { x + w, y }, br = { x + w, y + h }, bl = { x, y + h };
+
+	if (!reserve(b, 6))
+		return;
+	vertex_uv(b, tl, u, v, c);
+	vertex_uv(b, tr, u + w, v, c);
+	vertex_uv(b, br, u + w, v + h, c);
+	vertex_uv(b, tl, u, v, c);
+	vertex_uv(b, br, u + w, v + h, c);
+	vertex_uv(b, bl, u, v + h, c);
 }

@@ -8,9 +8,11 @@
 
 /*
  * Flat-coloured triangles in screen pixels (origin top left, y down), collected on the
- * CPU and drawn with one call: the ground, the stroke, the cursor and the buttons.
- * Curves become polygons fine enough that no facet is visible (chords within a quarter
- * pixel of the arc). No GL here.
+ * CPU and drawn with one call: the ground, the stroke, the cursor, the buttons and their
+ * labels. Curves become polygons fine enough that no facet is visible (chords within a
+ * quarter pixel of the arc). Every vertex also samples the text atlas (atlas.h): flat
+ * shapes its solid texel, glyphs their bitmaps, so text needs no call of its own. No GL
+ * here.
  */
 
 /* M_PI is POSIX, not C11. */
@@ -23,8 +25,10 @@ struct pt {
 	double x, y;
 };
 
-/* x, y, r, g, b, a per vertex; three vertices per triangle */
-#define BATCH_FLOATS_PER_VERTEX 6
+/* x, y, u, v (atlas texels), r, g, b, a per vertex; three vertices per triangle */
+#define BATCH_FLOATS_PER_VERTEX 8
+/* The atlas texel, in both coordinates, that flat shapes sample: solid coverage. */
+#define BATCH_SOLID_UV 2
 
 struct batch {
 	float *v;
@@ -64,3 +68,8 @@ void batch_rounded_rect(struct batch *b, double x, double y, double w, double h,
 /* The outline of a rounded rectangle, `width` wide, inside its edge. */
 void batch_rounded_frame(struct batch *b, double x, double y, double w, double h, double radius,
 			 double width, struct rgba c);
+/* A w x h rectangle at (x, y) showing the atlas's w x h texels at (u, v) as coverage of
+ * colour c: a glyph. */
+void batch_image(struct batch *b, double x, double y, double w, double h, double u, double v,
+		 struct rgba c);
+

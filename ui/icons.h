@@ -5,7 +5,7 @@
 #include "event.h"
 
 /*
- * The pictures on the on-screen buttons, made of triangles (no fonts on the kiosk):
+ * The pictures on the on-screen buttons, made of triangles (the words under them are text.c's):
  * 3d a cube, clone a branch with a plus, leaf a leaf, propagate a fan of arrows,
  * undo/redo curved arrows, new a blank sheet, export an arrow into a USB stick, view a
  * tree on a turntable, fixed-count/fixed-size twigs with leaves.

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The frame: paper and ground, the lit tree, then stroke, buttons and cursor on top. */
+/* The frame: paper and ground, the lit tree, then stroke, buttons, messages and cursor on top. */
 #include "render.h"
 
 #include <errno.h>
@@ -37,21 +37,34 @@ const char render_tree_fs[] =
 	"	gl_FragColor = vec4(u_color * (0.45 + 0.7 * lambert), 1.0);\n"
 	"}\n";
 
+/* Flat shapes and glyphs alike: colour times the atlas's coverage (solid for shapes).
+ * Texel coordinates become texture ones here, in the vertex shader's high precision. */
 static const char flat_vs[] =
 	"uniform mat4 u_proj;\n"
+	"uniform vec2 u_texel;\n"
 	"attribute vec2 a_position;\n"
+	"attribute vec2 a_uv;\n"
 	"attribute vec4 a_color;\n"
 	"varying vec4 v_color;\n"
+	"varying vec2 v_uv;\n"
 	"void main() {\n"
 	"	v_color = a_color;\n"
+	"	v_uv = a_uv * u_texel;\n"
 	"	gl_Position = u_proj * vec4(a_position, 0.0, 1.0);\n"
 	"}\n";
 
+/* mediump (half floats on some GPUs) cannot tell the texels of a 2048-texel atlas apart */
 static const char flat_fs[] =
+	"#ifdef GL_FRAGMENT_PRECISION_HIGH\n"
+	"precision highp float;\n"
+	"#else\n"
 	"precision mediump float;\n"
+	"#endif\n"
+	"uniform sampler2D u_atlas;\n"
 	"varying vec4 v_color;\n"
+	"varying vec2 v_uv;\n"
 	"void main() {\n"
-	"	gl_FragColor = v_color;\n"
+	"	gl_FragColor = vec4(v_color.rgb, v_color.a * texture2D(u_atlas, v_uv).a);\n"
 	"}\n";
 
 /* Warm paper, like the sheet a child would draw on. */
@@ -72,8 +85,8 @@ struct render *render_create(void)
 {
 	static const char *const tree_attribs[] = { "a_position", "a_normal" };
 	static const GLuint tree_locations[] = { ATTR_POSITION, ATTR_NORMAL };
-	static const char *const flat_attribs[] = { "a_position", "a_color" };
-	static const GLuint flat_locations[] = { ATTR_POSITION, ATTR_COLOR };
+	static const char *const flat_attribs[] = { "a_position", "a_color", "a_uv" };
+	static const GLuint flat_locations[] = { ATTR_POSITION, ATTR_COLOR, ATTR_UV };
 	struct render *r = calloc(1, sizeof(*r));
 
 	if (!r)
@@ -83,14 +96,16 @@ struct render *render_create(void)
 
 	r->tree_program =
 		render_program("tree", tree_vs, render_tree_fs, tree_attribs, tree_locations, 2);
-	r->flat_program = render_program("flat", flat_vs, flat_fs, flat_attribs, flat_locations, 2);
-	if (!r->tree_program || !r->flat_program)
+	r->flat_program = render_program("flat", flat_vs, flat_fs, flat_attribs, flat_locations, 3);
+	if (!r->tree_program || !r->flat_program || render_text_init(r) < 0)
 		goto fail;
 	r->tree_mvp = glGetUniformLocation(r->tree_program, "u_mvp");
 	r->tree_color = glGetUniformLocation(r->tree_program, "u_color");
 	r->tree_light = glGetUniformLocation(r->tree_program, "u_light");
 	r->tree_two_sided = glGetUniformLocation(r->tree_program, "u_two_sided");
 	r->flat_proj = glGetUniformLocation(r->flat_program, "u_proj");
+	r->flat_texel = glGetUniformLocation(r->flat_program, "u_texel");
+	r->flat_atlas = glGetUniformLocation(r->flat_program, "u_atlas");
 	glGenBuffers(1, &r->flat_vbo);
 
 	r->uint_indices = render_gl_major_version() >= 3 ||
@@ -115,6 +130,7 @@ void render_destroy(struct render *r)
 	render_mesh_finish(&r->leaves);
 	render_instanced_finish(r);
 	render_previews_finish(r);
+	render_text_finish(r);
 	glDeleteBuffers(1, &r->flat_vbo);
 	glDeleteProgram(r->tree_program);
 	glDeleteProgram(r->flat_program);
@@ -151,16 +167,28 @@ static int flush_batch(struct render *r, const float proj[16])
 	}
 	if (b->nvertices == 0)
 		return 0;
+	/* glyphs new this frame reach the texture first */
+	if (render_text_sync(r) < 0) {
+		batch_reset(b);
+		return -ENOMEM;
+	}
 	glUseProgram(r->flat_program);
 	glUniformMatrix4fv(r->flat_proj, 1, GL_FALSE, proj);
+	glUniform2f(r->flat_texel, 1.0f / (float)r->atlas.w, 1.0f / (float)r->atlas.h);
+	glUniform1i(r->flat_atlas, 0);
 	glBindBuffer(GL_ARRAY_BUFFER, r->flat_vbo);
 	glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(b->nvertices * (size_t)stride), b->v,
 		     GL_STREAM_DRAW);
+	glEnableVertexAttribArray(ATTR_UV);
 	glVertexAttribPointer(ATTR_POSITION, 2, GL_FLOAT, GL_FALSE, stride, NULL);
-	glVertexAttribPointer(ATTR_COLOR, 4, GL_FLOAT, GL_FALSE, stride,
+	glVertexAttribPointer(ATTR_UV, 2, GL_FLOAT, GL_FALSE, stride,
 			      (const void *)(2 * sizeof(float)));
+	glVertexAttribPointer(ATTR_COLOR, 4, GL_FLOAT, GL_FALSE, stride,
+			      (const void *)(4 * sizeof(float)));
 	glDrawArrays(GL_TRIANGLES, 0, (GLsizei)b->nvertices);
+	glDisableVertexAttribArray(ATTR_UV);
 	glBindBuffer(GL_ARRAY_BUFFER, 0);
+	glBindTexture(GL_TEXTURE_2D, 0);
 	r->stats.draw_calls++;
 	r->stats.triangles += b->nvertices / 3;
 	batch_reset(b);
@@ -302,7 +330,7 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 	glEnable(GL_BLEND);
 	render_ui_selection(&r->batch, app, &xf);
 	render_ui_stroke(&r->batch, app);
-	render_ui_buttons(&r->batch, app);
+	render_ui_buttons(&r->batch, &r->text, app);
 	if (previews) {
 		/* the thumbnails' pictures go on their cards, under the cursor */
 		r2 = flush_batch(r, proj);
@@ -312,6 +340,12 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 		if (ret == 0)
 			ret = r2;
 		glEnable(GL_BLEND);
+	}
+	/* the messages over the canvas; UINT64_MAX, the settled view, has none */
+	if (now_us != UINT64_MAX) {
+		render_ui_status(&r->batch, &r->text, app, now_us);
+		if (app_attract_at(app, now_us, NULL))
+			render_ui_attract(&r->batch, &r->text, app);
 	}
 	render_ui_cursor(&r->batch, app);
 	r2 = flush_batch(r, proj);

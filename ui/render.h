@@ -8,23 +8,39 @@ struct app;
 
 /*
  * Draws what the kiosk shows for an app state: the tree, the stroke under the pen, the
- * hover cursor and the on-screen mode buttons. Needs a current GLES context (2.0 or later);
- * draws into the bound framebuffer at app->view's size. Same state, same pixels.
- * The tree's meshes are uploaded to the GPU only when app->mesh_serial changes.
+ * hover cursor, the on-screen buttons with their labels, status messages and the attract
+ * screen. Needs a current GLES context (2.0 or later); draws into the bound framebuffer at
+ * app->view's size. Same state, same pixels. The tree's meshes are uploaded to the GPU
+ * only when app->mesh_serial changes.
  */
 struct render;
+
+/* The language of the words on the screen (ui/labels.c). */
+enum render_lang {
+	RENDER_LANG_EN = 0,
+	RENDER_LANG_JA,
+};
 
 /* NULL if the context lacks what is needed (a message says why on stderr). */
 struct render *render_create(void);
 /* Needs the context render_create ran in to be current. */
 void render_destroy(struct render *r);
 /*
+ * The font of the labels and messages, the bytes of a TrueType/OpenType file (copied;
+ * NULL: none, the buttons show their icons alone), and their language. 0; -EINVAL if
+ * FreeType cannot read the font, -ENOMEM: no font then. A font without a glyph that the
+ * language needs is used, with a warning on stderr.
+ */
+int render_set_text(struct render *r, const void *font, size_t len, enum render_lang lang);
+/*
  * Returns 0; -EIO if GL reported an error; -ENOMEM; -EINVAL if a mesh has an index
  * past its vertices (that mesh is not drawn).
  */
 int render_frame(struct render *r, const struct app *app);
 /* The same at a moment of the app's clock: the animated turn into 3D shows its step at
- * now_us (render_frame shows the settled view). */
+ * now_us, a status message shows while app_status_at says so (fading at the end), the
+ * attract screen while app_attract_at does. render_frame shows the settled view, without
+ * either. */
 int render_frame_at(struct render *r, const struct app *app, uint64_t now_us);
 
 /* What the last render_frame() did: for benchmarks and tests. */

@@ -8,6 +8,7 @@
 #include <stdint.h>
 
 #include "arrange.h"
+#include "atlas.h"
 #include "batch.h"
 #include "camera.h"
 #include "leaf_instances.h"
@@ -23,6 +24,15 @@ enum {
 	ATTR_NORMAL = 1, /* tree program */
 	ATTR_COLOR = 1,  /* flat program */
 	ATTR_ROW0 = 2,   /* instanced leaves: the rows of each instance's 3x4 matrix, 2..4 */
+	ATTR_UV = 5,     /* flat program: the atlas texel; clear of the instanced rows */
+};
+
+struct font;
+
+/* What the 2D layers need to write words: the font (NULL: no words) and the language. */
+struct ui_text {
+	struct font *font;
+	enum render_lang lang;
 };
 
 /* A tree mesh on the GPU. */
@@ -57,10 +67,15 @@ struct render {
 	/* lit tree meshes: world positions and normals */
 	GLuint tree_program;
 	GLint tree_mvp, tree_color, tree_light, tree_two_sided;
-	/* flat-coloured screen-space triangles */
+	/* screen-space triangles, flat or showing the atlas's glyphs */
 	GLuint flat_program;
-	GLint flat_proj;
+	GLint flat_proj, flat_texel, flat_atlas;
 	GLuint flat_vbo;
+	/* the glyphs (and the solid texel) on the CPU and their GL copy */
+	struct atlas atlas;
+	GLuint atlas_texture;
+	int atlas_max;
+	struct ui_text text;
 
 	/* GLES 3 or OES_element_index_uint; without it meshes are expanded on upload */
 	bool uint_indices;
@@ -114,13 +129,29 @@ void render_instanced_draw(struct render *r, const float mvp[16], const float li
 void render_instanced_clear(struct render *r);
 void render_instanced_finish(struct render *r);
 
+/* render_text.c: the atlas and its texture. init: 0 or -ENOMEM (stderr says why). sync:
+ * uploads what changed since the last sync, binds the texture; 0 or -ENOMEM. */
+int render_text_init(struct render *r);
+int render_text_sync(struct render *r);
+void render_text_finish(struct render *r);
+
 /* render_ui.c: the 2D layers, added to r->batch. */
 void render_ui_ground(struct batch *b, const struct app *app);
 void render_ui_stroke(struct batch *b, const struct app *app);
-void render_ui_buttons(struct batch *b, const struct app *app);
+void render_ui_buttons(struct batch *b, const struct ui_text *t, const struct app *app);
+/* A button label's size for a button h pixels tall, and the width it may take in one w
+ * wide (a longer label is set smaller). */
+int render_ui_label_px(double button_h);
+double render_ui_label_room(double button_w);
 void render_ui_cursor(struct batch *b, const struct app *app);
 /* The branch clone mode works on, marked over the tree as the camera xf shows it. */
 void render_ui_selection(struct batch *b, const struct app *app, const struct camera_xf *xf);
+
+/* render_overlay.c: over the canvas, under the cursor: the status message at now_us, and
+ * the attract screen. */
+void render_ui_status(struct batch *b, const struct ui_text *t, const struct app *app,
+		      uint64_t now_us);
+void render_ui_attract(struct batch *b, const struct ui_text *t, const struct app *app);
 
 /* render_preview.c: the 3D pictures inside the leaf suggestion thumbnails (the cards
  * behind them are render_ui_buttons'). 0 or a negative errno. */

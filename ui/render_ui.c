@@ -1,12 +1,14 @@
 /* SPDX-License-Identifier: MIT */
-/* The flat layers: ground, the stroke under the pen, the button bar and the hover cursor. */
+/* The flat layers: ground, the stroke under the pen, the labelled buttons, the hover cursor. */
 #include <math.h>
 
 #include "app.h"
 #include "icons.h"
+#include "labels.h"
 #include "layout.h"
 #include "render_private.h"
 #include "sketch_view.h"
+#include "text.h"
 
 static const struct rgba ink = { 0.16f, 0.13f, 0.12f, 1.0f };
 static const struct rgba white = { 1.0f, 1.0f, 1.0f, 1.0f };
@@ -187,44 +189,86 @@ static bool button_enabled(const struct app *app, enum button button)
 	return true;
 }
 
-static void draw_button(struct batch *b, const struct app *app, const struct layout_button *lb)
+/*
+ * A button's label: ~26% of its height (21 px, 13 mm, on an 800-pixel kiosk screen 50 cm
+ * tall: a child reads it from a metre away), smaller only if it would not fit the width.
+ */
+#define LABEL_OF_HEIGHT 0.26
+#define LABEL_MIN_OF_HEIGHT 0.18
+#define LABEL_SIDE_OF_WIDTH 0.05 /* kept clear at either end */
+#define LABEL_BASELINE_OF_HEIGHT 0.85
+
+int render_ui_label_px(double button_h)
+{
+	return (int)fmax(1.0, round(LABEL_OF_HEIGHT * button_h));
+}
+
+double render_ui_label_room(double button_w)
+{
+	return (1.0 - 2.0 * LABEL_SIDE_OF_WIDTH) * button_w;
+}
+
+static void draw_label(struct batch *b, const struct ui_text *t, const char *label,
+		       const struct layout_button *lb, double y, struct rgba c)
+{
+	int min_px = (int)fmax(1.0, round(LABEL_MIN_OF_HEIGHT * lb->h));
+	int px = text_fit(t->font, label, render_ui_label_px(lb->h), min_px,
+			  render_ui_label_room(lb->w));
+	struct text_extent e;
+
+	text_measure(t->font, label, px, &e);
+	text_draw(b, t->font, label, px, lb->x + 0.5 * (lb->w - e.width),
+		  y + LABEL_BASELINE_OF_HEIGHT * lb->h, c);
+}
+
+static void draw_button(struct batch *b, const struct ui_text *t, const struct app *app,
+			const struct layout_button *lb)
 {
 	bool active = button_active(app, lb->button);
 	bool pressed = lb->button < BUTTON_COUNT && app->buttons_down[lb->button];
 	bool enabled = button_enabled(app, lb->button);
 	float alpha = enabled ? 1.0f : 0.3f;
 	struct rgba colour = accent(lb->button);
-	double side = lb->w;
-	double radius = 0.24 * side, border = fmax(1.5, 0.045 * side);
+	double w = lb->w, h = lb->h;
+	double radius = 0.24 * h, border = fmax(1.5, 0.045 * h);
 	/* a pressed button sinks onto its shadow */
-	double lift = 0.06 * side, y = lb->y + (pressed ? 0.045 * side : 0.0);
-	struct rgba fill, edge, icon_ink;
+	double lift = 0.06 * h, y = lb->y + (pressed ? 0.045 * h : 0.0);
+	const char *label = t->font ? labels_button(lb->button, t->lang) : "";
+	struct rgba fill, edge, icon_ink, label_ink;
 
 	if (active) {
-		double glow = 0.08 * side;
+		double glow = 0.08 * h;
 
-		batch_rounded_rect(b, lb->x - glow, lb->y - glow, side + 2.0 * glow,
-				   side + 2.0 * glow, radius + glow, with_alpha(colour, 0.32f));
+		batch_rounded_rect(b, lb->x - glow, lb->y - glow, w + 2.0 * glow, h + 2.0 * glow,
+				   radius + glow, with_alpha(colour, 0.32f));
 		fill = pressed ? scaled(colour, 0.8f) : colour;
 		edge = scaled(colour, 0.62f);
-		icon_ink = white;
+		icon_ink = label_ink = white;
 	} else {
 		fill = pressed ? button_pressed_fill : button_fill;
 		edge = with_alpha(button_border, alpha);
 		icon_ink = with_alpha(colour, alpha);
+		/* darker than the icon: thin strokes on white need the contrast */
+		label_ink = with_alpha(scaled(colour, 0.72f), alpha);
 	}
 	if (!pressed)
-		batch_rounded_rect(b, lb->x, lb->y + lift, side, side, radius,
-				   with_alpha(shadow, alpha));
-	batch_rounded_rect(b, lb->x, y, side, side, radius, fill);
-	batch_rounded_frame(b, lb->x, y, side, side, radius, active ? 1.6 * border : border, edge);
-	icon_draw(b, lb->button, (struct pt){ lb->x + 0.5 * side, y + 0.5 * side }, 0.62 * side,
-		  icon_ink, fill);
+		batch_rounded_rect(b, lb->x, lb->y + lift, w, h, radius, with_alpha(shadow, alpha));
+	batch_rounded_rect(b, lb->x, y, w, h, radius, fill);
+	batch_rounded_frame(b, lb->x, y, w, h, radius, active ? 1.6 * border : border, edge);
+	if (!label[0]) {
+		icon_draw(b, lb->button, (struct pt){ lb->x + 0.5 * w, y + 0.5 * h }, 0.62 * h,
+			  icon_ink, fill);
+		return;
+	}
+	/* the icon up, the word under it */
+	icon_draw(b, lb->button, (struct pt){ lb->x + 0.5 * w, y + 0.36 * h }, 0.48 * h, icon_ink,
+		  fill);
+	draw_label(b, t, label, lb, y, label_ink);
 }
 
 /* What the active mode offers on the left: leaf suggestions (their pictures are drawn
  * into these cards by render_preview.c), or the two propagation patterns. */
-static void render_ui_side(struct batch *b, const struct app *app)
+static void render_ui_side(struct batch *b, const struct ui_text *t, const struct app *app)
 {
 	const struct view *v = &app->view;
 	enum arrange_pattern shown[ARRANGE_COUNT];
@@ -236,7 +280,7 @@ static void render_ui_side(struct batch *b, const struct app *app)
 			struct layout_button lb = { i == 0 ? BUTTON_FIXED_COUNT : BUTTON_FIXED_SIZE,
 						    r.x, r.y, r.w, r.h };
 
-			draw_button(b, app, &lb);
+			draw_button(b, t, app, &lb);
 		}
 		return;
 	}
@@ -279,7 +323,7 @@ void render_ui_selection(struct batch *b, const struct app *app, const struct ca
 	batch_polyline(b, p, n, 5.0 * s, with_alpha(accent(BUTTON_CLONE), 0.9f));
 }
 
-void render_ui_buttons(struct batch *b, const struct app *app)
+void render_ui_buttons(struct batch *b, const struct ui_text *t, const struct app *app)
 {
 	const struct view *v = &app->view;
 	struct layout_rect bar = layout_bar(v);
@@ -293,13 +337,13 @@ void render_ui_buttons(struct batch *b, const struct app *app)
 	batch_rect(b, bar.x, bar.y, bar.w, bar.h, bar_fill);
 	batch_rect(b, bar.x, bar.y, fmax(1.0, 2.0 * s), bar.h, bar_edge);
 	for (size_t i = 0; i < n && i < LAYOUT_NBUTTONS; i++)
-		draw_button(b, app, &buttons[i]);
+		draw_button(b, t, app, &buttons[i]);
 	if (app->tree.lifted) {
 		struct layout_button view = layout_view_button(v);
 
-		draw_button(b, app, &view);
+		draw_button(b, t, app, &view);
 	}
-	render_ui_side(b, app);
+	render_ui_side(b, t, app);
 }
 
 /* Two arrows chasing each other round the pen: "drag here to turn the tree". */

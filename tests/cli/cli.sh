@@ -45,7 +45,8 @@ t_usage() {
 		"--headless --out $T/x --size 10x10" "--headless --out $T/x --seed -1" "--replay $DEMO" "stray" \
 		"--headless --out $T/x --view 400" "--headless --out $T/x --view 0,90" \
 		"--headless --out $T/x --view 10,x" "--view 90" "--lang fr" "--idle 5" \
-		"--headless --out $T/x --idle -1" "--headless --out $T/x --idle nan" \
+		"--headless --out $T/x --lang fr" "--headless --out $T/x --idle -1" \
+		"--headless --out $T/x --idle nan" "--headless --out $T/x --idle soon" \
 		"--headless --out $T/x --stats" "--headless --out $T/x --config /etc/edaha.conf"; do
 		# shellcheck disable=SC2086
 		edaha $args >/dev/null 2>"$T/err"; rc=$?
@@ -84,6 +85,48 @@ t_views() {
 	run --out "$T/flat" --replay "$DEMO" --view 90
 	grep -q "not 3D" "$T/stderr" || fail "--view on a sketch: no note"
 	"$IMGCMP" "$SRC/golden/demo-screen.png" "$T/flat/screen.png" || fail "--view turned a sketch"
+}
+
+# The labels in Japanese: another screen, the same drawing and model.
+t_lang() {
+	run --out "$T/en" --replay "$DEMO"
+	run --out "$T/ja" --replay "$DEMO" --lang ja
+	"$IMGCMP" "$SRC/golden/demo-screen-ja.png" "$T/ja/screen.png" || fail "Japanese labels differ from golden"
+	cmp -s "$T/en/screen.png" "$T/ja/screen.png" && fail "--lang ja changed nothing"
+	same_files "$T/en" "$T/ja" skeleton.json model.glb model.obj drawing.edaha
+	run --out "$T/en2" --replay "$DEMO" --lang en
+	same_files "$T/en" "$T/en2" screen.png
+}
+
+# --idle: the screen as the kiosk shows it that long after the last input. Nothing but the
+# picture changes, and only when something on it is timed: the attract screen after 90 s
+# (the same at any later moment), the turn into 3D during its first 2.4 s.
+t_idle() {
+	run --out "$T/now" --replay "$DEMO"
+	run --out "$T/i0" --replay "$DEMO" --idle 0
+	run --out "$T/i89" --replay "$DEMO" --idle 89.9
+	same_files "$T/now" "$T/i0" $OUTPUTS
+	same_files "$T/now" "$T/i89" $OUTPUTS
+	run --out "$T/i120" --replay "$DEMO" --idle 120
+	"$IMGCMP" "$SRC/golden/demo-attract.png" "$T/i120/screen.png" || fail "attract screen differs from golden"
+	same_files "$T/now" "$T/i120" skeleton.json model.glb model.obj drawing.edaha
+	run --out "$T/i90" --replay "$DEMO" --idle 90
+	run --out "$T/iday" --replay "$DEMO" --idle 86400
+	same_files "$T/i120" "$T/i90" screen.png
+	same_files "$T/i120" "$T/iday" screen.png
+	run --out "$T/ja" --replay "$DEMO" --idle 120 --lang ja
+	"$IMGCMP" "$SRC/golden/demo-attract-ja.png" "$T/ja/screen.png" || fail "Japanese attract screen differs from golden"
+	# with nothing drawn the kiosk invites as well
+	run --out "$T/empty"
+	run --out "$T/empty-idle" --idle 100
+	"$IMGCMP" --max-fraction 0.1 "$T/empty/screen.png" "$T/empty-idle/screen.png" &&
+		fail "no attract screen over an empty drawing"
+	# the turn into 3D: a step of it half a second in, settled after
+	run --out "$T/3d" --replay "$DEMO" --press 3d
+	run --out "$T/3d-turning" --replay "$DEMO" --press 3d --idle 0.5
+	run --out "$T/3d-settled" --replay "$DEMO" --press 3d --idle 10
+	cmp -s "$T/3d/screen.png" "$T/3d-turning/screen.png" && fail "--idle 0.5 after 3d shows no turn"
+	same_files "$T/3d" "$T/3d-settled" $OUTPUTS
 }
 
 t_determinism() {

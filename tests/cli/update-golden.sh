@@ -1,6 +1,6 @@
 #!/bin/bash
 # Regenerates the end-to-end goldens from the demo trace: tests/cli/update-golden.sh BUILDDIR
-# Look at tests/golden/demo-screen.png before committing it.
+# Look at every regenerated image before committing it.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=${1:-build}
@@ -19,4 +19,11 @@ for name in demo orbit lift-young lift-broadleaf lift-conifer lift-sine; do
 done
 "$build/platform/edaha" --headless --out "$out/leaf" --replay tests/data/edit-leaf-suggest.edaha-trace
 cp "$out/leaf/screen.png" tests/golden/edit-leaf-suggest.png
-echo "updated tests/golden/edit-leaf-suggest.png; tests/golden/demo-screen.png, demo-skeleton.json, *-3d-front.png, *-3d-90.png and docs/screenshot.png"
+# the labels in Japanese, and the attract screen (cli.sh t_lang, t_idle)
+"$build/platform/edaha" --headless --out "$out/ja" --replay tests/data/demo.edaha-trace --lang ja
+cp "$out/ja/screen.png" tests/golden/demo-screen-ja.png
+"$build/platform/edaha" --headless --out "$out/idle" --replay tests/data/demo.edaha-trace --idle 120
+cp "$out/idle/screen.png" tests/golden/demo-attract.png
+"$build/platform/edaha" --headless --out "$out/idle-ja" --replay tests/data/demo.edaha-trace --idle 120 --lang ja
+cp "$out/idle-ja/screen.png" tests/golden/demo-attract-ja.png
+echo "updated tests/golden/edit-leaf-suggest.png, demo-screen-ja.png, demo-attract.png, demo-attract-ja.png; tests/golden/demo-screen.png, demo-skeleton.json, *-3d-front.png, *-3d-90.png and docs/screenshot.png"

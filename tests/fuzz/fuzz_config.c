@@ -45,6 +45,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	}
 	check_name(c.display.card, sizeof(c.display.card));
 	check_name(c.display.connector, sizeof(c.display.connector));
+	check_name(c.font, sizeof(c.font));
 	if (!quarter(c.display.rotation) || !quarter(c.input.rotation))
 		abort();
 	if (c.display.mode_w < 0 || c.display.mode_w > 16384 || c.display.mode_h < 0 ||

@@ -36,6 +36,7 @@ static void check_defaults(const struct config *c)
 	CHECK_INT(c->language, CONFIG_LANG_EN);
 	CHECK_INT(c->kiosk.attract_after_s, CONFIG_ATTRACT_S_DEFAULT);
 	CHECK(strcmp(c->kiosk.export_dir, CONFIG_EXPORT_DIR_DEFAULT) == 0);
+	CHECK(c->font[0] == '\0');
 	for (int b = 0; b < BUTTON_COUNT; b++) {
 		CHECK(!c->gpio.buttons[b].set);
 		CHECK(!c->gpio.leds[b].set);
@@ -96,6 +97,7 @@ static void test_good(const char *dir)
 	CHECK_INT(c.language, CONFIG_LANG_JA);
 	CHECK_INT(c.kiosk.attract_after_s, 300);
 	CHECK(strcmp(c.kiosk.export_dir, "/media/usb/edaha") == 0);
+	CHECK(strcmp(c.font, "/usr/share/fonts/truetype/vlgothic/VL-PGothic-Regular.ttf") == 0);
 
 	l = &c.gpio.buttons[BUTTON_3D];
 	CHECK(l->set && strcmp(l->chip, "pinctrl-bcm2711") == 0 && strcmp(l->name, "GPIO17") == 0);
@@ -129,6 +131,9 @@ static void test_good(const char *dir)
 	CHECK(c.display.card[0] == '\0' && c.display.connector[0] == '\0');
 	CHECK_INT(c.display.mode_w, 0);
 	CHECK_INT(c.input.area, CONFIG_AREA_STRETCH);
+	static const char font_auto[] = "font: auto\n";
+	CHECK_INT(config_parse(font_auto, strlen(font_auto), "font", &c, NULL, &err), 0);
+	CHECK(c.font[0] == '\0');
 	static const char mode[] = "display:\n  mode: 800x480\n";
 	CHECK_INT(config_parse(mode, strlen(mode), "mode", &c, NULL, &err), 0);
 	CHECK_INT(c.display.mode_w, 800);

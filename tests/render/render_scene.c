@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * render-scene [--twice] SCENE OUT.png: renders a hand-built scene (tests/render/scene.c)
- * headless and writes it as PNG. With --twice it renders again, with the same and with
- * a fresh renderer, and fails unless all frames are byte-identical.
+ * headless, with the labels' font (platform/font_file.c's defaults), and writes it as
+ * PNG. With --twice it renders again, with the same and with a fresh renderer, and fails
+ * unless all frames are byte-identical.
  */
 #include <errno.h>
 #include <stdbool.h>
@@ -12,14 +13,35 @@
 
 #include "buf.h"
 #include "egl_headless.h"
+#include "font_file.h"
 #include "pngio.h"
 #include "render.h"
 #include "scene.h"
 
-static int render_once(struct render *r, struct egl_headless *egl, const struct app *app,
-		       uint8_t *rgba)
+static const char *font_data;
+static size_t font_len;
+
+static struct render *renderer(const char *scene)
 {
-	int ret = render_frame(r, app);
+	struct render *r = render_create();
+	int ret;
+
+	if (!r)
+		return NULL;
+	ret = render_set_text(r, font_data, font_len,
+			      scene_japanese(scene) ? RENDER_LANG_JA : RENDER_LANG_EN);
+	if (ret < 0) {
+		fprintf(stderr, "render-scene: render_set_text: %s\n", strerror(-ret));
+		render_destroy(r);
+		return NULL;
+	}
+	return r;
+}
+
+static int render_once(struct render *r, struct egl_headless *egl, const struct app *app,
+		       uint64_t now_us, uint8_t *rgba)
+{
+	int ret = render_frame_at(r, app, now_us);
 
 	if (ret < 0) {
 		fprintf(stderr, "render-scene: render_frame: %s\n", strerror(-ret));
@@ -68,7 +90,9 @@ int main(int argc, char **argv)
 	struct error err;
 	uint8_t *rgba = NULL, *again = NULL;
 	bool twice = argc == 4 && !strcmp(argv[1], "--twice");
-	const char *scene, *out;
+	const char *scene, *out, *font_name;
+	char *font = NULL;
+	uint64_t now_us;
 	size_t size;
 	int ret, status = 1;
 
@@ -81,9 +105,16 @@ int main(int argc, char **argv)
 	}
 	scene = argv[argc - 2];
 	out = argv[argc - 1];
+	now_us = scene_time_us(scene);
+	if (font_file_read(NULL, &font, &font_len, &font_name, &err) < 0) {
+		fprintf(stderr, "render-scene: %s\n", err.msg);
+		return 1;
+	}
+	font_data = font;
 	ret = scene_build(&app, scene);
 	if (ret < 0) {
 		fprintf(stderr, "render-scene: scene '%s': %s\n", scene, strerror(-ret));
+		free(font);
 		return 2;
 	}
 
@@ -92,7 +123,7 @@ int main(int argc, char **argv)
 		fprintf(stderr, "render-scene: %s\n", err.msg);
 		goto out;
 	}
-	r = render_create();
+	r = renderer(scene);
 	size = (size_t)app.view.width * (size_t)app.view.height * 4;
 	rgba = malloc(size);
 	again = malloc(size);
@@ -100,19 +131,19 @@ int main(int argc, char **argv)
 		fprintf(stderr, "render-scene: cannot set up the renderer\n");
 		goto out;
 	}
-	if (render_once(r, egl, &app, rgba) < 0)
+	if (render_once(r, egl, &app, now_us, rgba) < 0)
 		goto out;
 
 	if (twice) {
 		/* the same renderer (no upload this time), then a new one (uploads again) */
-		if (render_once(r, egl, &app, again) < 0)
+		if (render_once(r, egl, &app, now_us, again) < 0)
 			goto out;
 		if (memcmp(rgba, again, size) != 0) {
 			fprintf(stderr, "render-scene: %s: a second frame differs\n", scene);
 			goto out;
 		}
-		fresh = render_create();
-		if (!fresh || render_once(fresh, egl, &app, again) < 0)
+		fresh = renderer(scene);
+		if (!fresh || render_once(fresh, egl, &app, now_us, again) < 0)
 			goto out;
 		if (memcmp(rgba, again, size) != 0) {
 			fprintf(stderr, "render-scene: %s: a new renderer draws differently\n", scene);
@@ -129,5 +160,6 @@ out:
 	render_destroy(r);
 	egl_headless_destroy(egl);
 	scene_finish(&app);
+	free(font);
 	return status;
 }

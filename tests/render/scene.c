@@ -9,7 +9,10 @@
 #define TUBE_SIDES 10
 #define PI 3.14159265358979323846
 
-const char *const scene_names[] = { "leaf", "eraser", "kiosk", NULL };
+const char *const scene_names[] = { "leaf", "eraser", "kiosk", "saved", "save-failed-ja", NULL };
+
+/* The status scenes are drawn a second into their message. */
+#define STATUS_AT_US 5000000u
 
 static int reserve(struct mesh *m, size_t nv, size_t ni)
 {
@@ -230,6 +233,17 @@ int scene_build(struct app *app, const char *name)
 		app->buttons_down[BUTTON_CLONE] = true;
 		app->buttons_down[BUTTON_EXPORT] = true;
 		r = build_stroke(app, EVENT_TOOL_ERASER, 250, 200, 420, 260, -0.2);
+	} else if (!strcmp(name, "saved") || !strcmp(name, "save-failed-ja")) {
+		/* the kiosk's size, the pen away, a message over the drawing */
+		bool saved = !strcmp(name, "saved");
+
+		view_init(&app->view, 1280, 800);
+		app->mode = saved ? APP_MODE_SKETCH : APP_MODE_PROPAGATE;
+		app->doc.nops = 5;
+		app->doc.cursor = 5;
+		app->last_time_us = STATUS_AT_US;
+		app_set_status(app, saved ? APP_STATUS_SAVED : APP_STATUS_SAVE_FAILED, STATUS_AT_US);
+		r = 0;
 	} else if (!strcmp(name, "kiosk")) {
 		/* the kiosk's own size, sketch mode, the pen hovering near the tree */
 		view_init(&app->view, 1280, 800);
@@ -248,6 +262,20 @@ int scene_build(struct app *app, const char *name)
 	if (r < 0)
 		scene_finish(app);
 	return r;
+}
+
+uint64_t scene_time_us(const char *name)
+{
+	if (!strcmp(name, "saved") || !strcmp(name, "save-failed-ja"))
+		return STATUS_AT_US + 1000000u;
+	return UINT64_MAX;
+}
+
+bool scene_japanese(const char *name)
+{
+	size_t n = strlen(name);
+
+	return n > 3 && !strcmp(name + n - 3, "-ja");
 }
 
 void scene_finish(struct app *app)

@@ -18,6 +18,10 @@ extern const char *const scene_names[];
 /* Fills *app (zeroed first) with the named scene. 0, -EINVAL (no such scene) or -ENOMEM. */
 int scene_build(struct app *app, const char *name);
 void scene_finish(struct app *app);
+/* The moment of the app's clock a scene is drawn at (render_frame_at; UINT64_MAX: the
+ * settled view), and whether its words are Japanese. */
+uint64_t scene_time_us(const char *name);
+bool scene_japanese(const char *name);
 
 /* Appends a tube from a to b, radii ra and rb, to the bark: for tests that build their own. */
 int scene_add_tube(struct mesh *m, struct vec3 a, struct vec3 b, double ra, double rb);

@@ -42,7 +42,9 @@ int main(void)
 	batch_rect(&b, 10, 20, 30, 40, red);
 	CHECK_INT(b.nvertices, 6);
 	CHECK_NEAR(total_area(&b), 1200.0, 1e-6);
-	CHECK(b.v[2] == 1.0f && b.v[3] == 0.0f && b.v[5] == 1.0f);
+	CHECK(b.v[4] == 1.0f && b.v[5] == 0.0f && b.v[7] == 1.0f);
+	/* flat shapes sample the atlas's solid texel */
+	CHECK(b.v[2] == BATCH_SOLID_UV && b.v[3] == BATCH_SOLID_UV);
 
 	/* a disc: every vertex on the circle or its centre, area close to pi r^2 */
 	batch_reset(&b);
@@ -97,6 +99,18 @@ int main(void)
 	batch_reset(&b);
 	batch_polyline(&b, (struct pt[]){ { 0, 0 }, { 100, 0 }, { 100, 100 } }, 3, 4, red);
 	CHECK(total_area(&b) >= 2 * 100 * 4);
+
+	/* an atlas image: its rectangle, each corner at the matching texel corner */
+	batch_reset(&b);
+	batch_image(&b, 10, 20, 7, 9, 100, 200, red);
+	CHECK_INT(b.nvertices, 6);
+	CHECK_NEAR(total_area(&b), 63.0, 1e-6);
+	for (size_t i = 0; i < b.nvertices; i++) {
+		const float *v = b.v + i * BATCH_FLOATS_PER_VERTEX;
+
+		CHECK(v[2] - 100.0f == v[0] - 10.0f && v[3] - 200.0f == v[1] - 20.0f);
+		CHECK(v[4] == 1.0f && v[7] == 1.0f);
+	}
 
 	batch_finish(&b);
 	CHECK(b.v == NULL && b.nvertices == 0);

@@ -40,9 +40,9 @@ static void check_screen(int width, int height)
 		const struct layout_button *p = &b[i];
 
 		CHECK_INT(p->button, expected_order[i]);
-		/* big enough for a child's pen: at least 9% of the height, square */
+		/* big enough for a child's pen: at least 9% of the height; wider, for the label */
 		CHECK(p->h >= 0.09 * height);
-		CHECK_NEAR(p->w, p->h, 0);
+		CHECK(p->w >= 1.5 * p->h && p->w <= 1.6 * p->h);
 		/* whole pixels, inside the bar, on screen */
 		CHECK_NEAR(p->x, (double)(long)p->x, 0);
 		CHECK_NEAR(p->y, (double)(long)p->y, 0);
@@ -104,5 +104,28 @@ int main(void)
 	/* a tall narrow screen still leaves a canvas */
 	view_init(&v, 300, 1000);
 	CHECK(layout_canvas(&v).w >= 0.7 * 300);
+
+	/* the buttons outside the bar have the bar's buttons' size; thumbnails are square */
+	view_init(&v, 1280, 800);
+	layout_buttons(&v, few, 1);
+	{
+		struct layout_button vb = layout_view_button(&v);
+		struct layout_rect pat = layout_side_slot(&v, 1, false), th = layout_side_slot(&v, 0, true);
+		size_t slot = 9;
+
+		CHECK_NEAR(vb.w, few[0].w, 0);
+		CHECK_NEAR(vb.h, few[0].h, 0);
+		CHECK_NEAR(pat.w, few[0].w, 0);
+		CHECK_NEAR(pat.h, few[0].h, 0);
+		CHECK_NEAR(th.w, th.h, 0);
+		CHECK(th.h > few[0].h);
+		/* all of a wide button hits, to its right edge */
+		CHECK(layout_hit_view_button(&v, vb.x + vb.w - 0.5, vb.y + vb.h / 2));
+		CHECK(!layout_hit_view_button(&v, vb.x + vb.w + vb.h, vb.y + vb.h / 2));
+		CHECK(layout_side_hit(&v, pat.x + pat.w - 0.5, pat.y + 1, 2, false, &slot));
+		CHECK_INT(slot, 1);
+		/* the pattern buttons stay clear of each other */
+		CHECK(layout_side_slot(&v, 0, false).y + pat.h < pat.y);
+	}
 	return 0;
 }

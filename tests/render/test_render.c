@@ -2,8 +2,9 @@
 /*
  * The renderer beyond its pictures: meshes upload only when mesh_serial changes, the
  * expanded-index fallback draws the same pixels, broken meshes are refused, strokes are
- * antialiased, the draw-call count stays small, and leaves drawn instanced (GLES 3) look
- * as the merged ones do, at a call a shape.
+ * antialiased, the draw-call count stays small (labels included), leaves drawn instanced
+ * (GLES 3) look as the merged ones do, at a call a shape; a status message fades out,
+ * the attract screen holds still, and a missing or broken font leaves the icons.
  */
 #include <errno.h>
 #include <stdlib.h>
@@ -11,7 +12,10 @@
 
 #include "app.h"
 #include "arrange.h"
+#include "layout.h"
 #include "egl_headless.h"
+#include "font.h"
+#include "font_file.h"
 #include "propagate.h"
 #include "render.h"
 #include "render_private.h"
@@ -462,8 +466,223 @@ static void test_turn(void)
 	app_destroy(app);
 }
 
+static char *font_data;
+static size_t font_len;
+
+static void load_font(void)
+{
+	struct error err;
+	const char *used;
+
+	if (font_file_read(NULL, &font_data, &font_len, &used, &err) < 0) {
+		fprintf(stderr, "%s\n", err.msg);
+		CHECK(0);
+	}
+}
+
+static struct render *labelled(enum render_lang lang)
+{
+	struct render *r = render_create();
+
+	CHECK(r);
+	CHECK_INT(render_set_text(r, font_data, font_len, lang), 0);
+	return r;
+}
+
+/* Labels cost no draw call of their own: the kiosk scene draws in as many calls with
+ * them as without; they change the picture, and so does the language. */
+static void test_labels_batched(void)
+{
+	struct fixture f;
+	struct app app;
+	struct render *plain, *en, *ja;
+	struct render_stats sp, se;
+	uint8_t *c;
+
+	CHECK_INT(scene_build(&app, "kiosk"), 0);
+	fixture_init(&f, app.view.width, app.view.height);
+	c = malloc(f.size);
+	CHECK(c);
+	plain = render_create();
+	CHECK(plain);
+	en = labelled(RENDER_LANG_EN);
+	ja = labelled(RENDER_LANG_JA);
+	draw(&f, plain, &app, f.a);
+	render_get_stats(plain, &sp);
+	draw(&f, en, &app, f.b);
+	render_get_stats(en, &se);
+	CHECK_INT(se.draw_calls, sp.draw_calls);
+	CHECK_INT(se.draw_calls, 4);
+	/* two triangles a glyph more */
+	CHECK(se.triangles > sp.triangles + 2 * 20);
+	CHECK(differing(f.a, f.b, f.size, 8) > 500);
+	draw(&f, ja, &app, c);
+	CHECK(differing(f.b, c, f.size, 8) > 500);
+	/* the canvas is the same in all three: only the bar changed */
+	{
+		struct layout_rect bar = layout_bar(&app.view);
+		size_t row = (size_t)app.view.width * 4;
+
+		for (int y = 0; y < app.view.height; y += 7)
+			CHECK(memcmp(f.a + y * row, c + y * row, (size_t)(bar.x - 12) * 4) == 0);
+	}
+	/* the same again: the glyphs are cached, none is rasterised a second time */
+	{
+		size_t glyphs = font_cached(en->text.font);
+
+		CHECK(glyphs >= 15); /* the distinct letters of the eight labels */
+		draw(&f, en, &app, c);
+		CHECK_INT(font_cached(en->text.font), glyphs);
+		CHECK(memcmp(f.b, c, f.size) == 0);
+	}
+
+	/* no font, or one FreeType cannot read: icons only, as without */
+	CHECK_INT(render_set_text(en, NULL, 0, RENDER_LANG_EN), 0);
+	draw(&f, en, &app, c);
+	CHECK(memcmp(f.a, c, f.size) == 0);
+	CHECK_INT(render_set_text(ja, "junk", 4, RENDER_LANG_JA), -EINVAL);
+	draw(&f, ja, &app, c);
+	CHECK(memcmp(f.a, c, f.size) == 0);
+
+	free(c);
+	render_destroy(plain);
+	render_destroy(en);
+	render_destroy(ja);
+	fixture_finish(&f);
+	scene_finish(&app);
+}
+
+/* A pixel's red channel. */
+static int red_at(const uint8_t *img, int width, int x, int y)
+{
+	return img[((size_t)y * (size_t)width + (size_t)x) * 4];
+}
+
+/* The message shows from when it was set, fully until its last half second, fading
+ * then, gone after; the settled view (render_frame) has none. */
+static void test_status_fades(void)
+{
+	struct fixture f;
+	struct app app;
+	struct render *r;
+	uint8_t *none, *half;
+	uint64_t at, until;
+	int x = 0, y = 0, best = -1;
+
+	CHECK_INT(scene_build(&app, "saved"), 0);
+	at = app.status_us;
+	CHECK_INT(app_status_at(&app, at, &until), APP_STATUS_SAVED);
+	fixture_init(&f, app.view.width, app.view.height);
+	none = malloc(f.size);
+	half = malloc(f.size);
+	CHECK(none && half);
+	r = labelled(RENDER_LANG_EN);
+
+	CHECK_INT(render_frame_at(r, &app, at - 1), 0);
+	CHECK_INT(egl_headless_read_rgba(f.egl, none), 0);
+	draw(&f, r, &app, f.b);
+	CHECK(memcmp(none, f.b, f.size) == 0);
+	CHECK_INT(render_frame_at(r, &app, until), 0);
+	CHECK_INT(egl_headless_read_rgba(f.egl, f.b), 0);
+	CHECK(memcmp(none, f.b, f.size) == 0);
+
+	CHECK_INT(render_frame_at(r, &app, at), 0);
+	CHECK_INT(egl_headless_read_rgba(f.egl, f.a), 0);
+	CHECK(differing(none, f.a, f.size, 8) > 2000);
+	/* still whole just before the fade */
+	CHECK_INT(render_frame_at(r, &app, until - APP_STATUS_FADE_US), 0);
+	CHECK_INT(egl_headless_read_rgba(f.egl, f.b), 0);
+	CHECK(memcmp(f.a, f.b, f.size) == 0);
+	CHECK_INT(render_frame_at(r, &app, until - APP_STATUS_FADE_US / 2), 0);
+	CHECK_INT(egl_headless_read_rgba(f.egl, half), 0);
+	CHECK(differing(half, f.a, f.size, 8) > 1000);
+	CHECK(differing(half, none, f.size, 8) > 1000);
+	/* half way: the tick's green disc is half over the paper */
+	for (int yy = 0; yy < app.view.height / 4; yy++)
+		for (int xx = 0; xx < app.view.width; xx++) {
+			int d = red_at(none, app.view.width, xx, yy) - red_at(f.a, app.view.width, xx, yy);
+
+			if (d > best) {
+				best = d;
+				x = xx;
+				y = yy;
+			}
+		}
+	CHECK(best > 100);
+	{
+		int full = red_at(f.a, app.view.width, x, y), bare = red_at(none, app.view.width, x, y);
+		int mid = red_at(half, app.view.width, x, y);
+
+		CHECK(abs(mid - (full + bare) / 2) <= 12);
+	}
+	free(none);
+	free(half);
+	render_destroy(r);
+	fixture_finish(&f);
+	scene_finish(&app);
+}
+
+/* The attract screen comes attract_after_us after the last event, holds still (an idle
+ * kiosk need not draw), leaves the bar alone, and the next event ends it. */
+static void test_attract(void)
+{
+	struct fixture f;
+	struct app *app = app_create(640, 400, 3);
+	struct render *r;
+	struct event ev = { .type = EVENT_PROXIMITY_IN, .x = 300, .y = 200, .time_us = 1000 };
+	struct layout_rect bar;
+	uint8_t *later;
+	uint64_t from;
+
+	CHECK(app);
+	app->attract_after_us = APP_ATTRACT_US_DEFAULT;
+	app_handle_event(app, &ev);
+	ev.type = EVENT_PROXIMITY_OUT;
+	app_handle_event(app, &ev);
+	CHECK(!app_attract_at(app, 1000 + APP_ATTRACT_US_DEFAULT - 1, &from));
+	CHECK_INT(from, 1000 + APP_ATTRACT_US_DEFAULT);
+	fixture_init(&f, 640, 400);
+	later = malloc(f.size);
+	CHECK(later);
+	r = labelled(RENDER_LANG_JA);
+
+	draw(&f, r, app, f.a);
+	CHECK_INT(render_frame_at(r, app, from - 1), 0);
+	CHECK_INT(egl_headless_read_rgba(f.egl, f.b), 0);
+	CHECK(memcmp(f.a, f.b, f.size) == 0);
+	CHECK_INT(render_frame_at(r, app, from), 0);
+	CHECK_INT(egl_headless_read_rgba(f.egl, f.b), 0);
+	CHECK(differing(f.a, f.b, f.size, 8) > 20000);
+	CHECK_INT(render_frame_at(r, app, from + 3600u * 1000000u), 0);
+	CHECK_INT(egl_headless_read_rgba(f.egl, later), 0);
+	CHECK(memcmp(f.b, later, f.size) == 0);
+	/* over the canvas only */
+	bar = layout_bar(&app->view);
+	for (int y = 0; y < 400; y++)
+		CHECK(memcmp(f.a + ((size_t)y * 640 + (size_t)bar.x) * 4,
+			     f.b + ((size_t)y * 640 + (size_t)bar.x) * 4, (size_t)bar.w * 4) == 0);
+	/* the pen comes near: gone */
+	ev.type = EVENT_PROXIMITY_IN;
+	ev.time_us = from + 5000000;
+	app_handle_event(app, &ev);
+	ev.type = EVENT_PROXIMITY_OUT;
+	app_handle_event(app, &ev);
+	CHECK_INT(render_frame_at(r, app, ev.time_us + 1), 0);
+	CHECK_INT(egl_headless_read_rgba(f.egl, later), 0);
+	CHECK(memcmp(f.a, later, f.size) == 0);
+
+	free(later);
+	render_destroy(r);
+	fixture_finish(&f);
+	app_destroy(app);
+}
+
 int main(void)
 {
+	load_font();
+	test_labels_batched();
+	test_status_fades();
+	test_attract();
 	test_turn();
 	test_upload_only_on_serial();
 	test_expanded_indices();
@@ -471,5 +690,6 @@ int main(void)
 	test_bad_mesh();
 	test_empty();
 	test_antialiased_stroke();
+	free(font_data);
 	return 0;
 }

@@ -1,0 +1,69 @@
+/* SPDX-License-Identifier: MIT */
+#include "labels.h"
+
+#define NLANGS 2
+
+/*
+ * English: the physical buttons' names where a child knows the word, plain words where
+ * not ("spread" for propagate, "save" for export: what it does for them).
+ * Japanese: hiragana; undo/redo as "back"/"forward" (もどす/すすめる) rather than
+ * やりなおし, which a child reads as "start over", the new button's job.
+ */
+static const char *const button_words[BUTTON_COUNT][NLANGS] = {
+	[BUTTON_3D] = { "3D", "りったい" },
+	[BUTTON_CLONE] = { "Clone", "ふやす" },
+	[BUTTON_LEAF] = { "Leaf", "はっぱ" },
+	[BUTTON_PROPAGATE] = { "Spread", "ひろげる" },
+	[BUTTON_UNDO] = { "Undo", "もどす" },
+	[BUTTON_REDO] = { "Redo", "すすめる" },
+	[BUTTON_EXPORT] = { "Save", "ほぞん" },
+	[BUTTON_NEW] = { "New", "あたらしく" },
+	[BUTTON_FIXED_COUNT] = { "Count", "かず" },
+	[BUTTON_FIXED_SIZE] = { "Size", "おおきさ" },
+	[BUTTON_VIEW] = { "Front", "まえ" },
+};
+
+static const char *const status_words[APP_STATUS_COUNT][NLANGS] = {
+	[APP_STATUS_SAVED] = { "Saved!", "ほぞんしたよ!" },
+	[APP_STATUS_SAVE_FAILED] = { "Could not save", "ほぞん できなかったよ" },
+};
+
+static const char *const attract_words[NLANGS] = {
+	"Draw a tree with the pen!",
+	"ペンで 木を かいてみよう!",
+};
+
+static int index_of(enum render_lang lang)
+{
+	return lang == RENDER_LANG_JA ? 1 : 0;
+}
+
+const char *labels_button(enum button b, enum render_lang lang)
+{
+	if (b < 0 || b >= BUTTON_COUNT)
+		return "";
+	return button_words[b][index_of(lang)];
+}
+
+const char *labels_status(enum app_status s, enum render_lang lang)
+{
+	if (s <= APP_STATUS_NONE || s >= APP_STATUS_COUNT)
+		return NULL;
+	return status_words[s][index_of(lang)];
+}
+
+const char *labels_attract(enum render_lang lang)
+{
+	return attract_words[index_of(lang)];
+}
+
+const char *labels_nth(enum render_lang lang, size_t i)
+{
+	if (i < BUTTON_COUNT)
+		return labels_button((enum button)i, lang);
+	i -= BUTTON_COUNT;
+	if (i + 1 < APP_STATUS_COUNT)
+		return labels_status((enum app_status)(i + 1), lang);
+	i -= APP_STATUS_COUNT - 1;
+	return i == 0 ? labels_attract(lang) : NULL;
+}
