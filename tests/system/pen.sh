@@ -5,7 +5,7 @@
 # (input_probe, an edaha trace). Checks the pen and eraser strokes, the stylus button,
 # the positions (the tablet's 16:10 onto the 1280x800 screen) and that the tablet
 # unplugged and plugged back mid-session is picked up again; then replays the trace with
-# `edaha --headless`.
+# `edaha --headless`. A touchscreen's finger then draws like the pen.
 # Environment: EDAHA, VM, UINPUT_PEN, INPUT_PROBE (from the build: tests/platform/).
 set -uo pipefail
 : "${EDAHA:?}" "${VM:?}" "${UINPUT_PEN:?}" "${INPUT_PROBE:?}"
@@ -16,8 +16,9 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 
 # udev is slow under TCG: the script waits until input_probe has the tablet (tablet_added.sh).
 # input_probe stops on SIGTERM once the script is done (its --seconds is only a bound).
-"$VM" -t 200 -g none -o "$T/vm" -- sh -c 'modprobe uinput || exit 3; "$0" --config /nonexistent --seconds 150 >/out/probe.trace 2>/out/probe.err & p=$!; sleep 1.5; TABLET_ADDED="$3 /out/probe.err" "$1" <"$2" 2>/out/pen.err; sleep 1; kill -TERM $p; wait $p' \
-	"$INPUT_PROBE" "$UINPUT_PEN" "$HERE/pen.script" "$HERE/tablet_added.sh"
+# Then a touchscreen (touch.script): its first finger draws like the pen.
+"$VM" -t 240 -g none -o "$T/vm" -- sh -c 'modprobe uinput || exit 3; "$0" --config /nonexistent --seconds 200 >/out/probe.trace 2>/out/probe.err & p=$!; sleep 1.5; export TABLET_ADDED="$3 /out/probe.err" UINPUT_PEN_WAIT_MS=0; "$1" <"$2" 2>/out/pen.err; "$1" --touch <"$4" 2>>/out/pen.err; sleep 1; kill -TERM $p; wait $p' \
+	"$INPUT_PROBE" "$UINPUT_PEN" "$HERE/pen.script" "$HERE/tablet_added.sh" "$HERE/touch.script"
 rc=$?
 [ $rc -eq 77 ] && exit 77
 cat "$T/vm/pen.err" "$T/vm/probe.err" 2>/dev/null | grep -v '^event[0-9]* *-\|^libinput info'
@@ -25,15 +26,22 @@ cat "$T/vm/pen.err" "$T/vm/probe.err" 2>/dev/null | grep -v '^event[0-9]* *-\|^l
 tr=$T/vm/probe.trace
 count() { grep -c -- "$1" "$tr"; }
 [ "$(grep -c 'virtual pen added' "$T/vm/probe.err")" -eq 2 ] || fail "the tablet was not added twice (hotplug)"
-[ "$(count ' proximity-in pen ')" -eq 1 ] || fail "expected one pen proximity-in"
-[ "$(count ' tip-down pen ')" -eq 1 ] || fail "expected one pen tip-down"
+# the pen's stroke, then the finger's
+[ "$(count ' proximity-in pen ')" -eq 2 ] || fail "expected two pen proximity-ins (pen, finger)"
+[ "$(count ' tip-down pen ')" -eq 2 ] || fail "expected two pen tip-downs (pen, finger)"
+grep -q 'edaha virtual touchscreen added (touch' "$T/vm/probe.err" || fail "the touchscreen was not added as one"
 [ "$(count ' motion pen ')" -ge 5 ] || fail "expected pen motion"
 [ "$(count ' pen-button stylus pressed ')" -eq 1 ] || fail "expected the stylus button"
 [ "$(count ' proximity-in eraser ')" -eq 1 ] || fail "expected the eraser after the replug"
 [ "$(count ' tip-down eraser ')" -eq 1 ] || fail "expected an eraser tip-down"
 # the pen's tip came down at the tablet's centre: the screen's centre
-awk '$2 == "tip-down" && $3 == "pen" { if ($4 < 635 || $4 > 645 || $5 < 395 || $5 > 405) exit 1 }' "$tr" ||
+awk '$2 == "tip-down" && $3 == "pen" { if (++n == 1 && ($4 < 635 || $4 > 645 || $5 < 395 || $5 > 405)) exit 1 }' "$tr" ||
 	fail "the tip-down is not at the screen's centre"
+# the finger came down a quarter across the touchscreen and drew to its middle
+awk '$2 == "tip-down" && $3 == "pen" { if (++n == 2 && ($4 < 315 || $4 > 325 || $5 < 395 || $5 > 405)) exit 1 }' "$tr" ||
+	fail "the finger's tip-down is not a quarter across the screen"
+tail -5 "$tr" | awk '$2 == "motion" { x = $4 } END { exit !(x > 630 && x < 650) }' ||
+	fail "the finger's stroke did not reach the middle"
 "$EDAHA" --headless --replay "$tr" --out "$T/out" >"$T/replay.log" 2>&1 ||
 	{ cat "$T/replay.log" >&2; fail "edaha --headless does not replay the recorded trace"; }
 echo "system-pen: OK ($(grep -c . "$tr") lines of trace)"

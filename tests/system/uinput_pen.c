@@ -15,7 +15,9 @@
  *   sh COMMAND...      runs a shell command and waits for it (a GPIO button pressed
  *                      between strokes); a failing command ends the script
  * libinput forces a tool out of proximity after some 50 ms without events: keep moving.
- *   uinput_pen [--direct] < script
+ *   uinput_pen [--direct | --touch] < script
+ * --direct: a screen tablet (INPUT_PROP_DIRECT). --touch: a touchscreen of the same size
+ * (multitouch slot 0): down/up put a finger on and off, in/out/button do nothing.
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -33,7 +35,8 @@
 
 static struct libevdev *dev;
 static struct libevdev_uinput *ui;
-static bool eraser;
+static bool eraser, touch;
+static int tracking_id;
 /* UINPUT_PEN_WAIT_MS: how long a plugged device is given before events (udev under TCG is slow) */
 static long plug_wait_ms = 3000;
 
@@ -67,10 +70,37 @@ static void sleep_ms(long ms)
 		;
 }
 
+static double cur_x, cur_y;
+
 static void pos(double x, double y)
 {
+	cur_x = x;
+	cur_y = y;
+	if (touch) {
+		ev(EV_ABS, ABS_MT_SLOT, 0);
+		ev(EV_ABS, ABS_MT_POSITION_X, (int)(x * W + 0.5));
+		ev(EV_ABS, ABS_MT_POSITION_Y, (int)(y * H + 0.5));
+	}
 	ev(EV_ABS, ABS_X, (int)(x * W + 0.5));
 	ev(EV_ABS, ABS_Y, (int)(y * H + 0.5));
+}
+
+static void touch_plug(void)
+{
+	struct input_absinfo ax = { .maximum = W, .resolution = 100 };
+	struct input_absinfo ay = { .maximum = H, .resolution = 100 };
+	struct input_absinfo slot = { .maximum = 9 };
+	struct input_absinfo id = { .maximum = 65535 };
+
+	if (libevdev_enable_event_code(dev, EV_KEY, BTN_TOUCH, NULL) < 0 ||
+	    libevdev_enable_event_code(dev, EV_ABS, ABS_X, &ax) < 0 ||
+	    libevdev_enable_event_code(dev, EV_ABS, ABS_Y, &ay) < 0 ||
+	    libevdev_enable_event_code(dev, EV_ABS, ABS_MT_SLOT, &slot) < 0 ||
+	    libevdev_enable_event_code(dev, EV_ABS, ABS_MT_TRACKING_ID, &id) < 0 ||
+	    libevdev_enable_event_code(dev, EV_ABS, ABS_MT_POSITION_X, &ax) < 0 ||
+	    libevdev_enable_event_code(dev, EV_ABS, ABS_MT_POSITION_Y, &ay) < 0 ||
+	    libevdev_enable_property(dev, INPUT_PROP_DIRECT) < 0)
+		die("enable touch", EINVAL);
 }
 
 static void plug(bool direct)
@@ -86,12 +116,16 @@ static void plug(bool direct)
 	dev = libevdev_new();
 	if (!dev)
 		die("libevdev_new", ENOMEM);
-	libevdev_set_name(dev, "edaha virtual pen");
+	libevdev_set_name(dev, touch ? "edaha virtual touchscreen" : "edaha virtual pen");
 	libevdev_set_id_bustype(dev, BUS_USB);
 	libevdev_set_id_vendor(dev, 0x1d50);
 	libevdev_set_id_product(dev, 0x6189);
 	if (libevdev_enable_event_type(dev, EV_KEY) < 0 || libevdev_enable_event_type(dev, EV_ABS) < 0)
 		die("enable type", EINVAL);
+	if (touch) {
+		touch_plug();
+		goto create;
+	}
 	for (size_t i = 0; i < sizeof(keys) / sizeof(keys[0]); i++)
 		if (libevdev_enable_event_code(dev, EV_KEY, keys[i], NULL) < 0)
 			die("enable key", EINVAL);
@@ -103,6 +137,7 @@ static void plug(bool direct)
 		die("enable abs", EINVAL);
 	if (libevdev_enable_property(dev, direct ? INPUT_PROP_DIRECT : INPUT_PROP_POINTER) < 0)
 		die("enable property", EINVAL);
+create:
 	r = libevdev_uinput_create_from_device(dev, LIBEVDEV_UINPUT_OPEN_MANAGED, &ui);
 	if (r < 0)
 		die("uinput (root? modprobe uinput?)", -r);
@@ -123,6 +158,8 @@ static void unplug(void)
 int main(int argc, char **argv)
 {
 	bool direct = argc > 1 && strcmp(argv[1], "--direct") == 0;
+
+	touch = argc > 1 && strcmp(argv[1], "--touch") == 0;
 	char line[512];
 	unsigned long n = 0;
 
@@ -138,7 +175,24 @@ int main(int argc, char **argv)
 		n++;
 		if (sscanf(line, "%31s", word) != 1 || word[0] == '#')
 			continue;
-		if (strcmp(word, "in") == 0 && sscanf(line, "%*s %lf %lf %31s", &x, &y, arg) >= 2) {
+		if (touch && (strcmp(word, "in") == 0 || strcmp(word, "out") == 0 ||
+			      strcmp(word, "button") == 0)) {
+			if (strcmp(word, "in") == 0 && sscanf(line, "%*s %lf %lf", &x, &y) == 2) {
+				cur_x = x; /* where the finger will land */
+				cur_y = y;
+			}
+		} else if (touch && strcmp(word, "down") == 0) {
+			ev(EV_ABS, ABS_MT_SLOT, 0);
+			ev(EV_ABS, ABS_MT_TRACKING_ID, tracking_id++);
+			pos(cur_x, cur_y);
+			ev(EV_KEY, BTN_TOUCH, 1);
+			syn();
+		} else if (touch && strcmp(word, "up") == 0) {
+			ev(EV_ABS, ABS_MT_SLOT, 0);
+			ev(EV_ABS, ABS_MT_TRACKING_ID, -1);
+			ev(EV_KEY, BTN_TOUCH, 0);
+			syn();
+		} else if (strcmp(word, "in") == 0 && sscanf(line, "%*s %lf %lf %31s", &x, &y, arg) >= 2) {
 			eraser = strcmp(arg, "eraser") == 0;
 			pos(x, y);
 			ev(EV_KEY, eraser ? BTN_TOOL_RUBBER : BTN_TOOL_PEN, 1);
