@@ -20,7 +20,8 @@
 #include "render.h"
 #include "trace.h"
 
-/* A flip that has not completed in this long will not: the display is gone. */
+/* A flip that has not completed in this long will not: the display is gone (it is
+ * probed again, and the kiosk goes on). */
 #define KIOSK_FLIP_TIMEOUT_MS 1000
 #define KIOSK_MAX_SOURCES 16
 
@@ -116,7 +117,8 @@ static bool frame_due(const struct kiosk *k)
 {
 	struct kiosk_look now;
 
-	if (k->cfg.frames || !k->drawn_valid || k->animating)
+	/* the display asks for one when it came back (VT switch, replug) */
+	if (k->cfg.frames || !k->drawn_valid || k->animating || drm_display_needs_frame(k->display))
 		return true;
 	look_of(k->app, &now);
 	return !look_equal(&now, &k->drawn);
@@ -263,6 +265,8 @@ static void draw_frame(struct kiosk *k)
 		ret = drm_display_read_rgba(k->display, k->shot);
 	if (ret == 0)
 		ret = drm_display_present(k->display);
+	if (ret == -ENODEV)
+		return; /* not shown: the display said why; it asks for a frame when back */
 	if (ret == 0 && drm_display_flip_pending(k->display))
 		ret = set_timer(k, KIOSK_FLIP_TIMEOUT_MS);
 	if (ret < 0) {
@@ -278,15 +282,17 @@ static void draw_frame(struct kiosk *k)
 	}
 }
 
-static void on_flip(struct kiosk *k)
+/* Page flips, seat switches and hotplug events on the display's fds. */
+static void on_display(struct kiosk *k, const struct pollfd *fds, size_t n)
 {
-	int ret = drm_display_dispatch(k->display);
+	bool pending = drm_display_flip_pending(k->display);
+	int ret = drm_display_dispatch(k->display, fds, n);
 
 	if (ret < 0) {
 		fail(k, "display", ret);
 		return;
 	}
-	if (!drm_display_flip_pending(k->display)) {
+	if (pending && !drm_display_flip_pending(k->display)) {
 		k->last_frame_us = now_us();
 		ret = set_timer(k, 0); /* disarms the flip watchdog */
 		if (ret < 0)
@@ -309,8 +315,12 @@ static void on_timer(struct kiosk *k)
 
 	if (read(k->timer_fd, &expirations, sizeof(expirations)) < 0)
 		return; /* spurious wake-up (EAGAIN): nothing expired */
-	if (drm_display_flip_pending(k->display))
-		fail(k, "no page flip completed in time", -ETIMEDOUT);
+	if (drm_display_flip_pending(k->display)) {
+		int ret = drm_display_flip_timeout(k->display);
+
+		if (ret < 0)
+			fail(k, "display", ret);
+	}
 }
 
 static void on_source(struct kiosk *k, size_t i)
@@ -386,12 +396,14 @@ static void print_stats(const struct kiosk *k)
 
 int kiosk_run(struct kiosk *k)
 {
-	struct pollfd fds[3 + KIOSK_MAX_SOURCES];
+	struct pollfd fds[DRM_DISPLAY_MAX_POLLFDS + 2 + KIOSK_MAX_SOURCES];
 
 	while (!k->quit) {
-		size_t n = 0, nsrc = k->nsources;
+		size_t n, nd, nsrc = k->nsources;
 
-		if (!drm_display_flip_pending(k->display)) {
+		/* nothing is drawn while a flip is in flight, the seat is away or the
+		 * display unplugged */
+		if (drm_display_can_draw(k->display)) {
 			if (k->cfg.frames && k->frames >= k->cfg.frames)
 				break;
 			if (frame_due(k))
@@ -399,10 +411,10 @@ int kiosk_run(struct kiosk *k)
 			if (k->quit)
 				break;
 			/* a modeset shows its frame at once: go round for the next one */
-			if (!drm_display_flip_pending(k->display) && k->cfg.frames)
+			if (drm_display_can_draw(k->display) && k->cfg.frames)
 				continue;
 		}
-		fds[n++] = (struct pollfd){ .fd = drm_display_fd(k->display), .events = POLLIN };
+		n = nd = drm_display_pollfds(k->display, fds, DRM_DISPLAY_MAX_POLLFDS);
 		fds[n++] = (struct pollfd){ .fd = k->signal_fd, .events = POLLIN };
 		fds[n++] = (struct pollfd){ .fd = k->timer_fd, .events = POLLIN };
 		for (size_t i = 0; i < nsrc; i++)
@@ -412,15 +424,14 @@ int kiosk_run(struct kiosk *k)
 				fail(k, "poll", -errno);
 			continue;
 		}
-		if (fds[1].revents)
+		if (fds[nd].revents)
 			on_signal(k);
-		if (fds[0].revents)
-			on_flip(k);
-		if (fds[2].revents)
+		on_display(k, fds, nd);
+		if (fds[nd + 1].revents)
 			on_timer(k);
 		/* backwards, so that dropping a failed source leaves the rest in place */
 		for (size_t i = nsrc; i-- > 0;) {
-			if (fds[3 + i].revents)
+			if (fds[nd + 2 + i].revents)
 				on_source(k, i);
 		}
 		take_requests(k);

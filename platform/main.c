@@ -70,6 +70,7 @@ static int kiosk_main(const struct options *o)
 	cfg.display.width = conf.display.mode_w;
 	cfg.display.height = conf.display.mode_h;
 	cfg.display.refresh = conf.display.mode_hz;
+	cfg.display.rotation = conf.display.rotation;
 	k = kiosk_create(&cfg);
 	if (!k)
 		return 1;
