@@ -4,10 +4,11 @@
 # overlay (so host-built binaries and their libraries run unchanged), a bochs-display for
 # KMS and a writable results folder. TCG, not KVM: a nested KVM guest hangs in early boot.
 #
-#   vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] -- COMMAND [ARGS...]
+#   vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] [-v SOCKET] -- COMMAND [ARGS...]
 #     -t  time limit for the whole VM (default 120)
 #     -o  host DIR mounted read-write at /out in the guest
 #     -g  display device (default bochs: bochs-display at 1280x800)
+#     -v  a VNC server on the unix SOCKET, whose clients may resize a virtio display
 #   Environment: KVER (kernel version, default the newest in /lib/modules),
 #   VM_CACHE (where the initramfs is kept, default /tmp/edaha-vm-cache), VM_VERBOSE=1.
 #
@@ -17,18 +18,19 @@
 # Packages: qemu-system-x86 linux-image-amd64 busybox-static cpio kmod udev.
 set -euo pipefail
 
-limit=120 out="" gpu=bochs
-while getopts "t:o:g:" opt; do
+limit=120 out="" gpu=bochs vnc=""
+while getopts "t:o:g:v:" opt; do
 	case $opt in
 	t) limit=$OPTARG ;;
 	o) mkdir -p "$OPTARG"; out=$(realpath "$OPTARG") ;;
 	g) gpu=$OPTARG ;;
+	v) vnc=$OPTARG ;;
 	*) exit 2 ;;
 	esac
 done
 shift $((OPTIND - 1))
 [ "${1:-}" = "--" ] && shift
-[ $# -ge 1 ] || { echo "usage: vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] -- COMMAND..." >&2; exit 2; }
+[ $# -ge 1 ] || { echo "usage: vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] [-v SOCKET] -- COMMAND..." >&2; exit 2; }
 
 skip() { echo "vm: SKIP: $*"; exit 77; }
 command -v qemu-system-x86_64 >/dev/null || skip "no qemu-system-x86_64 (apt-get install qemu-system-x86)"
@@ -117,6 +119,7 @@ esac
 if [ -n "$out" ]; then
 	qemu+=(-fsdev local,id=out,path="$out",security_model=none -device virtio-9p-pci,fsdev=out,mount_tag=out)
 fi
+[ -n "$vnc" ] && qemu+=(-vnc "unix:$vnc")
 timeout "$limit" "${qemu[@]}" < /dev/null || echo "vm: qemu exited with status $?" >&2
 rc=$(cat "$job/rc" 2>/dev/null || echo 125)
 [ "$rc" = 125 ] && echo "vm: the guest reported no exit status (boot failure or time limit $limit s)" >&2
