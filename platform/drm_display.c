@@ -53,26 +53,37 @@ struct drm_display {
 
 static int make_surface(struct drm_display *d, int w, int h, struct error *err);
 
-static void describe(struct drm_display *d)
+/* The mode, as the viewer sees it, is not the app's size: the picture is scaled. */
+static bool scaled(const struct drm_display *d, int mode_w, int mode_h)
 {
-	const struct drm_kms_output *o = drm_kms_output(d->kms);
-	int n;
+	int w, h;
 
-	n = snprintf(d->name, sizeof(d->name), "%s %s %dx%d@%u (%s, %s)", d->card, o->connector,
-		     o->mode.hdisplay, o->mode.vdisplay, o->mode.vrefresh,
-		     drm_kms_atomic(d->kms) ? "atomic" : "legacy", seat_describe(d->seat));
-	if (d->off && n > 0 && (size_t)n < sizeof(d->name))
-		snprintf(d->name + n, sizeof(d->name) - (size_t)n, ", picture %dx%d turned %d",
-			 d->width, d->height, d->rotation);
+	offscreen_turned_size(d->rotation, mode_w, mode_h, &w, &h);
+	return w != d->width || h != d->height;
 }
 
 /* The app's picture cannot go straight onto this mode: turned, or of another size. */
 static bool needs_offscreen(const struct drm_display *d, int mode_w, int mode_h)
 {
-	int w, h;
+	return d->rotation != 0 || scaled(d, mode_w, mode_h);
+}
 
-	offscreen_turned_size(d->rotation, mode_w, mode_h, &w, &h);
-	return d->rotation != 0 || w != d->width || h != d->height;
+static void describe(struct drm_display *d)
+{
+	const struct drm_kms_output *o = drm_kms_output(d->kms);
+	char turned[16] = "";
+	int n;
+
+	n = snprintf(d->name, sizeof(d->name), "%s %s %dx%d@%u (%s, %s)", d->card, o->connector,
+		     o->mode.hdisplay, o->mode.vdisplay, o->mode.vrefresh,
+		     drm_kms_atomic(d->kms) ? "atomic" : "legacy", seat_describe(d->seat));
+	if (!d->off || n < 0 || (size_t)n >= sizeof(d->name))
+		return;
+	if (d->rotation)
+		snprintf(turned, sizeof(turned), " turned %d", d->rotation);
+	snprintf(d->name + n, sizeof(d->name) - (size_t)n, ", picture %dx%d%s%s", d->width,
+		 d->height, turned,
+		 scaled(d, o->mode.hdisplay, o->mode.vdisplay) ? " scaled to fit" : "");
 }
 
 /* ---- the card ---- */
@@ -545,7 +556,7 @@ int drm_display_flip_timeout(struct drm_display *d)
 		drm_kms_output(d->kms)->connector);
 	/* as if it had: the buffer may be on screen. A late event is ignored */
 	flip_done(d->fd, 0, 0, 0, d);
-	d->connected = false;
+	/* there or not, what the CRTC does is unknown: a full modeset */
 	d->mode_set = false;
 	return probe(d);
 }
