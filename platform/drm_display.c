@@ -6,150 +6,114 @@
 #include <GLES2/gl2.h>
 #include <dirent.h>
 #include <errno.h>
-#include <fcntl.h>
 #include <gbm.h>
-#include <poll.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
+#include <sys/stat.h>
 #include <xf86drm.h>
-#include <xf86drmMode.h>
+
+#include "drm_hotplug.h"
+#include "drm_kms.h"
+#include "offscreen.h"
+#include "seat.h"
 
 /* Strokes are antialiased by multisampling, as in the headless framebuffer. */
 #define MSAA_SAMPLES 4
+/* How long destroy waits for a queued flip before it takes the framebuffers away. */
+#define DRAIN_MS 500
 
 struct drm_display {
+	struct seat *seat;
+	struct drm_kms *kms;
+	struct drm_hotplug *hotplug; /* NULL: no monitor (said at create) */
 	int fd;
-	char name[128];
-	uint32_t connector_id, crtc_id;
-	drmModeModeInfo mode;
-	drmModeCrtc *saved_crtc; /* what the CRTC showed before us, put back on destroy */
+	char card[256];
+	char name[320];
+	int rotation;
+	bool any_connector; /* the configuration named none: a replug may use another */
+	int width, height;  /* the app's size, fixed */
 	struct gbm_device *gbm;
 	struct gbm_surface *surface;
+	int surface_w, surface_h; /* the mode's size */
 	EGLDisplay dpy;
+	EGLConfig config;
 	EGLContext ctx;
 	EGLSurface egl_surface;
 	bool gles3;
-	bool mode_set;     /* the first present did the modeset */
-	bool flip_pending; /* a flip is queued; `next` becomes the front at its event */
+	struct offscreen *off; /* NULL: the app draws straight into the surface */
+	bool connected;        /* the connector is there with a mode */
+	bool mode_set;         /* the screen shows our frames: no modeset due */
+	bool ever_set;         /* we changed the CRTC: destroy puts it back */
+	bool probe_due;        /* a hotplug event or the seat's return, not probed yet */
+	bool flip_pending;     /* a flip is queued; `next` becomes the front at its event */
 	struct gbm_bo *front, *next;
-	uint8_t *row;      /* scratch for flipping rows on read-back */
+	uint8_t *row;          /* scratch for flipping rows on read-back */
 };
 
-/* ---- KMS: card, connector, mode, CRTC ---- */
+static int make_surface(struct drm_display *d, int w, int h, struct error *err);
 
-static void connector_name(const drmModeConnector *c, char *out, size_t n)
+/* The mode, as the viewer sees it, is not the app's size: the picture is scaled. */
+static bool scaled(const struct drm_display *d, int mode_w, int mode_h)
 {
-	const char *type = drmModeGetConnectorTypeName(c->connector_type);
+	int w, h;
 
-	snprintf(out, n, "%s-%u", type ? type : "Unknown", c->connector_type_id);
+	offscreen_turned_size(d->rotation, mode_w, mode_h, &w, &h);
+	return w != d->width || h != d->height;
 }
 
-static const drmModeModeInfo *pick_mode(const drmModeConnector *c, const struct drm_display_config *cfg)
+/* The app's picture cannot go straight onto this mode: turned, or of another size. */
+static bool needs_offscreen(const struct drm_display *d, int mode_w, int mode_h)
 {
-	const drmModeModeInfo *preferred = NULL;
-
-	for (int i = 0; i < c->count_modes; i++) {
-		const drmModeModeInfo *m = &c->modes[i];
-
-		if (cfg->width > 0) {
-			if (m->hdisplay == cfg->width && m->vdisplay == cfg->height &&
-			    (cfg->refresh <= 0 || (int)m->vrefresh == cfg->refresh))
-				return m;
-		} else if (!preferred || (m->type & DRM_MODE_TYPE_PREFERRED)) {
-			if (!preferred || !(preferred->type & DRM_MODE_TYPE_PREFERRED))
-				preferred = m;
-		}
-	}
-	/* with no preferred mode, the first listed one (drivers list the best first) */
-	return preferred;
+	return d->rotation != 0 || scaled(d, mode_w, mode_h);
 }
 
-/* A CRTC the connector can use: the one its encoder drives now, else any free one. */
-static uint32_t pick_crtc(int fd, const drmModeRes *res, const drmModeConnector *c)
+static void describe(struct drm_display *d)
 {
-	if (c->encoder_id) {
-		drmModeEncoder *e = drmModeGetEncoder(fd, c->encoder_id);
-		uint32_t crtc = e ? e->crtc_id : 0;
+	const struct drm_kms_output *o = drm_kms_output(d->kms);
+	char turned[16] = "";
+	int n;
 
-		drmModeFreeEncoder(e);
-		if (crtc)
-			return crtc;
-	}
-	for (int i = 0; i < c->count_encoders; i++) {
-		drmModeEncoder *e = drmModeGetEncoder(fd, c->encoders[i]);
-
-		if (!e)
-			continue;
-		for (int j = 0; j < res->count_crtcs && j < 32; j++) {
-			if (e->possible_crtcs & (1u << j)) {
-				drmModeFreeEncoder(e);
-				return res->crtcs[j];
-			}
-		}
-		drmModeFreeEncoder(e);
-	}
-	return 0;
+	n = snprintf(d->name, sizeof(d->name), "%s %s %dx%d@%u (%s, %s)", d->card, o->connector,
+		     o->mode.hdisplay, o->mode.vdisplay, o->mode.vrefresh,
+		     drm_kms_atomic(d->kms) ? "atomic" : "legacy", seat_describe(d->seat));
+	if (!d->off || n < 0 || (size_t)n >= sizeof(d->name))
+		return;
+	if (d->rotation)
+		snprintf(turned, sizeof(turned), " turned %d", d->rotation);
+	snprintf(d->name + n, sizeof(d->name) - (size_t)n, ", picture %dx%d%s%s", d->width,
+		 d->height, turned,
+		 scaled(d, o->mode.hdisplay, o->mode.vdisplay) ? " scaled to fit" : "");
 }
 
-/* Fills connector, mode and CRTC from the card open in d->fd. 0, or -ENODEV with why. */
-static int pick_output(struct drm_display *d, const struct drm_display_config *cfg,
-		       const char *card, struct error *err)
-{
-	drmModeRes *res = drmModeGetResources(d->fd);
-	int ret = -ENODEV;
-
-	/* render-only nodes (a Raspberry Pi's v3d) have no resources or no CRTCs */
-	if (!res || res->count_crtcs <= 0 || res->count_connectors <= 0) {
-		drmModeFreeResources(res);
-		return error_set(err, -ENODEV, "%s cannot modeset", card);
-	}
-	error_set(err, -ENODEV, "%s: no connected %s%s", card,
-		  cfg->connector ? "connector " : "connector", cfg->connector ? cfg->connector : "");
-	for (int i = 0; i < res->count_connectors && ret < 0; i++) {
-		drmModeConnector *c = drmModeGetConnector(d->fd, res->connectors[i]);
-		const drmModeModeInfo *m;
-		char name[32];
-
-		if (!c)
-			continue;
-		connector_name(c, name, sizeof(name));
-		if (c->connection != DRM_MODE_CONNECTED || c->count_modes <= 0 ||
-		    (cfg->connector && strcmp(cfg->connector, name) != 0)) {
-			drmModeFreeConnector(c);
-			continue;
-		}
-		m = pick_mode(c, cfg);
-		if (!m) {
-			error_set(err, -ENODEV, "%s %s has no mode %dx%d@%d", card, name, cfg->width,
-				  cfg->height, cfg->refresh);
-		} else if (!(d->crtc_id = pick_crtc(d->fd, res, c))) {
-			error_set(err, -ENODEV, "%s %s: no CRTC can drive it", card, name);
-		} else {
-			d->connector_id = c->connector_id;
-			d->mode = *m;
-			snprintf(d->name, sizeof(d->name), "%s %s %dx%d@%u", card, name, m->hdisplay,
-				 m->vdisplay, m->vrefresh);
-			ret = 0;
-		}
-		drmModeFreeConnector(c);
-	}
-	drmModeFreeResources(res);
-	return ret;
-}
+/* ---- the card ---- */
 
 static int try_card(struct drm_display *d, const struct drm_display_config *cfg, const char *path,
-		    struct error *err)
+		    bool atomic, struct error *err)
 {
-	/* direct open: the kiosk runs as root or in the video group (libseat comes later) */
-	d->fd = open(path, O_RDWR | O_CLOEXEC);
-	if (d->fd < 0)
-		return error_set(err, -errno, "%s: %s", path, strerror(errno));
-	if (pick_output(d, cfg, path, err) == 0)
+	const struct drm_kms_want want = {
+		.connector = cfg->connector,
+		.width = cfg->width,
+		.height = cfg->height,
+		.refresh = cfg->refresh,
+	};
+	int fd = seat_open(d->seat, path);
+
+	if (fd < 0)
+		return error_set(err, fd, "%s: %s", path, strerror(-fd));
+	d->kms = drm_kms_create(fd, atomic);
+	if (!d->kms) {
+		seat_close(d->seat, fd);
+		return error_set(err, -ENOMEM, "display: out of memory");
+	}
+	if (drm_kms_pick(d->kms, &want, path, err) == 0) {
+		d->fd = fd;
+		snprintf(d->card, sizeof(d->card), "%s", path);
 		return 0;
-	close(d->fd);
-	d->fd = -1;
+	}
+	drm_kms_destroy(d->kms);
+	d->kms = NULL;
+	seat_close(d->seat, fd);
 	return -ENODEV;
 }
 
@@ -159,7 +123,8 @@ static int cmp_names(const void *a, const void *b)
 }
 
 /* Boards have several DRM nodes in no fixed order: try every card, in name order. */
-static int open_card(struct drm_display *d, const struct drm_display_config *cfg, struct error *err)
+static int open_card(struct drm_display *d, const struct drm_display_config *cfg, bool atomic,
+		     struct error *err)
 {
 	char *names[64], path[300];
 	size_t n = 0;
@@ -168,7 +133,7 @@ static int open_card(struct drm_display *d, const struct drm_display_config *cfg
 	int ret = -ENODEV;
 
 	if (cfg->card)
-		return try_card(d, cfg, cfg->card, err);
+		return try_card(d, cfg, cfg->card, atomic, err);
 	dir = opendir("/dev/dri");
 	if (!dir)
 		return error_set(err, -ENODEV, "/dev/dri: %s (no DRM driver loaded?)", strerror(errno));
@@ -182,7 +147,7 @@ static int open_card(struct drm_display *d, const struct drm_display_config *cfg
 	for (size_t i = 0; i < n; i++) {
 		snprintf(path, sizeof(path), "/dev/dri/%s", names[i]);
 		if (ret < 0)
-			ret = try_card(d, cfg, path, err);
+			ret = try_card(d, cfg, path, atomic, err);
 		free(names[i]);
 	}
 	return ret;
@@ -201,7 +166,7 @@ static bool has_word(const char *list, const char *word)
 	return false;
 }
 
-/* A config whose native visual is the surface's format; multisampled if there is one. */
+/* A config whose native visual is the surface's format; multisampled if asked. */
 static bool choose_config(EGLDisplay dpy, EGLint renderable, EGLint samples, EGLConfig *out)
 {
 	const EGLint attribs[] = {
@@ -230,7 +195,8 @@ static bool choose_config(EGLDisplay dpy, EGLint renderable, EGLint samples, EGL
 	return false;
 }
 
-static int create_egl(struct drm_display *d, struct error *err)
+/* The display and a context; the surface is make_surface's. samples: of the window. */
+static int create_egl(struct drm_display *d, EGLint samples, struct error *err)
 {
 	static const int versions[] = { 3, 2 };
 	const char *client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
@@ -256,64 +222,218 @@ static int create_egl(struct drm_display *d, struct error *err)
 	for (size_t i = 0; i < sizeof(versions) / sizeof(versions[0]); i++) {
 		const EGLint ctx_attribs[] = { EGL_CONTEXT_CLIENT_VERSION, versions[i], EGL_NONE };
 		EGLint bit = versions[i] == 3 ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_ES2_BIT;
-		EGLConfig config;
 
-		if (!choose_config(d->dpy, bit, MSAA_SAMPLES, &config) &&
-		    !choose_config(d->dpy, bit, 0, &config))
+		if (!(samples > 0 && choose_config(d->dpy, bit, samples, &d->config)) &&
+		    !choose_config(d->dpy, bit, 0, &d->config))
 			continue;
-		d->ctx = eglCreateContext(d->dpy, config, EGL_NO_CONTEXT, ctx_attribs);
+		d->ctx = eglCreateContext(d->dpy, d->config, EGL_NO_CONTEXT, ctx_attribs);
 		if (d->ctx == EGL_NO_CONTEXT)
 			continue;
 		d->gles3 = versions[i] == 3;
-		d->egl_surface = eglCreateWindowSurface(d->dpy, config,
-							(EGLNativeWindowType)d->surface, NULL);
-		if (d->egl_surface == EGL_NO_SURFACE)
-			return error_set(err, -ENODEV, "EGL: cannot make a window surface (error 0x%x)",
-					 eglGetError());
-		if (!eglMakeCurrent(d->dpy, d->egl_surface, d->egl_surface, d->ctx))
-			return error_set(err, -ENODEV, "EGL: cannot make the context current (error 0x%x)",
-					 eglGetError());
-		glViewport(0, 0, d->mode.hdisplay, d->mode.vdisplay);
 		return 0;
 	}
 	return error_set(err, -ENODEV, "EGL: no GLES 3 or GLES 2 context for XRGB8888 (error 0x%x)",
 			 eglGetError());
 }
 
+/* Gives the locked buffers back to the surface. */
+static void release_buffers(struct drm_display *d)
+{
+	/* while EGL's side of the surface still exists: Mesa's release looks the buffer up
+	 * in the EGL surface, which eglDestroySurface frees (and with it every buffer,
+	 * whose framebuffers destroy_fb removes) */
+	if (d->front)
+		gbm_surface_release_buffer(d->surface, d->front);
+	if (d->next && d->next != d->front)
+		gbm_surface_release_buffer(d->surface, d->next);
+	d->front = d->next = NULL;
+}
+
+static void destroy_surface(struct drm_display *d)
+{
+	release_buffers(d);
+	if (d->egl_surface != EGL_NO_SURFACE) {
+		/* the context stays, with every GL object in it */
+		eglMakeCurrent(d->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+		eglDestroySurface(d->dpy, d->egl_surface);
+		d->egl_surface = EGL_NO_SURFACE;
+	}
+	if (d->surface)
+		gbm_surface_destroy(d->surface);
+	d->surface = NULL;
+}
+
+/* A GBM surface of the mode's size and EGL's window on it, current. */
+static int make_surface(struct drm_display *d, int w, int h, struct error *err)
+{
+	destroy_surface(d);
+	d->surface = gbm_surface_create(d->gbm, (uint32_t)w, (uint32_t)h, GBM_FORMAT_XRGB8888,
+					GBM_BO_USE_SCANOUT | GBM_BO_USE_RENDERING);
+	if (!d->surface)
+		return error_set(err, -ENODEV, "%s: cannot create a %dx%d GBM surface", d->card, w, h);
+	d->egl_surface = eglCreateWindowSurface(d->dpy, d->config, (EGLNativeWindowType)d->surface,
+						NULL);
+	if (d->egl_surface == EGL_NO_SURFACE)
+		return error_set(err, -ENODEV, "EGL: cannot make a window surface (error 0x%x)",
+				 eglGetError());
+	if (!eglMakeCurrent(d->dpy, d->egl_surface, d->egl_surface, d->ctx))
+		return error_set(err, -ENODEV, "EGL: cannot make the context current (error 0x%x)",
+				 eglGetError());
+	d->surface_w = w;
+	d->surface_h = h;
+	if (d->off)
+		offscreen_bind(d->off);
+	else
+		glViewport(0, 0, w, h);
+	return 0;
+}
+
+/* ---- seat, hotplug, probing ---- */
+
+static void seat_disabled(void *data)
+{
+	(void)data;
+	/* a flip in flight still completes; nothing new is committed until enable */
+	fputs("edaha: display: the seat was switched away (VT switch); not drawing\n", stderr);
+}
+
+static void seat_enabled(void *data)
+{
+	struct drm_display *d = data;
+
+	/* whoever had the screen set their own mode: ours is set again with the next frame */
+	fputs("edaha: display: the seat is back; drawing again\n", stderr);
+	d->mode_set = false;
+	d->probe_due = true;
+}
+
+static const struct seat_listener seat_listener = {
+	.disable = seat_disabled,
+	.enable = seat_enabled,
+};
+
+/* Gives up on the output until a hotplug event or the seat's return. */
+static void lost(struct drm_display *d, const char *what, int err)
+{
+	fprintf(stderr, "edaha: display: %s: %s; not drawing until %s is back\n", what,
+		strerror(-err), drm_kms_output(d->kms)->connector);
+	d->connected = false;
+	d->mode_set = false;
+}
+
+/*
+ * Looks at the connector in use again: gone, there as before, or back (with the mode in
+ * use if it still offers it, else its preferred one: the picture is then scaled to fit).
+ * Gone, and the configuration named no connector: any connected one will do. A negative
+ * errno only when the display cannot go on (no memory, no GL).
+ */
+static int probe(struct drm_display *d)
+{
+	const struct drm_kms_output before = *drm_kms_output(d->kms);
+	struct drm_kms_want want = {
+		.connector = before.connector,
+		.width = before.mode.hdisplay,
+		.height = before.mode.vdisplay,
+		.refresh = (int)before.mode.vrefresh,
+		.fallback = true,
+	};
+	const struct drm_kms_output *o;
+	struct error err = { { 0 } };
+	int ret;
+
+	d->probe_due = false;
+	ret = drm_kms_pick(d->kms, &want, d->card, &err);
+	if (ret == -ENODEV && d->any_connector) {
+		want.connector = NULL;
+		ret = drm_kms_pick(d->kms, &want, d->card, &err);
+	}
+	if (ret < 0) {
+		if (d->connected)
+			fprintf(stderr, "edaha: display: %s disconnected; not drawing until it is "
+				"back\n", before.connector);
+		d->connected = false;
+		return ret == -ENODEV ? 0 : ret;
+	}
+	o = drm_kms_output(d->kms);
+	if (!d->connected || o->connector_id != before.connector_id ||
+	    o->crtc_id != before.crtc_id || memcmp(&o->mode, &before.mode, sizeof(o->mode)) != 0) {
+		fprintf(stderr, "edaha: display: %s connected, %dx%d@%u\n", o->connector,
+			o->mode.hdisplay, o->mode.vdisplay, o->mode.vrefresh);
+		d->mode_set = false;
+	}
+	d->connected = true;
+	if (o->mode.hdisplay != d->surface_w || o->mode.vdisplay != d->surface_h) {
+		ret = make_surface(d, o->mode.hdisplay, o->mode.vdisplay, &err);
+		if (ret == 0 && !d->off &&
+		    !(d->off = offscreen_create(d->width, d->height, d->gles3, &err)))
+			ret = -EIO;
+		if (ret < 0) {
+			fprintf(stderr, "edaha: display: %s\n", err.msg);
+			return ret;
+		}
+	}
+	describe(d);
+	return 0;
+}
+
+/* ---- create, destroy ---- */
+
 struct drm_display *drm_display_create(const struct drm_display_config *cfg, struct error *err)
 {
 	static const struct drm_display_config automatic = { 0 };
+	const char *legacy = getenv("EDAHA_DRM_LEGACY");
 	struct drm_display *d = calloc(1, sizeof(*d));
+	const drmModeModeInfo *mode;
+	struct error hotplug_err = { { 0 } };
+	struct stat st;
 
 	if (!d) {
 		error_set(err, -ENOMEM, "display: out of memory");
 		return NULL;
 	}
+	cfg = cfg ? cfg : &automatic;
 	d->fd = -1;
 	d->dpy = EGL_NO_DISPLAY;
 	d->ctx = EGL_NO_CONTEXT;
 	d->egl_surface = EGL_NO_SURFACE;
-	if (open_card(d, cfg ? cfg : &automatic, err) < 0)
+	d->rotation = cfg->rotation;
+	d->any_connector = !cfg->connector;
+	d->seat = seat_create(&seat_listener, d, err);
+	if (!d->seat)
 		goto fail;
-	d->row = malloc((size_t)d->mode.hdisplay * 4);
+	if (open_card(d, cfg, !(legacy && strcmp(legacy, "1") == 0), err) < 0)
+		goto fail;
+	d->connected = true;
+	mode = &drm_kms_output(d->kms)->mode;
+	offscreen_turned_size(d->rotation, mode->hdisplay, mode->vdisplay, &d->width, &d->height);
+	d->row = malloc((size_t)d->width * 4);
 	if (!d->row) {
 		error_set(err, -ENOMEM, "display: out of memory");
 		goto fail;
 	}
-	d->saved_crtc = drmModeGetCrtc(d->fd, d->crtc_id);
 	d->gbm = gbm_create_device(d->fd);
 	if (!d->gbm) {
-		error_set(err, -ENODEV, "%s: no GBM device", d->name);
+		error_set(err, -ENODEV, "%s: no GBM device", d->card);
 		goto fail;
 	}
-	d->surface = gbm_surface_create(d->gbm, d->mode.hdisplay, d->mode.vdisplay,
-					GBM_FORMAT_XRGB8888, GBM_BO_USE_SCANOUT | GBM_BO_USE_RENDERING);
-	if (!d->surface) {
-		error_set(err, -ENODEV, "%s: cannot create a GBM surface", d->name);
+	/* a window that only shows the offscreen picture needs no samples of its own */
+	if (create_egl(d, needs_offscreen(d, mode->hdisplay, mode->vdisplay) ? 0 : MSAA_SAMPLES,
+		       err) < 0 ||
+	    make_surface(d, mode->hdisplay, mode->vdisplay, err) < 0)
 		goto fail;
-	}
-	if (create_egl(d, err) < 0)
+	if (needs_offscreen(d, mode->hdisplay, mode->vdisplay) &&
+	    !(d->off = offscreen_create(d->width, d->height, d->gles3, err)))
 		goto fail;
+	/* without it the kiosk still runs: a display replugged is then seen by a flip that
+	 * does not complete, or not at all */
+	if (fstat(d->fd, &st) < 0)
+		error_set(&hotplug_err, -errno, "%s: %s", d->card, strerror(errno));
+	else
+		d->hotplug = drm_hotplug_create(st.st_rdev, &hotplug_err);
+	if (!d->hotplug)
+		fprintf(stderr, "edaha: warning: display hotplug is not watched: %s\n",
+			hotplug_err.msg);
+	describe(d);
 	return d;
 
 fail:
@@ -321,64 +441,130 @@ fail:
 	return NULL;
 }
 
+static void flip_done(int fd, unsigned seq, unsigned sec, unsigned usec, void *data)
+{
+	struct drm_display *d = data;
+
+	(void)fd, (void)seq, (void)sec, (void)usec;
+	/* late, for a flip drm_display_flip_timeout gave up on */
+	if (!d->flip_pending)
+		return;
+	/* the old front is off the screen now: the surface may draw into it again */
+	if (d->front)
+		gbm_surface_release_buffer(d->surface, d->front);
+	d->front = d->next;
+	d->next = NULL;
+	d->flip_pending = false;
+}
+
+static int handle_drm(struct drm_display *d)
+{
+	drmEventContext ev = {
+		.version = 2,
+		.page_flip_handler = flip_done,
+	};
+
+	if (drmHandleEvent(d->fd, &ev) < 0)
+		return errno ? -errno : -EIO;
+	return 0;
+}
+
 void drm_display_destroy(struct drm_display *d)
 {
+	int ret;
+
 	if (!d)
 		return;
 	/* a flip still queued would land on a framebuffer we are about to remove */
 	while (d->flip_pending) {
 		struct pollfd p = { .fd = d->fd, .events = POLLIN };
 
-		/* bounded: a display unplugged mid-flip never sends its event */
-		if (poll(&p, 1, 500) <= 0 || drm_display_dispatch(d) < 0)
+		/* bounded: a display unplugged mid-flip may never send its event */
+		if (poll(&p, 1, DRAIN_MS) <= 0 || handle_drm(d) < 0)
 			break;
 	}
-	if (d->mode_set && d->saved_crtc) {
-		drmModeCrtc *s = d->saved_crtc;
-
-		if (drmModeSetCrtc(d->fd, s->crtc_id, s->buffer_id, s->x, s->y, &d->connector_id, 1,
-				   s->mode_valid ? &s->mode : NULL) < 0)
-			fprintf(stderr, "edaha: cannot restore the previous display mode: %s\n",
-				strerror(errno));
-	}
-	drmModeFreeCrtc(d->saved_crtc);
-	/* buffers go back to the surface while EGL's side of it still exists: Mesa's release
-	 * looks the buffer up in the EGL surface, which eglDestroySurface frees (and with it
-	 * every buffer, whose framebuffers destroy_fb removes) */
-	if (d->front)
-		gbm_surface_release_buffer(d->surface, d->front);
-	if (d->next && d->next != d->front)
-		gbm_surface_release_buffer(d->surface, d->next);
-	d->front = d->next = NULL;
+	if (d->ever_set && seat_active(d->seat) && (ret = drm_kms_restore(d->kms)) < 0)
+		fprintf(stderr, "edaha: cannot restore the previous display mode: %s\n",
+			strerror(-ret));
+	/* with the context current; where a failed make_surface left none, GL ignores the
+	 * calls and the objects go with the context */
+	offscreen_destroy(d->off);
 	if (d->dpy != EGL_NO_DISPLAY) {
-		eglMakeCurrent(d->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-		if (d->egl_surface != EGL_NO_SURFACE)
-			eglDestroySurface(d->dpy, d->egl_surface);
+		destroy_surface(d);
 		if (d->ctx != EGL_NO_CONTEXT)
 			eglDestroyContext(d->dpy, d->ctx);
 		eglTerminate(d->dpy);
 		/* frees EGL's per-thread state, which would otherwise outlive us */
 		eglReleaseThread();
-	}
-	if (d->surface)
+	} else if (d->surface) {
 		gbm_surface_destroy(d->surface);
+	}
 	if (d->gbm)
 		gbm_device_destroy(d->gbm);
+	drm_kms_destroy(d->kms);
+	drm_hotplug_destroy(d->hotplug);
 	if (d->fd >= 0)
-		close(d->fd);
+		seat_close(d->seat, d->fd);
+	seat_destroy(d->seat);
 	free(d->row);
 	free(d);
 }
 
-int drm_display_fd(const struct drm_display *d)
+/* ---- the loop's view ---- */
+
+size_t drm_display_pollfds(const struct drm_display *d, struct pollfd *out, size_t max)
 {
-	return d->fd;
+	const int fds[DRM_DISPLAY_MAX_POLLFDS] = {
+		d->fd,
+		seat_fd(d->seat),
+		d->hotplug ? drm_hotplug_fd(d->hotplug) : -1,
+	};
+	size_t n = 0;
+
+	for (size_t i = 0; i < DRM_DISPLAY_MAX_POLLFDS && n < max; i++)
+		if (fds[i] >= 0)
+			out[n++] = (struct pollfd){ .fd = fds[i], .events = POLLIN };
+	return n;
+}
+
+int drm_display_dispatch(struct drm_display *d, const struct pollfd *fds, size_t n)
+{
+	int seat = seat_fd(d->seat), hotplug = d->hotplug ? drm_hotplug_fd(d->hotplug) : -1;
+	int ret = 0;
+
+	for (size_t i = 0; i < n && ret == 0; i++) {
+		if (!fds[i].revents || fds[i].fd < 0)
+			continue;
+		if (fds[i].fd == d->fd)
+			ret = handle_drm(d);
+		else if (fds[i].fd == seat)
+			ret = seat_dispatch(d->seat);
+		else if (fds[i].fd == hotplug && drm_hotplug_dispatch(d->hotplug) > 0)
+			d->probe_due = true;
+	}
+	/* not under a queued flip: a new mode may mean new buffers */
+	if (ret == 0 && d->probe_due && !d->flip_pending)
+		ret = probe(d);
+	return ret;
+}
+
+int drm_display_flip_timeout(struct drm_display *d)
+{
+	if (!d->flip_pending)
+		return 0;
+	fprintf(stderr, "edaha: display: a page flip did not complete; probing %s\n",
+		drm_kms_output(d->kms)->connector);
+	/* as if it had: the buffer may be on screen. A late event is ignored */
+	flip_done(d->fd, 0, 0, 0, d);
+	/* there or not, what the CRTC does is unknown: a full modeset */
+	d->mode_set = false;
+	return probe(d);
 }
 
 void drm_display_size(const struct drm_display *d, int *width, int *height)
 {
-	*width = d->mode.hdisplay;
-	*height = d->mode.vdisplay;
+	*width = d->width;
+	*height = d->height;
 }
 
 const char *drm_display_describe(const struct drm_display *d)
@@ -391,6 +577,16 @@ bool drm_display_gles3(const struct drm_display *d)
 	return d->gles3;
 }
 
+bool drm_display_can_draw(const struct drm_display *d)
+{
+	return seat_active(d->seat) && d->connected && !d->flip_pending;
+}
+
+bool drm_display_needs_frame(const struct drm_display *d)
+{
+	return !d->mode_set;
+}
+
 bool drm_display_flip_pending(const struct drm_display *d)
 {
 	return d->flip_pending;
@@ -398,9 +594,11 @@ bool drm_display_flip_pending(const struct drm_display *d)
 
 int drm_display_read_rgba(struct drm_display *d, uint8_t *rgba)
 {
-	int w = d->mode.hdisplay, h = d->mode.vdisplay;
+	int w = d->width, h = d->height;
 	size_t stride = (size_t)w * 4;
 
+	if (d->off)
+		return offscreen_read_rgba(d->off, rgba);
 	/* the back buffer, before the swap; a multisampled one is resolved by the read */
 	glPixelStorei(GL_PACK_ALIGNMENT, 1);
 	glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
@@ -468,12 +666,17 @@ static int bo_fb(struct drm_display *d, struct gbm_bo *bo, uint32_t *id)
 
 int drm_display_present(struct drm_display *d)
 {
+	bool atomic = drm_kms_atomic(d->kms);
 	struct gbm_bo *bo;
 	uint32_t fb = 0;
 	int ret;
 
 	if (d->flip_pending)
 		return -EBUSY;
+	if (!drm_display_can_draw(d))
+		return -ENODEV;
+	if (d->off && offscreen_show(d->off, d->rotation, d->surface_w, d->surface_h) < 0)
+		return -EIO;
 	if (!eglSwapBuffers(d->dpy, d->egl_surface))
 		return -EIO;
 	bo = gbm_surface_lock_front_buffer(d->surface);
@@ -485,47 +688,33 @@ int drm_display_present(struct drm_display *d)
 		return ret;
 	}
 	if (!d->mode_set) {
-		/* the first frame: no flip event comes, the buffer is the front at once */
-		if (drmModeSetCrtc(d->fd, d->crtc_id, fb, 0, 0, &d->connector_id, 1, &d->mode) < 0) {
-			ret = -errno;
+		/* the first frame, or the first since the display or the seat came back: no
+		 * flip event comes, the buffer is the front at once */
+		ret = drm_kms_modeset(d->kms, fb);
+		if (atomic != drm_kms_atomic(d->kms))
+			describe(d);
+		if (ret < 0) {
 			gbm_surface_release_buffer(d->surface, bo);
-			return ret;
+			lost(d, "cannot set the mode", ret);
+			return -ENODEV;
 		}
-		d->mode_set = true;
+		if (d->front)
+			gbm_surface_release_buffer(d->surface, d->front);
 		d->front = bo;
+		/* for the journal: the kiosk is back on the screen */
+		if (d->ever_set)
+			fprintf(stderr, "edaha: display: mode set again on %s\n",
+				drm_kms_output(d->kms)->connector);
+		d->mode_set = d->ever_set = true;
 		return 0;
 	}
-	if (drmModePageFlip(d->fd, d->crtc_id, fb, DRM_MODE_PAGE_FLIP_EVENT, d) < 0) {
-		ret = -errno;
+	ret = drm_kms_flip(d->kms, fb, d);
+	if (ret < 0) {
 		gbm_surface_release_buffer(d->surface, bo);
-		return ret;
+		lost(d, "cannot flip", ret);
+		return -ENODEV;
 	}
 	d->next = bo;
 	d->flip_pending = true;
-	return 0;
-}
-
-static void flip_done(int fd, unsigned seq, unsigned sec, unsigned usec, void *data)
-{
-	struct drm_display *d = data;
-
-	(void)fd, (void)seq, (void)sec, (void)usec;
-	/* the old front is off the screen now: the surface may draw into it again */
-	if (d->front)
-		gbm_surface_release_buffer(d->surface, d->front);
-	d->front = d->next;
-	d->next = NULL;
-	d->flip_pending = false;
-}
-
-int drm_display_dispatch(struct drm_display *d)
-{
-	drmEventContext ev = {
-		.version = 2,
-		.page_flip_handler = flip_done,
-	};
-
-	if (drmHandleEvent(d->fd, &ev) < 0)
-		return errno ? -errno : -EIO;
 	return 0;
 }

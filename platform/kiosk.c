@@ -22,7 +22,8 @@
 #include "render.h"
 #include "trace.h"
 
-/* A flip that has not completed in this long will not: the display is gone. */
+/* A flip that has not completed in this long will not: the display is gone (it is
+ * probed again, and the kiosk goes on). */
 #define KIOSK_FLIP_TIMEOUT_MS 1000
 #define KIOSK_MAX_SOURCES 16
 /* Pen events waiting for the frame that shows them; a slow frame under a fast pen
@@ -174,7 +175,9 @@ static bool frame_due(const struct kiosk *k)
 {
 	struct kiosk_look now;
 
-	if (k->cfg.frames || !k->drawn_valid || k->animating || k->export_asked)
+	/* the display asks for one when it came back (VT switch, replug) */
+	if (k->cfg.frames || !k->drawn_valid || k->animating || k->export_asked ||
+	    drm_display_needs_frame(k->display))
 		return true;
 	look_of(k->app, now_us(), &now);
 	return !look_equal(&now, &k->drawn);
@@ -406,13 +409,18 @@ static void draw_frame(struct kiosk *k)
 		kiosk_size(k, &w, &h);
 		if (!k->pixels)
 			k->pixels = malloc((size_t)w * (size_t)h * 4);
-		if (k->pixels && drm_display_read_rgba(k->display, k->pixels) < 0)
+		if (k->pixels && drm_display_read_rgba(k->display, k->pixels) < 0) {
 			fputs("edaha: export: cannot read the screen back; no picture\n", stderr);
+			free(k->pixels);
+			k->pixels = NULL;
+		}
 		k->export_asked = false;
 		k->export_ready = true;
 	}
 	if (ret == 0)
 		ret = drm_display_present(k->display);
+	if (ret == -ENODEV)
+		return; /* not shown: the display said why; it asks for a frame when back */
 	if (ret == 0 && drm_display_flip_pending(k->display))
 		ret = set_timer(k, KIOSK_FLIP_TIMEOUT_MS);
 	if (ret < 0) {
@@ -437,15 +445,17 @@ static void draw_frame(struct kiosk *k)
 	}
 }
 
-static void on_flip(struct kiosk *k)
+/* Page flips, seat switches and hotplug events on the display's fds. */
+static void on_display(struct kiosk *k, const struct pollfd *fds, size_t n)
 {
-	int ret = drm_display_dispatch(k->display);
+	bool pending = drm_display_flip_pending(k->display);
+	int ret = drm_display_dispatch(k->display, fds, n);
 
 	if (ret < 0) {
 		fail(k, "display", ret);
 		return;
 	}
-	if (!drm_display_flip_pending(k->display)) {
+	if (pending && !drm_display_flip_pending(k->display)) {
 		frame_shown(k, now_us());
 		ret = set_timer(k, 0); /* disarms the flip watchdog */
 		if (ret < 0)
@@ -468,8 +478,12 @@ static void on_timer(struct kiosk *k)
 
 	if (read(k->timer_fd, &expirations, sizeof(expirations)) < 0)
 		return; /* spurious wake-up (EAGAIN): nothing expired */
-	if (drm_display_flip_pending(k->display))
-		fail(k, "no page flip completed in time", -ETIMEDOUT);
+	if (drm_display_flip_pending(k->display)) {
+		int ret = drm_display_flip_timeout(k->display);
+
+		if (ret < 0)
+			fail(k, "display", ret);
+	}
 }
 
 static void on_source(struct kiosk *k, size_t i)
@@ -627,13 +641,15 @@ static int take_final_shot(struct kiosk *k)
 
 int kiosk_run(struct kiosk *k)
 {
-	struct pollfd fds[4 + KIOSK_MAX_SOURCES];
+	struct pollfd fds[DRM_DISPLAY_MAX_POLLFDS + 3 + KIOSK_MAX_SOURCES];
 
 	take_requests(k); /* the LEDs show the first mode */
 	while (!k->quit) {
-		size_t n = 0, nsrc = k->nsources;
+		size_t n, nd, nsrc = k->nsources;
 
-		if (!drm_display_flip_pending(k->display)) {
+		/* nothing is drawn while a flip is in flight, the seat is away or the
+		 * display unplugged */
+		if (drm_display_can_draw(k->display)) {
 			if (k->cfg.frames && k->frames >= k->cfg.frames)
 				break;
 			if (frame_due(k))
@@ -645,11 +661,19 @@ int kiosk_run(struct kiosk *k)
 			if (k->quit)
 				break;
 			/* a modeset shows its frame at once: go round for the next one */
-			if (!drm_display_flip_pending(k->display) && (k->cfg.frames || frame_due(k)))
+			if (drm_display_can_draw(k->display) && (k->cfg.frames || frame_due(k)))
 				continue;
 		}
+		/* an export while the display is away goes without its picture */
+		if (k->export_asked && !drm_display_can_draw(k->display) &&
+		    !drm_display_flip_pending(k->display)) {
+			k->export_asked = false;
+			free(k->pixels);
+			k->pixels = NULL;
+			run_export(k);
+		}
 		arm_ui_timer(k);
-		fds[n++] = (struct pollfd){ .fd = drm_display_fd(k->display), .events = POLLIN };
+		n = nd = drm_display_pollfds(k->display, fds, DRM_DISPLAY_MAX_POLLFDS);
 		fds[n++] = (struct pollfd){ .fd = k->signal_fd, .events = POLLIN };
 		fds[n++] = (struct pollfd){ .fd = k->timer_fd, .events = POLLIN };
 		fds[n++] = (struct pollfd){ .fd = k->ui_timer_fd, .events = POLLIN };
@@ -660,17 +684,16 @@ int kiosk_run(struct kiosk *k)
 				fail(k, "poll", -errno);
 			continue;
 		}
-		if (fds[1].revents)
+		if (fds[nd].revents)
 			on_signal(k);
-		if (fds[0].revents)
-			on_flip(k);
-		if (fds[2].revents)
+		on_display(k, fds, nd);
+		if (fds[nd + 1].revents)
 			on_timer(k);
-		if (fds[3].revents)
+		if (fds[nd + 2].revents)
 			on_ui_timer(k);
 		/* backwards, so that dropping a failed source leaves the rest in place */
 		for (size_t i = nsrc; i-- > 0;) {
-			if (fds[4 + i].revents)
+			if (fds[nd + 3 + i].revents)
 				on_source(k, i);
 		}
 		take_requests(k);

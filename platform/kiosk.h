@@ -11,10 +11,11 @@
 #include "render.h"
 
 /*
- * The kiosk's main loop: one poll() over the DRM fd, the input sources, a timerfd and a
- * signalfd (SIGINT, SIGTERM). A frame is drawn only when what the app shows changed
- * (or the 3D turn animates) and only when no flip is in flight: at most one frame a
- * vblank, none while nothing happens.
+ * The kiosk's main loop: one poll() over the display's fds (DRM, seat, hotplug), the
+ * input sources, a timerfd and a signalfd (SIGINT, SIGTERM). A frame is drawn only when
+ * what the app shows changed (or the 3D turn animates, or the display came back from a
+ * VT switch or a replug) and only when the display can take one: at most one frame a
+ * vblank, none while nothing happens, none while the display is away.
  */
 struct kiosk;
 
@@ -47,7 +48,7 @@ int kiosk_add_source(struct kiosk *k, const struct kiosk_source *src);
  * for a 2D sketch. */
 void kiosk_set_mode_listener(struct kiosk *k, void (*fn)(void *data, enum button mode),
 			     void *data);
-/* Screen size, so that input can map a tablet onto it. */
+/* Screen size (as the viewer sees it, turned), so that input can map a tablet onto it. */
 void kiosk_size(const struct kiosk *k, int *width, int *height);
 /* For sources' dispatch: one event into the app (and the recording). */
 void kiosk_feed(struct kiosk *k, const struct event *ev);

@@ -79,6 +79,7 @@ static int kiosk_main(const struct options *o)
 	cfg.display.width = conf.display.mode_w;
 	cfg.display.height = conf.display.mode_h;
 	cfg.display.refresh = conf.display.mode_hz;
+	cfg.display.rotation = conf.display.rotation;
 	/* --lang over the configuration's */
 	if (o->lang)
 		cfg.language = strcmp(o->lang, "ja") == 0 ? RENDER_LANG_JA : RENDER_LANG_EN;

@@ -4,11 +4,12 @@
 # overlay (so host-built binaries and their libraries run unchanged), a bochs-display for
 # KMS and a writable results folder. TCG, not KVM: a nested KVM guest hangs in early boot.
 #
-#   vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] [-s WxH] -- COMMAND [ARGS...]
+#   vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] [-s WxH] [-v SOCKET] -- COMMAND [ARGS...]
 #     -t  time limit for the whole VM (default 120)
 #     -o  host DIR mounted read-write at /out in the guest
 #     -g  display device (default bochs: bochs-display)
 #     -s  the display's preferred mode (default 1280x800)
+#     -v  a VNC server on the unix SOCKET, whose clients may resize a virtio display
 #   Environment: KVER (kernel version, default the newest in /lib/modules),
 #   VM_CACHE (where the initramfs is kept, default /tmp/edaha-vm-cache), VM_VERBOSE=1.
 #
@@ -18,19 +19,20 @@
 # Packages: qemu-system-x86 linux-image-amd64 busybox-static cpio kmod udev.
 set -euo pipefail
 
-limit=120 out="" gpu=bochs size=1280x800
-while getopts "t:o:g:s:" opt; do
+limit=120 out="" gpu=bochs size=1280x800 vnc=""
+while getopts "t:o:g:s:v:" opt; do
 	case $opt in
 	t) limit=$OPTARG ;;
 	o) mkdir -p "$OPTARG"; out=$(realpath "$OPTARG") ;;
 	g) gpu=$OPTARG ;;
 	s) size=$OPTARG ;;
+	v) vnc=$OPTARG ;;
 	*) exit 2 ;;
 	esac
 done
 shift $((OPTIND - 1))
 [ "${1:-}" = "--" ] && shift
-[ $# -ge 1 ] || { echo "usage: vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] [-s WxH] -- COMMAND..." >&2; exit 2; }
+[ $# -ge 1 ] || { echo "usage: vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] [-s WxH] [-v SOCKET] -- COMMAND..." >&2; exit 2; }
 case $size in [1-9]*x[1-9]*) ;; *) echo "vm: bad size $size" >&2; exit 2 ;; esac
 
 skip() { echo "vm: SKIP: $*"; exit 77; }
@@ -120,6 +122,7 @@ esac
 if [ -n "$out" ]; then
 	qemu+=(-fsdev local,id=out,path="$out",security_model=none -device virtio-9p-pci,fsdev=out,mount_tag=out)
 fi
+[ -n "$vnc" ] && qemu+=(-vnc "unix:$vnc")
 timeout "$limit" "${qemu[@]}" < /dev/null || echo "vm: qemu exited with status $?" >&2
 rc=$(cat "$job/rc" 2>/dev/null || echo 125)
 [ "$rc" = 125 ] && echo "vm: the guest reported no exit status (boot failure or time limit $limit s)" >&2
