@@ -20,21 +20,13 @@ T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-system.XXXXXX")
 trap 'rm -rf "$T"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-# Under ASan the GL driver is preloaded into edaha only (see tests/meson.build); the
-# guest gets the same environment, as it runs the host's files.
-guest_env=(LP_NATIVE_VECTOR_WIDTH=128)
-host_env=()
-if [ -n "${EDAHA_GL_PRELOAD:-}" ]; then
-	host_env=(LD_PRELOAD="$EDAHA_GL_PRELOAD" ASAN_OPTIONS="${ASAN_OPTIONS:-}:verify_asan_link_order=0")
-	guest_env+=("${host_env[@]}" UBSAN_OPTIONS="${UBSAN_OPTIONS:-}" LSAN_OPTIONS="${LSAN_OPTIONS:-}")
-fi
+. "$(dirname "$0")/gl_env.sh"
 
 for size in 1280x800 800x1280; do
 	env "${host_env[@]}" "$EDAHA" --headless --size $size --out "$T/headless-$size" \
 		>"$T/headless.log" 2>&1 || { cat "$T/headless.log" >&2; fail "headless render exited $?"; }
 done
 
-# llvmpipe's 256-bit vectors are slow under TCG; 128-bit ones halve the frame time there
 "$VM" -t 500 -o "$T/vm" -- env "${guest_env[@]}" \
 	"$HERE/display_guest.sh" "$EDAHA" "$SCANOUT" "$FRAMES" /out
 rc=$?

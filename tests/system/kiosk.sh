@@ -28,12 +28,7 @@ rc=$?
 [ $rc -eq 77 ] && exit 77
 [ $rc -eq 0 ] || fail "cannot build the gpio-sim module"
 
-guest_env=(LP_NATIVE_VECTOR_WIDTH=128)
-host_env=()
-if [ -n "${EDAHA_GL_PRELOAD:-}" ]; then
-	host_env=(LD_PRELOAD="$EDAHA_GL_PRELOAD" ASAN_OPTIONS="${ASAN_OPTIONS:-}:verify_asan_link_order=0")
-	guest_env+=("${host_env[@]}" UBSAN_OPTIONS="${UBSAN_OPTIONS:-}" LSAN_OPTIONS="${LSAN_OPTIONS:-}")
-fi
+. "$(dirname "$0")/gl_env.sh"
 
 # 640x400: a quarter of the pixels, so that frames under TCG come fast enough for the pen
 "$VM" -t 500 -s 640x400 -o "$T/vm" -- env "${guest_env[@]}" \

@@ -13,6 +13,7 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-pen.XXXXXX")
 trap 'rm -rf "$T"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
+. "$HERE/gl_env.sh"
 
 # udev is slow under TCG: the script waits until input_probe has the tablet (tablet_added.sh).
 # input_probe stops on SIGTERM once the script is done (its --seconds is only a bound).
@@ -42,6 +43,6 @@ awk '$2 == "tip-down" && $3 == "pen" { if (++n == 2 && ($4 < 315 || $4 > 325 || 
 	fail "the finger's tip-down is not a quarter across the screen"
 tail -5 "$tr" | awk '$2 == "motion" { x = $4 } END { exit !(x > 630 && x < 650) }' ||
 	fail "the finger's stroke did not reach the middle"
-"$EDAHA" --headless --replay "$tr" --out "$T/out" >"$T/replay.log" 2>&1 ||
+env "${host_env[@]}" "$EDAHA" --headless --replay "$tr" --out "$T/out" >"$T/replay.log" 2>&1 ||
 	{ cat "$T/replay.log" >&2; fail "edaha --headless does not replay the recorded trace"; }
 echo "system-pen: OK ($(grep -c . "$tr") lines of trace)"

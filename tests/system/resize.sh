@@ -15,12 +15,7 @@ T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-resize.XXXXXX")
 trap 'rm -rf "$T"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-guest_env=(LP_NATIVE_VECTOR_WIDTH=128)
-host_env=()
-if [ -n "${EDAHA_GL_PRELOAD:-}" ]; then
-	host_env=(LD_PRELOAD="$EDAHA_GL_PRELOAD" ASAN_OPTIONS="${ASAN_OPTIONS:-}:verify_asan_link_order=0")
-	guest_env+=("${host_env[@]}" UBSAN_OPTIONS="${UBSAN_OPTIONS:-}" LSAN_OPTIONS="${LSAN_OPTIONS:-}")
-fi
+. "$(dirname "$0")/gl_env.sh"
 env "${host_env[@]}" "$EDAHA" --headless --out "$T/headless" >"$T/headless.log" 2>&1 ||
 	{ cat "$T/headless.log" >&2; fail "headless render exited $?"; }
 
