@@ -17,6 +17,7 @@
 #include "drm_kms.h"
 #include "offscreen.h"
 #include "seat.h"
+#include "gl_util.h"
 
 /* Strokes are antialiased by multisampling, as in the headless framebuffer. */
 #define MSAA_SAMPLES 4
@@ -155,17 +156,6 @@ static int open_card(struct drm_display *d, const struct drm_display_config *cfg
 
 /* ---- EGL on GBM ---- */
 
-static bool has_word(const char *list, const char *word)
-{
-	size_t n = strlen(word);
-
-	for (const char *p = list; p && (p = strstr(p, word)); p += n) {
-		if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
-			return true;
-	}
-	return false;
-}
-
 /* A config whose native visual is the surface's format; multisampled if asked. */
 static bool choose_config(EGLDisplay dpy, EGLint renderable, EGLint samples, EGLConfig *out)
 {
@@ -204,7 +194,7 @@ static int create_egl(struct drm_display *d, EGLint samples, struct error *err)
 	EGLint major, minor;
 
 	if (!client ||
-	    (!has_word(client, "EGL_KHR_platform_gbm") && !has_word(client, "EGL_MESA_platform_gbm")))
+	    (!gl_has_extension(client, "EGL_KHR_platform_gbm") && !gl_has_extension(client, "EGL_MESA_platform_gbm")))
 		return error_set(err, -ENODEV, "EGL: no GBM platform (is libegl-mesa0 installed?)");
 	/* the EXT entry point takes the same arguments and exists on EGL 1.4 libraries too */
 	get_display = (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
@@ -594,26 +584,10 @@ bool drm_display_flip_pending(const struct drm_display *d)
 
 int drm_display_read_rgba(struct drm_display *d, uint8_t *rgba)
 {
-	int w = d->width, h = d->height;
-	size_t stride = (size_t)w * 4;
-
 	if (d->off)
 		return offscreen_read_rgba(d->off, rgba);
 	/* the back buffer, before the swap; a multisampled one is resolved by the read */
-	glPixelStorei(GL_PACK_ALIGNMENT, 1);
-	glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-	if (glGetError() != GL_NO_ERROR)
-		return -EIO;
-	/* GL's first row is the bottom one */
-	for (int y = 0; y < h / 2; y++) {
-		uint8_t *top = rgba + (size_t)y * stride;
-		uint8_t *bottom = rgba + (size_t)(h - 1 - y) * stride;
-
-		memcpy(d->row, top, stride);
-		memcpy(top, bottom, stride);
-		memcpy(bottom, d->row, stride);
-	}
-	return 0;
+	return gl_read_rgba(d->width, d->height, rgba, d->row);
 }
 
 /* ---- framebuffers and flips ---- */

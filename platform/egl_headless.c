@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 #include "egl_headless.h"
+#include "gl_util.h"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -31,17 +32,6 @@ struct egl_headless {
  */
 static int display_users;
 
-static bool has_word(const char *list, const char *word)
-{
-	size_t n = strlen(word);
-
-	for (const char *p = list; p && (p = strstr(p, word)); p += n) {
-		if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
-			return true;
-	}
-	return false;
-}
-
 static EGLDisplay get_surfaceless_display(struct error *err)
 {
 	const char *client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
@@ -49,7 +39,7 @@ static EGLDisplay get_surfaceless_display(struct error *err)
 	PFNEGLGETPLATFORMDISPLAYEXTPROC get_platform_display_ext;
 	EGLDisplay dpy;
 
-	if (!client || !has_word(client, "EGL_MESA_platform_surfaceless")) {
+	if (!client || !gl_has_extension(client, "EGL_MESA_platform_surfaceless")) {
 		error_set(err, -ENODEV,
 			  "EGL: no surfaceless platform (EGL_MESA_platform_surfaceless missing; "
 			  "is Mesa's libEGL (libegl-mesa0) installed?)");
@@ -80,7 +70,7 @@ static int create_context(struct egl_headless *e, struct error *err)
 	static const int versions[] = { 3, 2 };
 	const char *exts = eglQueryString(e->dpy, EGL_EXTENSIONS);
 
-	if (!exts || !has_word(exts, "EGL_KHR_surfaceless_context"))
+	if (!exts || !gl_has_extension(exts, "EGL_KHR_surfaceless_context"))
 		return error_set(err, -ENODEV, "EGL: no EGL_KHR_surfaceless_context");
 	if (!eglBindAPI(EGL_OPENGL_ES_API))
 		return error_set(err, -ENODEV, "EGL: no OpenGL ES API (error 0x%x)", eglGetError());
@@ -135,9 +125,9 @@ static int create_framebuffers(struct egl_headless *e, struct error *err)
 		e->samples = max_samples < MSAA_SAMPLES ? max_samples : MSAA_SAMPLES;
 	} else {
 		/* GLES 2 core only has 16-bit formats; the extensions bring the usual ones */
-		if (!has_word(exts, "GL_OES_rgb8_rgba8"))
+		if (!gl_has_extension(exts, "GL_OES_rgb8_rgba8"))
 			color_format = GL_RGBA4;
-		if (!has_word(exts, "GL_OES_depth24"))
+		if (!gl_has_extension(exts, "GL_OES_depth24"))
 			depth_format = GL_DEPTH_COMPONENT16;
 	}
 
@@ -254,7 +244,7 @@ void egl_headless_destroy(struct egl_headless *e)
 
 int egl_headless_read_rgba(struct egl_headless *e, uint8_t *rgba)
 {
-	size_t stride = (size_t)e->width * 4;
+	int ret;
 
 	if (e->samples > 0) {
 		/* samples cannot be read directly: average them into the single-sampled copy */
@@ -264,21 +254,8 @@ int egl_headless_read_rgba(struct egl_headless *e, uint8_t *rgba)
 				  GL_COLOR_BUFFER_BIT, GL_NEAREST);
 		glBindFramebuffer(GL_READ_FRAMEBUFFER, e->resolve_fbo);
 	}
-	glPixelStorei(GL_PACK_ALIGNMENT, 1);
-	glReadPixels(0, 0, e->width, e->height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+	ret = gl_read_rgba(e->width, e->height, rgba, e->row);
 	/* leave the drawing framebuffer bound, as create did */
 	glBindFramebuffer(GL_FRAMEBUFFER, e->fbo);
-	if (glGetError() != GL_NO_ERROR)
-		return -EIO;
-
-	/* GL's first row is the bottom one */
-	for (int y = 0; y < e->height / 2; y++) {
-		uint8_t *top = rgba + (size_t)y * stride;
-		uint8_t *bottom = rgba + (size_t)(e->height - 1 - y) * stride;
-
-		memcpy(e->row, top, stride);
-		memcpy(top, bottom, stride);
-		memcpy(bottom, e->row, stride);
-	}
-	return 0;
+	return ret;
 }

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 #include "offscreen.h"
+#include "gl_util.h"
 
 #include <GLES3/gl3.h>
 #include <errno.h>
@@ -119,17 +120,6 @@ void offscreen_geometry(int rotation, int width, int height, int screen_w, int s
 
 /* ---- GL ---- */
 
-static bool has_word(const char *list, const char *word)
-{
-	size_t n = strlen(word);
-
-	for (const char *p = list; p && (p = strstr(p, word)); p += n) {
-		if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0'))
-			return true;
-	}
-	return false;
-}
-
 static GLuint compile(GLenum type, const char *src, struct error *err)
 {
 	GLuint s = glCreateShader(type);
@@ -210,7 +200,7 @@ static int make_texture(struct offscreen *o, bool gles3)
 static int make_framebuffers(struct offscreen *o, bool gles3, struct error *err)
 {
 	const char *exts = (const char *)glGetString(GL_EXTENSIONS);
-	GLenum depth = gles3 || has_word(exts, "GL_OES_depth24") ? GL_DEPTH_COMPONENT24
+	GLenum depth = gles3 || gl_has_extension(exts, "GL_OES_depth24") ? GL_DEPTH_COMPONENT24
 								   : GL_DEPTH_COMPONENT16;
 	GLenum status;
 
@@ -313,25 +303,13 @@ static void resolve(struct offscreen *o)
 
 int offscreen_read_rgba(struct offscreen *o, uint8_t *rgba)
 {
-	size_t stride = (size_t)o->width * 4;
+	int ret;
 
 	resolve(o);
 	glBindFramebuffer(GL_FRAMEBUFFER, o->resolve_fbo);
-	glPixelStorei(GL_PACK_ALIGNMENT, 1);
-	glReadPixels(0, 0, o->width, o->height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+	ret = gl_read_rgba(o->width, o->height, rgba, o->row);
 	offscreen_bind(o);
-	if (glGetError() != GL_NO_ERROR)
-		return -EIO;
-	/* GL's first row is the bottom one */
-	for (int y = 0; y < o->height / 2; y++) {
-		uint8_t *top = rgba + (size_t)y * stride;
-		uint8_t *bottom = rgba + (size_t)(o->height - 1 - y) * stride;
-
-		memcpy(o->row, top, stride);
-		memcpy(top, bottom, stride);
-		memcpy(bottom, o->row, stride);
-	}
-	return 0;
+	return ret;
 }
 
 int offscreen_show(struct offscreen *o, int rotation, int screen_w, int screen_h)
