@@ -173,7 +173,8 @@ static bool button_active(const struct app *app, enum button button)
 	case APP_MODE_PROPAGATE:
 		return button == BUTTON_PROPAGATE;
 	case APP_MODE_SKETCH:
-		break;
+		/* drawing on a 3D tree: the 3D button is lit, as its GPIO LED is */
+		return button == BUTTON_3D && app->tree.lifted;
 	}
 	return false;
 }
