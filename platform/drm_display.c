@@ -567,6 +567,11 @@ bool drm_display_gles3(const struct drm_display *d)
 	return d->gles3;
 }
 
+bool drm_display_seat_active(const struct drm_display *d)
+{
+	return seat_active(d->seat);
+}
+
 bool drm_display_can_draw(const struct drm_display *d)
 {
 	return seat_active(d->seat) && d->connected && !d->flip_pending;

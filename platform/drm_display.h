@@ -61,6 +61,8 @@ void drm_display_size(const struct drm_display *d, int *width, int *height);
 const char *drm_display_describe(const struct drm_display *d);
 bool drm_display_gles3(const struct drm_display *d);
 
+/* The seat is ours: no other VT (a console, another program) is in front. */
+bool drm_display_seat_active(const struct drm_display *d);
 /* The seat is ours, the connector is there and no flip is in flight. */
 bool drm_display_can_draw(const struct drm_display *d);
 /* The screen does not show our last frame (first frame, after a VT switch or a replug):

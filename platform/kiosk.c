@@ -337,8 +337,20 @@ static bool is_pen(const struct event *ev)
 	       ev->type == EVENT_MOTION || ev->type == EVENT_PEN_BUTTON;
 }
 
+/* What may still reach the app while another VT is in front: what ends a stroke or a
+ * press begun before the switch. */
+static bool ends_something(const struct event *ev)
+{
+	return ev->type == EVENT_TIP_UP || ev->type == EVENT_PROXIMITY_OUT ||
+	       ((ev->type == EVENT_BUTTON || ev->type == EVENT_PEN_BUTTON) && !ev->pressed);
+}
+
 void kiosk_feed(struct kiosk *k, const struct event *ev)
 {
+	/* libinput and the GPIO lines stay open across a VT switch: the pen must not draw on
+	 * a screen the visitor cannot see */
+	if (!drm_display_seat_active(k->display) && !ends_something(ev))
+		return;
 	if (is_pen(ev) && k->npending < KIOSK_MAX_PENDING)
 		k->pending[k->npending++] = (struct kiosk_pending){ ev->time_us, k->shown };
 	if (k->rec && trace_writer_write(k->rec, ev) < 0) {
