@@ -28,12 +28,14 @@ tr=$T/vm/probe.trace
 count() { grep -c -- "$1" "$tr"; }
 [ "$(grep -c 'virtual pen added' "$T/vm/probe.err")" -eq 2 ] || fail "the tablet was not added twice (hotplug)"
 # the pen's stroke, then the finger's
-[ "$(count ' proximity-in pen ')" -eq 2 ] || fail "expected two pen proximity-ins (pen, finger)"
+# libinput forces a tool out of proximity after ~50 ms without events (a slow guest), and
+# it comes back in: at least one proximity-in each, not exactly
+[ "$(count ' proximity-in pen ')" -ge 2 ] || fail "expected pen proximity-ins (pen, finger)"
 [ "$(count ' tip-down pen ')" -eq 2 ] || fail "expected two pen tip-downs (pen, finger)"
 grep -q 'edaha virtual touchscreen added (touch' "$T/vm/probe.err" || fail "the touchscreen was not added as one"
 [ "$(count ' motion pen ')" -ge 5 ] || fail "expected pen motion"
 [ "$(count ' pen-button stylus pressed ')" -eq 1 ] || fail "expected the stylus button"
-[ "$(count ' proximity-in eraser ')" -eq 1 ] || fail "expected the eraser after the replug"
+[ "$(count ' proximity-in eraser ')" -ge 1 ] || fail "expected the eraser after the replug"
 [ "$(count ' tip-down eraser ')" -eq 1 ] || fail "expected an eraser tip-down"
 # the pen's tip came down at the tablet's centre: the screen's centre
 awk '$2 == "tip-down" && $3 == "pen" { if (++n == 1 && ($4 < 635 || $4 > 645 || $5 < 395 || $5 > 405)) exit 1 }' "$tr" ||
