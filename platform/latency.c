@@ -36,8 +36,12 @@ uint64_t latency_percentile(const struct latency *l, double p)
 		want = 1;
 	for (uint32_t b = 0; b < LATENCY_BUCKETS; b++) {
 		seen += l->counts[b];
-		if (seen >= want)
-			return b + 1 < LATENCY_BUCKETS ? (uint64_t)(b + 1) * LATENCY_BUCKET_US : l->max_us;
+		if (seen >= want) {
+			uint64_t bound = (uint64_t)(b + 1) * LATENCY_BUCKET_US;
+
+			/* the bucket's bound, but never past what was seen */
+			return b + 1 < LATENCY_BUCKETS && bound < l->max_us ? bound : l->max_us;
+		}
 	}
 	return l->max_us;
 }

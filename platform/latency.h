@@ -23,8 +23,8 @@ struct latency {
 void latency_init(struct latency *l);
 /* One event shown us after its timestamp, by the flips-th flip after it came (>= 1). */
 void latency_add(struct latency *l, uint64_t us, unsigned flips);
-/* The smallest bucket bound that at least p (0..1) of the events lie under, in µs; 0
- * with no events. */
+/* The smallest bucket bound that at least p (0..1) of the events lie under, in µs, at
+ * most the largest seen; 0 with no events. */
 uint64_t latency_percentile(const struct latency *l, double p);
 /* "412 pen events to screen: median 14.2 ms, p90 ..., p99 ..., max ...; 97.1% by the
  * next flip, 2.9% a frame later, 0.0% later" (or "no pen events"). */
