@@ -99,19 +99,6 @@ static int create_context(struct egl_headless *e, struct error *err)
 			 eglGetError());
 }
 
-static GLuint make_renderbuffer(GLenum format, int samples, int width, int height)
-{
-	GLuint rb = 0;
-
-	glGenRenderbuffers(1, &rb);
-	glBindRenderbuffer(GL_RENDERBUFFER, rb);
-	if (samples > 0)
-		glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
-	else
-		glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
-	return rb;
-}
-
 static int create_framebuffers(struct egl_headless *e, struct error *err)
 {
 	const char *exts = (const char *)glGetString(GL_EXTENSIONS);
@@ -133,9 +120,9 @@ static int create_framebuffers(struct egl_headless *e, struct error *err)
 
 	glGenFramebuffers(1, &e->fbo);
 	glBindFramebuffer(GL_FRAMEBUFFER, e->fbo);
-	e->color_rb = make_renderbuffer(color_format, e->samples, e->width, e->height);
+	e->color_rb = gl_make_renderbuffer(color_format, e->samples, e->width, e->height);
 	glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, e->color_rb);
-	e->depth_rb = make_renderbuffer(depth_format, e->samples, e->width, e->height);
+	e->depth_rb = gl_make_renderbuffer(depth_format, e->samples, e->width, e->height);
 	glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, e->depth_rb);
 	status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
 	if (status != GL_FRAMEBUFFER_COMPLETE)
@@ -144,7 +131,7 @@ static int create_framebuffers(struct egl_headless *e, struct error *err)
 	if (e->samples > 0) {
 		glGenFramebuffers(1, &e->resolve_fbo);
 		glBindFramebuffer(GL_FRAMEBUFFER, e->resolve_fbo);
-		e->resolve_rb = make_renderbuffer(color_format, 0, e->width, e->height);
+		e->resolve_rb = gl_make_renderbuffer(color_format, 0, e->width, e->height);
 		glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
 					  e->resolve_rb);
 		status = glCheckFramebufferStatus(GL_FRAMEBUFFER);

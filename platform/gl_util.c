@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include "gl_util.h"
 
-#include <GLES2/gl2.h>
+#include <GLES3/gl3.h>
 #include <errno.h>
 #include <string.h>
 
@@ -33,4 +33,17 @@ int gl_read_rgba(int w, int h, uint8_t *rgba, uint8_t *row)
 		memcpy(bottom, row, stride);
 	}
 	return 0;
+}
+
+unsigned gl_make_renderbuffer(unsigned format, int samples, int width, int height)
+{
+	GLuint rb = 0;
+
+	glGenRenderbuffers(1, &rb);
+	glBindRenderbuffer(GL_RENDERBUFFER, rb);
+	if (samples > 0)
+		glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
+	else
+		glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+	return rb;
 }

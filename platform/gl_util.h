@@ -12,3 +12,7 @@ bool gl_has_extension(const char *list, const char *word);
 /* Reads w x h RGBA pixels of the bound read framebuffer, top row first (GL's first row is
  * the bottom one). row: scratch of w * 4 bytes. 0, or -EIO when GL reports an error. */
 int gl_read_rgba(int w, int h, uint8_t *rgba, uint8_t *row);
+
+/* A renderbuffer of format (GL_RGBA8, GL_DEPTH_COMPONENT24, ...), multisampled when
+ * samples > 0 (GLES 3), bound; 0 when GL has none to give. */
+unsigned gl_make_renderbuffer(unsigned format, int samples, int width, int height);

@@ -165,19 +165,6 @@ static int make_program(struct offscreen *o, struct error *err)
 	return 0;
 }
 
-static GLuint make_renderbuffer(GLenum format, int samples, int width, int height)
-{
-	GLuint rb = 0;
-
-	glGenRenderbuffers(1, &rb);
-	glBindRenderbuffer(GL_RENDERBUFFER, rb);
-	if (samples > 0)
-		glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
-	else
-		glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
-	return rb;
-}
-
 static int make_texture(struct offscreen *o, bool gles3)
 {
 	glGenTextures(1, &o->texture);
@@ -215,14 +202,14 @@ static int make_framebuffers(struct offscreen *o, bool gles3, struct error *err)
 	glGenFramebuffers(1, &o->fbo);
 	glBindFramebuffer(GL_FRAMEBUFFER, o->fbo);
 	if (o->samples > 0) {
-		o->color_rb = make_renderbuffer(GL_RGBA8, o->samples, o->width, o->height);
+		o->color_rb = gl_make_renderbuffer(GL_RGBA8, o->samples, o->width, o->height);
 		glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
 					  o->color_rb);
 	} else {
 		glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
 				       o->texture, 0);
 	}
-	o->depth_rb = make_renderbuffer(depth, o->samples, o->width, o->height);
+	o->depth_rb = gl_make_renderbuffer(depth, o->samples, o->width, o->height);
 	glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, o->depth_rb);
 	status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
 	if (status != GL_FRAMEBUFFER_COMPLETE)
