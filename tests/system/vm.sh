@@ -11,7 +11,8 @@
 #     -s  the display's preferred mode (default 1280x800)
 #     -v  a VNC server on the unix SOCKET, whose clients may resize a virtio display
 #   Environment: KVER (kernel version, default the newest in /lib/modules),
-#   VM_CACHE (where the initramfs is kept, default /tmp/edaha-vm-cache), VM_VERBOSE=1.
+#   VM_CACHE (where the initramfs is kept, default /tmp/edaha-vm-cache), VM_VERBOSE=1,
+#   VM_LOCK (the lock file that lets one guest run at a time, default /tmp/edaha-vm.lock).
 #
 # COMMAND runs as root with the caller's working directory; its exit status becomes
 # ours. 77 (meson's "skipped") when QEMU or the kernel is missing, 125 when the guest
@@ -77,6 +78,10 @@ EOF
 	mv "$initrd.tmp" "$initrd"
 }
 mkdir -p "$cache"
+# One guest at a time on this machine, whoever starts it (meson, a developer, a second
+# checkout): two TCG guests on a small machine starve each other past their time limits.
+exec 9>"${VM_LOCK:-/tmp/edaha-vm.lock}"
+flock 9
 # rebuilt when this script changes, so a fix to init reaches every later run
 { [ -s "$initrd" ] && [ "$initrd" -nt "$0" ]; } || build_initrd
 
