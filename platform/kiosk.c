@@ -18,6 +18,7 @@
 #include "export_dir.h"
 #include "fileio.h"
 #include "latency.h"
+#include "notify.h"
 #include "pngio.h"
 #include "render.h"
 #include "trace.h"
@@ -68,6 +69,7 @@ struct kiosk {
 	size_t nsources;
 	int signal_fd, timer_fd;
 	int ui_timer_fd;         /* wakes the loop when a message or the attract screen changes */
+	int watchdog_fd;         /* the service's watchdog: pinged from the loop, -1 without */
 	uint64_t ui_deadline_us; /* what it is set to; UINT64_MAX: nothing to wait for */
 	sigset_t old_mask;
 	bool mask_set;
@@ -206,6 +208,26 @@ static int set_timer(struct kiosk *k, int ms)
 	return timerfd_settime(k->timer_fd, 0, &it, NULL) < 0 ? -errno : 0;
 }
 
+/* A periodic timer at half the service's WatchdogSec=: each expiry the loop is still
+ * turning pings systemd; a loop stuck anywhere stops the pings and gets restarted. */
+static int open_watchdog(struct kiosk *k)
+{
+	uint64_t us = notify_watchdog_interval_us();
+	struct itimerspec it;
+
+	if (!us)
+		return 0;
+	k->watchdog_fd = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
+	if (k->watchdog_fd < 0)
+		return -errno;
+	it.it_value = (struct timespec){ (time_t)(us / 1000000u), (long)(us % 1000000u) * 1000 };
+	it.it_interval = it.it_value;
+	if (timerfd_settime(k->watchdog_fd, 0, &it, NULL) < 0)
+		return -errno;
+	fprintf(stderr, "edaha: watchdog: the loop checks in every %.1f s\n", (double)us / 1e6);
+	return 0;
+}
+
 struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 {
 	struct kiosk *k = calloc(1, sizeof(*k));
@@ -219,7 +241,7 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 		return NULL;
 	}
 	k->cfg = *cfg;
-	k->signal_fd = k->timer_fd = k->ui_timer_fd = -1;
+	k->signal_fd = k->timer_fd = k->ui_timer_fd = k->watchdog_fd = -1;
 	k->ui_deadline_us = UINT64_MAX;
 	k->mode_lit = (enum button)-1; /* tells the LEDs the first mode, whatever it is */
 	k->start_us = now_us();
@@ -231,6 +253,10 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 	k->ui_timer_fd = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
 	if (k->timer_fd < 0 || k->ui_timer_fd < 0) {
 		fprintf(stderr, "edaha: no timerfd: %s\n", strerror(errno));
+		goto fail;
+	}
+	if (open_watchdog(k) < 0) {
+		fprintf(stderr, "edaha: no timerfd for the watchdog: %s\n", strerror(errno));
 		goto fail;
 	}
 	k->display = drm_display_create(&cfg->display, &err);
@@ -303,6 +329,8 @@ void kiosk_destroy(struct kiosk *k)
 		close(k->timer_fd);
 	if (k->ui_timer_fd >= 0)
 		close(k->ui_timer_fd);
+	if (k->watchdog_fd >= 0)
+		close(k->watchdog_fd);
 	if (k->signal_fd >= 0)
 		close(k->signal_fd);
 	if (k->mask_set)
@@ -384,6 +412,8 @@ static void frame_shown(struct kiosk *k, uint64_t now)
 {
 	k->shown++;
 	k->last_frame_us = now;
+	if (k->shown == 1)
+		notify_ready(); /* the visitor sees the kiosk: the service is up */
 	latency_add(k->frame_time, now - k->frame_start_us, 1);
 	for (size_t i = 0; i < k->ninflight; i++) {
 		const struct kiosk_pending *e = &k->inflight[i];
@@ -578,6 +608,14 @@ static void arm_ui_timer(struct kiosk *k)
 		fail(k, "timer", -errno);
 }
 
+static void on_watchdog(struct kiosk *k)
+{
+	uint64_t expirations;
+
+	if (read(k->watchdog_fd, &expirations, sizeof(expirations)) == (ssize_t)sizeof(expirations))
+		notify_watchdog();
+}
+
 static void on_ui_timer(struct kiosk *k)
 {
 	uint64_t expirations;
@@ -653,7 +691,7 @@ static int take_final_shot(struct kiosk *k)
 
 int kiosk_run(struct kiosk *k)
 {
-	struct pollfd fds[DRM_DISPLAY_MAX_POLLFDS + 3 + KIOSK_MAX_SOURCES];
+	struct pollfd fds[DRM_DISPLAY_MAX_POLLFDS + 4 + KIOSK_MAX_SOURCES];
 
 	take_requests(k); /* the LEDs show the first mode */
 	while (!k->quit) {
@@ -689,6 +727,8 @@ int kiosk_run(struct kiosk *k)
 		fds[n++] = (struct pollfd){ .fd = k->signal_fd, .events = POLLIN };
 		fds[n++] = (struct pollfd){ .fd = k->timer_fd, .events = POLLIN };
 		fds[n++] = (struct pollfd){ .fd = k->ui_timer_fd, .events = POLLIN };
+		/* -1 without a watchdog: poll() skips it */
+		fds[n++] = (struct pollfd){ .fd = k->watchdog_fd, .events = POLLIN };
 		for (size_t i = 0; i < nsrc; i++)
 			fds[n++] = (struct pollfd){ .fd = k->sources[i].fd, .events = POLLIN };
 		if (poll(fds, n, -1) < 0) {
@@ -703,13 +743,16 @@ int kiosk_run(struct kiosk *k)
 			on_timer(k);
 		if (fds[nd + 2].revents)
 			on_ui_timer(k);
+		if (fds[nd + 3].revents)
+			on_watchdog(k);
 		/* backwards, so that dropping a failed source leaves the rest in place */
 		for (size_t i = nsrc; i-- > 0;) {
-			if (fds[nd + 3 + i].revents)
+			if (fds[nd + 4 + i].revents)
 				on_source(k, i);
 		}
 		take_requests(k);
 	}
+	notify_stopping();
 	print_stats(k, stderr);
 	if (k->cfg.stats)
 		print_stats(k, stdout);
