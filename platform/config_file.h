@@ -27,6 +27,13 @@
 /* edaha-usb-helper's socket (systemd/edaha-usb.socket). */
 #define CONFIG_USB_SOCKET_DEFAULT "/run/edaha/usb.sock"
 #define CONFIG_USB_SOCKET_MAX 108 /* sun_path, with the NUL */
+/* The autosave journal and the archive of drawings (autosave.h); the service's
+ * StateDirectory=. */
+#define CONFIG_STATE_DIR_DEFAULT "/var/lib/edaha"
+#define CONFIG_RESET_S_DEFAULT 600
+#define CONFIG_RESET_S_MAX (7 * 86400)
+#define CONFIG_ARCHIVE_KEEP_DEFAULT 10000
+#define CONFIG_ARCHIVE_KEEP_MAX 1000000
 
 enum config_language { CONFIG_LANG_EN = 0, CONFIG_LANG_JA };
 
@@ -68,6 +75,11 @@ struct config {
 	struct {
 		int attract_after_s; /* idle seconds before the attract screen; 0: never */
 		char export_dir[256]; /* absolute: where export keeps a copy; "": none */
+		char state_dir[256];  /* absolute: the autosave journal and the archive */
+		bool autosave;        /* false: a drawing lives only as long as the process */
+		int reset_after_s;    /* idle seconds before the drawing is archived and the
+				       * canvas cleared; 0: never */
+		int archive_keep;     /* archived drawings kept; 0: all */
 	} kiosk;
 	struct {
 		bool enabled; /* save to USB sticks */

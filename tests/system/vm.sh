@@ -4,12 +4,18 @@
 # overlay (so host-built binaries and their libraries run unchanged), a bochs-display for
 # KMS and a writable results folder. TCG, not KVM: a nested KVM guest hangs in early boot.
 #
-#   vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] [-s WxH] [-v SOCKET] -- COMMAND [ARGS...]
+#   vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] [-s WxH] [-v SOCKET] [-r DIR]
+#         [-i sh|systemd] -- COMMAND [ARGS...]
 #     -t  time limit for the whole VM (default 120)
 #     -o  host DIR mounted read-write at /out in the guest
 #     -g  display device (default bochs: bochs-display)
 #     -s  the display's preferred mode (default 1280x800)
 #     -v  a VNC server on the unix SOCKET, whose clients may resize a virtio display
+#     -r  host DIR laid over the root filesystem, under the tmpfs (e.g. a `meson install
+#         --destdir` tree: the guest boots with it installed)
+#     -i  PID 1: sh (default: COMMAND runs as soon as udev has settled) or systemd
+#         (systemd boots edaha-vmtest.target: sysinit with udev, journald, sysusers and
+#         tmpfiles, then COMMAND as the unit edaha-vmtest.service, output on the console)
 #   Environment: KVER (kernel version, default the newest in /lib/modules),
 #   VM_CACHE (where the initramfs is kept, default /tmp/edaha-vm-cache), VM_VERBOSE=1,
 #   VM_LOCK (the lock file that lets one guest run at a time, default /tmp/edaha-vm.lock).
@@ -20,14 +26,16 @@
 # Packages: qemu-system-x86 linux-image-amd64 busybox-static cpio kmod udev.
 set -euo pipefail
 
-limit=120 out="" gpu=bochs size=1280x800 vnc=""
-while getopts "t:o:g:s:v:" opt; do
+limit=120 out="" gpu=bochs size=1280x800 vnc="" extra="" init=sh
+while getopts "t:o:g:s:v:r:i:" opt; do
 	case $opt in
 	t) limit=$OPTARG ;;
 	o) mkdir -p "$OPTARG"; out=$(realpath "$OPTARG") ;;
 	g) gpu=$OPTARG ;;
 	s) size=$OPTARG ;;
 	v) vnc=$OPTARG ;;
+	r) extra=$(realpath "$OPTARG") ;;
+	i) init=$OPTARG ;;
 	*) exit 2 ;;
 	esac
 done
@@ -35,6 +43,7 @@ shift $((OPTIND - 1))
 [ "${1:-}" = "--" ] && shift
 [ $# -ge 1 ] || { echo "usage: vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] [-s WxH] [-v SOCKET] -- COMMAND..." >&2; exit 2; }
 case $size in [1-9]*x[1-9]*) ;; *) echo "vm: bad size $size" >&2; exit 2 ;; esac
+case $init in sh | systemd) ;; *) echo "vm: unknown init $init" >&2; exit 2 ;; esac
 
 skip() { echo "vm: SKIP: $*"; exit 77; }
 command -v qemu-system-x86_64 >/dev/null || skip "no qemu-system-x86_64 (apt-get install qemu-system-x86)"
@@ -54,7 +63,7 @@ build_initrd() {
 	rm -rf "$root"
 	mkdir -p "$root"/{bin,dev,proc,sys,host,newroot,job,lib/modules}
 	cp /bin/busybox "$root/bin/busybox"
-	for m in sh mount mkdir insmod switch_root cat; do ln -s busybox "$root/bin/$m"; done
+	for m in sh mount mkdir insmod switch_root cat grep rm; do ln -s busybox "$root/bin/$m"; done
 	for m in virtio_pci 9pnet_virtio 9p overlay; do modprobe -S "$kver" --show-depends $m; done |
 		awk '$1 == "insmod" && !seen[$2]++ { print $2 }' > "$cache/modules"
 	while read -r m; do
@@ -64,13 +73,28 @@ build_initrd() {
 	cat > "$root/init" <<'EOF'
 #!/bin/sh
 mount -t proc proc /proc; mount -t sysfs sys /sys; mount -t devtmpfs dev /dev
+cmdline=$(cat /proc/cmdline)
 . /modules.sh
 mount -t 9p -o trans=virtio,version=9p2000.L,ro,cache=loose hostroot /host
 mount -t 9p -o trans=virtio,version=9p2000.L,rw job /job
+lower=/host
+if echo "$cmdline" | grep -q edaha.extra; then
+	mkdir -p /extra && mount -t 9p -o trans=virtio,version=9p2000.L,ro,cache=loose extra /extra
+	lower=/extra:/host
+fi
 mkdir -p /rw && mount -t tmpfs -o size=1G tmpfs /rw && mkdir -p /rw/upper /rw/work
-mount -t overlay -o lowerdir=/host,upperdir=/rw/upper,workdir=/rw/work overlay /newroot
+mount -t overlay -o lowerdir=$lower,upperdir=/rw/upper,workdir=/rw/work overlay /newroot
 for d in proc sys dev job; do mkdir -p /newroot/$d; mount -o move /$d /newroot/$d; done
-mount -t tmpfs tmpfs /newroot/run
+mount -t tmpfs -o mode=0755 tmpfs /newroot/run
+if echo "$cmdline" | grep -q edaha.init=systemd; then
+	# the host may be a container: systemd must not believe it runs in one
+	rm -f /newroot/.dockerenv /newroot/run/.containerenv
+	# units in /run/systemd/system: systemd keeps this /run
+	mkdir -p /newroot/run/systemd/system
+	cat /newroot/job/edaha-vmtest.target > /newroot/run/systemd/system/edaha-vmtest.target
+	cat /newroot/job/edaha-vmtest.service > /newroot/run/systemd/system/edaha-vmtest.service
+	exec switch_root /newroot /lib/systemd/systemd
+fi
 exec switch_root /newroot /bin/sh /job/guest.sh
 EOF
 	chmod +x "$root/init"
@@ -88,7 +112,7 @@ flock 9
 job=$(mktemp -d /tmp/edaha-vm-job.XXXXXX)
 trap 'rm -rf "$job"' EXIT
 printf '%q ' "$@" > "$job/cmd"
-printf 'OUT=%q\nCWD=%q\nVERBOSE=%q\nGPU=%q\n' "$out" "$PWD" "${VM_VERBOSE:-}" "$gpu" > "$job/env"
+printf 'OUT=%q\nCWD=%q\nVERBOSE=%q\nGPU=%q\nINIT=%q\n' "$out" "$PWD" "${VM_VERBOSE:-}" "$gpu" "$init" > "$job/env"
 cat > "$job/guest.sh" <<'EOF'
 #!/bin/sh
 # PID 1 in the guest, on the overlay root
@@ -99,10 +123,15 @@ if [ -n "$OUT" ]; then mkdir -p /out && mount -t 9p -o trans=virtio,version=9p20
 [ -n "$VERBOSE" ] && echo "vm: userspace up at $(cut -d' ' -f1 /proc/uptime) s"
 # the display driver, loaded here: udev is not asked to go through every PCI device
 case $GPU in bochs) modprobe bochs ;; virtio) modprobe virtio_gpu ;; esac
-# udev fills in the device database libinput and Mesa's loader read
-/lib/systemd/systemd-udevd --daemon --resolve-names=never 2>/dev/null &&
-	udevadm trigger --action=add --subsystem-match=input --subsystem-match=drm &&
-	udevadm settle -t 10
+# udev fills in the device database libinput and Mesa's loader read (under systemd, its
+# own udevd does, with the rules installed)
+if [ "$INIT" = systemd ]; then
+	udevadm settle -t 30
+else
+	/lib/systemd/systemd-udevd --daemon --resolve-names=never 2>/dev/null &&
+		udevadm trigger --action=add --subsystem-match=input --subsystem-match=drm &&
+		udevadm settle -t 10
+fi
 [ -n "$VERBOSE" ] && echo "vm: udev settled at $(cut -d' ' -f1 /proc/uptime) s"
 cd "$CWD" && sh -c "$(cat /job/cmd)" < /dev/null
 echo $? > /job/rc
@@ -110,10 +139,38 @@ sync
 exec /bin/busybox poweroff -f
 EOF
 
+# systemd's way in: a target with sysinit and the command (guest.sh powers off when done)
+cat > "$job/edaha-vmtest.target" <<'UNIT'
+[Unit]
+Description=edaha VM test
+Requires=sysinit.target edaha-vmtest.service
+After=sysinit.target edaha-vmtest.service
+AllowIsolate=yes
+UNIT
+cat > "$job/edaha-vmtest.service" <<'UNIT'
+[Unit]
+Description=edaha VM test command
+After=sysinit.target systemd-udev-trigger.service
+[Service]
+Type=oneshot
+ExecStart=/bin/sh /job/guest.sh
+StandardOutput=tty
+StandardError=tty
+TTYPath=/dev/ttyS0
+TimeoutStartSec=infinity
+UNIT
+append="console=ttyS0 quiet loglevel=3 panic=-1 rdinit=/init"
+[ -n "$extra" ] && append+=" edaha.extra"
+[ "$init" = systemd ] && append+=" edaha.init=systemd systemd.unit=edaha-vmtest.target
+ systemd.show_status=false systemd.firstboot=off systemd.mask=systemd-timesyncd.service
+ systemd.mask=systemd-pstore.service systemd.mask=systemd-binfmt.service
+ systemd.mask=systemd-repart.service systemd.mask=proc-sys-fs-binfmt_misc.automount"
+append=$(echo $append)
+
 qemu=(qemu-system-x86_64 -accel tcg,thread=multi -cpu max -smp 2 -m 2048
 	-nographic -no-reboot -nodefaults -serial stdio
 	-kernel "$kernel" -initrd "$initrd"
-	-append "console=ttyS0 quiet loglevel=3 panic=-1 rdinit=/init"
+	-append "$append"
 	-fsdev local,id=hostroot,path=/,security_model=none,readonly=on,multidevs=remap
 	-device virtio-9p-pci,fsdev=hostroot,mount_tag=hostroot
 	-fsdev local,id=job,path="$job",security_model=none
@@ -128,6 +185,10 @@ if [ -n "$out" ]; then
 	qemu+=(-fsdev local,id=out,path="$out",security_model=none -device virtio-9p-pci,fsdev=out,mount_tag=out)
 fi
 [ -n "$vnc" ] && qemu+=(-vnc "unix:$vnc")
+if [ -n "$extra" ]; then
+	qemu+=(-fsdev local,id=extra,path="$extra",security_model=none,readonly=on,multidevs=remap
+		-device virtio-9p-pci,fsdev=extra,mount_tag=extra)
+fi
 timeout "$limit" "${qemu[@]}" < /dev/null || echo "vm: qemu exited with status $?" >&2
 rc=$(cat "$job/rc" 2>/dev/null || echo 125)
 [ "$rc" = 125 ] && echo "vm: the guest reported no exit status (boot failure or time limit $limit s)" >&2
