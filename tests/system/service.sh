@@ -110,4 +110,5 @@ env "${host_env[@]}" "$EDAHA" --headless --size 640x400 --out "$T/empty" >/dev/n
 	fail "no headless empty canvas"
 "$IMGCMP" --max-diff 64 --max-fraction 0.015 "$T/empty/screen.png" "$v/after-reset.png" ||
 	fail "after the reset the screen is not an empty canvas"
+echo "  guest timeline:"; sed 's/^/    /' "$v/phases.txt"
 echo "system-service: OK"

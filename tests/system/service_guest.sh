@@ -17,6 +17,7 @@ fi
 pen=$1 scanout=$2 kmod=$3
 H=$(dirname "$0")
 say() { echo "service_guest: $*"; }
+phase() { echo "$(cut -d' ' -f1 /proc/uptime) s: $*" >> /out/phases.txt; }
 show() { systemctl show edaha.service -p "$1" --value; }
 # the journal of the unit, as a file the waits can grep
 journalctl -f -o cat -u edaha.service > /out/edaha.log 2>&1 &
@@ -34,6 +35,7 @@ udevadm settle -t 30
 ls -l /dev/gpiochip* > /out/gpiochips.txt
 getent passwd edaha > /out/user.txt && id edaha >> /out/user.txt
 
+phase "booted, gpio-sim up"
 # 1. started as at boot: `systemctl start` returns once the kiosk said READY=1
 t0=$(cut -d' ' -f1 /proc/uptime)
 systemctl start edaha.service || { say "edaha.service did not start"; systemctl status edaha --no-pager; }
@@ -45,6 +47,7 @@ pid=$(show MainPID)
 ps -o user=,group=,supgrp= -p "$pid" > /out/proc.txt
 grep -E '^(Cap(Eff|Prm|Bnd)|NoNewPrivs|Seccomp):' /proc/"$pid"/status >> /out/proc.txt
 
+phase "ready"
 # 2. drawn on with the pen; killed with SIGKILL in the middle of the third stroke
 export TABLET_ADDED="$H/tablet_added.sh /out/edaha.log"
 export SAVED="$0 saved $scanout"
@@ -56,6 +59,7 @@ sleep 3 # its first frames
 "$scanout" /dev/dri/card0 /out/after-kill.png 2> /out/scanout.err || say "no scanout"
 systemctl show edaha.service -p NRestarts -p MainPID -p Result > /out/status-kill.txt
 
+phase "back after SIGKILL"
 # 3. the main loop stalls (SIGSTOP): the watchdog notices, systemd restarts it
 pid=$(show MainPID)
 kill -STOP "$pid"
@@ -67,6 +71,7 @@ systemctl show edaha.service -p NRestarts -p MainPID -p Result > /out/status-wat
 journalctl -u edaha.service -o cat --no-pager | grep -i watchdog > /out/watchdog.txt
 cp /var/lib/edaha/drawing.journal /out/ 2>/dev/null
 
+phase "back after the watchdog"
 # 4. nobody draws for reset_after: archived, and a clean canvas
 sed -i 's/reset_after: 0/reset_after: 4/' /etc/edaha/edaha.conf
 systemctl restart edaha.service || say "no restart"
@@ -74,6 +79,7 @@ wait_for grep -q 'a new canvas' /out/edaha.log || say "no idle reset"
 sleep 2
 "$scanout" /dev/dri/card0 /out/after-reset.png 2>> /out/scanout.err || say "no scanout"
 mkdir -p /out/archive && cp /var/lib/edaha/archive/* /out/archive/ 2>/dev/null
+phase "reset"
 systemctl stop edaha.service
 sleep 1
 journalctl -u edaha.service -o cat --no-pager > /out/edaha.log
