@@ -114,7 +114,8 @@ static int splice(struct doc *d, size_t from, struct doc *part)
 	}
 	for (size_t i = from; i < d->nops; i++)
 		doc_op_finish(&d->ops[i]);
-	memcpy(d->ops + from, part->ops, part->nops * sizeof(*part->ops));
+	if (part->nops) /* an undo's record has none, and no array */
+		memcpy(d->ops + from, part->ops, part->nops * sizeof(*part->ops));
 	d->nops = n;
 	free(part->ops);
 	part->ops = NULL;
