@@ -13,16 +13,17 @@ struct usb_monitor {
 	struct udev_monitor *mon;
 };
 
-bool usb_monitor_is_stick(const char *devtype, bool on_usb, const char *part_table,
-			  unsigned long long size)
+bool usb_monitor_is_stick(const char *devtype, bool on_usb, const char *fs_type,
+			  const char *part_table, unsigned long long size)
 {
 	/* no medium (an empty card reader) is nothing to mount */
 	if (!on_usb || !devtype || size == 0)
 		return false;
 	if (strcmp(devtype, "partition") == 0)
 		return true;
-	/* a disk with partitions: they come on their own */
-	return strcmp(devtype, "disk") == 0 && (!part_table || !*part_table);
+	/* a disk with partitions and no filesystem of its own: they come on their own */
+	return strcmp(devtype, "disk") == 0 &&
+	       ((fs_type && *fs_type) || !part_table || !*part_table);
 }
 
 static bool is_stick(struct udev_device *dev)
@@ -32,6 +33,7 @@ static bool is_stick(struct udev_device *dev)
 
 	return usb_proto_kname_valid(udev_device_get_sysname(dev)) &&
 	       usb_monitor_is_stick(udev_device_get_devtype(dev), usb,
+				    udev_device_get_property_value(dev, "ID_FS_TYPE"),
 				    udev_device_get_property_value(dev, "ID_PART_TABLE_TYPE"),
 				    size ? strtoull(size, NULL, 10) : 0);
 }

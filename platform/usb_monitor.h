@@ -35,6 +35,8 @@ int usb_monitor_enumerate(struct usb_monitor *m, usb_monitor_fn fn, void *data);
 int usb_monitor_dispatch(struct usb_monitor *m, usb_monitor_fn fn, void *data);
 
 /* Whether a block device is a stick by these properties (devtype "disk" or
- * "partition"; ID_PART_TABLE_TYPE, NULL when none; sysfs size in sectors). */
-bool usb_monitor_is_stick(const char *devtype, bool on_usb, const char *part_table,
-			  unsigned long long size);
+ * "partition"; ID_FS_TYPE and ID_PART_TABLE_TYPE, NULL when none; sysfs size in
+ * sectors). A whole disk is one when it has no partition table or a filesystem of its
+ * own: an exFAT superfloppy's boot sector reads as an (empty) DOS table too. */
+bool usb_monitor_is_stick(const char *devtype, bool on_usb, const char *fs_type,
+			  const char *part_table, unsigned long long size);

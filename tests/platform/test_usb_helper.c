@@ -3,9 +3,9 @@
  * edaha-usb-helper's decisions without a stick or root: the protocol's lines (what is a
  * request, kernel names that could climb out of /dev), what udev's view of a device
  * makes of it, the mount options, and opening edaha/ on a stick whose root holds a file
- * or a symlink of that name. Then the helper itself on a socketpair, as systemd's
- * Accept=yes starts it: a bad request, a name that is no device, not on USB, a peer
- * that may not ask.
+ * or a symlink of that name; which block devices the kiosk takes for sticks. Then the
+ * helper itself on a socketpair, as systemd's Accept=yes starts it: a bad request, a
+ * name that is no device, not on USB, a peer that may not ask.
  *   test_usb_helper [EDAHA_USB_HELPER]
  */
 #define _GNU_SOURCE
@@ -20,9 +20,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "config.h"
 #include "usb_proto.h"
 #include "usb_stick.h"
 #include "test.h"
+#if HAVE_USB_MONITOR
+#include "usb_monitor.h"
+#endif
 
 static void test_proto(void)
 {
@@ -86,6 +90,22 @@ static void test_proto(void)
 	CHECK_INT(usb_outcome_of(USB_REASON_FULL, 0, true), USB_OUTCOME_FULL);
 	CHECK_INT(usb_outcome_of(USB_REASON_DENIED, 0, true), USB_OUTCOME_FAILED);
 }
+
+#if HAVE_USB_MONITOR
+/* Which block devices the kiosk takes for sticks. */
+static void test_is_stick(void)
+{
+	CHECK(usb_monitor_is_stick("partition", true, "vfat", NULL, 30000000));
+	CHECK(usb_monitor_is_stick("partition", true, NULL, NULL, 30000000)); /* says why not */
+	CHECK(usb_monitor_is_stick("disk", true, "vfat", NULL, 32768));      /* superfloppy */
+	CHECK(usb_monitor_is_stick("disk", true, "exfat", "dos", 32768));    /* reads as both */
+	CHECK(usb_monitor_is_stick("disk", true, NULL, NULL, 16384));        /* unformatted */
+	CHECK(!usb_monitor_is_stick("disk", true, NULL, "gpt", 30000000)); /* its partitions */
+	CHECK(!usb_monitor_is_stick("disk", true, "vfat", NULL, 0));       /* no medium */
+	CHECK(!usb_monitor_is_stick("disk", false, "vfat", NULL, 32768));  /* not USB */
+	CHECK(!usb_monitor_is_stick(NULL, true, "vfat", NULL, 32768));
+}
+#endif
 
 static void test_check(void)
 {
@@ -255,6 +275,9 @@ int main(int argc, char **argv)
 	char base[] = "/tmp/edaha-usb-helper-XXXXXX", cmd[128];
 
 	test_proto();
+#if HAVE_USB_MONITOR
+	test_is_stick();
+#endif
 	test_check();
 	CHECK(mkdtemp(base));
 	test_open_edaha(base);

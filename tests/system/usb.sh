@@ -215,7 +215,7 @@ ln -s /etc/passwd "$T/ext4/edaha/tree-0001.glb"
 ln -s /var/lib/edaha "$T/ext4/edaha/tree-0001.obj"
 ln -s /etc/passwd "$T/ext4/edaha/.tree-2002.glb.tmp"
 (cd "$T/ext4/edaha" && for i in $(seq 2 2001); do : > "$(printf 'tree-%04d.png' "$i")"; done)
-mkfs.ext4 -q -F -d "$T/ext4" "$img/ext4.img" 16M || fail "mkfs.ext4 -d failed"
+mkfs.ext4 -q -F -d "$T/ext4" "$img/ext4.img" 16M >/dev/null || fail "mkfs.ext4 -d failed"
 plug_ready s8 "$img/ext4.img"
 save
 pull s8
