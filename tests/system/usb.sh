@@ -140,7 +140,9 @@ names() { mdir -b -a -i "$1" ::edaha 2>/dev/null | sed 's|.*/||'; }
 
 # vm.sh waits its turn for the machine's one VM: the clock starts when QEMU does
 while alive && ! grep -q SeaBIOS "$T/vm.log" 2>/dev/null; do sleep 1; done
+t_boot=$(date +%s)
 wait_file "$v/drawn" 300 || fail "the guest never drew its tree: $(tail -20 "$T/vm.log")"
+t_drawn=$(date +%s)
 grep -q "first frame on screen" "$log" || fail "the kiosk did not start"
 
 # 1. a stick, an export
@@ -240,6 +242,7 @@ for s in glb obj mtl png edaha; do
 done
 "$GLTF_VALIDATE" "$v/exfat/tree-0001.glb" >/dev/null || fail "exfat: tree-0001.glb is not valid glTF"
 
+t_sticks=$(date +%s)
 guest stop
 wait "$vmpid"
 rc=$?
@@ -257,4 +260,5 @@ grep -q 'edaha-usb-helper: mount sd[a-z]* for uid [1-9]' "$log" ||
 [ -s "$v/local/tree-0001.glb" ] || fail "no local copy in kiosk.export_dir"
 echo "  local copies: $(ls "$v/local" | grep -c '\.glb$') sets"
 echo "  saves to a stick took: $(tr '\n' ' ' < "$T/times")(TCG guest, emulated xHCI)"
+echo "  boot, kiosk up and tree drawn: $((t_drawn - t_boot)) s; the nine sticks: $((t_sticks - t_drawn)) s"
 echo "system-usb: OK"
