@@ -5,13 +5,15 @@
  * makes of it, the mount options, and opening edaha/ on a stick whose root holds a file
  * or a symlink of that name; which block devices the kiosk takes for sticks. Then the
  * helper itself on a socketpair, as systemd's Accept=yes starts it: a bad request, a
- * name that is no device, not on USB, a peer that may not ask.
+ * name that is no device, not on USB, a peer that may not ask; and with --listen, asked
+ * by the kiosk's client.
  *   test_usb_helper [EDAHA_USB_HELPER]
  */
 #define _GNU_SOURCE
 #include <errno.h>
 #include <fcntl.h>
 #include <pwd.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,6 +23,7 @@
 #include <unistd.h>
 
 #include "config.h"
+#include "usb_client.h"
 #include "usb_proto.h"
 #include "usb_stick.h"
 #include "test.h"
@@ -270,6 +273,44 @@ static void test_helper(const char *helper)
 	}
 }
 
+/* --listen, for a system without systemd: the kiosk's client against the real helper. */
+static void test_listen(const char *helper, const char *base)
+{
+	struct passwd *pw = getpwuid(getuid());
+	struct usb_request req = { .op = USB_OP_EJECT, .kname = "sdzz9" };
+	struct error err = { { 0 } };
+	struct usb_answer ans;
+	char path[512];
+	pid_t pid;
+	int fd = -1, ret = -1, status;
+
+	snprintf(path, sizeof(path), "%s/usb.sock", base);
+	pid = fork();
+	CHECK(pid >= 0);
+	if (pid == 0) {
+		execl(helper, helper, "--user", pw ? pw->pw_name : "root", "--media",
+		      "/nonexistent/edaha-media", "--listen", path, (char *)NULL);
+		_exit(127);
+	}
+	/* until it listens (bounded: 10 s) */
+	for (int i = 0; i < 200 && ret < 0; i++) {
+		ret = usb_client_call(path, &req, 5000, &ans, &fd, &err);
+		if (ret < 0)
+			usleep(50000);
+	}
+	CHECK_INT(ret, 0);
+	CHECK(ans.reason == USB_REASON_NONE && fd == -1);
+	req.op = USB_OP_MOUNT;
+	CHECK_INT(usb_client_call(path, &req, 5000, &ans, &fd, &err), 0);
+	CHECK_INT(ans.reason, USB_REASON_NO_DEVICE);
+	CHECK_INT(fd, -1);
+	CHECK_INT(kill(pid, SIGTERM), 0);
+	CHECK_INT(waitpid(pid, &status, 0), pid);
+	/* nobody there any more */
+	CHECK(usb_client_call(path, &req, 1000, &ans, &fd, &err) < 0);
+	CHECK(strstr(err.msg, "cannot reach the USB helper"));
+}
+
 int main(int argc, char **argv)
 {
 	char base[] = "/tmp/edaha-usb-helper-XXXXXX", cmd[128];
@@ -281,9 +322,11 @@ int main(int argc, char **argv)
 	test_check();
 	CHECK(mkdtemp(base));
 	test_open_edaha(base);
+	if (argc > 1) {
+		test_helper(argv[1]);
+		test_listen(argv[1], base);
+	}
 	snprintf(cmd, sizeof(cmd), "rm -rf '%s'", base);
 	CHECK_INT(system(cmd), 0);
-	if (argc > 1)
-		test_helper(argv[1]);
 	return 0;
 }
