@@ -49,12 +49,16 @@ in_root passwd --status root | grep -q ' L ' || { echo "customize: root is not l
 in_root systemctl set-default multi-user.target
 in_root systemctl enable edaha.service seatd.service
 # tty1 is the kiosk's: no login prompt there, ever (edaha.service also Conflicts= with it;
-# masked, as nothing may start it first). No other VT spawns a login either: logind,
-# which would (NAutoVTs), needs D-Bus, which the image does not have.
+# masked, as nothing may start it first). logind (for the power button: a clean
+# shutdown) spawns no login on any other VT either, and keeps none in reserve.
 in_root systemctl mask getty@tty1.service
-if ! [ -e "$root/usr/bin/dbus-daemon" ]; then
-	in_root systemctl mask systemd-logind.service
-fi
+mkdir -p "$root/etc/systemd/logind.conf.d"
+cat > "$root/etc/systemd/logind.conf.d/edaha-image.conf" <<'EOF'
+[Login]
+NAutoVTs=0
+ReserveVT=0
+HandlePowerKey=poweroff
+EOF
 # the journal survives a reboot (what happened before the kiosk went wrong), kept small
 mkdir -p "$root/etc/systemd/journald.conf.d" "$root/var/log/journal"
 cat > "$root/etc/systemd/journald.conf.d/edaha-image.conf" <<'EOF'
