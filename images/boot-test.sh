@@ -1,13 +1,18 @@
 #!/bin/bash
-# Boots the x86_64 kiosk image that images/build.sh amd64 made, in QEMU, and checks that it
-# comes up as the kiosk: systemd starts edaha.service by itself, edaha reports its first
+# Boots a kiosk image that images/build.sh made, in QEMU, and checks that it comes up as
+# the kiosk: systemd starts edaha.service by itself, edaha reports its first
 # frame on screen (READY to systemd), and the screen QEMU shows is edaha's empty canvas (the
 # image's own headless render, reference-1280x800.png) rather than a console or a black
 # screen. Then a power-off, which the kiosk must survive cleanly.
 #
 #   images/boot-test.sh [-t SECONDS] OUT
-#     OUT  build.sh's output directory (root.img, vmlinuz, initrd.img, cmdline.txt,
-#          reference-1280x800.png); the serial log and the screenshot go to OUT/boot-test/
+#     OUT  build.sh's output directory; the serial log and the screenshot go to
+#          OUT/boot-test/. amd64 (root.img, vmlinuz, initrd.img, cmdline.txt): a PC
+#          (qemu-system-x86_64, bochs-display). arm64 (disk.img): the Raspberry Pi image's
+#          own disk on QEMU's "virt" board (qemu-system-aarch64, cortex-a72, virtio-gpu),
+#          its kernel and initrd taken from the boot partition: everything but the Pi's
+#          firmware, device tree and vc4 display (and its GPIO chip: the buttons are
+#          warnings there).
 #     -t   time limit for the boot to the first frame (default 300: TCG on 2 cores)
 #   Environment: IMGCMP (tests/tools/imgcmp; default: built from this checkout under
 #   IMAGE_CACHE, default /tmp/edaha-image-cache), VM_LOCK (default /tmp/edaha-vm.lock, the
@@ -16,9 +21,10 @@
 # The image is not changed (QEMU writes to a snapshot). The guest's kernel command line is
 # the image's cmdline.txt plus systemd.journald.forward_to_console=1: the journal (edaha's
 # stderr among it) comes out on the serial port. TCG, not KVM (a nested KVM guest hangs
-# here); bochs-display at 1280x800. Exit 0 when every check holds, 1 when one fails, 77
+# here); the display at 1280x800. Exit 0 when every check holds, 1 when one fails, 77
 # when QEMU is missing.
-# Packages: qemu-system-x86; for IMGCMP, tools/deps.sh's BUILD_PKGS.
+# Packages: qemu-system-x86 (amd64), qemu-system-arm mtools fdisk (arm64); for IMGCMP,
+# tools/deps.sh's BUILD_PKGS.
 set -euo pipefail
 HERE=$(cd "$(dirname "$0")" && pwd)
 REPO=$(cd "$HERE/.." && pwd)
@@ -33,11 +39,24 @@ shift $((OPTIND - 1))
 [ $# -eq 1 ] || { echo "usage: images/boot-test.sh [-t SECONDS] OUT" >&2; exit 2; }
 OUT=$(realpath "$1")
 fail() { echo "boot-test: FAIL: $*" >&2; exit 1; }
-for f in root.img vmlinuz initrd.img cmdline.txt reference-1280x800.png; do
-	[ -r "$OUT/$f" ] || fail "no $OUT/$f (images/build.sh amd64 $1 makes it)"
+skip() { echo "boot-test: SKIP: $*"; exit 77; }
+if [ -r "$OUT/disk.img" ]; then
+	arch=arm64
+	need=(disk.img cmdline.txt reference-1280x800.png)
+else
+	arch=amd64
+	need=(root.img vmlinuz initrd.img cmdline.txt reference-1280x800.png)
+fi
+for f in "${need[@]}"; do
+	[ -r "$OUT/$f" ] || fail "no $OUT/$f (images/build.sh amd64|arm64 $1 makes it)"
 done
-command -v qemu-system-x86_64 >/dev/null ||
-	{ echo "boot-test: SKIP: no qemu-system-x86_64 (apt-get install qemu-system-x86)"; exit 77; }
+if [ $arch = amd64 ]; then
+	command -v qemu-system-x86_64 >/dev/null || skip "no qemu-system-x86_64 (apt-get install qemu-system-x86)"
+else
+	command -v qemu-system-aarch64 >/dev/null || skip "no qemu-system-aarch64 (apt-get install qemu-system-arm)"
+	command -v mcopy >/dev/null || skip "no mcopy (apt-get install mtools)"
+	command -v sfdisk >/dev/null || skip "no sfdisk (apt-get install fdisk)"
+fi
 
 if [ -z "${IMGCMP:-}" ]; then
 	b=${IMAGE_CACHE:-/tmp/edaha-image-cache}/imgcmp-build
@@ -69,14 +88,33 @@ since() { # seconds since QEMU started, to a tenth
 	local ds=$((($(date +%s%N) - start) / 100000000))
 	echo "$((ds / 10)).$((ds % 10))"
 }
-qemu-system-x86_64 -accel tcg,thread=multi -cpu max -smp 2 -m 2048 \
-	-nodefaults -no-reboot -display none \
-	-kernel "$OUT/vmlinuz" -initrd "$OUT/initrd.img" \
-	-append "$(cat "$OUT/cmdline.txt") systemd.journald.forward_to_console=1 panic=-1" \
-	-drive "file=$OUT/root.img,format=raw,if=virtio,snapshot=on" \
-	-device virtio-rng-pci \
-	-device bochs-display,xres=1280,yres=800 \
-	-serial "file:$log" \
+case $arch in
+amd64)
+	# shellcheck disable=SC2054 # commas within QEMU's options
+	qemu=(qemu-system-x86_64 -cpu max -kernel "$OUT/vmlinuz" -initrd "$OUT/initrd.img"
+		-append "$(cat "$OUT/cmdline.txt") systemd.journald.forward_to_console=1 panic=-1"
+		-drive "file=$OUT/root.img,format=raw,if=virtio,snapshot=on"
+		-device bochs-display,xres=1280,yres=800)
+	;;
+arm64)
+	# the kernel and initrd the Pi's firmware would load, from the first partition
+	boot=$(($(sfdisk --dump "$OUT/disk.img" | sed -n 's/^[^ ]*1 : start= *\([0-9]*\),.*/\1/p') * 512))
+	[ "$boot" -gt 0 ] || fail "no boot partition in $OUT/disk.img"
+	kernel=$(mdir -b -i "$OUT/disk.img@@$boot" ::/ | sed -n 's|^::/\(vmlinuz-.*\)|\1|p' | sort -V | tail -1)
+	[ -n "$kernel" ] || fail "no vmlinuz-* on $OUT/disk.img's boot partition"
+	mcopy -n -i "$OUT/disk.img@@$boot" "::/$kernel" "::/initrd.img-${kernel#vmlinuz-}" "$T/" ||
+		fail "cannot read the kernel and initrd from the boot partition"
+	# the Pi's command line; the serial console is the board's PL011 here
+	# shellcheck disable=SC2054
+	qemu=(qemu-system-aarch64 -M virt -cpu cortex-a72
+		-kernel "$T/$kernel" -initrd "$T/initrd.img-${kernel#vmlinuz-}"
+		-append "$(cat "$OUT/cmdline.txt") console=ttyAMA0 systemd.journald.forward_to_console=1 panic=-1"
+		-drive "file=$OUT/disk.img,format=raw,if=virtio,snapshot=on"
+		-device virtio-gpu-pci,xres=1280,yres=800)
+	;;
+esac
+"${qemu[@]}" -accel tcg,thread=multi -smp 2 -m 2048 -nodefaults -no-reboot -display none \
+	-device virtio-rng-pci -serial "file:$log" \
 	-chardev "pipe,id=qmp,path=$T/qmp" -mon chardev=qmp,mode=control &
 qemu_pid=$!
 exec 3<>"$T/qmp.out" 4>"$T/qmp.in"
@@ -93,7 +131,7 @@ qmp() {
 read -r -t 30 -u 3 _ || fail "QEMU's QMP said nothing"
 qmp '{"execute":"qmp_capabilities"}' >/dev/null || fail "QMP capabilities"
 
-echo "boot-test: booting $OUT/root.img (TCG, 2 CPUs, bochs-display 1280x800; limit $limit s)"
+echo "boot-test: booting $OUT/${need[0]} ($arch, ${qemu[0]}, TCG, 2 CPUs, ${qemu[-1]%%,*} 1280x800; limit $limit s)"
 first=""
 while :; do
 	first=$(grep -m1 -a 'edaha: first frame on screen' "$log" || true)

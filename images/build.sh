@@ -153,10 +153,16 @@ ROOT=$WORK/rootfs
 wrap=()
 [ "$ARCH" != "$HOST_ARCH" ] && wrap=("$HERE/foreign.sh" "$ARCH")
 mapfile -t cache_opts < <(apt_cache "$CACHE/apt-$ARCH")
+# no manuals, info pages, translations or documentation on a kiosk; the licences stay
+slim=()
+for p in /usr/share/man/\* /usr/share/info/\* /usr/share/locale/\* /usr/share/doc/\*; do
+	slim+=("--dpkgopt=path-exclude=$p")
+done
+slim+=("--dpkgopt=path-include=/usr/share/doc/*/copyright" "--dpkgopt=path-include=/usr/share/locale/locale.alias")
 # shellcheck disable=SC2016
 "${wrap[@]}" mmdebstrap --variant=minbase --architectures="$ARCH" \
 	--include="$(packages "$HERE/packages-common.txt" "$HERE/packages-$ARCH.txt")" \
-	"${APTOPTS[@]}" "${cache_opts[@]}" \
+	"${APTOPTS[@]}" "${cache_opts[@]}" "${slim[@]}" \
 	--essential-hook='mkdir -p "$1/boot/firmware"' \
 	--customize-hook='tar -C "$1" --keep-directory-symlink --no-overwrite-dir -xpf "$WORK/edaha.tar"' \
 	--customize-hook="$HERE/customize.sh" \
@@ -219,6 +225,8 @@ EOF
 	dd if="$WORK/boot.vfat" of="$OUT/disk.img" bs=512 seek=$start conv=notrunc,sparse status=none
 	dd if="$WORK/root.ext4" of="$OUT/disk.img" bs=512 seek=$root_start conv=notrunc,sparse status=none
 	images=(disk.img)
+	# what raspi-firmware wrote to the boot partition's cmdline.txt, for boot-test.sh
+	cp "$WORK/cmdline.txt" "$OUT/cmdline.txt"
 fi
 cp "$WORK/reference-1280x800.png" "$OUT/"
 
@@ -231,5 +239,5 @@ cp "$WORK/reference-1280x800.png" "$OUT/"
 	echo "# package	version	architecture"
 	cat "$WORK/packages.tsv"
 } > "$OUT/manifest.txt"
-(cd "$OUT" && sha256sum "${images[@]}" manifest.txt reference-1280x800.png > SHA256SUMS)
+(cd "$OUT" && sha256sum "${images[@]}" cmdline.txt manifest.txt reference-1280x800.png > SHA256SUMS)
 step "done: $OUT ($(cd "$OUT" && du -sh --apparent-size "${images[@]}" | awk '{printf "%s%s %s", sep, $2, $1; sep=", "}'); $(wc -l < "$WORK/packages.tsv") packages"

@@ -74,19 +74,29 @@ if [ "$ARCH" = amd64 ]; then
 	# the QEMU image: boot messages and the journal's console on the serial port too
 	echo "$cmdline console=tty0 console=ttyS0,115200" > "$WORK/cmdline.txt"
 else
-	# raspi-firmware writes cmdline.txt and config.txt on /boot/firmware from these
-	# (its hooks ran when the kernel was installed; run them again)
+	# raspi-firmware writes config.txt and cmdline.txt on /boot/firmware from these when a
+	# kernel or initrd is installed; its hook ran before them, so it runs again. Its own
+	# checks look at the machine it runs on (the build machine here), so say for the Pi 4:
+	# CMA=0 leaves out cma=, as it does on a Pi 4 (the device tree's pool is used);
+	# consoles: boot messages on the header's UART (ttyS1, for a technician's cable) and
+	# the screen (tty0, last: the console). Debian's kernel drives the display with vc4
+	# (HDMI) and v3d (GL) from its upstream device trees: no dtoverlay= needed or shipped.
 	cat > "$root/etc/default/raspi-firmware" <<EOF
-# edaha image (images/customize.sh): see /usr/share/doc/raspi-firmware
+# edaha image (images/customize.sh); the keys: /usr/share/doc/raspi-firmware and
+# the package's own copy of this file
 ROOTPART=LABEL=edaha-root
-CONSOLES="tty0"
+CONSOLES="ttyS1,115200 tty0"
+CMA=0
 KERNEL_ARCH=arm64
 EOF
-	echo "$cmdline" > "$root/etc/default/raspi-extra-cmdline"
-	# the Pi 4/5's display and GL: the vc4 KMS driver (HDMI) and v3d (Mesa's GL driver)
-	echo "dtoverlay=vc4-kms-v3d" > "$root/etc/default/raspi-firmware-custom"
-	kver=$(ls "$root/lib/modules" | sort -V | tail -1)
-	in_root /etc/kernel/postinst.d/z50-raspi-firmware "$kver"
+	# raspi-firmware puts "root=... rw" before these; "ro" lets systemd check the root
+	# filesystem before remounting it read-write (fstab)
+	echo "ro quiet loglevel=3 vt.global_cursor_default=0" > "$root/etc/default/raspi-extra-cmdline"
+	rm -f "$root/etc/default/raspi-firmware-custom"
+	in_root env DEB_MAINT_PARAMS=configure /etc/kernel/postinst.d/z50-raspi-firmware
+	grep -q 'root=LABEL=edaha-root' "$root/boot/firmware/cmdline.txt" ||
+		{ echo "customize: raspi-firmware wrote no cmdline.txt for LABEL=edaha-root" >&2; exit 1; }
+	cp "$root/boot/firmware/cmdline.txt" "$WORK/cmdline.txt"
 fi
 
 # --- a reference picture: the image's own edaha, libraries and font, drawing the empty
