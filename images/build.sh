@@ -202,10 +202,11 @@ else
 	step "disk.img (FAT boot + ${root_mb} MiB ext4, ${used_mb} MiB used)"
 	boot_mb=256
 	[ -f "$ROOT/boot/firmware/config.txt" ] || die "raspi-firmware put no config.txt on /boot/firmware"
-	# mkfs.vfat and mtools take their times from the clock unless told
+	# mkfs.vfat takes its volume id and times from the clock unless told (--invariant,
+	# then -i: the id from the inputs)
 	vol=$(uuid "boot $ARCH" | cut -c1-8)
 	rm -f "$WORK/boot.vfat"
-	mkfs.vfat -F 32 -n EDAHA-BOOT -i "$vol" --invariant -C "$WORK/boot.vfat" $((boot_mb * 1024)) >/dev/null
+	mkfs.vfat -F 32 -n EDAHA-BOOT --invariant -i "$vol" -C "$WORK/boot.vfat" $((boot_mb * 1024)) >/dev/null
 	(cd "$ROOT/boot/firmware" && find . -mindepth 1 -maxdepth 1 -printf '%P\0' | sort -z |
 		xargs -0 sh -c 'mcopy -i "$0" -s -m -Q "$@" ::/' "$WORK/boot.vfat") ||
 		die "mcopy to the boot partition failed"
