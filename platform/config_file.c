@@ -485,6 +485,32 @@ static int kiosk_pair(struct cfg_parser *p, const yaml_node_t *key, const char *
 			return fail(p, v, "kiosk.export_dir must be an absolute path");
 		return r;
 	}
+	if (strcmp(k, "state_dir") == 0) {
+		int r = get_string(p, v, "kiosk.state_dir", p->c->kiosk.state_dir,
+				   sizeof(p->c->kiosk.state_dir));
+
+		if (r == 0 && p->c->kiosk.state_dir[0] != '/')
+			return fail(p, v, "kiosk.state_dir must be an absolute path");
+		return r;
+	}
+	if (strcmp(k, "autosave") == 0)
+		return get_bool(p, v, "kiosk.autosave", &p->c->kiosk.autosave);
+	if (strcmp(k, "reset_after") == 0) {
+		long s;
+		int r = get_int(p, v, "kiosk.reset_after", 0, CONFIG_RESET_S_MAX, &s);
+
+		if (r == 0)
+			p->c->kiosk.reset_after_s = (int)s;
+		return r;
+	}
+	if (strcmp(k, "archive_keep") == 0) {
+		long n;
+		int r = get_int(p, v, "kiosk.archive_keep", 0, CONFIG_ARCHIVE_KEEP_MAX, &n);
+
+		if (r == 0)
+			p->c->kiosk.archive_keep = (int)n;
+		return r;
+	}
 	warn_unknown(p, key, "kiosk");
 	return 0;
 }
@@ -536,6 +562,10 @@ void config_defaults(struct config *c)
 	c->language = CONFIG_LANG_EN;
 	c->kiosk.attract_after_s = CONFIG_ATTRACT_S_DEFAULT;
 	memcpy(c->kiosk.export_dir, CONFIG_EXPORT_DIR_DEFAULT, sizeof(CONFIG_EXPORT_DIR_DEFAULT));
+	memcpy(c->kiosk.state_dir, CONFIG_STATE_DIR_DEFAULT, sizeof(CONFIG_STATE_DIR_DEFAULT));
+	c->kiosk.reset_after_s = CONFIG_RESET_S_DEFAULT;
+	c->kiosk.autosave = true;
+	c->kiosk.archive_keep = CONFIG_ARCHIVE_KEEP_DEFAULT;
 }
 
 static int yaml_fail(struct cfg_parser *p, const yaml_parser_t *y, const char *data,

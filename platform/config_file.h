@@ -24,6 +24,13 @@
 #define CONFIG_ATTRACT_S_MAX 86400
 /* Where export writes until a USB stick takes its place (issue 7). */
 #define CONFIG_EXPORT_DIR_DEFAULT "/var/lib/edaha/export"
+/* The autosave journal and the archive of drawings (autosave.h); the service's
+ * StateDirectory=. */
+#define CONFIG_STATE_DIR_DEFAULT "/var/lib/edaha"
+#define CONFIG_RESET_S_DEFAULT 600
+#define CONFIG_RESET_S_MAX (7 * 86400)
+#define CONFIG_ARCHIVE_KEEP_DEFAULT 10000
+#define CONFIG_ARCHIVE_KEEP_MAX 1000000
 
 enum config_language { CONFIG_LANG_EN = 0, CONFIG_LANG_JA };
 
@@ -65,6 +72,11 @@ struct config {
 	struct {
 		int attract_after_s; /* idle seconds before the attract screen; 0: never */
 		char export_dir[256]; /* absolute: where export writes the files */
+		char state_dir[256];  /* absolute: the autosave journal and the archive */
+		bool autosave;        /* false: a drawing lives only as long as the process */
+		int reset_after_s;    /* idle seconds before the drawing is archived and the
+				       * canvas cleared; 0: never */
+		int archive_keep;     /* archived drawings kept; 0: all */
 	} kiosk;
 	char font[256]; /* the labels' font file; "" = the first of font_file_defaults */
 };

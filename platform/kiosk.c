@@ -8,12 +8,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/random.h>
 #include <sys/signalfd.h>
 #include <sys/timerfd.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "app.h"
+#include "autosave.h"
 #include "buf.h"
 #include "export_dir.h"
 #include "fileio.h"
@@ -93,6 +95,8 @@ struct kiosk {
 	/* export: asked for; the next frame is read back for its picture, then written */
 	bool export_asked, export_ready;
 	uint8_t *pixels;
+	struct autosave *autosave; /* NULL: none */
+	bool autosave_failing;     /* said once, not at every stroke */
 	enum button mode_lit;    /* what mode_changed was last told */
 	void (*mode_changed)(void *data, enum button mode);
 	void *mode_data;
@@ -159,11 +163,20 @@ static bool animating_at(const struct app *app, uint64_t now_us, bool turning)
 	       now_us + APP_STATUS_FADE_US >= until;
 }
 
-/* The next moment the screen changes with no input (UINT64_MAX: none): a message
- * starts fading or ends, the attract screen begins. */
-static uint64_t next_change(const struct app *app, uint64_t now_us)
+/* When the idle reset is due for the drawing there is (UINT64_MAX: never). */
+static uint64_t reset_at(const struct app *app, uint64_t reset_after_us)
 {
-	uint64_t until, from, next = UINT64_MAX;
+	/* an empty canvas has nothing to archive; a pen on the tablet is someone there */
+	if (!reset_after_us || !app->doc.nops || app->stroke.active || app->pen.in_proximity)
+		return UINT64_MAX;
+	return app->last_time_us + reset_after_us;
+}
+
+/* The next moment the screen changes with no input (UINT64_MAX: none): a message
+ * starts fading or ends, the attract screen begins, the idle reset. */
+static uint64_t next_change(const struct app *app, uint64_t now_us, uint64_t reset_after_us)
+{
+	uint64_t until, from, next = reset_at(app, reset_after_us);
 
 	if (app_status_at(app, now_us, &until) != APP_STATUS_NONE)
 		next = now_us + APP_STATUS_FADE_US < until ? until - APP_STATUS_FADE_US : until;
@@ -228,6 +241,57 @@ static int open_watchdog(struct kiosk *k)
 	return 0;
 }
 
+/* A new drawing's seed: a different tree for each visitor's same strokes. */
+static uint64_t fresh_seed(void)
+{
+	uint64_t seed;
+
+	if (getrandom(&seed, sizeof(seed), GRND_NONBLOCK) != (ssize_t)sizeof(seed))
+		seed = now_us() ^ ((uint64_t)getpid() << 32);
+	return seed;
+}
+
+/* The journal: the drawing it holds comes back (unless one was loaded), then it starts
+ * afresh from what the app shows. Only an out-of-memory stops the kiosk: a kiosk that
+ * cannot save still draws. */
+static int start_autosave(struct kiosk *k)
+{
+	struct error err = { { 0 } }, warn = { { 0 } };
+	struct doc doc;
+	int ret;
+
+	k->autosave = autosave_create(k->cfg.state_dir, &err);
+	if (!k->autosave) {
+		fprintf(stderr, "edaha: warning: autosave: %s; drawings are not kept\n", err.msg);
+		return 0;
+	}
+	if (!k->cfg.doc) {
+		doc_init(&doc, 0);
+		ret = autosave_restore(k->autosave, &doc, &warn, &err);
+		if (warn.msg[0])
+			fprintf(stderr, "edaha: warning: autosave: %s\n", warn.msg);
+		if (ret < 0)
+			fprintf(stderr, "edaha: warning: autosave: %s; starting a new drawing\n",
+				err.msg);
+		if (ret > 0) {
+			size_t nops = doc.nops, cursor = doc.cursor;
+
+			if (app_load_doc(k->app, &doc) < 0) {
+				fputs("edaha: out of memory restoring the drawing\n", stderr);
+				return -ENOMEM;
+			}
+			fprintf(stderr, "edaha: autosave: the drawing is back from %s (%zu edits, %zu in effect)\n",
+				autosave_path(k->autosave), nops, cursor);
+		}
+		doc_finish(&doc);
+	}
+	if (autosave_start(k->autosave, &k->app->doc, &err) < 0) {
+		fprintf(stderr, "edaha: warning: autosave: %s\n", err.msg);
+		k->autosave_failing = true;
+	}
+	return 0;
+}
+
 struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 {
 	struct kiosk *k = calloc(1, sizeof(*k));
@@ -289,6 +353,8 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 		}
 		k->cfg.doc = NULL; /* the app has it now */
 	}
+	if (cfg->state_dir && start_autosave(k) < 0)
+		goto fail;
 	/* idle time counts from the start: a kiosk nobody uses shows its attract screen */
 	k->app->attract_after_us = cfg->attract_after_us;
 	k->app->last_time_us = k->start_us;
@@ -317,6 +383,7 @@ void kiosk_destroy(struct kiosk *k)
 	render_destroy(k->render);
 	drm_display_destroy(k->display);
 	app_destroy(k->app);
+	autosave_destroy(k->autosave);
 	if (k->cfg.doc)
 		doc_finish(k->cfg.doc);
 	free(k->shot);
@@ -573,6 +640,47 @@ static enum button mode_button(const struct app *app)
 	return app->tree.lifted ? BUTTON_3D : BUTTON_COUNT;
 }
 
+/* Every committed stroke and edit goes to the journal before anything else happens. */
+static void save_edits(struct kiosk *k)
+{
+	struct error err = { { 0 } };
+
+	if (!k->autosave || !autosave_pending(k->autosave, &k->app->doc))
+		return;
+	if (autosave_sync(k->autosave, &k->app->doc, &err) < 0) {
+		if (!k->autosave_failing)
+			fprintf(stderr, "edaha: warning: autosave: %s; trying again at the next edit\n",
+				err.msg);
+		k->autosave_failing = true;
+	} else if (k->autosave_failing) {
+		fputs("edaha: autosave works again\n", stderr);
+		k->autosave_failing = false;
+	}
+}
+
+/* Nobody drew for reset_after: the drawing goes to the archive, the next visitor gets
+ * a clean canvas (the attract screen stays up). */
+static void idle_reset(struct kiosk *k, uint64_t now)
+{
+	struct error err = { { 0 } };
+	char name[64] = "";
+
+	if (now < reset_at(k->app, k->cfg.reset_after_us))
+		return;
+	if (k->autosave && autosave_archive(k->autosave, &k->app->doc, &k->app->tree,
+					    k->cfg.archive_keep, name, sizeof(name), &err) < 0)
+		fprintf(stderr, "edaha: warning: idle reset: cannot archive the drawing: %s\n", err.msg);
+	if (app_reset(k->app, fresh_seed()) < 0) {
+		fail(k, "idle reset", -ENOMEM);
+		return;
+	}
+	fprintf(stderr, "edaha: idle for %.0f s: %s%s%s; a new canvas\n",
+		(double)(now - k->app->last_time_us) / 1e6,
+		name[0] ? "the drawing is archived as " : "the drawing is cleared",
+		name[0] ? AUTOSAVE_ARCHIVE_DIR "/" : "", name);
+	save_edits(k);
+}
+
 /* Things the app asks of the platform between frames. */
 static void take_requests(struct kiosk *k)
 {
@@ -589,13 +697,14 @@ static void take_requests(struct kiosk *k)
 	if (k->app->failed) {
 		fail(k, "the app failed", k->app->failed);
 	}
+	save_edits(k);
 }
 
 /* Sets the UI timer for the next change nobody causes (a message fading, the attract
  * screen): the loop sleeps in poll() until then. */
 static void arm_ui_timer(struct kiosk *k)
 {
-	uint64_t next = next_change(k->app, now_us());
+	uint64_t next = next_change(k->app, now_us(), k->cfg.reset_after_us);
 	struct itimerspec it = { { 0, 0 }, { 0, 0 } };
 
 	if (next == k->ui_deadline_us)
@@ -620,9 +729,10 @@ static void on_ui_timer(struct kiosk *k)
 {
 	uint64_t expirations;
 
-	/* nothing else to do: frame_due() sees what changed */
+	/* frame_due() sees what else changed */
 	if (read(k->ui_timer_fd, &expirations, sizeof(expirations)) == (ssize_t)sizeof(expirations))
 		k->ui_deadline_us = UINT64_MAX;
+	idle_reset(k, now_us());
 }
 
 static int write_screenshot(struct kiosk *k)

@@ -26,6 +26,11 @@ struct kiosk_config {
 	const char *record;     /* write every event fed as an edaha trace; NULL: no */
 	const char *export_dir; /* where export writes (export_dir.h) */
 	uint64_t attract_after_us; /* idle time before the attract screen; 0: never */
+	/* Autosave (autosave.h): the journal and archive's directory, NULL: none. A drawing
+	 * in the journal comes back unless doc is given. */
+	const char *state_dir;
+	uint64_t reset_after_us; /* idle time before the drawing is archived and cleared; 0: never */
+	unsigned archive_keep;   /* archived drawings kept; 0: all */
 	bool stats;             /* print the responsiveness figures on stdout at the end */
 	/* Test runs: draw a frame every vblank as if the app changed each time, and stop
 	 * after this many frames are on screen (0: run until a signal). */

@@ -62,6 +62,9 @@ static int kiosk_main(const struct options *o)
 	}
 	cfg.export_dir = conf.kiosk.export_dir;
 	cfg.attract_after_us = (uint64_t)conf.kiosk.attract_after_s * 1000000u;
+	cfg.state_dir = conf.kiosk.autosave ? conf.kiosk.state_dir : NULL;
+	cfg.reset_after_us = (uint64_t)conf.kiosk.reset_after_s * 1000000u;
+	cfg.archive_keep = (unsigned)conf.kiosk.archive_keep;
 	if (o->load) {
 		int ret = docfile_read(o->load, &doc, &err);
 

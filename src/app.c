@@ -120,6 +120,20 @@ int app_load_doc(struct app *app, struct doc *doc)
 	return app_rebuild(app);
 }
 
+int app_reset(struct app *app, uint64_t seed)
+{
+	struct doc fresh;
+
+	app->mode = APP_MODE_SKETCH;
+	app->pattern = APP_PATTERN_AUTO;
+	app->selected = -1;
+	app->turning = false;
+	app->orbiting = false;
+	app_clear_suggestions(app);
+	doc_init(&fresh, seed);
+	return app_load_doc(app, &fresh);
+}
+
 /* Records an edit and applies it on top of the current tree (same result as a rebuild).
  * When the tree only grew, only the new elements are meshed: a stroke's cost does not
  * grow with the drawing. */

@@ -139,6 +139,9 @@ struct app *app_create(int width, int height, uint64_t seed);
 void app_destroy(struct app *app);
 /* Replaces the document (takes ownership of *doc's contents) and rebuilds. 0 or -ENOMEM. */
 int app_load_doc(struct app *app, struct doc *doc);
+/* A new visitor: an empty drawing with this seed, sketch mode, the front view; not
+ * undoable (the kiosk archives the old drawing first). 0 or -ENOMEM. */
+int app_reset(struct app *app, uint64_t seed);
 void app_handle_event(struct app *app, const struct event *ev);
 uint32_t app_take_requests(struct app *app);
 /* The camera to show at now_us: the settled one, or a step of the animated turn into 3D

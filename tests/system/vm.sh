@@ -15,7 +15,8 @@
 #         --destdir` tree: the guest boots with it installed)
 #     -i  PID 1: sh (default: COMMAND runs as soon as udev has settled) or systemd
 #         (systemd boots edaha-vmtest.target: sysinit with udev, journald, sysusers and
-#         tmpfiles, then COMMAND as the unit edaha-vmtest.service, output on the console)
+#         tmpfiles, then COMMAND as the unit edaha-vmtest.service, output on the console;
+#         /tmp is the guest's own tmpfs, and VM_APPEND adds to the kernel command line)
 #   Environment: KVER (kernel version, default the newest in /lib/modules),
 #   VM_CACHE (where the initramfs is kept, default /tmp/edaha-vm-cache), VM_VERBOSE=1,
 #   VM_LOCK (the lock file that lets one guest run at a time, default /tmp/edaha-vm.lock).
@@ -89,6 +90,9 @@ mount -t tmpfs -o mode=0755 tmpfs /newroot/run
 if echo "$cmdline" | grep -q edaha.init=systemd; then
 	# the host may be a container: systemd must not believe it runs in one
 	rm -f /newroot/.dockerenv /newroot/run/.containerenv
+	# a /tmp of its own, as a booted system has: tmpfiles would empty the host's at boot,
+	# file by file over 9p
+	mount -t tmpfs -o mode=1777 tmpfs /newroot/tmp
 	# units in /run/systemd/system: systemd keeps this /run
 	mkdir -p /newroot/run/systemd/system
 	cat /newroot/job/edaha-vmtest.target > /newroot/run/systemd/system/edaha-vmtest.target
@@ -164,7 +168,7 @@ append="console=ttyS0 quiet loglevel=3 panic=-1 rdinit=/init"
 [ "$init" = systemd ] && append+=" edaha.init=systemd systemd.unit=edaha-vmtest.target
  systemd.show_status=false systemd.firstboot=off systemd.mask=systemd-timesyncd.service
  systemd.mask=systemd-pstore.service systemd.mask=systemd-binfmt.service
- systemd.mask=systemd-repart.service systemd.mask=proc-sys-fs-binfmt_misc.automount"
+ systemd.mask=systemd-repart.service systemd.mask=proc-sys-fs-binfmt_misc.automount ${VM_APPEND:-}"
 append=$(echo $append)
 
 qemu=(qemu-system-x86_64 -accel tcg,thread=multi -cpu max -smp 2 -m 2048
