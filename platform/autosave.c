@@ -123,6 +123,20 @@ static int remember(struct autosave *a, const struct doc *d)
 	return 0;
 }
 
+/* After a write: the journal holds d. If that cannot be noted, the next sync starts the
+ * journal afresh rather than append to one whose contents are unknown. */
+static int remember_or_drop(struct autosave *a, const struct doc *d, struct error *err)
+{
+	int ret = remember(a, d);
+
+	if (ret < 0) {
+		close(a->fd);
+		a->fd = -1;
+		return error_set(err, ret, "out of memory");
+	}
+	return 0;
+}
+
 int autosave_restore(struct autosave *a, struct doc *doc, struct error *warn,
 		     struct error *err)
 {
@@ -188,13 +202,7 @@ int autosave_start(struct autosave *a, const struct doc *d, struct error *err)
 	if (a->fd < 0)
 		return error_set(err, -errno, "%s: %s", a->path, strerror(errno));
 	a->bytes = 0;
-	ret = remember(a, d);
-	if (ret < 0) {
-		close(a->fd);
-		a->fd = -1;
-		return error_set(err, ret, "out of memory");
-	}
-	return 0;
+	return remember_or_drop(a, d, err);
 }
 
 static int write_all(int fd, const unsigned char *p, size_t len)
@@ -240,13 +248,7 @@ int autosave_sync(struct autosave *a, const struct doc *d, struct error *err)
 		a->fd = -1;
 		return error_set(err, ret, "%s: %s", a->path, strerror(-ret));
 	}
-	ret = remember(a, d);
-	if (ret < 0) {
-		close(a->fd);
-		a->fd = -1;
-		return error_set(err, ret, "out of memory");
-	}
-	return 0;
+	return remember_or_drop(a, d, err);
 }
 
 /* The number in "drawing-NNNNNN.edaha", or 0. */

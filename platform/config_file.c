@@ -477,8 +477,16 @@ static int kiosk_pair(struct cfg_parser *p, const yaml_node_t *key, const char *
 		return r;
 	}
 	if (strcmp(k, "export_dir") == 0) {
-		int r = get_string(p, v, "kiosk.export_dir", p->c->kiosk.export_dir,
-				   sizeof(p->c->kiosk.export_dir));
+		const char *s = text(v);
+		int r;
+
+		/* no copy kept: the stick is the only place */
+		if (is_null(v) || (s && plain(v) && strcmp(s, "none") == 0)) {
+			p->c->kiosk.export_dir[0] = '\0';
+			return 0;
+		}
+		r = get_string(p, v, "kiosk.export_dir", p->c->kiosk.export_dir,
+			       sizeof(p->c->kiosk.export_dir));
 
 		/* relative to what? the service's working directory is no place for a visitor's tree */
 		if (r == 0 && p->c->kiosk.export_dir[0] != '/')
@@ -515,6 +523,26 @@ static int kiosk_pair(struct cfg_parser *p, const yaml_node_t *key, const char *
 	return 0;
 }
 
+/* ---- usb ------------------------------------------------------------------------ */
+
+static int usb_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
+		    const yaml_node_t *v, void *data)
+{
+	(void)data;
+	if (strcmp(k, "enabled") == 0)
+		return get_bool(p, v, "usb.enabled", &p->c->usb.enabled);
+	if (strcmp(k, "helper_socket") == 0) {
+		int r = get_string(p, v, "usb.helper_socket", p->c->usb.helper_socket,
+				   sizeof(p->c->usb.helper_socket));
+
+		if (r == 0 && p->c->usb.helper_socket[0] != '/')
+			return fail(p, v, "usb.helper_socket must be an absolute path");
+		return r;
+	}
+	warn_unknown(p, key, "usb");
+	return 0;
+}
+
 /* ---- top level ------------------------------------------------------------------ */
 
 static int top_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
@@ -529,6 +557,8 @@ static int top_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
 		return for_each_pair(p, v, "gpio", gpio_pair, NULL);
 	if (strcmp(k, "kiosk") == 0)
 		return for_each_pair(p, v, "kiosk", kiosk_pair, NULL);
+	if (strcmp(k, "usb") == 0)
+		return for_each_pair(p, v, "usb", usb_pair, NULL);
 	if (strcmp(k, "font") == 0)
 		return get_auto_string(p, v, "font", p->c->font, sizeof(p->c->font));
 	if (strcmp(k, "language") == 0) {
@@ -562,6 +592,8 @@ void config_defaults(struct config *c)
 	c->language = CONFIG_LANG_EN;
 	c->kiosk.attract_after_s = CONFIG_ATTRACT_S_DEFAULT;
 	memcpy(c->kiosk.export_dir, CONFIG_EXPORT_DIR_DEFAULT, sizeof(CONFIG_EXPORT_DIR_DEFAULT));
+	c->usb.enabled = true;
+	memcpy(c->usb.helper_socket, CONFIG_USB_SOCKET_DEFAULT, sizeof(CONFIG_USB_SOCKET_DEFAULT));
 	memcpy(c->kiosk.state_dir, CONFIG_STATE_DIR_DEFAULT, sizeof(CONFIG_STATE_DIR_DEFAULT));
 	c->kiosk.reset_after_s = CONFIG_RESET_S_DEFAULT;
 	c->kiosk.autosave = true;

@@ -4,7 +4,7 @@
 /*
  * The kiosk's configuration, /etc/edaha/edaha.conf (YAML, docs/config.md): the display,
  * how the tablet maps onto it, the GPIO buttons and LEDs, the language and the font of
- * the labels. A missing file means the defaults; every error names "file:line"; unknown
+ * the labels, where exports go (USB sticks, a local copy). A missing file means the defaults; every error names "file:line"; unknown
  * keys are warnings.
  */
 #include <stdbool.h>
@@ -22,8 +22,11 @@
 #define CONFIG_DEBOUNCE_MS_MAX 1000
 #define CONFIG_ATTRACT_S_DEFAULT 90
 #define CONFIG_ATTRACT_S_MAX 86400
-/* Where export writes until a USB stick takes its place (issue 7). */
+/* Where every export also keeps a copy (a teacher collects them); "none": nowhere. */
 #define CONFIG_EXPORT_DIR_DEFAULT "/var/lib/edaha/export"
+/* edaha-usb-helper's socket (systemd/edaha-usb.socket). */
+#define CONFIG_USB_SOCKET_DEFAULT "/run/edaha/usb.sock"
+#define CONFIG_USB_SOCKET_MAX 108 /* sun_path, with the NUL */
 /* The autosave journal and the archive of drawings (autosave.h); the service's
  * StateDirectory=. */
 #define CONFIG_STATE_DIR_DEFAULT "/var/lib/edaha"
@@ -71,13 +74,17 @@ struct config {
 	enum config_language language;
 	struct {
 		int attract_after_s; /* idle seconds before the attract screen; 0: never */
-		char export_dir[256]; /* absolute: where export writes the files */
+		char export_dir[256]; /* absolute: where export keeps a copy; "": none */
 		char state_dir[256];  /* absolute: the autosave journal and the archive */
 		bool autosave;        /* false: a drawing lives only as long as the process */
 		int reset_after_s;    /* idle seconds before the drawing is archived and the
 				       * canvas cleared; 0: never */
 		int archive_keep;     /* archived drawings kept; 0: all */
 	} kiosk;
+	struct {
+		bool enabled; /* save to USB sticks */
+		char helper_socket[CONFIG_USB_SOCKET_MAX]; /* absolute */
+	} usb;
 	char font[256]; /* the labels' font file; "" = the first of font_file_defaults */
 };
 

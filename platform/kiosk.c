@@ -17,13 +17,13 @@
 #include "app.h"
 #include "autosave.h"
 #include "buf.h"
-#include "export_dir.h"
 #include "fileio.h"
 #include "latency.h"
 #include "notify.h"
 #include "pngio.h"
 #include "render.h"
 #include "trace.h"
+#include "usb_export.h"
 
 /* A flip that has not completed in this long will not: the display is gone (it is
  * probed again, and the kiosk goes on). */
@@ -95,6 +95,7 @@ struct kiosk {
 	/* export: asked for; the next frame is read back for its picture, then written */
 	bool export_asked, export_ready;
 	uint8_t *pixels;
+	struct usb_export *usb;  /* where the export goes: sticks, the local copy */
 	struct autosave *autosave; /* NULL: none */
 	bool autosave_failing;     /* said once, not at every stroke */
 	enum button mode_lit;    /* what mode_changed was last told */
@@ -178,7 +179,8 @@ static uint64_t next_change(const struct app *app, uint64_t now_us, uint64_t res
 {
 	uint64_t until, from, next = reset_at(app, reset_after_us);
 
-	if (app_status_at(app, now_us, &until) != APP_STATUS_NONE)
+	/* a held message (saving) changes when its result comes, not by the clock */
+	if (app_status_at(app, now_us, &until) != APP_STATUS_NONE && until != UINT64_MAX)
 		next = now_us + APP_STATUS_FADE_US < until ? until - APP_STATUS_FADE_US : until;
 	if (!app_attract_at(app, now_us, &from) && from < next)
 		next = from;
@@ -238,6 +240,46 @@ static int open_watchdog(struct kiosk *k)
 	if (timerfd_settime(k->watchdog_fd, 0, &it, NULL) < 0)
 		return -errno;
 	fprintf(stderr, "edaha: watchdog: the loop checks in every %.1f s\n", (double)us / 1e6);
+	return 0;
+}
+
+static void usb_status(void *data, enum app_status status, bool held)
+{
+	struct kiosk *k = data;
+
+	if (held)
+		app_hold_status(k->app, status, now_us());
+	else
+		app_set_status(k->app, status, now_us());
+}
+
+/* The export's writer (usb_export.c), its fds in the poll. 0 or -1 (said why). */
+static int open_usb(struct kiosk *k)
+{
+	const struct usb_export_config uc = {
+		.usb = k->cfg.usb,
+		.helper_socket = k->cfg.usb_socket,
+		.local_dir = k->cfg.export_dir && k->cfg.export_dir[0] ? k->cfg.export_dir : NULL,
+		.monitor = true,
+		.status = usb_status,
+		.data = k,
+	};
+	struct kiosk_source src[2];
+	struct error err = { { 0 } };
+	size_t n;
+
+	k->usb = usb_export_create(&uc, &err);
+	if (!k->usb) {
+		fprintf(stderr, "edaha: %s\n", err.msg);
+		return -1;
+	}
+	n = usb_export_sources(k->usb, src, 2);
+	for (size_t i = 0; i < n; i++) {
+		if (kiosk_add_source(k, &src[i]) < 0) {
+			fputs("edaha: too many sources to poll\n", stderr);
+			return -1;
+		}
+	}
 	return 0;
 }
 
@@ -366,6 +408,8 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 		fprintf(stderr, "edaha: %s\n", err.msg);
 		goto fail;
 	}
+	if (open_usb(k) < 0)
+		goto fail;
 	return k;
 
 fail:
@@ -379,6 +423,8 @@ void kiosk_destroy(struct kiosk *k)
 		return;
 	if (k->rec && trace_writer_destroy(k->rec) < 0)
 		fprintf(stderr, "edaha: %s: cannot write the recording\n", k->cfg.record);
+	/* waits for a save under way: its files reach the stick whole or not at all */
+	usb_export_destroy(k->usb);
 	/* GL objects go while the display's context is still current */
 	render_destroy(k->render);
 	drm_display_destroy(k->display);
@@ -607,21 +653,12 @@ static void on_source(struct kiosk *k, size_t i)
 	}
 }
 
-/* Writes the export the last frame was read back for, and tells the visitor. */
+/* Hands the export the last frame was read back for to usb_export.c, which tells the
+ * visitor how it went. */
 static void run_export(struct kiosk *k)
 {
-	struct error err = { { 0 } };
-	char base[32];
-	int ret;
-
 	k->export_ready = false;
-	ret = export_dir_write(k->app, k->cfg.export_dir, k->pixels, base, sizeof(base), &err);
-	if (ret < 0)
-		fprintf(stderr, "edaha: export failed: %s\n", err.msg);
-	else
-		fprintf(stderr, "edaha: exported %s/%s.glb, .obj, .mtl, .png, .edaha\n",
-			k->cfg.export_dir, base);
-	app_set_status(k->app, ret < 0 ? APP_STATUS_SAVE_FAILED : APP_STATUS_SAVED, now_us());
+	usb_export_start(k->usb, k->app, k->pixels);
 }
 
 /* The mode the screen shows, as the button whose LED says so. */

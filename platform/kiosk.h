@@ -24,7 +24,9 @@ struct kiosk_config {
 	uint64_t seed;          /* of a new drawing */
 	struct doc *doc;        /* a drawing to continue, taken (even on failure); NULL: new */
 	const char *record;     /* write every event fed as an edaha trace; NULL: no */
-	const char *export_dir; /* where export writes (export_dir.h) */
+	const char *export_dir; /* a copy of every export (usb_export.h); NULL or "": none */
+	bool usb;               /* export to USB sticks through edaha-usb-helper */
+	const char *usb_socket; /* the helper's socket */
 	uint64_t attract_after_us; /* idle time before the attract screen; 0: never */
 	/* Autosave (autosave.h): the journal and archive's directory, NULL: none. A drawing
 	 * in the journal comes back unless doc is given. */

@@ -61,6 +61,8 @@ static int kiosk_main(const struct options *o)
 		return 2;
 	}
 	cfg.export_dir = conf.kiosk.export_dir;
+	cfg.usb = conf.usb.enabled;
+	cfg.usb_socket = conf.usb.helper_socket;
 	cfg.attract_after_us = (uint64_t)conf.kiosk.attract_after_s * 1000000u;
 	cfg.state_dir = conf.kiosk.autosave ? conf.kiosk.state_dir : NULL;
 	cfg.reset_after_us = (uint64_t)conf.kiosk.reset_after_s * 1000000u;

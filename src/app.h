@@ -50,6 +50,15 @@ enum app_status {
 	APP_STATUS_NONE = 0,
 	APP_STATUS_SAVED,       /* the export was written */
 	APP_STATUS_SAVE_FAILED, /* the export could not be written */
+	/* USB export (platform/usb_export.c) */
+	APP_STATUS_SAVING,       /* being written to the stick: held until the result */
+	APP_STATUS_SAVED_USB,    /* on the stick, which is unmounted: safe to take out */
+	APP_STATUS_NO_STICK,     /* save pressed with no stick in */
+	APP_STATUS_STICK_PULLED, /* the stick came out before the save was done */
+	APP_STATUS_STICK_FULL,   /* no room on the stick */
+	APP_STATUS_STICK_LOCKED, /* write-protected, read-only */
+	APP_STATUS_STICK_UNUSABLE, /* unformatted, unsupported or a hostile layout */
+	APP_STATUS_STICK_READY,  /* a stick was put in and can be saved to */
 	APP_STATUS_COUNT,
 };
 #define APP_STATUS_US 4000000u
@@ -131,6 +140,7 @@ struct app {
 	uint64_t attract_after_us; /* idle time before the attract screen; 0: never */
 	enum app_status status;    /* the last message, shown from status_us on */
 	uint64_t status_us;
+	bool status_held;          /* shown until the next one, not for APP_STATUS_US */
 	uint32_t requests;
 	int failed; /* first negative errno from an allocation, sticky */
 };
@@ -156,6 +166,8 @@ size_t app_suggestions(const struct app *app, enum arrange_pattern out[ARRANGE_C
 bool app_would_orbit(const struct app *app, double x, double y);
 /* The platform's answer to a request (or any news for the visitor), shown from now_us. */
 void app_set_status(struct app *app, enum app_status status, uint64_t now_us);
+/* The same, shown until the next status replaces it (something under way: saving). */
+void app_hold_status(struct app *app, enum app_status status, uint64_t now_us);
 /* The message on screen at now_us (APP_STATUS_NONE when none), and until when it shows. */
 enum app_status app_status_at(const struct app *app, uint64_t now_us, uint64_t *until_us);
 /* Whether the attract screen shows at now_us; *from_us says when it does (or did) begin

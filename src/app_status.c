@@ -12,11 +12,19 @@ void app_set_status(struct app *app, enum app_status status, uint64_t now_us)
 		status = APP_STATUS_NONE;
 	app->status = status;
 	app->status_us = now_us;
+	app->status_held = false;
+}
+
+void app_hold_status(struct app *app, enum app_status status, uint64_t now_us)
+{
+	app_set_status(app, status, now_us);
+	app->status_held = app->status != APP_STATUS_NONE;
 }
 
 enum app_status app_status_at(const struct app *app, uint64_t now_us, uint64_t *until_us)
 {
-	uint64_t until = app->status_us + APP_STATUS_US;
+	/* a held message has no end, and so no fade: the kiosk's timer waits for none */
+	uint64_t until = app->status_held ? UINT64_MAX : app->status_us + APP_STATUS_US;
 
 	if (until_us)
 		*until_us = until;

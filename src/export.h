@@ -15,5 +15,9 @@
 int export_glb(const struct tree_mesh *m, struct buf *out);
 /* Wavefront OBJ with its MTL; the OBJ refers to the MTL as mtl_name (e.g. "model.mtl"). */
 int export_obj(const struct tree_mesh *m, const char *mtl_name, struct buf *obj, struct buf *mtl);
+/* Renames the MTL an OBJ made by export_obj refers to (its mtllib line), for an OBJ built
+ * before its file's name was known. 0, -EINVAL (no mtllib line, a bad name) or -ENOMEM
+ * (obj unchanged then). */
+int export_obj_mtllib(struct buf *obj, const char *mtl_name);
 /* skeleton.json, see docs/skeleton-format.md. */
 int export_skeleton(const struct tree *t, struct buf *out);

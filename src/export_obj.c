@@ -148,3 +148,31 @@ int export_obj(const struct tree_mesh *m, const char *mtl_name, struct buf *obj,
 	}
 	return r;
 }
+
+int export_obj_mtllib(struct buf *obj, const char *mtl_name)
+{
+	static const char key[] = "\nmtllib ";
+	size_t klen = sizeof(key) - 1, nlen, start, end, old;
+	unsigned char *p;
+	int r;
+
+	if (!mtl_name || !*mtl_name || strpbrk(mtl_name, "\r\n"))
+		return -EINVAL;
+	/* export_obj writes it as the second line, after one comment */
+	p = obj->len ? memchr(obj->data, '\n', obj->len) : NULL;
+	if (!p || (size_t)(p - obj->data) + klen > obj->len || memcmp(p, key, klen) != 0)
+		return -EINVAL;
+	start = (size_t)(p - obj->data) + klen;
+	p = memchr(obj->data + start, '\n', obj->len - start);
+	if (!p)
+		return -EINVAL;
+	end = (size_t)(p - obj->data);
+	old = end - start;
+	nlen = strlen(mtl_name);
+	if (nlen > old && (r = buf_reserve(obj, nlen - old)) < 0)
+		return r;
+	memmove(obj->data + start + nlen, obj->data + end, obj->len - end);
+	memcpy(obj->data + start, mtl_name, nlen);
+	obj->len = obj->len - old + nlen;
+	return 0;
+}

@@ -7,7 +7,8 @@ BUILD_PKGS="meson ninja-build pkg-config gcc libc6-dev libjson-c-dev libyaml-dev
  libdrm-dev libgbm-dev libudev-dev libseat-dev libfreetype-dev fonts-vlgothic libsystemd-dev"
 TEST_PKGS="clang libclang-rt-14-dev assimp-utils
  qemu-system-x86 linux-image-amd64 busybox-static cpio kmod udev seatd
- linux-source-6.1 linux-headers-amd64 make xz-utils bc systemd"
+ linux-source-6.1 linux-headers-amd64 make xz-utils bc systemd
+ mtools dosfstools exfatprogs e2fsprogs python3"
 
 deps_install() {
 	local missing=() p

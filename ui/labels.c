@@ -23,9 +23,24 @@ static const char *const button_words[BUTTON_COUNT][NLANGS] = {
 	[BUTTON_VIEW] = { "Front", "まえ" },
 };
 
+/*
+ * The USB stick is "the stick" in English, "USB" in Japanese (what children there call
+ * it); each message says what happened and, where there is one, what to do next.
+ */
 static const char *const status_words[APP_STATUS_COUNT][NLANGS] = {
 	[APP_STATUS_SAVED] = { "Saved!", "ほぞんしたよ!" },
 	[APP_STATUS_SAVE_FAILED] = { "Could not save", "ほぞん できなかったよ" },
+	[APP_STATUS_SAVING] = { "Saving... leave the stick in", "ほぞんちゅう… USBを ぬかないでね" },
+	[APP_STATUS_SAVED_USB] = { "Saved! You can take the stick out",
+				   "ほぞんしたよ! USBを ぬいて いいよ" },
+	[APP_STATUS_NO_STICK] = { "Put in a USB stick to take your tree home",
+				  "USBを さしてね。木を もってかえれるよ" },
+	[APP_STATUS_STICK_PULLED] = { "The stick came out too soon. Put it back and save again",
+				      "USBが ぬけちゃった。さして もういちど ほぞんしてね" },
+	[APP_STATUS_STICK_FULL] = { "The stick is full", "USBが いっぱいだよ" },
+	[APP_STATUS_STICK_LOCKED] = { "The stick is locked", "USBに かきこめないよ" },
+	[APP_STATUS_STICK_UNUSABLE] = { "This stick cannot be used", "この USBは つかえないよ" },
+	[APP_STATUS_STICK_READY] = { "Stick ready: press Save", "USB OK! 「ほぞん」を おしてね" },
 };
 
 static const char *const attract_words[NLANGS] = {

@@ -32,18 +32,29 @@ static struct rgba faded(struct rgba c, float a)
 	return c;
 }
 
+static bool good_news(enum app_status s)
+{
+	return s == APP_STATUS_SAVED || s == APP_STATUS_SAVED_USB || s == APP_STATUS_STICK_READY;
+}
+
 static struct rgba status_colour(enum app_status s)
 {
-	if (s == APP_STATUS_SAVED)
+	if (good_news(s))
 		return (struct rgba){ 0.24f, 0.58f, 0.22f, 1.0f };
+	if (s == APP_STATUS_SAVING)
+		return (struct rgba){ 0.20f, 0.45f, 0.78f, 1.0f };
 	return (struct rgba){ 0.86f, 0.36f, 0.12f, 1.0f };
 }
 
-/* A tick for good news, "!" for bad, white in a disc of the message's colour. */
+/* A tick for good news, three dots for something under way, "!" for bad, white in a
+ * disc of the message's colour. */
 static void status_icon(struct batch *b, enum app_status s, struct pt c, double r, float a)
 {
 	batch_disc(b, c, r, faded(status_colour(s), a));
-	if (s == APP_STATUS_SAVED) {
+	if (s == APP_STATUS_SAVING) {
+		for (int i = -1; i <= 1; i++)
+			batch_disc(b, (struct pt){ c.x + 0.42 * r * i, c.y }, 0.14 * r, faded(white, a));
+	} else if (good_news(s)) {
 		const struct pt tick[3] = { { c.x - 0.45 * r, c.y + 0.02 * r },
 					    { c.x - 0.12 * r, c.y + 0.36 * r },
 					    { c.x + 0.48 * r, c.y - 0.32 * r } };

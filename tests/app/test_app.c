@@ -168,6 +168,25 @@ int main(void)
 	ev_button(app, BUTTON_EXPORT);
 	CHECK_INT(app_take_requests(app), APP_REQUEST_EXPORT);
 	CHECK_INT(app_take_requests(app), 0);
+	/* the answer: a message for APP_STATUS_US; a held one (saving) until the next */
+	{
+		uint64_t until;
+
+		app_set_status(app, APP_STATUS_SAVED, 1000);
+		CHECK_INT(app_status_at(app, 999, NULL), APP_STATUS_NONE);
+		CHECK_INT(app_status_at(app, 1000, &until), APP_STATUS_SAVED);
+		CHECK_INT(until, 1000 + APP_STATUS_US);
+		CHECK_INT(app_status_at(app, until, NULL), APP_STATUS_NONE);
+		app_hold_status(app, APP_STATUS_SAVING, 2000);
+		CHECK_INT(app_status_at(app, 2000 + 3600u * 1000000u, &until), APP_STATUS_SAVING);
+		CHECK(until == UINT64_MAX);
+		app_set_status(app, APP_STATUS_SAVED_USB, 5000);
+		CHECK_INT(app_status_at(app, 5000 + APP_STATUS_US, NULL), APP_STATUS_NONE);
+		app_hold_status(app, APP_STATUS_NONE, 6000);
+		CHECK(!app->status_held);
+		app_set_status(app, APP_STATUS_COUNT, 7000); /* out of range: none */
+		CHECK_INT(app_status_at(app, 7000, NULL), APP_STATUS_NONE);
+	}
 
 	/* 3D: the lift is one undoable edit; the front view stays the sketch */
 	{

@@ -163,6 +163,26 @@ static void test_tree(void)
 	CHECK_INT(obj.len, obj2.len);
 	CHECK(!memcmp(obj.data, obj2.data, obj.len));
 
+	/* renamed afterwards (the kiosk names its files once the obj is built): only the
+	 * mtllib line changes, both ways, longer and shorter */
+	{
+		static const char head[] = "# edaha tree: metres, y up\nmtllib tree-10042.mtl\n";
+		size_t was = obj.len;
+
+		CHECK_INT(export_obj_mtllib(&obj2, "tree-10042.mtl"), 0);
+		CHECK_INT(obj2.len, was + strlen("tree-10042.mtl") - strlen("tree.mtl"));
+		CHECK(!memcmp(obj2.data, head, sizeof(head) - 1));
+		CHECK(!memcmp(obj2.data + sizeof(head) - 1, obj.data + (sizeof(head) - 1) - 6,
+			      was - (sizeof(head) - 1 - 6)));
+		CHECK_INT(export_obj_mtllib(&obj2, "tree.mtl"), 0);
+		CHECK_INT(obj2.len, obj.len);
+		CHECK(!memcmp(obj.data, obj2.data, obj.len));
+		CHECK_INT(export_obj_mtllib(&obj2, "a\nb"), -EINVAL);
+		CHECK_INT(export_obj_mtllib(&obj2, ""), -EINVAL);
+		CHECK_INT(export_obj_mtllib(&mtl2, "x.mtl"), -EINVAL); /* no mtllib line */
+		CHECK(!memcmp(obj.data, obj2.data, obj.len));
+	}
+
 	/* bad names are refused, nothing written */
 	buf_reset(&obj2);
 	buf_reset(&mtl2);

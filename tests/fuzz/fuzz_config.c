@@ -72,7 +72,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		abort();
 	if (c.kiosk.attract_after_s < 0 || c.kiosk.attract_after_s > CONFIG_ATTRACT_S_MAX)
 		abort();
-	if (c.kiosk.export_dir[0] != '/' || !memchr(c.kiosk.export_dir, '\0', sizeof(c.kiosk.export_dir)))
+	/* absolute, or "" for none */
+	check_name(c.kiosk.export_dir, sizeof(c.kiosk.export_dir));
+	if (c.kiosk.export_dir[0] && c.kiosk.export_dir[0] != '/')
+		abort();
+	check_name(c.usb.helper_socket, sizeof(c.usb.helper_socket));
+	if (c.usb.helper_socket[0] != '/')
 		abort();
 	return 0;
 }

@@ -36,6 +36,8 @@ static void check_defaults(const struct config *c)
 	CHECK_INT(c->language, CONFIG_LANG_EN);
 	CHECK_INT(c->kiosk.attract_after_s, CONFIG_ATTRACT_S_DEFAULT);
 	CHECK(strcmp(c->kiosk.export_dir, CONFIG_EXPORT_DIR_DEFAULT) == 0);
+	CHECK(c->usb.enabled);
+	CHECK(strcmp(c->usb.helper_socket, CONFIG_USB_SOCKET_DEFAULT) == 0);
 	CHECK(c->font[0] == '\0');
 	for (int b = 0; b < BUTTON_COUNT; b++) {
 		CHECK(!c->gpio.buttons[b].set);
@@ -96,7 +98,9 @@ static void test_good(const char *dir)
 	CHECK_INT(c.gpio.debounce_ms, 30);
 	CHECK_INT(c.language, CONFIG_LANG_JA);
 	CHECK_INT(c.kiosk.attract_after_s, 300);
-	CHECK(strcmp(c.kiosk.export_dir, "/media/usb/edaha") == 0);
+	CHECK(strcmp(c.kiosk.export_dir, "/srv/edaha/exports") == 0);
+	CHECK(!c.usb.enabled);
+	CHECK(strcmp(c.usb.helper_socket, "/run/edaha-test/usb.sock") == 0);
 	CHECK(strcmp(c.font, "/usr/share/fonts/truetype/vlgothic/VL-PGothic-Regular.ttf") == 0);
 
 	l = &c.gpio.buttons[BUTTON_3D];
@@ -134,6 +138,10 @@ static void test_good(const char *dir)
 	static const char font_auto[] = "font: auto\n";
 	CHECK_INT(config_parse(font_auto, strlen(font_auto), "font", &c, NULL, &err), 0);
 	CHECK(c.font[0] == '\0');
+	/* no local copy, the stick alone */
+	static const char no_copy[] = "kiosk:\n  export_dir: none\n";
+	CHECK_INT(config_parse(no_copy, strlen(no_copy), "none", &c, NULL, &err), 0);
+	CHECK(c.kiosk.export_dir[0] == '\0' && c.usb.enabled);
 	static const char mode[] = "display:\n  mode: 800x480\n";
 	CHECK_INT(config_parse(mode, strlen(mode), "mode", &c, NULL, &err), 0);
 	CHECK_INT(c.display.mode_w, 800);

@@ -9,10 +9,35 @@
 #define TUBE_SIDES 10
 #define PI 3.14159265358979323846
 
-const char *const scene_names[] = { "leaf", "eraser", "kiosk", "saved", "save-failed-ja", NULL };
+const char *const scene_names[] = { "leaf", "eraser", "kiosk", "saved", "save-failed-ja",
+				    "saving", "saved-usb-ja", "stick-pulled", "no-stick-ja", NULL };
 
-/* The status scenes are drawn a second into their message. */
+/* The status scenes are drawn a second into their message; a held one (saving) ten
+ * seconds in, long after another would have gone. */
 #define STATUS_AT_US 5000000u
+
+static const struct {
+	const char *scene;
+	enum app_status status;
+	bool held;
+} status_scenes[] = {
+	{ "saved", APP_STATUS_SAVED, false },
+	{ "save-failed-ja", APP_STATUS_SAVE_FAILED, false },
+	{ "saving", APP_STATUS_SAVING, true },
+	{ "saved-usb-ja", APP_STATUS_SAVED_USB, false },
+	{ "stick-pulled", APP_STATUS_STICK_PULLED, false },
+	{ "no-stick-ja", APP_STATUS_NO_STICK, false },
+};
+#define NSTATUS_SCENES (sizeof(status_scenes) / sizeof(status_scenes[0]))
+
+/* The index of a status scene, or -1. */
+static int status_scene(const char *name)
+{
+	for (size_t i = 0; i < NSTATUS_SCENES; i++)
+		if (!strcmp(name, status_scenes[i].scene))
+			return (int)i;
+	return -1;
+}
 
 static int reserve(struct mesh *m, size_t nv, size_t ni)
 {
@@ -233,16 +258,19 @@ int scene_build(struct app *app, const char *name)
 		app->buttons_down[BUTTON_CLONE] = true;
 		app->buttons_down[BUTTON_EXPORT] = true;
 		r = build_stroke(app, EVENT_TOOL_ERASER, 250, 200, 420, 260, -0.2);
-	} else if (!strcmp(name, "saved") || !strcmp(name, "save-failed-ja")) {
+	} else if (status_scene(name) >= 0) {
 		/* the kiosk's size, the pen away, a message over the drawing */
-		bool saved = !strcmp(name, "saved");
+		int i = status_scene(name);
 
 		view_init(&app->view, 1280, 800);
-		app->mode = saved ? APP_MODE_SKETCH : APP_MODE_PROPAGATE;
+		app->mode = !strcmp(name, "save-failed-ja") ? APP_MODE_PROPAGATE : APP_MODE_SKETCH;
 		app->doc.nops = 5;
 		app->doc.cursor = 5;
 		app->last_time_us = STATUS_AT_US;
-		app_set_status(app, saved ? APP_STATUS_SAVED : APP_STATUS_SAVE_FAILED, STATUS_AT_US);
+		if (status_scenes[i].held)
+			app_hold_status(app, status_scenes[i].status, STATUS_AT_US);
+		else
+			app_set_status(app, status_scenes[i].status, STATUS_AT_US);
 		r = 0;
 	} else if (!strcmp(name, "kiosk")) {
 		/* the kiosk's own size, sketch mode, the pen hovering near the tree */
@@ -266,8 +294,10 @@ int scene_build(struct app *app, const char *name)
 
 uint64_t scene_time_us(const char *name)
 {
-	if (!strcmp(name, "saved") || !strcmp(name, "save-failed-ja"))
-		return STATUS_AT_US + 1000000u;
+	int i = status_scene(name);
+
+	if (i >= 0)
+		return STATUS_AT_US + (status_scenes[i].held ? 10000000u : 1000000u);
 	return UINT64_MAX;
 }
 

@@ -5,7 +5,7 @@
 # KMS and a writable results folder. TCG, not KVM: a nested KVM guest hangs in early boot.
 #
 #   vm.sh [-t SECONDS] [-o DIR] [-g bochs|virtio|none] [-s WxH] [-v SOCKET] [-r DIR]
-#         [-i sh|systemd] -- COMMAND [ARGS...]
+#         [-i sh|systemd] [-u] [-q SOCKET] -- COMMAND [ARGS...]
 #     -t  time limit for the whole VM (default 120)
 #     -o  host DIR mounted read-write at /out in the guest
 #     -g  display device (default bochs: bochs-display)
@@ -17,6 +17,9 @@
 #         (systemd boots edaha-vmtest.target: sysinit with udev, journald, sysusers and
 #         tmpfiles, then COMMAND as the unit edaha-vmtest.service, output on the console;
 #         /tmp is the guest's own tmpfs, and VM_APPEND adds to the kernel command line)
+#     -u  an xHCI USB controller (id xhci) to hot-plug USB sticks on (usb-storage,
+#         bus=xhci.0) through QMP
+#     -q  QEMU's QMP monitor on the unix SOCKET (qmp.py: plug and pull sticks)
 #   Environment: KVER (kernel version, default the newest in /lib/modules),
 #   VM_CACHE (where the initramfs is kept, default /tmp/edaha-vm-cache), VM_VERBOSE=1,
 #   VM_LOCK (the lock file that lets one guest run at a time, default /tmp/edaha-vm.lock).
@@ -27,8 +30,8 @@
 # Packages: qemu-system-x86 linux-image-amd64 busybox-static cpio kmod udev.
 set -euo pipefail
 
-limit=120 out="" gpu=bochs size=1280x800 vnc="" extra="" init=sh
-while getopts "t:o:g:s:v:r:i:" opt; do
+limit=120 out="" gpu=bochs size=1280x800 vnc="" extra="" init=sh usb="" qmp=""
+while getopts "t:o:g:s:v:r:i:uq:" opt; do
 	case $opt in
 	t) limit=$OPTARG ;;
 	o) mkdir -p "$OPTARG"; out=$(realpath "$OPTARG") ;;
@@ -37,6 +40,8 @@ while getopts "t:o:g:s:v:r:i:" opt; do
 	v) vnc=$OPTARG ;;
 	r) extra=$(realpath "$OPTARG") ;;
 	i) init=$OPTARG ;;
+	u) usb=1 ;;
+	q) qmp=$OPTARG ;;
 	*) exit 2 ;;
 	esac
 done
@@ -189,6 +194,8 @@ if [ -n "$out" ]; then
 	qemu+=(-fsdev local,id=out,path="$out",security_model=none -device virtio-9p-pci,fsdev=out,mount_tag=out)
 fi
 [ -n "$vnc" ] && qemu+=(-vnc "unix:$vnc")
+[ -n "$usb" ] && qemu+=(-device qemu-xhci,id=xhci)
+[ -n "$qmp" ] && qemu+=(-qmp "unix:$qmp,server=on,wait=off")
 if [ -n "$extra" ]; then
 	qemu+=(-fsdev local,id=extra,path="$extra",security_model=none,readonly=on,multidevs=remap
 		-device virtio-9p-pci,fsdev=extra,mount_tag=extra)

@@ -1,0 +1,228 @@
+/* SPDX-License-Identifier: MIT */
+#define _GNU_SOURCE /* renameat2, RENAME_NOREPLACE */
+#include "export_set.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "export.h"
+#include "pngio.h"
+
+/* The OBJ is built before its name is known; export_set_write renames the MTL it uses. */
+#define EXPORT_SET_MTL_PLACEHOLDER "tree.mtl"
+#define NAME_SIZE 48
+
+void export_set_init(struct export_set *s)
+{
+	for (size_t i = 0; i < EXPORT_NAMES_NSUFFIXES; i++)
+		buf_init(&s->files[i]);
+}
+
+void export_set_finish(struct export_set *s)
+{
+	for (size_t i = 0; i < EXPORT_NAMES_NSUFFIXES; i++)
+		buf_finish(&s->files[i]);
+}
+
+int export_set_build(struct export_set *s, const struct app *app, const uint8_t *rgba,
+		     struct error *err)
+{
+	struct buf *f = s->files;
+	int r;
+
+	for (size_t i = 0; i < EXPORT_NAMES_NSUFFIXES; i++)
+		buf_reset(&f[i]);
+	if ((r = export_glb(&app->mesh, &f[EXPORT_SET_GLB])) < 0)
+		return error_set(err, r, "cannot build the .glb: %s", strerror(-r));
+	r = export_obj(&app->mesh, EXPORT_SET_MTL_PLACEHOLDER, &f[EXPORT_SET_OBJ],
+		       &f[EXPORT_SET_MTL]);
+	if (r < 0)
+		return error_set(err, r, "cannot build the .obj: %s", strerror(-r));
+	if ((r = doc_serialize(&app->doc, &app->tree, &f[EXPORT_SET_EDAHA])) < 0)
+		return error_set(err, r, "cannot build the .edaha: %s", strerror(-r));
+	if (rgba)
+		return pngio_encode_rgba(rgba, app->view.width, app->view.height,
+					 &f[EXPORT_SET_PNG], err);
+	return 0;
+}
+
+int export_set_pick(int dirfd, unsigned *number, struct error *err)
+{
+	/* a fresh open file description: dirfd's offset stays where it is */
+	int fd = openat(dirfd, ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+	struct export_names *names;
+	struct dirent *d;
+	DIR *dir;
+	int r = 0;
+
+	if (fd < 0)
+		return error_set(err, -errno, "cannot open the directory: %s", strerror(errno));
+	dir = fdopendir(fd);
+	if (!dir) {
+		r = -errno;
+		close(fd);
+		return error_set(err, r, "cannot list the directory: %s", strerror(-r));
+	}
+	/* 12 KiB of bits: on the heap, as this runs on threads with small stacks too */
+	names = malloc(sizeof(*names));
+	if (!names) {
+		closedir(dir);
+		return error_set(err, -ENOMEM, "out of memory");
+	}
+	export_names_init(names);
+	for (;;) {
+		errno = 0;
+		d = readdir(dir);
+		if (!d) {
+			if (errno)
+				r = error_set(err, -errno, "cannot list the directory: %s",
+					      strerror(errno));
+			break;
+		}
+		/* ours, from a write the stick was pulled in: never a final name, so safe to
+		 * remove (a directory of that name stays: unlinkat refuses it) */
+		if (export_names_add(names, d->d_name) == EXPORT_NAME_TEMP)
+			(void)unlinkat(dirfd, d->d_name, 0);
+	}
+	closedir(dir);
+	if (r == 0 && export_names_next(names, number) < 0)
+		r = error_set(err, -ENOSPC, "every name tree-0001 to tree-%u is taken",
+			      EXPORT_NAMES_MAX);
+	free(names);
+	return r;
+}
+
+int export_set_rename(int dirfd, const char *from, const char *to, bool noreplace)
+{
+	struct stat st;
+
+	if (noreplace) {
+		if (renameat2(dirfd, from, dirfd, to, RENAME_NOREPLACE) == 0)
+			return 0;
+		if (errno != EINVAL && errno != ENOSYS)
+			return -errno;
+	}
+	if (fstatat(dirfd, to, &st, AT_SYMLINK_NOFOLLOW) == 0)
+		return -EEXIST;
+	if (errno != ENOENT)
+		return -errno;
+	return renameat(dirfd, from, dirfd, to) < 0 ? -errno : 0;
+}
+
+static int write_all(int fd, const unsigned char *p, size_t len)
+{
+	while (len > 0) {
+		/* chunks: a slow stick's writes return, and a signal interrupts them, sooner */
+		ssize_t n = write(fd, p, len < (1u << 20) ? len : (1u << 20));
+
+		if (n < 0) {
+			if (errno == EINTR)
+				continue;
+			return -errno;
+		}
+		if (n == 0)
+			return -EIO;
+		p += n;
+		len -= (size_t)n;
+	}
+	return 0;
+}
+
+/* One temporary: created (never over anything, never through a symlink), written,
+ * fsynced, closed. 0 or -errno. */
+static int write_temp(int dirfd, const char *tmp, const struct buf *b)
+{
+	int fd = openat(dirfd, tmp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+	int r;
+
+	if (fd < 0)
+		return -errno;
+	r = write_all(fd, b->data, b->len);
+	if (r == 0 && fsync(fd) < 0)
+		r = -errno;
+	if (close(fd) < 0 && r == 0)
+		r = -errno;
+	return r;
+}
+
+int export_set_write(int dirfd, struct export_set *s, unsigned number, struct error *err)
+{
+	char tmp[EXPORT_NAMES_NSUFFIXES][NAME_SIZE], final[EXPORT_NAMES_NSUFFIXES][NAME_SIZE];
+	bool wrote[EXPORT_NAMES_NSUFFIXES] = { false }, renamed[EXPORT_NAMES_NSUFFIXES] = { false };
+	size_t i;
+	int r = 0;
+
+	for (i = 0; i < EXPORT_NAMES_NSUFFIXES; i++) {
+		const char *sfx = export_names_suffixes[i];
+
+		if (export_names_format(tmp[i], NAME_SIZE, number, sfx, true) < 0 ||
+		    export_names_format(final[i], NAME_SIZE, number, sfx, false) < 0)
+			return error_set(err, -EINVAL, "bad set number %u", number);
+	}
+	/* the OBJ names its own MTL */
+	r = export_obj_mtllib(&s->files[EXPORT_SET_OBJ], final[EXPORT_SET_MTL]);
+	if (r < 0)
+		return error_set(err, r, "cannot name the .mtl in the .obj: %s", strerror(-r));
+	for (i = 0; i < EXPORT_NAMES_NSUFFIXES; i++) {
+		if (i == EXPORT_SET_PNG && s->files[i].len == 0)
+			continue;
+		r = write_temp(dirfd, tmp[i], &s->files[i]);
+		/* even a failed create may have made the name (EIO after it): remove it
+		 * unless it was there before us */
+		wrote[i] = r != -EEXIST;
+		if (r < 0) {
+			error_set(err, r, "%s: %s", final[i], strerror(-r));
+			goto undo;
+		}
+	}
+	for (i = 0; i < EXPORT_NAMES_NSUFFIXES; i++) {
+		if (!wrote[i])
+			continue;
+		r = export_set_rename(dirfd, tmp[i], final[i], true);
+		if (r < 0) {
+			error_set(err, r, "%s: rename: %s", final[i], strerror(-r));
+			goto undo;
+		}
+		renamed[i] = true;
+	}
+	if (fsync(dirfd) < 0) {
+		r = -errno;
+		error_set(err, r, "fsync of the directory: %s", strerror(-r));
+		goto undo;
+	}
+	return 0;
+
+undo:
+	/* on a pulled stick these fail too; nothing then reaches it anyway */
+	for (i = 0; i < EXPORT_NAMES_NSUFFIXES; i++) {
+		if (renamed[i])
+			(void)unlinkat(dirfd, final[i], 0);
+		else if (wrote[i])
+			(void)unlinkat(dirfd, tmp[i], 0);
+	}
+	(void)fsync(dirfd);
+	return r;
+}
+
+int export_set_save(int dirfd, struct export_set *s, char *base, size_t base_size,
+		    struct error *err)
+{
+	unsigned number;
+	int r = -EEXIST;
+
+	/* a name taken between the listing and the write: once more, past it */
+	for (int attempt = 0; attempt < 2 && r == -EEXIST; attempt++) {
+		r = export_set_pick(dirfd, &number, err);
+		if (r == 0)
+			r = export_set_write(dirfd, s, number, err);
+	}
+	if (r == 0 && export_names_format(base, base_size, number, "", false) < 0)
+		r = error_set(err, -ENAMETOOLONG, "no room for the name");
+	return r;
+}

@@ -1,0 +1,58 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+/*
+ * What the export button writes, as bytes in memory first and then as files in a
+ * directory given by its fd (a USB stick's edaha/ from edaha-usb-helper, or
+ * kiosk.export_dir): tree-NNNN.glb, .obj + .mtl, .png (when there is a picture) and
+ * .edaha. The bytes are built on the kiosk's main thread, which owns the app; the
+ * writing may happen on another thread, as it only touches the set and the fd.
+ *
+ * The rules, for a stick that may be pulled, full or hostile at any moment:
+ *  - never over anything: the number is one no name in the directory has (one readdir,
+ *    case-insensitive, export_names.h), and renames refuse to replace (RENAME_NOREPLACE);
+ *  - never through a symlink: every file is created O_EXCL | O_NOFOLLOW relative to the
+ *    directory fd;
+ *  - never half a file under a final name: each file goes to a temporary
+ *    .tree-NNNN.EXT.tmp, is written and fsynced; only when all are, they are renamed
+ *    and the directory is fsynced;
+ *  - on failure nothing of the set is left that can be removed: no temporaries, no
+ *    final names.
+ */
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "app.h"
+#include "buf.h"
+#include "error.h"
+#include "export_names.h"
+
+/* The files, in export_names_suffixes' order; an empty png is not written. */
+enum export_set_file { EXPORT_SET_GLB, EXPORT_SET_OBJ, EXPORT_SET_MTL, EXPORT_SET_PNG,
+		       EXPORT_SET_EDAHA };
+
+struct export_set {
+	struct buf files[EXPORT_NAMES_NSUFFIXES];
+};
+
+void export_set_init(struct export_set *s);
+void export_set_finish(struct export_set *s);
+/* The app's drawing as the set's bytes, the picture from rgba (app->view's size, top row
+ * first) when given. 0 or -ENOMEM / -EFBIG with a message. */
+int export_set_build(struct export_set *s, const struct app *app, const uint8_t *rgba,
+		     struct error *err);
+/* Lists dirfd once: the number for the next set, and removes temporaries of ours an
+ * interrupted write left behind. 0, -ENOSPC (every number taken) or -errno. */
+int export_set_pick(int dirfd, unsigned *number, struct error *err);
+/* Writes the set as that number (the rules above). 0, or -errno with a message naming
+ * the file; -EEXIST when one of its names turned up meanwhile. */
+int export_set_write(int dirfd, struct export_set *s, unsigned number, struct error *err);
+/* pick and write, once more with a new number if a name turned up taken meanwhile. On
+ * success base is "tree-NNNN". */
+int export_set_save(int dirfd, struct export_set *s, char *base, size_t base_size,
+		    struct error *err);
+/* Renames from to to in dirfd, failing with EEXIST rather than replacing: renameat2's
+ * RENAME_NOREPLACE, or where a filesystem lacks it (EINVAL) or noreplace is false, a
+ * check that to is no name followed by renameat (safe: we are the only writer). */
+int export_set_rename(int dirfd, const char *from, const char *to, bool noreplace);
