@@ -165,6 +165,7 @@ check "the screen is the kiosk's empty canvas (imgcmp against reference-1280x800
 sleep 2 # the journal's lines about the start are forwarded a moment later
 check "systemd had edaha.service READY (Type=notify)" grep -q -a 'Started edaha.service' "$log"
 check "edaha runs on the card through seatd" grep -q -a 'edaha: kiosk on /dev/dri/card0 .*libseat (seatd)' "$log"
+check "edaha-usb.socket listens for the kiosk's USB sticks" grep -q -a 'Listening on edaha-usb.socket' "$log"
 check "/etc/edaha/edaha.conf read without a word about it" \
 	bash -c "! grep -a 'edaha.conf:[0-9]*:' '$log'"
 check "no login prompt on tty1 (getty@tty1 never started)" bash -c "! grep -q -a 'Started getty@tty1' '$log'"

@@ -187,6 +187,18 @@ mkroot() { # file: an ext4 filesystem of ROOT, labelled edaha-root
 	E2FSPROGS_FAKE_TIME=$SOURCE_DATE_EPOCH mkfs.ext4 -q -F -t ext4 -L edaha-root \
 		-U "$(uuid "root $ARCH")" -E "hash_seed=$(uuid "hash $ARCH"),lazy_itable_init=0" \
 		-N "$inodes" -d "$ROOT" "$1" "${root_mb}M" >/dev/null || die "mkfs.ext4 -d failed"
+	# mkfs.ext4 -d copies each file's change time (ctime), which no one can set on this
+	# machine's files, and its access time, which reading the directories here changed:
+	# both SOURCE_DATE_EPOCH in the image, every inode by its path (debugfs leaves the
+	# superblock's write time alone with the fake time)
+	local path errors
+	find "$ROOT" -xdev -printf '%P\0' | while IFS= read -r -d '' path; do
+		case $path in *'"'* | *$'\n'*) die "a path debugfs cannot name: $path" ;; esac
+		printf 'sif "/%s" ctime @%s\nsif "/%s" atime @%s\n' "$path" "$SOURCE_DATE_EPOCH" "$path" "$SOURCE_DATE_EPOCH"
+	done > "$WORK/ctime.debugfs"
+	errors=$(E2FSPROGS_FAKE_TIME=$SOURCE_DATE_EPOCH debugfs -w -f "$WORK/ctime.debugfs" "$1" 2>&1 >/dev/null | grep -v '^debugfs [0-9.]* (' || true)
+	[ -z "$errors" ] || die "debugfs could not set the change times: $(head -5 <<<"$errors")"
+	e2fsck -fn "$1" >/dev/null 2>&1 || die "the root filesystem does not pass e2fsck -fn"
 }
 rm -f "$OUT"/{root.img,disk.img,vmlinuz,initrd.img,cmdline.txt,manifest.txt,SHA256SUMS,reference-*.png}
 kver=$(ls "$ROOT/lib/modules" | sort -V | tail -1)

@@ -11,8 +11,10 @@ in_root() { chroot "$root" "$@"; }
 lang=$(sed -n 's/^language: *\([a-z]*\).*/\1/p' "$HERE/edaha-$ARCH.conf")
 
 [ -x "$root/usr/bin/edaha" ] || { echo "customize: no /usr/bin/edaha in the root" >&2; exit 1; }
-[ -f "$root/usr/lib/systemd/system/edaha.service" ] ||
-	{ echo "customize: meson installed no edaha.service" >&2; exit 1; }
+for unit in edaha.service edaha-usb.socket edaha-usb@.service; do
+	[ -f "$root/usr/lib/systemd/system/$unit" ] ||
+		{ echo "customize: meson installed no $unit" >&2; exit 1; }
+done
 
 # --- who and where ---
 echo edaha > "$root/etc/hostname"
@@ -48,6 +50,8 @@ in_root passwd --status root | grep -q ' L ' || { echo "customize: root is not l
 # --- boot straight into the kiosk ---
 in_root systemctl set-default multi-user.target
 in_root systemctl enable edaha.service seatd.service
+# the export button's USB sticks: edaha-usb-helper, one per connection (docs/usb.md)
+in_root systemctl enable edaha-usb.socket
 # tty1 is the kiosk's: no login prompt there, ever (edaha.service also Conflicts= with it;
 # masked, as nothing may start it first). logind (for the power button: a clean
 # shutdown) spawns no login on any other VT either, and keeps none in reserve.
