@@ -38,7 +38,8 @@ int journal_record(const struct doc *d, size_t from, struct buf *out)
 	 * effect (the record carries the real cursor) */
 	struct doc part = {
 		.seed = d->seed,
-		.ops = d->ops + (from < d->nops ? from : d->nops),
+		/* an empty drawing has no array: NULL + 0 is undefined */
+		.ops = from < d->nops ? d->ops + from : NULL,
 		.nops = from < d->nops ? d->nops - from : 0,
 		.view = d->view,
 	};
