@@ -253,4 +253,4 @@ cp "$WORK/reference-1280x800.png" "$OUT/"
 	cat "$WORK/packages.tsv"
 } > "$OUT/manifest.txt"
 (cd "$OUT" && sha256sum "${images[@]}" cmdline.txt manifest.txt reference-1280x800.png > SHA256SUMS)
-step "done: $OUT ($(cd "$OUT" && du -sh --apparent-size "${images[@]}" | awk '{printf "%s%s %s", sep, $2, $1; sep=", "}'); $(wc -l < "$WORK/packages.tsv") packages"
+step "done: $OUT ($(cd "$OUT" && du -sh --apparent-size "${images[@]}" | awk '{printf "%s%s %s", sep, $2, $1; sep=", "}'); $(wc -l < "$WORK/packages.tsv") packages)"
