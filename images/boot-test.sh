@@ -3,7 +3,9 @@
 # the kiosk: systemd starts edaha.service by itself, edaha reports its first
 # frame on screen (READY to systemd), and the screen QEMU shows is edaha's empty canvas (the
 # image's own headless render, reference-1280x800.png) rather than a console or a black
-# screen. Then a power-off, which the kiosk must survive cleanly.
+# screen. Then a FAT USB stick is plugged in and the pointer clicks Save: the tree must be
+# on the stick (read back with mtools once the guest is off). Last a power-off, which the
+# kiosk must come through cleanly.
 #
 #   images/boot-test.sh [-t SECONDS] OUT
 #     OUT  build.sh's output directory; the serial log and the screenshot go to
@@ -23,7 +25,7 @@
 # stderr among it) comes out on the serial port. TCG, not KVM (a nested KVM guest hangs
 # here); the display at 1280x800. Exit 0 when every check holds, 1 when one fails, 77
 # when QEMU is missing.
-# Packages: qemu-system-x86 (amd64), qemu-system-arm mtools fdisk (arm64); for IMGCMP,
+# Packages: qemu-system-x86 (amd64), qemu-system-arm fdisk (arm64), mtools dosfstools; for IMGCMP,
 # tools/deps.sh's BUILD_PKGS.
 set -euo pipefail
 HERE=$(cd "$(dirname "$0")" && pwd)
@@ -54,9 +56,11 @@ if [ $arch = amd64 ]; then
 	command -v qemu-system-x86_64 >/dev/null || skip "no qemu-system-x86_64 (apt-get install qemu-system-x86)"
 else
 	command -v qemu-system-aarch64 >/dev/null || skip "no qemu-system-aarch64 (apt-get install qemu-system-arm)"
-	command -v mcopy >/dev/null || skip "no mcopy (apt-get install mtools)"
 	command -v sfdisk >/dev/null || skip "no sfdisk (apt-get install fdisk)"
 fi
+# the USB stick: made, and read back
+command -v mcopy >/dev/null || skip "no mcopy (apt-get install mtools)"
+command -v mkfs.vfat >/dev/null || skip "no mkfs.vfat (apt-get install dosfstools)"
 
 if [ -z "${IMGCMP:-}" ]; then
 	b=${IMAGE_CACHE:-/tmp/edaha-image-cache}/imgcmp-build
@@ -113,8 +117,9 @@ arm64)
 		-device virtio-gpu-pci,xres=1280,yres=800)
 	;;
 esac
+# a USB controller for the stick, and a pointer that clicks where it is told (absolute)
 "${qemu[@]}" -accel tcg,thread=multi -smp 2 -m 2048 -nodefaults -no-reboot -display none \
-	-device virtio-rng-pci -serial "file:$log" \
+	-device virtio-rng-pci -device qemu-xhci,id=xhci -device virtio-tablet-pci -serial "file:$log" \
 	-chardev "pipe,id=qmp,path=$T/qmp" -mon chardev=qmp,mode=control &
 qemu_pid=$!
 exec 3<>"$T/qmp.out" 4>"$T/qmp.in"
@@ -171,6 +176,38 @@ check "/etc/edaha/edaha.conf read without a word about it" \
 check "no login prompt on tty1 (getty@tty1 never started)" bash -c "! grep -q -a 'Started getty@tty1' '$log'"
 booted=$(grep -a -m1 -o 'Startup finished in .*' "$log" || true)
 
+# Save to a USB stick, as a visitor would: a FAT stick (no partition table, as many are) is
+# plugged in, then the pointer clicks the Save button
+wait_log() { # pattern seconds: the serial log has a line matching pattern within seconds
+	local i
+	for ((i = 0; i < $2; i++)); do
+		grep -q -a -- "$1" "$log" && return 0
+		kill -0 "$qemu_pid" 2>/dev/null || return 1
+		sleep 1
+	done
+	return 1
+}
+click() { # x y on the 1280x800 screen: QMP's absolute axes run 0..32767
+	local x=$(($1 * 32767 / 1279)) y=$(($2 * 32767 / 799)) e
+	for e in "{\"type\":\"abs\",\"data\":{\"axis\":\"x\",\"value\":$x}},{\"type\":\"abs\",\"data\":{\"axis\":\"y\",\"value\":$y}}" \
+		'{"type":"btn","data":{"down":true,"button":"left"}}' \
+		'{"type":"btn","data":{"down":false,"button":"left"}}'; do
+		qmp "{\"execute\":\"input-send-event\",\"arguments\":{\"events\":[$e]}}" | grep -q '"return"' || return 1
+		sleep 0.5
+	done
+}
+mkfs.vfat -n STICK -C "$T/stick.img" $((32 * 1024)) >/dev/null
+qmp "{\"execute\":\"blockdev-add\",\"arguments\":{\"driver\":\"raw\",\"node-name\":\"stick\",\"file\":{\"driver\":\"file\",\"filename\":\"$T/stick.img\"}}}" |
+	grep -q '"return"' || fail "QMP blockdev-add"
+qmp '{"execute":"device_add","arguments":{"driver":"usb-storage","bus":"xhci.0","drive":"stick","id":"stick-dev","removable":true}}' |
+	grep -q '"return"' || fail "QMP device_add usb-storage"
+check "the kiosk found the stick (usb: ... (vfat) is ready)" wait_log 'usb: sd[a-z0-9]* (vfat) is ready' 120
+# the Save button: the bottom one of the column on the right (src/layout.c) at 1280x800,
+# as reference-1280x800.png shows it
+click 1202 745 || fail "QMP input-send-event"
+check "Save wrote the tree to the stick (usb: saved tree-0001)" wait_log 'usb: saved tree-0001' 180
+saved=$(grep -a -m1 -o 'usb: saved tree-0001.*' "$log" || true)
+
 # power off, as pulling the plug politely would: edaha must stop on SIGTERM
 qmp '{"execute":"system_powerdown"}' >/dev/null || fail "QMP system_powerdown"
 for _ in $(seq 120); do kill -0 "$qemu_pid" 2>/dev/null || break; sleep 1; done
@@ -180,12 +217,18 @@ else
 	qemu_pid=""
 	check "edaha stopped cleanly at power-off" grep -q -a 'edaha: Terminated, stopping' "$log"
 fi
+# what the visitor takes home, read on this side with mtools
+files=$(mdir -b -i "$T/stick.img" ::/edaha/ 2>/dev/null | sed 's|.*/||' | sort | tr '\n' ' ')
+check "the stick holds edaha/tree-0001.{edaha,glb,mtl,obj,png} ($files)" \
+	test "$files" = "tree-0001.edaha tree-0001.glb tree-0001.mtl tree-0001.obj tree-0001.png "
+check "tree-0001.glb is glTF" bash -c "mtype -i '$T/stick.img' ::/edaha/tree-0001.glb | head -c4 | grep -q glTF"
 failed=$(grep -a 'Failed to start\|failed with result\|Dependency failed' "$log" || true)
 [ -z "$failed" ] || { echo "boot-test: units that failed:"; echo "$failed"; }
 check "no unit failed" test -z "$failed"
 
 stopped=$(since)
 echo "boot-test: ${booted:+systemd: $booted; }first frame $at s after QEMU started, off at $stopped s"
+[ -n "$saved" ] && echo "boot-test: $saved"
 echo "boot-test: serial log $log, screenshot $RES/screen.png"
 [ $ok = 1 ] || fail "the image did not come up as the kiosk (above)"
 echo "boot-test: PASS"
