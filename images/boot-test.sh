@@ -63,8 +63,9 @@ command -v mcopy >/dev/null || skip "no mcopy (apt-get install mtools)"
 command -v mkfs.vfat >/dev/null || skip "no mkfs.vfat (apt-get install dosfstools)"
 
 if [ -z "${IMGCMP:-}" ]; then
-	b=${IMAGE_CACHE:-/tmp/edaha-image-cache}/imgcmp-build
-	[ -f "$b/build.ninja" ] || meson setup "$b" "$REPO" >/dev/null ||
+	# one build per checkout: a build directory is tied to the source tree it was made from
+	b=${IMAGE_CACHE:-/tmp/edaha-image-cache}/imgcmp-build-$(printf %s "$REPO" | sha1sum | cut -c1-12)
+	[ -f "$b/build.ninja" ] || { rm -rf "$b" && meson setup "$b" "$REPO" >/dev/null; } ||
 		fail "cannot configure $REPO to build imgcmp (tools/deps.sh's BUILD_PKGS)"
 	meson compile -C "$b" tests/tools/imgcmp >/dev/null || fail "cannot build imgcmp"
 	IMGCMP=$b/tests/tools/imgcmp
@@ -139,7 +140,8 @@ qmp '{"execute":"qmp_capabilities"}' >/dev/null || fail "QMP capabilities"
 echo "boot-test: booting $OUT/${need[0]} ($arch, ${qemu[0]}, TCG, 2 CPUs, ${qemu[-1]%%,*} 1280x800; limit $limit s)"
 first=""
 while :; do
-	first=$(grep -m1 -a 'edaha: first frame on screen' "$log" || true)
+	# the serial console ends its lines with \r\n
+	first=$(grep -m1 -a 'edaha: first frame on screen' "$log" | tr -d '\r' || true)
 	[ -n "$first" ] && break
 	kill -0 "$qemu_pid" 2>/dev/null || { tail -30 "$log" >&2; fail "QEMU ended before the kiosk's first frame"; }
 	if grep -q -a 'edaha.service: Scheduled restart job' "$log"; then
@@ -174,7 +176,7 @@ check "edaha-usb.socket listens for the kiosk's USB sticks" grep -q -a 'Listenin
 check "/etc/edaha/edaha.conf read without a word about it" \
 	bash -c "! grep -a 'edaha.conf:[0-9]*:' '$log'"
 check "no login prompt on tty1 (getty@tty1 never started)" bash -c "! grep -q -a 'Started getty@tty1' '$log'"
-booted=$(grep -a -m1 -o 'Startup finished in .*' "$log" || true)
+booted=$(grep -a -m1 -o 'Startup finished in .*' "$log" | tr -d '\r' || true)
 
 # Save to a USB stick, as a visitor would: a FAT stick (no partition table, as many are) is
 # plugged in, then the pointer clicks the Save button
@@ -206,7 +208,7 @@ check "the kiosk found the stick (usb: ... (vfat) is ready)" wait_log 'usb: sd[a
 # as reference-1280x800.png shows it
 click 1202 745 || fail "QMP input-send-event"
 check "Save wrote the tree to the stick (usb: saved tree-0001)" wait_log 'usb: saved tree-0001' 180
-saved=$(grep -a -m1 -o 'usb: saved tree-0001.*' "$log" || true)
+saved=$(grep -a -m1 -o 'usb: saved tree-0001.*' "$log" | tr -d '\r' || true)
 
 # power off, as pulling the plug politely would: edaha must stop on SIGTERM
 qmp '{"execute":"system_powerdown"}' >/dev/null || fail "QMP system_powerdown"
