@@ -28,22 +28,12 @@ rc=$?
 [ $rc -eq 0 ] || fail "cannot build the gpio-sim module"
 . "$HERE/gl_env.sh"
 
-# the product as installed, plus the test's configuration and a drop-in with shorter
-# watchdog times (the guest is slow) and the environment the GL driver needs here
+# the product as installed, plus the test's configuration and shorter watchdog times (the
+# guest is slow)
+. "$HERE/installed_root.sh"
 root=$T/root
-meson install -C "$BUILD_ROOT" --destdir "$root" --no-rebuild --quiet >/dev/null ||
-	fail "meson install failed"
-unitdir=$(find "$root" -name edaha.service -path '*systemd/system/*' | head -1)
-[ -n "$unitdir" ] || fail "meson installed no edaha.service"
-mkdir -p "$root/etc/edaha" "$root/etc/systemd/system/edaha.service.d"
-cp "$HERE/service.conf" "$root/etc/edaha/edaha.conf"
-{
-	echo "[Service]"
-	echo "WatchdogSec=12"
-	echo "TimeoutAbortSec=3"
-	echo "RestartSec=1"
-	for e in "${guest_env[@]}"; do printf 'Environment="%s"\n' "$e"; done
-} > "$root/etc/systemd/system/edaha.service.d/test.conf"
+installed_root "$root" "$HERE/service.conf" WatchdogSec=12 TimeoutAbortSec=3 RestartSec=1 ||
+	fail "meson install into $root failed"
 
 "$VM" -t 600 -s 640x400 -i systemd -r "$root" -o "$T/vm" -- \
 	"$HERE/service_guest.sh" "$UINPUT_PEN" "$SCANOUT" "$KMOD_DIR"

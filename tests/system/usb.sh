@@ -53,16 +53,10 @@ rc=$?
 . "$HERE/gl_env.sh"
 
 # the product as installed, the test's configuration, the GL driver's environment
+. "$HERE/installed_root.sh"
 root=$T/root
-meson install -C "$BUILD_ROOT" --destdir "$root" --no-rebuild --quiet >/dev/null ||
-	fail "meson install failed"
+installed_root "$root" "$HERE/usb.conf" || fail "meson install into $root failed"
 find "$root" -name edaha-usb.socket | grep -q . || fail "meson installed no edaha-usb.socket"
-mkdir -p "$root/etc/edaha" "$root/etc/systemd/system/edaha.service.d"
-cp "$HERE/usb.conf" "$root/etc/edaha/edaha.conf"
-{
-	echo "[Service]"
-	for e in "${guest_env[@]}"; do printf 'Environment="%s"\n' "$e"; done
-} > "$root/etc/systemd/system/edaha.service.d/test.conf"
 # an ASan build's helper: LeakSanitizer's ptrace is outside the unit's system calls (the
 # helper's leaks are checked by tests/platform's usb_helper instead)
 if [ -n "${EDAHA_GL_PRELOAD:-}" ]; then
