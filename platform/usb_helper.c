@@ -35,6 +35,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "usb_fdpass.h"
 #include "usb_proto.h"
 #include "usb_stick.h"
 
@@ -237,28 +238,10 @@ static enum usb_reason do_eject(struct helper *h, const char *kname, struct usb_
 static int send_answer(int sock, const struct usb_answer *ans, int fd)
 {
 	char line[USB_PROTO_LINE_MAX];
-	union {
-		struct cmsghdr h;
-		char buf[CMSG_SPACE(sizeof(int))];
-	} cmsg;
-	struct iovec iov;
-	struct msghdr msg = { 0 };
 
 	if (usb_proto_format_answer(ans, line, sizeof(line)) < 0)
 		snprintf(line, sizeof(line), "error internal cannot say why\n");
-	iov = (struct iovec){ line, strlen(line) };
-	msg.msg_iov = &iov;
-	msg.msg_iovlen = 1;
-	if (fd >= 0) {
-		memset(&cmsg, 0, sizeof(cmsg));
-		msg.msg_control = cmsg.buf;
-		msg.msg_controllen = sizeof(cmsg.buf);
-		cmsg.h.cmsg_level = SOL_SOCKET;
-		cmsg.h.cmsg_type = SCM_RIGHTS;
-		cmsg.h.cmsg_len = CMSG_LEN(sizeof(int));
-		memcpy(CMSG_DATA(&cmsg.h), &fd, sizeof(int));
-	}
-	return sendmsg(sock, &msg, MSG_NOSIGNAL) == (ssize_t)iov.iov_len ? 0 : -errno;
+	return usb_fdpass_send(sock, line, fd);
 }
 
 /* Reads one line (up to its '\n' or the peer's end) within the timeout. */

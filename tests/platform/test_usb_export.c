@@ -7,7 +7,6 @@
  * pulled while saving, a second press while saving, and no USB at all.
  */
 #define _GNU_SOURCE
-#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <poll.h>
@@ -24,7 +23,9 @@
 
 #include "app.h"
 #include "usb_export.h"
+#include "usb_fdpass.h"
 #include "usb_proto.h"
+#include "dir_count.h"
 #include "test.h"
 
 static char root[] = "/tmp/edaha-usb-export-XXXXXX";
@@ -41,23 +42,7 @@ static int listen_fd;
 
 static void answer(int c, const char *line, int fd)
 {
-	union {
-		struct cmsghdr h;
-		char buf[CMSG_SPACE(sizeof(int))];
-	} cmsg;
-	struct iovec iov = { (void *)line, strlen(line) };
-	struct msghdr msg = { .msg_iov = &iov, .msg_iovlen = 1 };
-
-	if (fd >= 0) {
-		memset(&cmsg, 0, sizeof(cmsg));
-		msg.msg_control = cmsg.buf;
-		msg.msg_controllen = sizeof(cmsg.buf);
-		cmsg.h.cmsg_level = SOL_SOCKET;
-		cmsg.h.cmsg_type = SCM_RIGHTS;
-		cmsg.h.cmsg_len = CMSG_LEN(sizeof(int));
-		memcpy(CMSG_DATA(&cmsg.h), &fd, sizeof(int));
-	}
-	CHECK(sendmsg(c, &msg, MSG_NOSIGNAL) == (ssize_t)iov.iov_len);
+	CHECK_INT(usb_fdpass_send(c, line, fd), 0);
 }
 
 static void *fake_helper(void *unused)
@@ -132,19 +117,6 @@ static void wait_result(struct usb_export *ux)
 	CHECK_INT(src[0].dispatch(src[0].data), 0);
 }
 
-static int count_in(const char *dir, const char *prefix)
-{
-	DIR *d = opendir(dir);
-	struct dirent *e;
-	int n = 0;
-
-	CHECK(d);
-	while ((e = readdir(d)))
-		n += strncmp(e->d_name, prefix, strlen(prefix)) == 0;
-	closedir(d);
-	return n;
-}
-
 static void stick_there(const char *kname, bool there)
 {
 	char path[300];
@@ -201,9 +173,9 @@ static void test_sticks(struct app *app)
 	CHECK_INT(fake_ejects, 2);
 	snprintf(path, sizeof(path), "%s/tree-0001.png", stick_dir);
 	CHECK(access(path, F_OK) == 0);
-	CHECK_INT(count_in(stick_dir, "tree-0001."), 5);
-	CHECK_INT(count_in(local_dir, "tree-0001."), 5);
-	CHECK_INT(count_in(stick_dir, "tree-0002."), 0); /* the second press */
+	CHECK_INT(dir_count(AT_FDCWD, stick_dir, "tree-0001."), 5);
+	CHECK_INT(dir_count(AT_FDCWD, local_dir, "tree-0001."), 5);
+	CHECK_INT(dir_count(AT_FDCWD, stick_dir, "tree-0002."), 0); /* the second press */
 
 	/* full: nothing of the set left on it, the visitor told so */
 	CHECK_INT(getrlimit(RLIMIT_FSIZE, &old), 0);
@@ -215,8 +187,8 @@ static void test_sticks(struct app *app)
 	wait_result(ux);
 	CHECK_INT(setrlimit(RLIMIT_FSIZE, &old), 0);
 	CHECK_INT(last(), APP_STATUS_STICK_FULL);
-	CHECK_INT(count_in(stick_dir, "tree-0002"), 0);
-	CHECK_INT(count_in(stick_dir, ".tree-"), 0);
+	CHECK_INT(dir_count(AT_FDCWD, stick_dir, "tree-0002"), 0);
+	CHECK_INT(dir_count(AT_FDCWD, stick_dir, ".tree-"), 0);
 
 	/* pulled while saving: told at once, and again by the result */
 	pthread_mutex_lock(&fake_lock);
@@ -246,7 +218,7 @@ static void test_sticks(struct app *app)
 	wait_result(ux);
 	CHECK_INT(last(), APP_STATUS_NO_STICK);
 	/* 0001 the first save, 0002 the one whose stick was pulled (a full disk has none) */
-	CHECK_INT(count_in(local_dir, "tree-0003."), 5);
+	CHECK_INT(dir_count(AT_FDCWD, local_dir, "tree-0003."), 5);
 
 	/* a locked stick: said when it comes, and again on save */
 	set_answer("error read-only write-protected\n");
@@ -299,7 +271,7 @@ static void test_local_only(struct app *app)
 	CHECK(usb_export_busy(ux));
 	wait_result(ux);
 	CHECK_INT(last(), APP_STATUS_SAVED);
-	CHECK_INT(count_in(local_dir, "tree-0006."), 4); /* after the locked stick's two */
+	CHECK_INT(dir_count(AT_FDCWD, local_dir, "tree-0006."), 4); /* after the locked stick's two */
 	usb_export_destroy(ux);
 	/* a file where the directory should be */
 	snprintf(file, sizeof(file), "%s/plain", root);
