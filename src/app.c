@@ -10,6 +10,7 @@
 #include "lift.h"
 #include "propagate.h"
 #include "sketch.h"
+#include "tree_index.h"
 
 static void app_fail(struct app *app, int err)
 {
@@ -26,6 +27,7 @@ struct app *app_create(int width, int height, uint64_t seed)
 	view_init(&app->view, width, height);
 	doc_init(&app->doc, seed);
 	tree_init(&app->tree);
+	tree_index_keep(&app->tree); /* strokes find their branch in it, not by a scan */
 	tree_mesh_init(&app->mesh);
 	rng_seed(&app->rng, seed);
 	app->pattern = APP_PATTERN_AUTO;
@@ -60,6 +62,7 @@ static int apply_op(struct app *app, const struct doc_op *op)
 	case DOC_OP_LIFT: {
 		int ret = lift_tree(&app->tree, &app->rng, true);
 
+		tree_index_keep(&app->tree); /* the lifted tree is a new one */
 		return ret < 0 ? ret : SKETCH_CHANGED;
 	}
 	/* An edit whose branch is not there (a hand-edited file) does nothing. */

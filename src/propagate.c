@@ -205,21 +205,6 @@ static bool place(const struct example *ex, enum propagate_pattern p, double lt,
 	return true;
 }
 
-/* Removes every branch from nb and every leaf from nl on: undoes a failed call. */
-static void truncate_tree(struct tree *t, size_t nb, size_t nl)
-{
-	for (size_t i = nb; i < t->nbranches; i++) {
-		free(t->branches[i].points);
-		free(t->branches[i].radii);
-	}
-	for (size_t i = nl; i < t->nleaves; i++) {
-		free(t->leaves[i].points);
-		free(t->leaves[i].local);
-	}
-	t->nbranches = nb;
-	t->nleaves = nl;
-}
-
 /* Copies the example onto target `target`. Returns how many elements it added or
  * -ENOMEM (what it added stays; the caller truncates). */
 static int copy_onto(struct tree *t, struct example *ex, int target,
@@ -348,7 +333,7 @@ int propagate_apply(struct tree *t, int src, enum propagate_pattern p)
 			continue;
 		ret = copy_onto(t, &ex, (int)i, p, pts, radii);
 		if (ret < 0) {
-			truncate_tree(t, nb, nl);
+			tree_truncate(t, nb, nl); /* undoes a failed call */
 			goto out;
 		}
 		added += ret;

@@ -6,6 +6,7 @@
 
 #include "gesture.h"
 #include "sketch_view.h"
+#include "tree_index.h"
 
 /* Trunk root radius relative to its length, and how much thinner the tip gets. */
 #define TRUNK_RADIUS_PER_M 0.04
@@ -99,39 +100,40 @@ bool sketch_is_closed(const struct vec3 *p, size_t n)
 	return fabs(area) / 2 > SKETCH_MIN_LEAF_ROUNDNESS * len * len;
 }
 
-struct sketch_hit sketch_nearest(const struct tree *t, struct vec3 p)
+/* Every segment in order, squared distances; the first of equal ones wins. */
+static struct sketch_hit nearest_scan(const struct tree *t, struct vec3 p, double *best_d2)
 {
 	struct sketch_hit best = { .branch = -1, .dist = INFINITY };
-	double best_d2 = INFINITY, walked = 0.0, total = 0.0;
-	const struct branch *br;
 
-	/* Squared distances in the hot loop; the rest only for the winner. */
+	*best_d2 = INFINITY;
 	for (size_t b = 0; b < t->nbranches; b++) {
 		const struct vec3 *q = t->branches[b].points;
 
 		for (size_t i = 0; i + 1 < t->branches[b].npoints; i++) {
-			double dx = q[i + 1].x - q[i].x, dy = q[i + 1].y - q[i].y;
-			double dd = dx * dx + dy * dy;
-			double s = dd > 0 ? ((p.x - q[i].x) * dx + (p.y - q[i].y) * dy) / dd : 0.0;
-			double ex, ey, d2;
+			double s, d2 = tree_segment_d2(q[i], q[i + 1], p, &s);
 
-			s = s < 0 ? 0 : s > 1 ? 1 : s;
-			ex = q[i].x + s * dx - p.x;
-			ey = q[i].y + s * dy - p.y;
-			d2 = ex * ex + ey * ey;
-			if (d2 < best_d2) {
-				best_d2 = d2;
+			if (d2 < *best_d2) {
+				*best_d2 = d2;
 				best.branch = (int)b;
 				best.segment = i;
 				best.seg_t = s;
 			}
 		}
 	}
+	return best;
+}
+
+/* The rest of the hit, only for the winner. */
+static struct sketch_hit nearest_finish(const struct tree *t, struct sketch_hit best, double d2)
+{
+	double walked = 0.0, total = 0.0;
+	const struct branch *br;
+
 	if (best.branch < 0)
 		return best;
 	br = &t->branches[best.branch];
 	best.point = vec3_lerp(br->points[best.segment], br->points[best.segment + 1], best.seg_t);
-	best.dist = sqrt(best_d2);
+	best.dist = sqrt(d2);
 	for (size_t i = 0; i + 1 < br->npoints; i++) {
 		double seg = vec3_dist(br->points[i], br->points[i + 1]);
 
@@ -143,6 +145,28 @@ struct sketch_hit sketch_nearest(const struct tree *t, struct vec3 p)
 	}
 	best.param = total > 0 ? walked / total : 0.0;
 	return best;
+}
+
+struct sketch_hit sketch_nearest_scan(const struct tree *t, struct vec3 p)
+{
+	double d2;
+	struct sketch_hit best = nearest_scan(t, p, &d2);
+
+	return nearest_finish(t, best, d2);
+}
+
+struct sketch_hit sketch_nearest(const struct tree *t, struct vec3 p)
+{
+	struct tree_index_hit h;
+	struct sketch_hit best = { .branch = -1, .dist = INFINITY };
+
+	/* a tree that keeps a grid of its segments looks only near p: the same answer */
+	if (!tree_index_nearest(t, p, &h))
+		return sketch_nearest_scan(t, p);
+	best.branch = h.branch;
+	best.segment = h.segment;
+	best.seg_t = h.seg_t;
+	return nearest_finish(t, best, h.d2);
 }
 
 static double radius_at(const struct branch *b, const struct sketch_hit *h)

@@ -31,8 +31,11 @@ struct sketch_hit {
 	double dist;
 };
 
-/* Nearest point on any branch to p (in the sketch plane's x/y). */
+/* Nearest point on any branch to p (in the sketch plane's x/y); on equal distances the
+ * first segment in the tree's order. Through t's grid if it keeps one (tree_index.h). */
 struct sketch_hit sketch_nearest(const struct tree *t, struct vec3 p);
+/* The same by looking at every segment: what the grid must agree with (tests). */
+struct sketch_hit sketch_nearest_scan(const struct tree *t, struct vec3 p);
 
 /* Resamples a polyline by arc length at `step` (or coarser, to stay within
  * SKETCH_MAX_SAMPLES); *out is malloc'ed. 0, -EINVAL (not finite) or -ENOMEM. */

@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "tree_index.h"
+
 const char *origin_name(enum origin origin)
 {
 	switch (origin) {
@@ -40,6 +42,7 @@ void tree_clear(struct tree *t)
 	}
 	t->nbranches = 0;
 	t->nleaves = 0;
+	tree_index_drop(t);
 	t->last_sketched = -1;
 	t->has_profile = false;
 	t->lifted = false;
@@ -50,6 +53,7 @@ void tree_finish(struct tree *t)
 	tree_clear(t);
 	free(t->branches);
 	free(t->leaves);
+	tree_index_destroy(t);
 	tree_init(t);
 }
 
@@ -122,4 +126,90 @@ int tree_add_leaf(struct tree *t, int branch, enum origin origin, const struct v
 	l->npoints = npoints;
 	t->nleaves++;
 	return l->id;
+}
+
+int tree_copy(struct tree *dst, const struct tree *src)
+{
+	tree_clear(dst);
+	if (src->nbranches > dst->cap_branches) {
+		struct branch *b = realloc(dst->branches, src->nbranches * sizeof(*b));
+
+		if (!b)
+			return -ENOMEM;
+		dst->branches = b;
+		dst->cap_branches = src->nbranches;
+	}
+	if (src->nleaves > dst->cap_leaves) {
+		struct leaf *l = realloc(dst->leaves, src->nleaves * sizeof(*l));
+
+		if (!l)
+			return -ENOMEM;
+		dst->leaves = l;
+		dst->cap_leaves = src->nleaves;
+	}
+	for (size_t i = 0; i < src->nbranches; i++) {
+		const struct branch *s = &src->branches[i];
+		struct branch *d = &dst->branches[i];
+
+		*d = *s;
+		d->points = dup_array(s->points, s->npoints, sizeof(*s->points));
+		d->radii = dup_array(s->radii, s->npoints, sizeof(*s->radii));
+		if (!d->points || !d->radii) {
+			free(d->points);
+			free(d->radii);
+			tree_clear(dst);
+			return -ENOMEM;
+		}
+		dst->nbranches++;
+	}
+	for (size_t i = 0; i < src->nleaves; i++) {
+		const struct leaf *s = &src->leaves[i];
+		struct leaf *d = &dst->leaves[i];
+
+		*d = *s;
+		d->points = dup_array(s->points, s->npoints, sizeof(*s->points));
+		d->local = s->local ? dup_array(s->local, s->npoints, sizeof(*s->local)) : NULL;
+		if (!d->points || (s->local && !d->local)) {
+			free(d->points);
+			free(d->local);
+			tree_clear(dst);
+			return -ENOMEM;
+		}
+		dst->nleaves++;
+	}
+	dst->lifted = src->lifted;
+	dst->last_sketched = src->last_sketched;
+	dst->last_sketched_end_us = src->last_sketched_end_us;
+	dst->has_profile = src->has_profile;
+	memcpy(dst->profile, src->profile, sizeof(dst->profile));
+	return 0;
+}
+
+void tree_truncate(struct tree *t, size_t nb, size_t nl)
+{
+	for (size_t i = nb; i < t->nbranches; i++) {
+		free(t->branches[i].points);
+		free(t->branches[i].radii);
+	}
+	for (size_t i = nl; i < t->nleaves; i++) {
+		free(t->leaves[i].points);
+		free(t->leaves[i].local);
+	}
+	if (nb < t->nbranches) {
+		t->nbranches = nb;
+		tree_index_truncated(t, nb);
+	}
+	if (nl < t->nleaves)
+		t->nleaves = nl;
+}
+
+size_t tree_bytes(const struct tree *t)
+{
+	size_t n = t->cap_branches * sizeof(*t->branches) + t->cap_leaves * sizeof(*t->leaves);
+
+	for (size_t i = 0; i < t->nbranches; i++)
+		n += t->branches[i].npoints * (sizeof(struct vec3) + sizeof(double));
+	for (size_t i = 0; i < t->nleaves; i++)
+		n += t->leaves[i].npoints * sizeof(struct vec3) * (t->leaves[i].local ? 2 : 1);
+	return n;
 }

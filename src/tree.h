@@ -66,6 +66,11 @@ struct tree {
 	uint64_t last_sketched_end_us; /* when that stroke ended */
 	bool has_profile;              /* a two-stroke branch defined a radius profile: */
 	double profile[TREE_PROFILE_N]; /* radius / root radius at s = i / (N - 1) */
+
+	/* sketch_nearest's grid of the branch segments (tree_index.h), if this tree keeps one:
+	 * a cache, not part of the model (tree_copy leaves it). The functions here keep it in
+	 * step; code that moves a branch's points in place calls tree_index_drop(). */
+	struct tree_index *index;
 };
 
 void tree_init(struct tree *t);
@@ -76,6 +81,14 @@ int tree_add_branch(struct tree *t, int parent, double parent_t, enum origin ori
 		    const struct vec3 *points, const double *radii, size_t npoints);
 int tree_add_leaf(struct tree *t, int branch, enum origin origin, const struct vec3 *points,
 		  size_t npoints);
+/* Makes dst (initialised) an exact copy of src: every field of every branch and leaf, the
+ * sketching state, bit for bit. 0, or -ENOMEM (dst is then empty). */
+int tree_copy(struct tree *dst, const struct tree *src);
+/* Removes the branches from nb on and the leaves from nl on: the tree as it was before
+ * they were appended (what stays must not refer to them). */
+void tree_truncate(struct tree *t, size_t nb, size_t nl);
+/* Bytes the tree's elements take (its arrays and what they point to). */
+size_t tree_bytes(const struct tree *t);
 
 /* Edits (tree_edit.c). Ids stay dense and in creation order, so a child always comes
  * after its parent. */

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "tree.h"
+#include "tree_index.h"
 
 #define TREE_MIN_CUT_M 0.025
 
@@ -72,7 +73,7 @@ void tree_remove_leaves(struct tree *t, const bool *remove)
 /* map: room for nbranches ints, so that nothing here can fail. */
 static void remove_branches(struct tree *t, bool *remove, int *map)
 {
-	size_t k = 0;
+	size_t k = 0, n = t->nbranches;
 
 	/* Children come after their parents, so one pass spreads removal down the tree. */
 	for (size_t i = 0; i < t->nbranches; i++) {
@@ -97,6 +98,7 @@ static void remove_branches(struct tree *t, bool *remove, int *map)
 		t->branches[k++] = b;
 	}
 	t->nbranches = k;
+	tree_index_renumbered(t, map, n);
 	compact_leaves(t, map, NULL);
 	if (k == 0)
 		t->lifted = false; /* nothing left: the next drawing starts flat */
