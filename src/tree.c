@@ -43,8 +43,11 @@ void tree_clear(struct tree *t)
 	t->nbranches = 0;
 	t->nleaves = 0;
 	tree_index_drop(t);
+	/* all of it, so that a rebuilt tree depends on its document only */
 	t->last_sketched = -1;
+	t->last_sketched_end_us = 0;
 	t->has_profile = false;
+	memset(t->profile, 0, sizeof(t->profile));
 	t->lifted = false;
 }
 
