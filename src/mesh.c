@@ -1007,31 +1007,123 @@ static int leaf_build(struct mesh *m, const struct leaf *l, struct scratch *s)
 	return 0;
 }
 
-int tree_mesh_append(struct tree_mesh *tm, const struct tree *t, size_t first_branch,
-		     size_t first_leaf)
+void tree_mesh_marks_init(struct tree_mesh_marks *mk)
+{
+	memset(mk, 0, sizeof(*mk));
+}
+
+void tree_mesh_marks_finish(struct tree_mesh_marks *mk)
+{
+	free(mk->bark);
+	free(mk->leaves);
+	tree_mesh_marks_init(mk);
+}
+
+/* Marks from element `first` on, in step with m: keeps what is known, or forgets it all. */
+static void mark_start(struct tree_mesh_mark **marks, size_t *n, size_t first, const struct mesh *m)
+{
+	if (first == 0) {
+		*n = 0;
+		if (*marks) {
+			(*marks)[0] = (struct tree_mesh_mark){ 0, 0 };
+			*n = 1;
+		}
+		return;
+	}
+	if (*n != first + 1 || (*marks)[first].nvertices != m->nvertices ||
+	    (*marks)[first].nindices != m->nindices)
+		*n = 0;
+}
+
+static void mark_next(struct tree_mesh_mark **marks, size_t *n, size_t *cap, const struct mesh *m)
+{
+	if (*n == 0)
+		return;
+	if (*n == *cap) {
+		size_t ncap = *cap ? *cap * 2 : 64;
+		struct tree_mesh_mark *p = realloc(*marks, ncap * sizeof(*p));
+
+		if (!p) {
+			*n = 0; /* unknown: undo meshes the tree again */
+			return;
+		}
+		*marks = p;
+		*cap = ncap;
+	}
+	(*marks)[(*n)++] = (struct tree_mesh_mark){ m->nvertices, m->nindices };
+}
+
+static void marks_reserve_first(struct tree_mesh_mark **marks, size_t *cap)
+{
+	if (*cap == 0) {
+		*marks = malloc(64 * sizeof(**marks));
+		*cap = *marks ? 64 : 0;
+	}
+}
+
+int tree_mesh_append_marked(struct tree_mesh *tm, const struct tree *t, size_t first_branch,
+			    size_t first_leaf, struct tree_mesh_marks *mk)
 {
 	struct scratch sc;
 	int r = 0;
 
 	memset(&sc, 0, sizeof(sc));
 	lod_init(&sc.lod);
-	for (size_t i = first_branch; i < t->nbranches && r == 0; i++)
+	if (mk) {
+		marks_reserve_first(&mk->bark, &mk->cap_bark);
+		marks_reserve_first(&mk->leaves, &mk->cap_leaves);
+		mark_start(&mk->bark, &mk->nbark, first_branch, &tm->bark);
+		mark_start(&mk->leaves, &mk->nleaves, first_leaf, &tm->leaves);
+	}
+	for (size_t i = first_branch; i < t->nbranches && r == 0; i++) {
 		r = tube_build(&tm->bark, t, i, &sc);
-	for (size_t i = first_leaf; i < t->nleaves && r == 0; i++)
+		if (mk)
+			mark_next(&mk->bark, &mk->nbark, &mk->cap_bark, &tm->bark);
+	}
+	for (size_t i = first_leaf; i < t->nleaves && r == 0; i++) {
 		r = leaf_build(&tm->leaves, &t->leaves[i], &sc);
+		if (mk)
+			mark_next(&mk->leaves, &mk->nleaves, &mk->cap_leaves, &tm->leaves);
+	}
 
 	scratch_finish(&sc);
 	if (r < 0) {
 		/* Half a tree is no tree. */
 		mesh_clear(&tm->bark);
 		mesh_clear(&tm->leaves);
+		if (mk)
+			mk->nbark = mk->nleaves = 0;
 	}
 	return r;
 }
 
-int tree_mesh_build(struct tree_mesh *tm, const struct tree *t)
+int tree_mesh_append(struct tree_mesh *tm, const struct tree *t, size_t first_branch,
+		     size_t first_leaf)
+{
+	return tree_mesh_append_marked(tm, t, first_branch, first_leaf, NULL);
+}
+
+int tree_mesh_build_marked(struct tree_mesh *tm, const struct tree *t, struct tree_mesh_marks *mk)
 {
 	mesh_clear(&tm->bark);
 	mesh_clear(&tm->leaves);
-	return tree_mesh_append(tm, t, 0, 0);
+	return tree_mesh_append_marked(tm, t, 0, 0, mk);
+}
+
+int tree_mesh_build(struct tree_mesh *tm, const struct tree *t)
+{
+	return tree_mesh_build_marked(tm, t, NULL);
+}
+
+bool tree_mesh_truncate(struct tree_mesh *tm, struct tree_mesh_marks *mk, size_t nb, size_t nl)
+{
+	if (nb >= mk->nbark || nl >= mk->nleaves)
+		return false;
+	tm->bark.nvertices = mk->bark[nb].nvertices;
+	tm->bark.nindices = mk->bark[nb].nindices;
+	tm->leaves.nvertices = mk->leaves[nl].nvertices;
+	tm->leaves.nindices = mk->leaves[nl].nindices;
+	mk->nbark = nb + 1;
+	mk->nleaves = nl + 1;
+	return true;
 }

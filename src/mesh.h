@@ -77,3 +77,28 @@ int tree_mesh_build(struct tree_mesh *tm, const struct tree *t);
  * elements before them: the same bytes as a full rebuild, at the cost of the new ones. */
 int tree_mesh_append(struct tree_mesh *tm, const struct tree *t, size_t first_branch,
 		     size_t first_leaf);
+
+/*
+ * Where each element's part of a tree_mesh begins, and where the last one ends. Since an
+ * element's mesh depends on elements before it only, the meshes of a tree cut back to
+ * a prefix of its elements (tree_truncate) are these meshes cut back
+ * (tree_mesh_truncate): how undo takes back a stroke without meshing the tree again.
+ */
+struct tree_mesh_mark {
+	size_t nvertices, nindices;
+};
+struct tree_mesh_marks {
+	struct tree_mesh_mark *bark, *leaves; /* [i]: before element i; [n]: after all */
+	size_t nbark, nleaves;                /* marks held: elements + 1, or 0 if unknown */
+	size_t cap_bark, cap_leaves;
+};
+void tree_mesh_marks_init(struct tree_mesh_marks *mk);
+void tree_mesh_marks_finish(struct tree_mesh_marks *mk);
+/* tree_mesh_build and tree_mesh_append that keep mk too (unknown without memory for it,
+ * or when mk did not describe tm). Same results. */
+int tree_mesh_build_marked(struct tree_mesh *tm, const struct tree *t, struct tree_mesh_marks *mk);
+int tree_mesh_append_marked(struct tree_mesh *tm, const struct tree *t, size_t first_branch,
+			    size_t first_leaf, struct tree_mesh_marks *mk);
+/* Cuts tm back to the first nb branches' and nl leaves' parts. False (nothing changed)
+ * when mk does not know where they end. */
+bool tree_mesh_truncate(struct tree_mesh *tm, struct tree_mesh_marks *mk, size_t nb, size_t nl);
