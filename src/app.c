@@ -29,6 +29,8 @@ struct app *app_create(int width, int height, uint64_t seed)
 	tree_init(&app->tree);
 	tree_index_keep(&app->tree); /* strokes find their branch in it, not by a scan */
 	tree_mesh_init(&app->mesh);
+	tree_mesh_marks_init(&app->mesh_marks);
+	history_init(&app->history);
 	rng_seed(&app->rng, seed);
 	app->pattern = APP_PATTERN_AUTO;
 	app->selected = -1;
@@ -45,13 +47,15 @@ void app_destroy(struct app *app)
 	doc_finish(&app->doc);
 	tree_finish(&app->tree);
 	tree_mesh_finish(&app->mesh);
+	tree_mesh_marks_finish(&app->mesh_marks);
+	history_finish(&app->history);
 	for (int i = 0; i < ARRANGE_COUNT; i++)
 		tree_mesh_finish(&app->previews[i]);
 	free(app->stroke.points);
 	free(app);
 }
 
-static int apply_op(struct app *app, const struct doc_op *op)
+int app_apply_op(struct app *app, const struct doc_op *op)
 {
 	switch (op->kind) {
 	case DOC_OP_STROKE:
@@ -91,32 +95,10 @@ static int apply_op(struct app *app, const struct doc_op *op)
 	return SKETCH_CHANGED;
 }
 
-static int update_mesh(struct app *app)
-{
-	app->mesh_serial++;
-	return tree_mesh_build(&app->mesh, &app->tree);
-}
-
-int app_rebuild(struct app *app)
-{
-	int ret;
-
-	tree_clear(&app->tree);
-	rng_seed(&app->rng, app->doc.seed);
-	for (size_t i = 0; i < app->doc.cursor; i++) {
-		ret = apply_op(app, &app->doc.ops[i]);
-		if (ret < 0) {
-			app_camera_follow_tree(app);
-			return ret;
-		}
-	}
-	app_camera_follow_tree(app);
-	return update_mesh(app);
-}
-
 int app_load_doc(struct app *app, struct doc *doc)
 {
 	doc_finish(&app->doc);
+	history_clear(&app->history);
 	app->doc = *doc;
 	doc_init(doc, doc->seed);
 	app->camera = app->doc.view; /* kept if the drawing is a 3D tree */
@@ -147,18 +129,19 @@ int app_push_op(struct app *app, struct doc_op *op)
 
 	if (ret < 0)
 		return ret;
-	ret = apply_op(app, &app->doc.ops[app->doc.cursor - 1]);
+	/* the ops that could be redone are gone, and what was known of their states */
+	history_forget_after(&app->history, app->doc.cursor - 1);
+	ret = app_apply_recorded(app, app->doc.cursor);
 	if (ret < 0) {
 		/* Half an edit may have been made: the document is the truth, rebuild from it. */
 		(void)app_rebuild(app);
 		return ret;
 	}
 	app_camera_follow_tree(app);
-	if (ret == SKETCH_GREW && app->tree.nbranches >= nb && app->tree.nleaves >= nl) {
-		app->mesh_serial++;
-		return tree_mesh_append(&app->mesh, &app->tree, nb, nl);
-	}
-	return update_mesh(app);
+	app->mesh_serial++;
+	if (ret == SKETCH_GREW && app->tree.nbranches >= nb && app->tree.nleaves >= nl)
+		return tree_mesh_append_marked(&app->mesh, &app->tree, nb, nl, &app->mesh_marks);
+	return tree_mesh_build_marked(&app->mesh, &app->tree, &app->mesh_marks);
 }
 
 static void update_pen(struct app *app, const struct event *ev)
@@ -291,12 +274,12 @@ int app_press_button(struct app *app, enum button button, uint64_t time_us)
 	case BUTTON_UNDO:
 		if (!doc_undo(&app->doc))
 			return 0;
-		ret = app_rebuild(app);
+		ret = app_undo(app);
 		return ret < 0 ? ret : app_refresh_mode_state(app);
 	case BUTTON_REDO:
 		if (!doc_redo(&app->doc))
 			return 0;
-		ret = app_rebuild(app);
+		ret = app_redo(app);
 		return ret < 0 ? ret : app_refresh_mode_state(app);
 	case BUTTON_EXPORT:
 		app->requests |= APP_REQUEST_EXPORT;

@@ -9,6 +9,7 @@
 #include "camera.h"
 #include "doc.h"
 #include "event.h"
+#include "history.h"
 #include "mesh.h"
 #include "rng.h"
 #include "tree.h"
@@ -114,7 +115,9 @@ struct app {
 	struct tree tree;     /* rebuilt from doc */
 	struct rng rng;       /* state after applying doc up to its cursor */
 	struct tree_mesh mesh;
+	struct tree_mesh_marks mesh_marks; /* where each element's part of mesh begins */
 	uint64_t mesh_serial; /* bumped whenever tree/mesh change, so the renderer re-uploads */
+	struct history history; /* states along doc's history, for undo and redo */
 	struct app_stroke stroke;
 	struct app_pen pen;
 	enum app_mode mode;

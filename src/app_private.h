@@ -18,7 +18,17 @@ static inline double app_clamp(double v, double lo, double hi)
 /* app.c */
 /* Records an edit and applies it on top of the current tree. 0, -ENOMEM, -ENOSPC. */
 int app_push_op(struct app *app, struct doc_op *op);
+/* Applies one op to the tree and generator: SKETCH_GREW, SKETCH_CHANGED or < 0. */
+int app_apply_op(struct app *app, const struct doc_op *op);
 int app_press_button(struct app *app, enum button button, uint64_t time_us);
+
+/* app_history.c */
+/* app_apply_op of ops[k - 1], the result recorded as state k (history.h). */
+int app_apply_recorded(struct app *app, size_t k);
+/* After doc_undo / doc_redo: the tree, generator and meshes of the cursor's state. 0 or
+ * -ENOMEM. */
+int app_undo(struct app *app);
+int app_redo(struct app *app);
 
 /* app_modes.c */
 int app_push_edit(struct app *app, enum doc_op_kind kind, int branch, int pattern,

@@ -1,0 +1,161 @@
+/* SPDX-License-Identifier: MIT */
+#include "history.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+void history_init(struct history *h)
+{
+	memset(h, 0, sizeof(*h));
+	h->budget = HISTORY_BUDGET_BYTES;
+}
+
+static void checkpoint_drop(struct history *h, size_t i)
+{
+	h->bytes -= h->cps[i].bytes;
+	tree_finish(&h->cps[i].tree);
+	memmove(&h->cps[i], &h->cps[i + 1], (h->ncps - i - 1) * sizeof(*h->cps));
+	h->ncps--;
+}
+
+void history_forget_after(struct history *h, size_t k)
+{
+	if (h->nmarks > k + 1)
+		h->nmarks = k + 1;
+	while (h->ncps > 0 && h->cps[h->ncps - 1].at > k)
+		checkpoint_drop(h, h->ncps - 1);
+}
+
+void history_clear(struct history *h)
+{
+	history_forget_after(h, 0);
+	h->nmarks = 0;
+	while (h->ncps > 0)
+		checkpoint_drop(h, h->ncps - 1);
+}
+
+void history_finish(struct history *h)
+{
+	history_clear(h);
+	free(h->marks);
+	free(h->cps);
+	history_init(h);
+}
+
+static void record_mark(struct history *h, size_t k, const struct tree *t, const struct rng *rng,
+			bool grew)
+{
+	struct history_mark *m;
+
+	if (k >= h->cap_marks) {
+		size_t cap = h->cap_marks ? h->cap_marks : 64;
+		struct history_mark *p;
+
+		while (cap <= k)
+			cap *= 2;
+		p = realloc(h->marks, cap * sizeof(*p));
+		if (!p)
+			return;
+		h->marks = p;
+		h->cap_marks = cap;
+	}
+	for (; h->nmarks <= k; h->nmarks++)
+		h->marks[h->nmarks].known = false;
+	m = &h->marks[k];
+	*m = (struct history_mark){
+		.known = true,
+		.grew = grew,
+		.nbranches = t->nbranches,
+		.nleaves = t->nleaves,
+		.rng = *rng,
+		.lifted = t->lifted,
+		.last_sketched = t->last_sketched,
+		.last_sketched_end_us = t->last_sketched_end_us,
+		.has_profile = t->has_profile,
+	};
+	memcpy(m->profile, t->profile, sizeof(m->profile));
+}
+
+static size_t distance(size_t a, size_t b)
+{
+	return a > b ? a - b : b - a;
+}
+
+/* Over the budget, the checkpoints farthest from the cursor go, but never the last two. */
+static void evict(struct history *h, size_t cursor)
+{
+	while (h->bytes > h->budget && h->ncps > 2) {
+		size_t far = 0;
+
+		for (size_t i = 1; i < h->ncps; i++)
+			if (distance(h->cps[i].at, cursor) > distance(h->cps[far].at, cursor))
+				far = i;
+		checkpoint_drop(h, far);
+	}
+}
+
+static void record_checkpoint(struct history *h, size_t k, const struct tree *t,
+			      const struct rng *rng, size_t cursor)
+{
+	size_t i = h->ncps;
+	struct history_checkpoint *cp;
+
+	while (i > 0 && h->cps[i - 1].at >= k) {
+		if (h->cps[i - 1].at == k)
+			return; /* the same state, bit for bit */
+		i--;
+	}
+	if (h->ncps == h->cap_cps) {
+		size_t cap = h->cap_cps ? h->cap_cps * 2 : 16;
+		struct history_checkpoint *p = realloc(h->cps, cap * sizeof(*p));
+
+		if (!p)
+			return;
+		h->cps = p;
+		h->cap_cps = cap;
+	}
+	memmove(&h->cps[i + 1], &h->cps[i], (h->ncps - i) * sizeof(*h->cps));
+	cp = &h->cps[i];
+	cp->at = k;
+	cp->rng = *rng;
+	tree_init(&cp->tree);
+	h->ncps++;
+	if (tree_copy(&cp->tree, t) < 0) {
+		checkpoint_drop(h, i);
+		return;
+	}
+	cp->bytes = tree_bytes(&cp->tree);
+	h->bytes += cp->bytes;
+	evict(h, cursor);
+}
+
+void history_record(struct history *h, size_t k, const struct tree *t, const struct rng *rng,
+		    bool grew, bool slow, size_t cursor)
+{
+	record_mark(h, k, t, rng, grew);
+	if (slow || (k > 0 && k % HISTORY_SPACING == 0))
+		record_checkpoint(h, k, t, rng, cursor);
+}
+
+const struct history_mark *history_mark(const struct history *h, size_t k)
+{
+	return k < h->nmarks && h->marks[k].known ? &h->marks[k] : NULL;
+}
+
+void history_mark_restore(const struct history_mark *m, struct tree *t, struct rng *rng)
+{
+	t->lifted = m->lifted;
+	t->last_sketched = m->last_sketched;
+	t->last_sketched_end_us = m->last_sketched_end_us;
+	t->has_profile = m->has_profile;
+	memcpy(t->profile, m->profile, sizeof(t->profile));
+	*rng = m->rng;
+}
+
+const struct history_checkpoint *history_checkpoint_below(const struct history *h, size_t k)
+{
+	for (size_t i = h->ncps; i-- > 0;)
+		if (h->cps[i].at <= k)
+			return &h->cps[i];
+	return NULL;
+}

@@ -1,0 +1,524 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Undo, redo and --load take quicker paths than replaying the whole document (marks,
+ * checkpoints, incremental redo: src/history.h, src/app_history.c). After every step of
+ * long random sessions (strokes, cuts, erasures, two-outline branches, leaves, 3D, turned
+ * views, clones added and removed, arrangements, propagations, new, undo and redo runs)
+ * the app must hold exactly what a fresh app replaying its document from scratch holds:
+ * tree (every field), generator, meshes, camera. Also with checkpoints squeezed out by a
+ * tiny budget, on a loaded document, and with an allocation failing at every point of an
+ * undo or redo.
+ */
+#include <errno.h>
+#include <string.h>
+
+#include "app.h"
+#include "layout.h"
+#include "rng.h"
+#include "sketch_view.h"
+#include "test.h"
+
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || \
+	__has_feature(memory_sanitizer)
+#define NO_MALLOC_HOOK 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define NO_MALLOC_HOOK 1
+#endif
+
+static uint64_t now = 1000;
+static long checks;
+
+/* ---- the reference: the document replayed from scratch ---- */
+
+static void copy_doc(struct doc *d, const struct doc *src)
+{
+	doc_init(d, src->seed);
+	d->ops = calloc(src->nops + 1, sizeof(*d->ops));
+	CHECK(d->ops);
+	d->cap = src->nops + 1;
+	for (size_t i = 0; i < src->nops; i++) {
+		d->ops[i] = src->ops[i];
+		d->ops[i].points = NULL;
+		if (src->ops[i].npoints) {
+			d->ops[i].points = malloc(src->ops[i].npoints * sizeof(*d->ops[i].points));
+			CHECK(d->ops[i].points);
+			memcpy(d->ops[i].points, src->ops[i].points,
+			       src->ops[i].npoints * sizeof(*d->ops[i].points));
+		}
+	}
+	d->nops = src->nops;
+	d->cursor = src->cursor;
+	d->view = src->view;
+}
+
+/* The same document with every stroke mirrored: a different tree at every state. */
+static void mirror_doc(struct doc *d)
+{
+	for (size_t i = 0; i < d->nops; i++)
+		for (size_t k = 0; k < d->ops[i].npoints; k++)
+			d->ops[i].points[k].x = -d->ops[i].points[k].x;
+}
+
+static struct app *loaded(const struct app *a)
+{
+	struct app *b = app_create(a->view.width, a->view.height, a->doc.seed);
+	struct doc d;
+
+	CHECK(b);
+	copy_doc(&d, &a->doc);
+	CHECK_INT(app_load_doc(b, &d), 0);
+	doc_finish(&d);
+	return b;
+}
+
+#define SAME(a, b) CHECK(memcmp(&(a), &(b), sizeof(a)) == 0)
+
+static void same_mesh(const struct mesh *a, const struct mesh *b)
+{
+	CHECK_INT(a->nvertices, b->nvertices);
+	CHECK_INT(a->nindices, b->nindices);
+	CHECK(a->nvertices == 0 || memcmp(a->positions, b->positions, a->nvertices * 3 * sizeof(float)) == 0);
+	CHECK(a->nvertices == 0 || memcmp(a->normals, b->normals, a->nvertices * 3 * sizeof(float)) == 0);
+	CHECK(a->nindices == 0 || memcmp(a->indices, b->indices, a->nindices * sizeof(uint32_t)) == 0);
+}
+
+static void same_tree(const struct tree *a, const struct tree *b)
+{
+	CHECK_INT(a->nbranches, b->nbranches);
+	CHECK_INT(a->nleaves, b->nleaves);
+	CHECK_INT(a->lifted, b->lifted);
+	CHECK_INT(a->last_sketched, b->last_sketched);
+	CHECK_INT(a->last_sketched_end_us, b->last_sketched_end_us);
+	CHECK_INT(a->has_profile, b->has_profile);
+	SAME(a->profile, b->profile);
+	for (size_t i = 0; i < a->nbranches; i++) {
+		const struct branch *x = &a->branches[i], *y = &b->branches[i];
+
+		CHECK_INT(x->id, y->id);
+		CHECK_INT(x->parent, y->parent);
+		SAME(x->parent_t, y->parent_t);
+		CHECK_INT(x->generation, y->generation);
+		CHECK_INT(x->origin, y->origin);
+		CHECK_INT(x->npoints, y->npoints);
+		CHECK(memcmp(x->points, y->points, x->npoints * sizeof(*x->points)) == 0);
+		CHECK(memcmp(x->radii, y->radii, x->npoints * sizeof(*x->radii)) == 0);
+	}
+	for (size_t i = 0; i < a->nleaves; i++) {
+		const struct leaf *x = &a->leaves[i], *y = &b->leaves[i];
+
+		CHECK_INT(x->id, y->id);
+		CHECK_INT(x->branch, y->branch);
+		SAME(x->branch_t, y->branch_t);
+		CHECK_INT(x->origin, y->origin);
+		CHECK_INT(x->npoints, y->npoints);
+		CHECK(memcmp(x->points, y->points, x->npoints * sizeof(*x->points)) == 0);
+		CHECK((x->local == NULL) == (y->local == NULL));
+		CHECK(!x->local || memcmp(x->local, y->local, x->npoints * sizeof(*x->local)) == 0);
+	}
+}
+
+/* What the app's rebuild makes of its document, and the app holds, are the same. */
+static void same_as_replay(const struct app *a, bool mesh_may_be_empty)
+{
+	struct app *b = loaded(a);
+
+	same_tree(&a->tree, &b->tree);
+	SAME(a->rng, b->rng);
+	SAME(a->camera, b->camera);
+	if (!(mesh_may_be_empty && a->mesh.bark.nvertices == 0 && a->mesh.leaves.nvertices == 0)) {
+		same_mesh(&a->mesh.bark, &b->mesh.bark);
+		same_mesh(&a->mesh.leaves, &b->mesh.leaves);
+	}
+	if (!a->tree.lifted) {
+		CHECK_INT(a->mode, APP_MODE_SKETCH);
+		CHECK(!a->turning);
+	}
+	app_destroy(b);
+	checks++;
+}
+
+/* ---- a visitor ---- */
+
+static void pen(struct app *app, enum event_type type, double x, double y, enum event_tool tool)
+{
+	struct event ev = { .type = type, .time_us = now, .x = x, .y = y, .pressure = 0.6, .tool = tool };
+
+	now += 8000;
+	app_handle_event(app, &ev);
+}
+
+static void press(struct app *app, enum button b)
+{
+	struct event ev = { .type = EVENT_BUTTON, .time_us = now, .button = (int)b, .pressed = true };
+
+	app_handle_event(app, &ev);
+	ev.pressed = false;
+	app_handle_event(app, &ev);
+	now += 200000;
+}
+
+static void stroke(struct app *app, double x0, double y0, double x1, double y1, int n,
+		   enum event_tool tool, uint64_t pause_us)
+{
+	pen(app, EVENT_TIP_DOWN, x0, y0, tool);
+	for (int i = 1; i < n; i++) {
+		double t = (double)i / (n - 1);
+
+		pen(app, EVENT_MOTION, x0 + (x1 - x0) * t + 5 * sin(t * 7), y0 + (y1 - y0) * t, tool);
+	}
+	pen(app, EVENT_TIP_UP, x1, y1, tool);
+	now += pause_us;
+}
+
+static void loop(struct app *app, double cx, double cy, double r, double dir)
+{
+	pen(app, EVENT_TIP_DOWN, cx + r, cy, EVENT_TOOL_PEN);
+	for (int i = 1; i <= 30; i++)
+		pen(app, EVENT_MOTION, cx + r * cos(dir * i * 0.23), cy + r * sin(dir * i * 0.23),
+		    EVENT_TOOL_PEN);
+	pen(app, EVENT_TIP_UP, cx + r * cos(dir * 30 * 0.23), cy + r * sin(dir * 30 * 0.23),
+	    EVENT_TOOL_PEN);
+	now += 4000000;
+}
+
+static void tap(struct app *app, double x, double y)
+{
+	pen(app, EVENT_TIP_DOWN, x, y, EVENT_TOOL_PEN);
+	pen(app, EVENT_TIP_UP, x, y, EVENT_TOOL_PEN);
+	now += 300000;
+}
+
+/* A point of a random branch (with children if asked) where the screen shows it, off the
+ * buttons. */
+static bool pick(const struct app *app, struct rng *r, bool parent, double *x, double *y)
+{
+	struct camera_xf xf;
+	enum button hit;
+
+	if (app->tree.nbranches == 0)
+		return false;
+	camera_xf_init(&xf, app->camera, sketch_view_pivot(&app->tree));
+	for (int tries = 0; tries < 40; tries++) {
+		size_t b = rng_next(r) % app->tree.nbranches;
+		const struct branch *br = &app->tree.branches[b];
+		bool kids = false;
+
+		for (size_t i = b + 1; i < app->tree.nbranches && parent && !kids; i++)
+			kids = app->tree.branches[i].parent == (int)b;
+		if ((parent && !kids) || br->npoints == 0)
+			continue;
+		view_to_screen(&app->view, camera_to_view(&xf, br->points[rng_next(r) % br->npoints]), x, y);
+		if (*x > 60 && *x < app->view.width - 60 && *y > 60 && *y < app->view.height - 60 &&
+		    !layout_hit(&app->view, *x, *y, &hit) && !layout_hit_view_button(&app->view, *x, *y))
+			return true;
+	}
+	return false;
+}
+
+static void canvas_point(const struct app *app, struct rng *r, double *x, double *y)
+{
+	enum button hit;
+
+	do {
+		*x = rng_range(r, 80, app->view.width - 80);
+		*y = rng_range(r, 80, app->view.height - 80);
+	} while (layout_hit(&app->view, *x, *y, &hit) || layout_hit_view_button(&app->view, *x, *y));
+}
+
+/* One thing a visitor does; returns true if it was undo or redo. A gentle visitor seldom
+ * cuts or erases, so the tree grows large. */
+static bool act(struct app *app, struct rng *r, int *propagations, bool gentle)
+{
+	unsigned what = (unsigned)(rng_next(r) % 100);
+	double x, y, x1, y1;
+
+	if (gentle && what >= 33 && what < 44 && rng_next(r) % 4)
+		what = 10;
+
+	if (app->tree.nbranches == 0 && what >= 6)
+		what = what < 60 ? 0 : what; /* a trunk first, mostly */
+	if (what < 6) {
+		canvas_point(app, r, &x, &y);
+		y = app->view.height * 0.9;
+		stroke(app, x, y, x + rng_range(r, -30, 30), y - rng_range(r, 250, 500), 30,
+		       EVENT_TOOL_PEN, 4000000);
+	} else if (what < 33) {
+		if (pick(app, r, false, &x, &y))
+			stroke(app, x, y, x + rng_range(r, -160, 160), y - rng_range(r, 10, 140), 24,
+			       EVENT_TOOL_PEN, 4000000);
+	} else if (what < 36) {
+		/* anywhere: a branch, a cut or an erasure */
+		canvas_point(app, r, &x, &y);
+		canvas_point(app, r, &x1, &y1);
+		stroke(app, x, y, x1, y1, 20, EVENT_TOOL_PEN, 4000000);
+	} else if (what < 41) {
+		/* a slash across a branch, begun away from it */
+		if (pick(app, r, false, &x, &y))
+			stroke(app, x - 70, y - 50, x + 70, y + 50, 16, EVENT_TOOL_PEN, 4000000);
+	} else if (what < 44) {
+		if (pick(app, r, false, &x, &y))
+			stroke(app, x - 15, y, x + 15, y + 5, 8, EVENT_TOOL_ERASER, 4000000);
+	} else if (what < 48) {
+		/* two outlines of one branch, drawn one right after the other */
+		if (pick(app, r, false, &x, &y)) {
+			double dx = rng_range(r, -120, 120), dy = -rng_range(r, 60, 160);
+
+			stroke(app, x, y, x + dx, y + dy, 20, EVENT_TOOL_PEN, 300000);
+			stroke(app, x + 12, y, x + dx + 6, y + dy, 20, EVENT_TOOL_PEN, 4000000);
+		}
+	} else if (what < 55) {
+		if (pick(app, r, false, &x, &y))
+			loop(app, x, y - 14, 12, 1.0);
+	} else if (what < 57) {
+		press(app, BUTTON_3D);
+	} else if (what < 61) {
+		app_set_camera(app, (struct camera){ (float)rng_range(r, -80, 80), (float)rng_range(r, -15, 40) });
+	} else if (what < 62) {
+		press(app, BUTTON_VIEW);
+	} else if (what < 68) {
+		press(app, BUTTON_CLONE);
+		if (pick(app, r, true, &x, &y)) {
+			tap(app, x, y);
+			if (what < 65)
+				tap(app, x, y);
+			else
+				loop(app, x, y, 40, what < 66 ? 1.0 : -1.0);
+		}
+		if (app->mode == APP_MODE_CLONE)
+			press(app, BUTTON_CLONE);
+	} else if (what < 70) {
+		if (*propagations > 0) {
+			press(app, BUTTON_PROPAGATE);
+			if (rng_next(r) % 2)
+				press(app, rng_next(r) % 2 ? BUTTON_FIXED_COUNT : BUTTON_FIXED_SIZE);
+			if (pick(app, r, false, &x, &y)) {
+				tap(app, x, y);
+				(*propagations)--;
+			}
+			if (app->mode == APP_MODE_PROPAGATE)
+				press(app, BUTTON_PROPAGATE);
+		}
+	} else if (what < 74) {
+		/* leaf mode: a leaf, then its first suggestion */
+		press(app, BUTTON_LEAF);
+		if (app->mode == APP_MODE_LEAF && pick(app, r, false, &x, &y)) {
+			struct layout_rect s = layout_side_slot(&app->view, 0, true);
+
+			loop(app, x, y - 14, 12, 1.0);
+			if (app->suggestions)
+				tap(app, s.x + s.w / 2, s.y + s.h / 2);
+		}
+		if (app->mode == APP_MODE_LEAF)
+			press(app, BUTTON_LEAF);
+	} else if (what < 75) {
+		if (rng_next(r) % 3 == 0)
+			press(app, BUTTON_NEW);
+	} else if (what < 90) {
+		press(app, BUTTON_UNDO);
+		return true;
+	} else {
+		press(app, BUTTON_REDO);
+		return true;
+	}
+	return false;
+}
+
+/* A session of n steps, checked after every undo and redo and every few other steps.
+ * With a tiny budget only the two checkpoints nearest the cursor are kept. */
+static void session(uint64_t seed, int n, bool tiny_budget, bool gentle)
+{
+	struct app *app = app_create(1280, 800, seed);
+	struct app *again = app_create(1280, 800, seed); /* loads one document after another */
+	struct rng r;
+	int propagations = 2;
+
+	CHECK(app && again);
+	if (tiny_budget)
+		app->history.budget = 1;
+	rng_seed(&r, seed * 7919);
+	for (int i = 0; i < n; i++) {
+		bool walk = act(app, &r, &propagations, gentle);
+
+		CHECK_INT(app->failed, 0);
+		if (walk || i % 8 == 0)
+			same_as_replay(app, false);
+		if (tiny_budget)
+			CHECK(app->history.ncps <= 2);
+		/* now and then the drawing is loaded, and walked back and forth */
+		if (i % 60 == 59) {
+			struct app *l = loaded(app);
+			int k = (int)(rng_next(&r) % 12);
+
+			if (tiny_budget)
+				l->history.budget = 1;
+			for (int j = 0; j < k + 6; j++) {
+				press(l, j < k || rng_next(&r) % 3 == 0 ? BUTTON_UNDO : BUTTON_REDO);
+				same_as_replay(l, false);
+			}
+			app_destroy(l);
+			/* what an app knew of the document before is forgotten on loading another */
+			for (int mirrored = 1; mirrored >= 0; mirrored--) {
+				struct doc d;
+
+				copy_doc(&d, &app->doc);
+				if (mirrored)
+					mirror_doc(&d);
+				CHECK_INT(app_load_doc(again, &d), 0);
+				doc_finish(&d);
+				same_as_replay(again, false);
+				for (int j = 0; j < k + 6; j++) {
+					press(again, j < k || rng_next(&r) % 3 == 0 ? BUTTON_UNDO : BUTTON_REDO);
+					same_as_replay(again, false);
+				}
+			}
+			CHECK_INT(app_reset(again, seed + 1), 0);
+			same_as_replay(again, false);
+		}
+	}
+	app_destroy(again);
+	/* all the way back, and forth again */
+	while (doc_can_undo(&app->doc)) {
+		press(app, BUTTON_UNDO);
+		same_as_replay(app, false);
+	}
+	while (doc_can_redo(&app->doc)) {
+		press(app, BUTTON_REDO);
+		same_as_replay(app, false);
+	}
+	app_destroy(app);
+}
+
+#ifndef NO_MALLOC_HOOK
+extern void *__libc_malloc(size_t n);
+extern void *__libc_calloc(size_t n, size_t size);
+extern void *__libc_realloc(void *p, size_t n);
+extern void __libc_free(void *p);
+
+static long calls;
+static long fail_at = -1;
+static volatile long live;
+
+static bool inject(void)
+{
+	return fail_at >= 0 && calls++ == fail_at;
+}
+
+void *malloc(size_t n)
+{
+	void *p = inject() ? NULL : __libc_malloc(n);
+
+	live += p != NULL;
+	return p;
+}
+
+void *calloc(size_t n, size_t size)
+{
+	void *p = inject() ? NULL : __libc_calloc(n, size);
+
+	live += p != NULL;
+	return p;
+}
+
+void *realloc(void *old, size_t n)
+{
+	void *p;
+
+	if (!old)
+		return malloc(n);
+	if (inject())
+		return NULL;
+	p = __libc_realloc(old, n);
+	if (!p && n == 0)
+		live--;
+	return p;
+}
+
+void free(void *p)
+{
+	live -= p != NULL;
+	__libc_free(p);
+}
+
+/* Each allocation of one undo or redo fails in turn: never a half-built tree; the state
+ * is the replay's (the meshes may be left empty, with the failure reported). The app
+ * first walks to state `at` the quick way, so that marks and checkpoints are used. */
+static void oom_step(const struct app *orig, size_t at, enum button b)
+{
+	for (long n = 0;; n++) {
+		struct app *a = loaded(orig);
+		bool failed;
+
+		while (a->doc.cursor > at)
+			press(a, BUTTON_UNDO);
+		calls = 0;
+		fail_at = n;
+		press(a, b);
+		fail_at = -1;
+		failed = a->failed != 0;
+		CHECK(!failed || a->failed == -ENOMEM);
+		same_as_replay(a, failed);
+		app_destroy(a);
+		if (calls <= n)
+			return; /* got through without a failure */
+	}
+}
+
+static void test_oom(void)
+{
+	struct app *app = app_create(1280, 800, 3);
+	void *(*volatile alloc)(size_t) = malloc;
+	long was = live;
+	void *probe = alloc(1);
+	bool hooked = live == was + 1;
+	struct rng r;
+	int propagations = 1, changed = 0, lifts = 0;
+
+	free(probe);
+	if (!hooked) {
+		fprintf(stderr, "malloc is not ours (valgrind?): no allocation failures\n");
+		app_destroy(app);
+		return;
+	}
+	rng_seed(&r, 11);
+	for (int i = 0; app->doc.nops < 90 && i < 400; i++)
+		act(app, &r, &propagations, true);
+	while (doc_can_redo(&app->doc))
+		press(app, BUTTON_REDO);
+	/* undoing ops that changed elements (from a checkpoint) and ones that appended;
+	 * redoing a lift (from its checkpoint) and a stroke */
+	for (size_t k = app->doc.nops; k > 0 && (changed < 3 || lifts < 1); k--) {
+		const struct history_mark *m = history_mark(&app->history, k);
+
+		if (m && !m->grew && changed < 3) {
+			oom_step(app, k, BUTTON_UNDO);
+			changed++;
+		}
+		if (app->doc.ops[k - 1].kind == DOC_OP_LIFT && lifts < 1) {
+			oom_step(app, k - 1, BUTTON_REDO);
+			lifts++;
+		}
+	}
+	CHECK(changed == 3 && lifts == 1);
+	oom_step(app, app->doc.nops, BUTTON_UNDO);
+	oom_step(app, app->doc.nops - 1, BUTTON_REDO);
+	app_destroy(app);
+}
+#else
+static void test_oom(void)
+{
+}
+#endif
+
+int main(void)
+{
+	for (uint64_t seed = 1; seed <= 4; seed++)
+		session(seed, 240, seed % 2 == 0, false);
+	session(7, 360, false, true);
+	session(8, 260, true, true);
+	test_oom();
+	fprintf(stderr, "%ld states compared with a full replay\n", checks);
+	return 0;
+}
