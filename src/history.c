@@ -133,7 +133,7 @@ void history_record(struct history *h, size_t k, const struct tree *t, const str
 		    bool grew, bool slow, size_t cursor)
 {
 	record_mark(h, k, t, rng, grew);
-	if (slow || (k > 0 && k % HISTORY_SPACING == 0))
+	if (slow || (k > 0 && k % HISTORY_SPACING == 0 && k + HISTORY_NEAR > cursor))
 		record_checkpoint(h, k, t, rng, cursor);
 }
 

@@ -293,7 +293,7 @@ static size_t sketched_points(const struct tree *t)
 	return n;
 }
 
-static int erase(struct tree *t, const struct sketch_view *sv, const struct doc_op *op)
+static int erase(struct tree *t, struct sketch_view *sv, const struct doc_op *op)
 {
 	struct vec3 *raw = malloc(op->npoints * sizeof(*raw)), *p = NULL;
 	size_t n;
@@ -309,6 +309,7 @@ static int erase(struct tree *t, const struct sketch_view *sv, const struct doc_
 		return SKETCH_GREW;
 	if (ret < 0)
 		return ret;
+	sketch_view_show_all(sv); /* the eraser looks at everything */
 	ret = gesture_eraser(t, sv->tree, p, n);
 	free(p);
 	return ret < 0 ? ret : ret > 0 ? SKETCH_CHANGED : SKETCH_GREW;
@@ -435,6 +436,7 @@ static int open_stroke(struct tree *t, struct sketch_view *sv, struct vec3 *p, s
 
 	if (t->nbranches == 0 || sketch_nearest(sv->tree, p[0]).dist <= GESTURE_SNAP_M)
 		return add_branch(t, sv, p, n, NULL);
+	sketch_view_show_all(sv); /* crossings look at every branch */
 	ret = gesture_crossings(sv->tree, p, n, &c, &nc);
 	if (ret < 0)
 		return ret;

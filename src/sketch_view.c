@@ -6,11 +6,60 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "tree_index.h"
+
 struct vec3 sketch_view_pivot(const struct tree *t)
 {
 	if (t->nbranches == 0 || t->branches[0].npoints == 0)
 		return vec3(0, 0, 0);
 	return t->branches[0].points[0];
+}
+
+/* Turns branch i's points, or leaf i's, into the pool. */
+static void show_one(struct sketch_view *sv, bool leaf, size_t i)
+{
+	struct vec3 *to, **points;
+	const struct vec3 *from;
+	size_t n;
+
+	if (leaf) {
+		points = &sv->shadow.leaves[i].points;
+		from = sv->world->leaves[i].points;
+		n = sv->shadow.leaves[i].npoints;
+		to = sv->pool + sv->at[sv->nbranches + i];
+	} else {
+		points = &sv->shadow.branches[i].points;
+		from = sv->world->branches[i].points;
+		n = sv->shadow.branches[i].npoints;
+		to = sv->pool + sv->at[i];
+	}
+	if (*points)
+		return;
+	for (size_t j = 0; j < n; j++)
+		to[j] = camera_to_view(&sv->xf, from[j]);
+	*points = to;
+}
+
+void sketch_view_show_all(struct sketch_view *sv)
+{
+	if (!sv->lazy)
+		return;
+	for (size_t i = 0; i < sv->shadow.nbranches; i++)
+		show_one(sv, false, i);
+	for (size_t i = 0; i < sv->shadow.nleaves; i++)
+		show_one(sv, true, i);
+	sv->lazy = false;
+}
+
+/* tree_index asks for a branch it found, or for all of them before a scan. */
+static void show(void *ctx, int branch)
+{
+	struct sketch_view *sv = ctx;
+
+	if (branch < 0)
+		sketch_view_show_all(sv);
+	else if (sv->lazy && (size_t)branch < sv->shadow.nbranches)
+		show_one(sv, false, (size_t)branch);
 }
 
 int sketch_view_init(struct sketch_view *sv, const struct tree *t, struct camera c)
@@ -21,6 +70,7 @@ int sketch_view_init(struct sketch_view *sv, const struct tree *t, struct camera
 	memset(sv, 0, sizeof(*sv));
 	camera_xf_init(&sv->xf, c, sketch_view_pivot(t));
 	sv->tree = t;
+	sv->world = t;
 	if (sv->xf.identity)
 		return 0;
 	for (size_t i = 0; i < t->nbranches; i++)
@@ -28,44 +78,51 @@ int sketch_view_init(struct sketch_view *sv, const struct tree *t, struct camera
 	for (size_t i = 0; i < t->nleaves; i++)
 		n += t->leaves[i].npoints;
 	*s = *t;
+	s->index = NULL; /* t's, not the copy's */
 	s->branches = malloc((t->nbranches ? t->nbranches : 1) * sizeof(*s->branches));
 	s->leaves = malloc((t->nleaves ? t->nleaves : 1) * sizeof(*s->leaves));
 	sv->pool = malloc((n ? n : 1) * sizeof(*sv->pool));
-	if (!s->branches || !s->leaves || !sv->pool) {
+	sv->at = malloc((t->nbranches + t->nleaves + 1) * sizeof(*sv->at));
+	if (!s->branches || !s->leaves || !sv->pool || !sv->at) {
 		sketch_view_finish(sv);
 		return -ENOMEM;
 	}
 	s->cap_branches = t->nbranches;
 	s->cap_leaves = t->nleaves;
 	for (size_t i = 0; i < t->nbranches; i++) {
-		const struct branch *b = &t->branches[i];
-
-		s->branches[i] = *b;
-		s->branches[i].points = sv->pool + k;
-		for (size_t j = 0; j < b->npoints; j++)
-			sv->pool[k++] = camera_to_view(&sv->xf, b->points[j]);
+		s->branches[i] = t->branches[i];
+		s->branches[i].points = NULL;
+		sv->at[i] = k;
+		k += t->branches[i].npoints;
 	}
 	for (size_t i = 0; i < t->nleaves; i++) {
-		const struct leaf *l = &t->leaves[i];
-
-		s->leaves[i] = *l;
+		s->leaves[i] = t->leaves[i];
 		s->leaves[i].local = NULL;
-		s->leaves[i].points = sv->pool + k;
-		for (size_t j = 0; j < l->npoints; j++)
-			sv->pool[k++] = camera_to_view(&sv->xf, l->points[j]);
+		s->leaves[i].points = NULL;
+		sv->at[t->nbranches + i] = k;
+		k += t->leaves[i].npoints;
 	}
 	sv->tree = s;
+	sv->nbranches = t->nbranches;
+	sv->lazy = true;
+	if (!tree_index_keep_view(s, t, &sv->xf, show, sv))
+		sketch_view_show_all(sv); /* no grid to ask: turned all at once, as scans need */
+	else if (t->nbranches > 0)
+		show_one(sv, false, t->nbranches - 1);
 	return 0;
 }
 
 void sketch_view_finish(struct sketch_view *sv)
 {
 	/* the shadow borrows radii from the tree: only its own arrays are freed */
+	tree_index_destroy(&sv->shadow);
 	free(sv->shadow.branches);
 	free(sv->shadow.leaves);
 	free(sv->pool);
+	free(sv->at);
 	memset(&sv->shadow, 0, sizeof(sv->shadow));
 	sv->pool = NULL;
+	sv->at = NULL;
 	sv->tree = NULL;
 }
 
@@ -146,11 +203,12 @@ bool sketch_view_near(const struct tree *t, struct camera c, struct vec3 p, doub
 	return false;
 }
 
-double sketch_view_clearance(const struct sketch_view *sv, struct vec3 p)
+double sketch_view_clearance(struct sketch_view *sv, struct vec3 p)
 {
 	const struct tree *t = sv->tree;
 	double best = INFINITY;
 
+	sketch_view_show_all(sv);
 	for (size_t i = 0; i < t->nbranches; i++) {
 		const struct branch *b = &t->branches[i];
 

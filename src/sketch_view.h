@@ -10,12 +10,24 @@
  * sketch plane, z towards the viewer). The camera is rigid, so lengths and parameters
  * are the world's. For the front view it is the tree itself: nothing is copied and
  * results are bit for bit those of the 2D sketch.
+ *
+ * Of a tree that keeps a grid (tree_index.h) the copy's points are turned only as they
+ * are needed, so that a stroke on a turned tree costs what is near it, not the whole
+ * tree: sketch_nearest finds its hits through the tree's grid and shows them, and the
+ * last branch is shown from the start (the second outline of a branch looks at it). Code
+ * that reads other points of the copy calls sketch_view_show_all first, before it
+ * changes the tree other than by removing its last branch or appending: what is shown
+ * later is turned from the tree as it is then.
  */
 struct sketch_view {
 	struct camera_xf xf;
 	const struct tree *tree; /* what to query */
 	struct tree shadow;      /* the turned copy, when there is one */
 	struct vec3 *pool;
+	const struct tree *world; /* what the copy is of */
+	size_t *at;               /* where each branch's, then leaf's points go in pool */
+	size_t nbranches;         /* the tree's when copied: leaves' places in at follow */
+	bool lazy;                /* points not yet shown are NULL */
 };
 
 /* The pivot the camera turns about: the trunk's base (the origin without a trunk). */
@@ -25,9 +37,11 @@ int sketch_view_init(struct sketch_view *sv, const struct tree *t, struct camera
 void sketch_view_finish(struct sketch_view *sv);
 /* The tree's last branch was just removed: forget it here too. */
 void sketch_view_drop_last_branch(struct sketch_view *sv);
+/* Every point of the copy turned (nothing to do for the front view). */
+void sketch_view_show_all(struct sketch_view *sv);
 /* Distance on the screen (metres) from view-space point p to the nearest branch or
  * leaf; 0 inside a leaf, INFINITY on an empty tree. */
-double sketch_view_clearance(const struct sketch_view *sv, struct vec3 p);
+double sketch_view_clearance(struct sketch_view *sv, struct vec3 p);
 /* Whether anything of t is within r of view-space point p on the screen through camera c:
  * the same answer as clearance <= r, without copying the tree and stopping at the first
  * hit (the cursor asks every frame). */

@@ -14,6 +14,9 @@
 #define MAX_SPAN_CELLS 64
 /* Rounding in cells and distances is far below this (metres). */
 #define MARGIN_M 1e-6
+/* Cells are TREE_INDEX_CELL_M wide and high, TREE_INDEX_DEPTH_M deep: a lifted tree is
+ * as deep as it is wide, and the front view's line crosses every depth. */
+static const double H[3] = { TREE_INDEX_CELL_M, TREE_INDEX_CELL_M, TREE_INDEX_DEPTH_M };
 
 struct entry {
 	uint32_t slot; /* the branch, as the grid numbers it */
@@ -22,12 +25,18 @@ struct entry {
 };
 
 struct cell {
-	int32_t x, y;
+	int32_t c[3];
 	uint32_t head; /* NONE: this place of the table is free */
 };
 
 struct tree_index {
 	const struct tree *owner;
+	/* A view's copy (tree_index_keep_view) has no grid of its own: */
+	const struct tree *world;
+	const struct camera_xf *xf;
+	void (*show)(void *ctx, int branch);
+	void *ctx;
+
 	bool stale;      /* rebuilt at the next query */
 	size_t nindexed; /* the owner's branches [0..nindexed) are in it */
 	/* The grid's numbers of branches (slots), so that a removal renumbers only these. */
@@ -41,7 +50,7 @@ struct tree_index {
 	size_t ncells, cap_cells;
 	struct entry *wide; /* segments not in the grid, scanned at every query */
 	size_t nwide, cap_wide;
-	int32_t x0, y0, x1, y1; /* bounds of the cells in use, when ncells > 0 */
+	int32_t lo[3], hi[3]; /* bounds of the cells in use, when ncells > 0 */
 };
 
 static int grow(void **array, size_t *cap, size_t n, size_t size)
@@ -60,9 +69,9 @@ static int grow(void **array, size_t *cap, size_t n, size_t size)
 	return 0;
 }
 
-static bool cell_of(double v, int32_t *c)
+static bool cell_of(double v, int axis, int32_t *c)
 {
-	double f = floor(v * (1.0 / TREE_INDEX_CELL_M));
+	double f = floor(v / H[axis]);
 
 	if (!(fabs(f) < MAX_CELL))
 		return false; /* also NaN */
@@ -70,9 +79,16 @@ static bool cell_of(double v, int32_t *c)
 	return true;
 }
 
-static size_t cell_hash(int32_t x, int32_t y, size_t cap)
+static double coord(struct vec3 v, int axis)
 {
-	uint64_t k = ((uint64_t)(uint32_t)x << 32) | (uint32_t)y;
+	return axis == 0 ? v.x : axis == 1 ? v.y : v.z;
+}
+
+static size_t cell_hash(const int32_t c[3], size_t cap)
+{
+	uint64_t k = (uint64_t)(uint32_t)c[0] * 0x9e3779b97f4a7c15ULL ^
+		     (uint64_t)(uint32_t)c[1] * 0xc2b2ae3d27d4eb4fULL ^
+		     (uint64_t)(uint32_t)c[2] * 0x165667b19e3779f9ULL;
 
 	k ^= k >> 33;
 	k *= 0xff51afd7ed558ccdULL;
@@ -80,19 +96,22 @@ static size_t cell_hash(int32_t x, int32_t y, size_t cap)
 	return (size_t)k & (cap - 1);
 }
 
-static struct cell *cell_find(const struct tree_index *idx, int32_t x, int32_t y)
+static bool same_cell(const int32_t a[3], const int32_t b[3])
 {
-	size_t i;
+	return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
 
+static const struct cell *cell_find(const struct tree_index *idx, const int32_t c[3])
+{
 	if (idx->ncells == 0)
 		return NULL;
-	for (i = cell_hash(x, y, idx->cap_cells);; i = (i + 1) & (idx->cap_cells - 1)) {
-		struct cell *c = &idx->cells[i];
+	for (size_t i = cell_hash(c, idx->cap_cells);; i = (i + 1) & (idx->cap_cells - 1)) {
+		const struct cell *e = &idx->cells[i];
 
-		if (c->head == NONE)
+		if (e->head == NONE)
 			return NULL;
-		if (c->x == x && c->y == y)
-			return c;
+		if (same_cell(e->c, c))
+			return e;
 	}
 }
 
@@ -102,14 +121,23 @@ static void cells_clear(struct cell *cells, size_t n)
 		cells[i].head = NONE;
 }
 
-/* The cell (x, y), added empty if new (head NONE but taken); NULL without memory. */
-static struct cell *cell_get(struct tree_index *idx, int32_t x, int32_t y)
+static size_t free_place(const struct cell *cells, size_t cap, const int32_t c[3])
 {
-	struct cell *c = cell_find(idx, x, y);
 	size_t i;
 
-	if (c)
-		return c;
+	for (i = cell_hash(c, cap); cells[i].head != NONE; i = (i + 1) & (cap - 1))
+		;
+	return i;
+}
+
+/* Cell c's entry list (*head), the cell added if new; NULL without memory. */
+static uint32_t *cell_get(struct tree_index *idx, const int32_t c[3])
+{
+	const struct cell *found = cell_find(idx, c);
+	struct cell *e;
+
+	if (found)
+		return &idx->cells[found - idx->cells].head;
 	if ((idx->ncells + 1) * 2 > idx->cap_cells) {
 		size_t cap = idx->cap_cells ? idx->cap_cells * 2 : 256;
 		struct cell *n = malloc(cap * sizeof(*n));
@@ -117,35 +145,21 @@ static struct cell *cell_get(struct tree_index *idx, int32_t x, int32_t y)
 		if (!n)
 			return NULL;
 		cells_clear(n, cap);
-		for (size_t k = 0; k < idx->cap_cells; k++) {
-			const struct cell *o = &idx->cells[k];
-
-			if (o->head == NONE)
-				continue;
-			for (i = cell_hash(o->x, o->y, cap); n[i].head != NONE; i = (i + 1) & (cap - 1))
-				;
-			n[i] = *o;
-		}
+		for (size_t k = 0; k < idx->cap_cells; k++)
+			if (idx->cells[k].head != NONE)
+				n[free_place(n, cap, idx->cells[k].c)] = idx->cells[k];
 		free(idx->cells);
 		idx->cells = n;
 		idx->cap_cells = cap;
 	}
-	for (i = cell_hash(x, y, idx->cap_cells); idx->cells[i].head != NONE;
-	     i = (i + 1) & (idx->cap_cells - 1))
-		;
-	c = &idx->cells[i];
-	c->x = x;
-	c->y = y;
-	if (idx->ncells == 0) {
-		idx->x0 = idx->x1 = x;
-		idx->y0 = idx->y1 = y;
+	e = &idx->cells[free_place(idx->cells, idx->cap_cells, c)];
+	memcpy(e->c, c, sizeof(e->c));
+	for (int a = 0; a < 3; a++) {
+		idx->lo[a] = idx->ncells == 0 || c[a] < idx->lo[a] ? c[a] : idx->lo[a];
+		idx->hi[a] = idx->ncells == 0 || c[a] > idx->hi[a] ? c[a] : idx->hi[a];
 	}
-	idx->x0 = x < idx->x0 ? x : idx->x0;
-	idx->x1 = x > idx->x1 ? x : idx->x1;
-	idx->y0 = y < idx->y0 ? y : idx->y0;
-	idx->y1 = y > idx->y1 ? y : idx->y1;
 	idx->ncells++;
-	return c;
+	return &e->head; /* NONE until the caller adds an entry */
 }
 
 static int add_wide(struct tree_index *idx, uint32_t slot, uint32_t segment)
@@ -160,27 +174,34 @@ static int add_wide(struct tree_index *idx, uint32_t slot, uint32_t segment)
 static int add_segment(struct tree_index *idx, uint32_t slot, uint32_t segment, struct vec3 a,
 		       struct vec3 b)
 {
-	int32_t x0, y0, x1, y1;
+	int32_t lo[3], hi[3], c[3];
+	int64_t span = 1;
 
-	if (!cell_of(fmin(a.x, b.x), &x0) || !cell_of(fmax(a.x, b.x), &x1) ||
-	    !cell_of(fmin(a.y, b.y), &y0) || !cell_of(fmax(a.y, b.y), &y1) ||
-	    (int64_t)(x1 - x0 + 1) * (y1 - y0 + 1) > MAX_SPAN_CELLS)
+	for (int k = 0; k < 3; k++) {
+		double u = coord(a, k), v = coord(b, k);
+
+		if (!cell_of(fmin(u, v), k, &lo[k]) || !cell_of(fmax(u, v), k, &hi[k]))
+			return add_wide(idx, slot, segment);
+		span *= (int64_t)hi[k] - lo[k] + 1;
+	}
+	if (span > MAX_SPAN_CELLS)
 		return add_wide(idx, slot, segment);
-	for (int32_t y = y0; y <= y1; y++)
-		for (int32_t x = x0; x <= x1; x++) {
-			struct cell *c;
+	for (c[2] = lo[2]; c[2] <= hi[2]; c[2]++)
+		for (c[1] = lo[1]; c[1] <= hi[1]; c[1]++)
+			for (c[0] = lo[0]; c[0] <= hi[0]; c[0]++) {
+				uint32_t *head;
 
-			if (idx->nentries >= NONE - 1 ||
-			    grow((void **)&idx->entries, &idx->cap_entries, idx->nentries,
-				 sizeof(*idx->entries)) < 0)
-				return -1;
-			c = cell_get(idx, x, y);
-			if (!c)
-				return -1;
-			idx->entries[idx->nentries] = (struct entry){ slot, segment, c->head };
-			c->head = (uint32_t)idx->nentries++;
-			idx->slot_n[slot]++;
-		}
+				if (idx->nentries >= NONE - 1 ||
+				    grow((void **)&idx->entries, &idx->cap_entries, idx->nentries,
+					 sizeof(*idx->entries)) < 0)
+					return -1;
+				head = cell_get(idx, c);
+				if (!head)
+					return -1;
+				idx->entries[idx->nentries] = (struct entry){ slot, segment, *head };
+				*head = (uint32_t)idx->nentries++;
+				idx->slot_n[slot]++;
+			}
 	return 0;
 }
 
@@ -246,22 +267,48 @@ void tree_index_keep(struct tree *t)
 {
 	struct tree_index *idx;
 
-	if (t->index && t->index->owner == t)
+	if (t->index && t->index->owner == t && !t->index->world)
 		return;
+	tree_index_destroy(t);
 	idx = calloc(1, sizeof(*idx));
-	t->index = idx; /* a copy's pointer is not ours to free */
+	t->index = idx;
 	if (!idx)
 		return;
 	idx->owner = t;
 	idx->stale = true;
 }
 
+bool tree_index_keep_view(struct tree *view, const struct tree *world, const struct camera_xf *xf,
+			  void (*show)(void *ctx, int branch), void *ctx)
+{
+	struct tree_index *idx;
+
+	tree_index_destroy(view);
+	if (!world->index || world->index->owner != world || world->index->world)
+		return false;
+	idx = calloc(1, sizeof(*idx));
+	view->index = idx;
+	if (!idx)
+		return false;
+	idx->owner = view;
+	idx->world = world;
+	idx->xf = xf;
+	idx->show = show;
+	idx->ctx = ctx;
+	return true;
+}
+
+static struct tree_index *owned(const struct tree *t)
+{
+	return t->index && t->index->owner == t ? t->index : NULL;
+}
+
 void tree_index_destroy(struct tree *t)
 {
-	struct tree_index *idx = t->index;
+	struct tree_index *idx = owned(t);
 
-	t->index = NULL;
-	if (!idx || idx->owner != t)
+	t->index = NULL; /* a copy's pointer is not ours to free */
+	if (!idx)
 		return;
 	free(idx->slot_id);
 	free(idx->slot_n);
@@ -269,11 +316,6 @@ void tree_index_destroy(struct tree *t)
 	free(idx->cells);
 	free(idx->wide);
 	free(idx);
-}
-
-static struct tree_index *owned(const struct tree *t)
-{
-	return t->index && t->index->owner == t ? t->index : NULL;
 }
 
 void tree_index_drop(struct tree *t)
@@ -324,131 +366,255 @@ void tree_index_truncated(struct tree *t, size_t nb)
 		idx->nindexed = nb;
 }
 
+/* A query: the screen point p, the line of world points shown there (through p0 along
+ * dir), and what the tree looks like on the screen (xf, NULL for the front view). */
+struct query {
+	const struct tree_index *idx;
+	const struct tree *t;
+	const struct camera_xf *xf;
+	struct vec3 p, p0, dir;
+	struct tree_index_hit best;
+	size_t probes, budget;
+};
+
 /* Takes entry e if it is nearer than the best so far, or as near and first in order. */
-static void consider(const struct tree_index *idx, const struct tree *t, const struct entry *e,
-		     struct vec3 p, struct tree_index_hit *best)
+static void consider(struct query *q, const struct entry *e)
 {
-	int id = idx->slot_id[e->slot];
+	int id = q->idx->slot_id[e->slot];
 	const struct branch *b;
+	struct vec3 a, c;
 	double s, d2;
 
-	if (id < 0 || (size_t)id >= t->nbranches)
+	if (id < 0 || (size_t)id >= q->t->nbranches)
 		return;
-	b = &t->branches[id];
+	b = &q->t->branches[id];
 	if ((size_t)e->segment + 1 >= b->npoints)
 		return; /* a cut shortened the branch */
-	d2 = tree_segment_d2(b->points[e->segment], b->points[e->segment + 1], p, &s);
+	a = b->points[e->segment];
+	c = b->points[e->segment + 1];
+	if (q->xf) {
+		/* the very points sketch_view's copy holds */
+		a = camera_to_view(q->xf, a);
+		c = camera_to_view(q->xf, c);
+	}
+	d2 = tree_segment_d2(a, c, q->p, &s);
 	if (!(d2 < INFINITY))
 		return; /* the scan never takes these either */
-	if (d2 < best->d2 || (d2 == best->d2 && (id < best->branch ||
-						 (id == best->branch && e->segment < best->segment)))) {
-		best->branch = id;
-		best->segment = e->segment;
-		best->seg_t = s;
-		best->d2 = d2;
+	if (d2 < q->best.d2 || (d2 == q->best.d2 && (id < q->best.branch ||
+						     (id == q->best.branch && e->segment < q->best.segment)))) {
+		q->best.branch = id;
+		q->best.segment = e->segment;
+		q->best.seg_t = s;
+		q->best.d2 = d2;
 	}
 }
 
-static void visit(const struct tree_index *idx, const struct tree *t, int32_t x, int32_t y,
-		  struct vec3 p, struct tree_index_hit *best)
+static void visit(struct query *q, const int32_t c[3])
 {
-	const struct cell *c = cell_find(idx, x, y);
+	const struct cell *cell = cell_find(q->idx, c);
 
-	for (uint32_t e = c ? c->head : NONE; e != NONE; e = idx->entries[e].next)
-		consider(idx, t, &idx->entries[e], p, best);
+	q->probes++;
+	for (uint32_t e = cell ? cell->head : NONE; e != NONE; e = q->idx->entries[e].next)
+		consider(q, &q->idx->entries[e]);
 }
 
-/* Whether cells r rings out (Chebyshev distance from p's cell) may hold a segment as
- * near as the best: their points are at least (r - 1) cells away from p. */
-static bool may_hold(int64_t r, const struct tree_index_hit *best)
+/* How far q's line passes from world point w. */
+static double line_distance(const struct query *q, struct vec3 w)
 {
-	return r < 2 || !(best->d2 < INFINITY) ||
-	       (double)(r - 1) * TREE_INDEX_CELL_M <= sqrt(best->d2) + MARGIN_M;
+	struct vec3 d = vec3_sub(w, q->p0);
+
+	return vec3_len(vec3_sub(d, vec3_scale(q->dir, vec3_dot(d, q->dir))));
 }
 
-static int64_t max64(int64_t a, int64_t b)
+static double found(const struct query *q)
 {
-	return a > b ? a : b;
+	return q->best.d2 < INFINITY ? sqrt(q->best.d2) : INFINITY;
 }
 
-static int64_t min64(int64_t a, int64_t b)
+/* Every cell in use that may hold a segment as near as the best: the way to go when
+ * looking cell by cell would cost more. */
+static void visit_all(struct query *q)
 {
-	return a < b ? a : b;
-}
+	const double half_diagonal = 0.5 * sqrt(H[0] * H[0] + H[1] * H[1] + H[2] * H[2]);
 
-/* The cells of ring r around (cx, cy) inside the bounds: how many, and visits them. */
-static int64_t ring(const struct tree_index *idx, const struct tree *t, int64_t cx, int64_t cy,
-		    int64_t r, struct vec3 p, struct tree_index_hit *best, bool go)
-{
-	int64_t xa = max64(cx - r, idx->x0), xb = min64(cx + r, idx->x1);
-	int64_t ya = max64(cy - r + 1, idx->y0), yb = min64(cy + r - 1, idx->y1);
-	int64_t n = 0;
+	for (size_t i = 0; i < q->idx->cap_cells; i++) {
+		const struct cell *cell = &q->idx->cells[i];
+		struct vec3 centre;
 
-	if (r == 0) {
-		if (go)
-			visit(idx, t, (int32_t)cx, (int32_t)cy, p, best);
-		return 1;
-	}
-	/* the rows at cy - r and cy + r, then the columns at cx - r and cx + r between */
-	for (int64_t y = cy - r; y <= cy + r; y += 2 * r) {
-		if (y < idx->y0 || y > idx->y1 || xa > xb)
+		if (cell->head == NONE)
 			continue;
-		n += xb - xa + 1;
-		for (int64_t x = xa; go && x <= xb; x++)
-			visit(idx, t, (int32_t)x, (int32_t)y, p, best);
-	}
-	for (int64_t x = cx - r; x <= cx + r; x += 2 * r) {
-		if (x < idx->x0 || x > idx->x1 || ya > yb)
+		centre = vec3((cell->c[0] + 0.5) * H[0], (cell->c[1] + 0.5) * H[1], (cell->c[2] + 0.5) * H[2]);
+		if (line_distance(q, centre) - half_diagonal > found(q) + MARGIN_M)
 			continue;
-		n += yb - ya + 1;
-		for (int64_t y = ya; go && y <= yb; y++)
-			visit(idx, t, (int32_t)x, (int32_t)y, p, best);
+		for (uint32_t e = cell->head; e != NONE; e = q->idx->entries[e].next)
+			consider(q, &q->idx->entries[e]);
 	}
-	return n;
 }
 
-static void query(const struct tree_index *idx, const struct tree *t, int32_t cx32, int32_t cy32,
-		  struct vec3 p, struct tree_index_hit *best)
+static int32_t clamp_cell(double v, int axis, int32_t lo, int32_t hi)
 {
-	int64_t cx = cx32, cy = cy32, probes = 0;
-	/* rings nearer than the cells in use are empty; past the farthest, nothing is left */
-	int64_t r = max64(max64(idx->x0 - cx, cx - idx->x1), max64(idx->y0 - cy, cy - idx->y1));
-	int64_t last = max64(max64(cx - idx->x0, idx->x1 - cx), max64(cy - idx->y0, idx->y1 - cy));
+	double f = floor(v / H[axis]);
 
-	for (r = max64(r, 0); r <= last && may_hold(r, best); r++) {
-		int64_t n = ring(idx, t, cx, cy, r, p, best, false);
+	return f < lo ? lo : f > hi ? hi : (int32_t)f;
+}
 
-		if (probes + n > (int64_t)idx->cap_cells) {
-			/* far out, looking cell by cell costs more than going through them all */
-			for (size_t i = 0; i < idx->cap_cells; i++) {
-				const struct cell *c = &idx->cells[i];
-				int64_t d = max64(llabs(c->x - cx), llabs(c->y - cy));
+/*
+ * The cells of slab s (along axis a, where the line runs most steeply) that may hold a
+ * point within r of the line: such a point has its a, and so the line's parameter, in a
+ * known range there, and its other two coordinates within r of the line's over that
+ * range. False when the line passes the slab outside the cells in use; clears *all
+ * when the cells are not all those of the slab in use.
+ */
+static bool slab_cells(const struct query *q, double r, int a, int32_t s, int32_t from[3],
+		       int32_t to[3], bool *all)
+{
+	const struct tree_index *idx = q->idx;
+	double reach = r + MARGIN_M, da = coord(q->dir, a), pa = coord(q->p0, a);
+	double t0 = ((double)s * H[a] - reach - pa) / da;
+	double t1 = ((double)(s + 1) * H[a] + reach - pa) / da;
+	bool inside = true;
 
-				if (c->head == NONE || d < r || !may_hold(d, best))
-					continue;
-				for (uint32_t e = c->head; e != NONE; e = idx->entries[e].next)
-					consider(idx, t, &idx->entries[e], p, best);
-			}
+	for (int k = 0; k < 3; k++) {
+		double u = coord(q->p0, k) + coord(q->dir, k) * t0;
+		double v = coord(q->p0, k) + coord(q->dir, k) * t1;
+		double lo = fmin(u, v) - reach, hi = fmax(u, v) + reach;
+
+		from[k] = clamp_cell(lo, k, idx->lo[k], idx->hi[k]);
+		to[k] = clamp_cell(hi, k, idx->lo[k], idx->hi[k]);
+		if (k == a)
+			continue;
+		if (lo > idx->lo[k] * H[k] || hi < (idx->hi[k] + 1) * H[k])
+			*all = false;
+		if (hi < idx->lo[k] * H[k] || lo > (idx->hi[k] + 1) * H[k])
+			inside = false;
+	}
+	from[a] = to[a] = s;
+	return inside;
+}
+
+/* Visits every cell that may hold a point within r of the line, slab by slab along a.
+ * Returns false, visiting nothing, when that would run over the budget; sets *all when
+ * the cells visited were all those in use. */
+static bool visit_near(struct query *q, double r, int a, bool *all)
+{
+	int32_t from[3], to[3], cell[3];
+	size_t probes = q->probes;
+
+	/* counted first: a pass that would run over the budget is not begun */
+	*all = true;
+	for (int32_t s = q->idx->lo[a]; s <= q->idx->hi[a]; s++)
+		if (slab_cells(q, r, a, s, from, to, all))
+			probes += (size_t)(to[0] - from[0] + 1) * (size_t)(to[1] - from[1] + 1) *
+				  (size_t)(to[2] - from[2] + 1);
+	if (probes > q->budget)
+		return false;
+	for (int32_t s = q->idx->lo[a]; s <= q->idx->hi[a]; s++) {
+		if (!slab_cells(q, r, a, s, from, to, all))
+			continue;
+		for (cell[2] = from[2]; cell[2] <= to[2]; cell[2]++)
+			for (cell[1] = from[1]; cell[1] <= to[1]; cell[1]++)
+				for (cell[0] = from[0]; cell[0] <= to[0]; cell[0]++)
+					visit(q, cell);
+	}
+	return true;
+}
+
+/* The axis the query's line runs closest to: its slabs. */
+static int slab_axis(struct vec3 dir)
+{
+	int a = 0;
+
+	for (int k = 1; k < 3; k++)
+		if (fabs(coord(dir, k)) > fabs(coord(dir, a)))
+			a = k;
+	return a;
+}
+
+/* A little wider than the best so far, if there is one. */
+static double next_radius(const struct query *q)
+{
+	return q->best.d2 < INFINITY ? found(q) + 2 * MARGIN_M : 0.0;
+}
+
+static void query(struct query *q)
+{
+	int a = slab_axis(q->dir);
+	bool all;
+
+	/* wider each time, and at once as wide as the best found so far */
+	for (double r = TREE_INDEX_CELL_M;; r = fmax(2 * r, next_radius(q))) {
+		if (!visit_near(q, r, a, &all)) {
+			visit_all(q);
 			return;
 		}
-		probes += n;
-		ring(idx, t, cx, cy, r, p, best, true);
+		/* every segment nearer than r has been looked at, ties too */
+		if (all || found(q) + MARGIN_M <= r)
+			return;
 	}
+}
+
+/* Answers q from idx, the grid of t. */
+static bool answer(struct query *q, struct tree_index *idx, const struct tree *t)
+{
+	if (update(idx, t) < 0 || idx->nlive < TREE_INDEX_MIN_SEGMENTS)
+		return false;
+	if (q->xf) {
+		q->p0 = camera_from_view(q->xf, vec3(q->p.x, q->p.y, 0.0));
+		q->dir = q->xf->back; /* view space looks along -z */
+	} else {
+		q->p0 = vec3(q->p.x, q->p.y, 0.0);
+		q->dir = vec3(0, 0, 1);
+	}
+	for (int k = 0; k < 3; k++) {
+		int32_t c;
+
+		if (!cell_of(coord(q->p0, k), k, &c))
+			return false;
+	}
+	/* A line through a deep tree passes many slabs: below this many segments a slab's
+	 * few cells each cost more than scanning them all. */
+	if (idx->ncells > 0) {
+		int a = slab_axis(q->dir);
+
+		if (idx->nlive < 8 * 9 * (size_t)((int64_t)idx->hi[a] - idx->lo[a] + 1))
+			return false;
+	}
+	q->idx = idx;
+	q->t = t;
+	q->best = (struct tree_index_hit){ .branch = -1, .d2 = INFINITY };
+	q->budget = idx->cap_cells / 4; /* a probe costs a few steps of visit_all */
+	for (size_t i = 0; i < idx->nwide; i++)
+		consider(q, &idx->wide[i]);
+	if (idx->ncells > 0)
+		query(q);
+	return true;
 }
 
 bool tree_index_nearest(const struct tree *t, struct vec3 p, struct tree_index_hit *hit)
 {
 	struct tree_index *idx = t->index;
-	int32_t cx, cy;
+	struct query q = { .p = p };
 
-	if (!idx || idx->owner != t || !cell_of(p.x, &cx) || !cell_of(p.y, &cy))
-		return false;
-	if (update(idx, t) < 0 || idx->nlive < TREE_INDEX_MIN_SEGMENTS)
-		return false;
-	*hit = (struct tree_index_hit){ .branch = -1, .d2 = INFINITY };
-	for (size_t i = 0; i < idx->nwide; i++)
-		consider(idx, t, &idx->wide[i], p, hit);
-	if (idx->ncells > 0)
-		query(idx, t, cx, cy, p, hit);
+	if (!idx || idx->owner != t || !isfinite(p.x) || !isfinite(p.y))
+		goto scan;
+	if (!idx->world) {
+		if (!answer(&q, idx, t))
+			return false;
+		*hit = q.best;
+		return true;
+	}
+	/* a view of idx->world: its grid, its points turned (the copy was made of it as it
+	 * is now, unless the stroke since changed it: then the copy's own points) */
+	q.xf = idx->xf->identity ? NULL : idx->xf;
+	if (idx->world->nbranches != t->nbranches || !owned(idx->world) ||
+	    !answer(&q, idx->world->index, idx->world))
+		goto scan;
+	if (q.best.branch >= 0)
+		idx->show(idx->ctx, q.best.branch);
+	*hit = q.best;
 	return true;
+scan:
+	if (idx && idx->owner == t && idx->world)
+		idx->show(idx->ctx, -1);
+	return false;
 }

@@ -6,6 +6,7 @@
 
 #include "rng.h"
 #include "sketch.h"
+#include "sketch_view.h"
 #include "test.h"
 #include "tree.h"
 #include "tree_index.h"
@@ -211,12 +212,78 @@ static void test_odd(void)
 	tree_finish(&t);
 }
 
+/* A 3D tree (branches at every depth, leaves) seen through random cameras: the copy a
+ * sketch_view turns lazily through the tree's grid answers as a copy turned whole and
+ * scanned does, and what it shows is that copy's points. */
+static void test_views(uint64_t seed)
+{
+	struct tree t;
+	struct rng r;
+
+	tree_init(&t);
+	tree_index_keep(&t);
+	rng_seed(&r, seed);
+	for (int i = 0; i < 150; i++) {
+		int id = add_random_branch(&t, &r);
+		struct branch *b;
+
+		CHECK(id >= 0);
+		/* depth along the branch, as lifting gives it */
+		b = &t.branches[id];
+		for (size_t k = 1; k < b->npoints; k++)
+			b->points[k].z = b->points[k - 1].z + rng_range(&r, -0.04, 0.04);
+		if (i % 7 == 3 && b->npoints > 2) {
+			struct vec3 leaf[6];
+
+			for (int k = 0; k < 6; k++)
+				leaf[k] = vec3_add(b->points[1], vec3(0.1 * cos(k), 0.1 * sin(k), 0.05 * k));
+			CHECK(tree_add_leaf(&t, id, ORIGIN_SKETCH, leaf, 6) >= 0);
+		}
+	}
+	tree_index_drop(&t); /* the depths were changed in place */
+	for (int v = 0; v < 40; v++) {
+		struct camera c = v == 0 ? (struct camera){ 0, 0 }
+					 : camera_normalize(rng_range(&r, -180, 180), rng_range(&r, -20, 75));
+		struct tree plain = t;
+		struct sketch_view lazy, eager;
+
+		plain.index = NULL; /* a copy without the grid: turned whole, scanned */
+		CHECK_INT(sketch_view_init(&lazy, &t, c), 0);
+		CHECK_INT(sketch_view_init(&eager, &plain, c), 0);
+		for (int i = 0; i < 60; i++) {
+			const struct branch *b = &eager.tree->branches[rng_next(&r) % t.nbranches];
+			struct vec3 p = b->npoints ? b->points[rng_next(&r) % b->npoints] : vec3(0, 0, 0);
+
+			if (i % 3 == 1)
+				p = vec3(p.x + rng_range(&r, -0.6, 0.6), p.y + rng_range(&r, -0.6, 0.6), 0);
+			else if (i % 3 == 2)
+				p = vec3(rng_range(&r, -12, 12), rng_range(&r, -4, 14), 0);
+			same_hit(sketch_nearest(lazy.tree, p), sketch_nearest_scan(eager.tree, p));
+			queries++;
+		}
+		/* the last branch is there from the start; the rest turned alike */
+		CHECK(lazy.tree->branches[t.nbranches - 1].points != NULL);
+		sketch_view_show_all(&lazy);
+		for (size_t i = 0; i < t.nbranches; i++)
+			CHECK(memcmp(lazy.tree->branches[i].points, eager.tree->branches[i].points,
+				     t.branches[i].npoints * sizeof(struct vec3)) == 0);
+		for (size_t i = 0; i < t.nleaves; i++)
+			CHECK(memcmp(lazy.tree->leaves[i].points, eager.tree->leaves[i].points,
+				     t.leaves[i].npoints * sizeof(struct vec3)) == 0);
+		sketch_view_finish(&lazy);
+		sketch_view_finish(&eager);
+	}
+	tree_finish(&t);
+}
+
 int main(void)
 {
 	test_ties();
 	for (uint64_t seed = 1; seed <= 12; seed++)
 		test_edits(seed);
 	test_odd();
+	for (uint64_t seed = 1; seed <= 3; seed++)
+		test_views(seed);
 	fprintf(stderr, "%ld queries agree with the scan\n", queries);
 	return 0;
 }
