@@ -31,6 +31,7 @@ struct app *app_create(int width, int height, uint64_t seed)
 	tree_mesh_init(&app->mesh);
 	tree_mesh_marks_init(&app->mesh_marks);
 	history_init(&app->history);
+	tree_init(&app->before);
 	rng_seed(&app->rng, seed);
 	app->pattern = APP_PATTERN_AUTO;
 	app->selected = -1;
@@ -49,6 +50,7 @@ void app_destroy(struct app *app)
 	tree_mesh_finish(&app->mesh);
 	tree_mesh_marks_finish(&app->mesh_marks);
 	history_finish(&app->history);
+	tree_finish(&app->before);
 	for (int i = 0; i < ARRANGE_COUNT; i++)
 		tree_mesh_finish(&app->previews[i]);
 	free(app->stroke.points);

@@ -118,6 +118,7 @@ struct app {
 	struct tree_mesh_marks mesh_marks; /* where each element's part of mesh begins */
 	uint64_t mesh_serial; /* bumped whenever tree/mesh change, so the renderer re-uploads */
 	struct history history; /* states along doc's history, for undo and redo */
+	struct tree before;     /* the tree an undo or redo leaves, while meshes are reused */
 	struct app_stroke stroke;
 	struct app_pen pen;
 	enum app_mode mode;

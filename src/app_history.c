@@ -10,7 +10,9 @@
 
 #include "app_private.h"
 #include "doc.h"
+#include "mesh_reuse.h"
 #include "sketch.h"
+#include "tree_index.h"
 
 static bool slow_op(const struct doc_op *op)
 {
@@ -55,6 +57,7 @@ int app_rebuild(struct app *app)
 	int ret;
 
 	tree_clear(&app->tree);
+	tree_index_keep(&app->tree); /* a quicker way that failed may have taken it */
 	rng_seed(&app->rng, app->doc.seed);
 	history_record(&app->history, 0, &app->tree, &app->rng, false, false, app->doc.cursor);
 	ret = replay_from(app, 0);
@@ -62,21 +65,42 @@ int app_rebuild(struct app *app)
 	return ret < 0 ? ret : mesh_rebuild(app);
 }
 
-/* The cursor's state from the nearest checkpoint below it, or from scratch. */
+/* The meshes of the app's tree, made from those of app->before (which goes). */
+static int mesh_from_before(struct app *app)
+{
+	int ret;
+
+	app->mesh_serial++;
+	ret = tree_mesh_rebuild_from(&app->mesh, &app->mesh_marks, &app->tree, &app->before);
+	tree_clear(&app->before);
+	return ret;
+}
+
+/* The full rebuild when a quicker way ran out of memory: the document is the truth. */
+static int rebuild_after_failure(struct app *app)
+{
+	tree_clear(&app->before);
+	return app_rebuild(app);
+}
+
+/* The cursor's state from the nearest checkpoint below it, or from scratch. The tree
+ * left is kept meanwhile, so that what the two share is not meshed again. */
 static int rebuild_from_checkpoint(struct app *app)
 {
 	const struct history_checkpoint *cp = history_checkpoint_below(&app->history, app->doc.cursor);
 
 	if (!cp)
 		return app_rebuild(app);
-	/* Out of memory part way, the document is the truth: the full rebuild. */
+	tree_swap(&app->tree, &app->before);
 	if (tree_copy(&app->tree, &cp->tree) < 0)
-		return app_rebuild(app);
+		return rebuild_after_failure(app);
+	/* the grid of the tree left serves the checkpoint's too, for what they share */
+	tree_index_move(&app->tree, &app->before);
 	app->rng = cp->rng;
 	if (replay_from(app, cp->at) < 0)
-		return app_rebuild(app);
+		return rebuild_after_failure(app);
 	app_camera_follow_tree(app);
-	return mesh_rebuild(app);
+	return mesh_from_before(app);
 }
 
 /* The op just undone (into state cursor + 1) only appended: take that back. */
@@ -109,19 +133,27 @@ int app_redo(struct app *app)
 {
 	const struct doc_op *op = &app->doc.ops[app->doc.cursor - 1];
 	const struct history_checkpoint *cp = history_checkpoint_below(&app->history, app->doc.cursor);
+	const struct history_mark *m = history_mark(&app->history, app->doc.cursor);
 	size_t nb = app->tree.nbranches, nl = app->tree.nleaves;
+	bool reuse = false;
 	int ret;
 
 	/* a lift is redone faster from its copy than again */
 	if (op->kind == DOC_OP_LIFT && cp && cp->at == app->doc.cursor)
 		return rebuild_from_checkpoint(app);
+	/* an op known to change elements: the tree before it is kept for its meshes */
+	if (m && !m->grew)
+		reuse = tree_copy(&app->before, &app->tree) == 0;
 	ret = app_apply_recorded(app, app->doc.cursor);
 	if (ret < 0)
-		return app_rebuild(app); /* half an op may have been made */
+		return rebuild_after_failure(app); /* half an op may have been made */
 	app_camera_follow_tree(app);
 	if (ret == SKETCH_GREW && app->tree.nbranches >= nb && app->tree.nleaves >= nl) {
+		tree_clear(&app->before);
 		app->mesh_serial++;
 		return tree_mesh_append_marked(&app->mesh, &app->tree, nb, nl, &app->mesh_marks);
 	}
+	if (reuse)
+		return mesh_from_before(app);
 	return mesh_rebuild(app);
 }

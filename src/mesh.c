@@ -1097,6 +1097,78 @@ int tree_mesh_append_marked(struct tree_mesh *tm, const struct tree *t, size_t f
 	return r;
 }
 
+/* Appends part i of src (between marks i and i + 1) to m, its indices moved along. */
+static int copy_part(struct mesh *m, const struct mesh *src, const struct tree_mesh_mark *marks,
+		     size_t i)
+{
+	size_t v0 = marks[i].nvertices, nv = marks[i + 1].nvertices - v0;
+	size_t i0 = marks[i].nindices, ni = marks[i + 1].nindices - i0;
+	uint32_t base;
+	int r = mesh_reserve(m, nv, ni);
+
+	if (r < 0)
+		return r;
+	base = (uint32_t)m->nvertices;
+	memcpy(&m->positions[3 * m->nvertices], &src->positions[3 * v0], nv * 3 * sizeof(float));
+	memcpy(&m->normals[3 * m->nvertices], &src->normals[3 * v0], nv * 3 * sizeof(float));
+	/* a part's triangles use its own vertices only: they move with them */
+	if (base == v0) {
+		memcpy(&m->indices[m->nindices], &src->indices[i0], ni * sizeof(*m->indices));
+	} else {
+		const uint32_t *restrict from = &src->indices[i0];
+		uint32_t *restrict to = &m->indices[m->nindices];
+		uint32_t shift = base - (uint32_t)v0;
+
+		for (size_t k = 0; k < ni; k++)
+			to[k] = from[k] + shift;
+	}
+	m->nvertices += nv;
+	m->nindices += ni;
+	return 0;
+}
+
+int tree_mesh_build_reusing(struct tree_mesh *tm, struct tree_mesh_marks *mk, const struct tree *t,
+			    const struct tree_mesh *from, const struct tree_mesh_marks *from_mk,
+			    const int *reuse_branch, const int *reuse_leaf)
+{
+	struct scratch sc;
+	int r = 0;
+
+	mesh_clear(&tm->bark);
+	mesh_clear(&tm->leaves);
+	/* about as large as from: room at once, not by doubling */
+	if (mesh_reserve(&tm->bark, from->bark.nvertices, from->bark.nindices) < 0 ||
+	    mesh_reserve(&tm->leaves, from->leaves.nvertices, from->leaves.nindices) < 0)
+		return -ENOMEM;
+	memset(&sc, 0, sizeof(sc));
+	lod_init(&sc.lod);
+	marks_reserve_first(&mk->bark, &mk->cap_bark);
+	marks_reserve_first(&mk->leaves, &mk->cap_leaves);
+	mark_start(&mk->bark, &mk->nbark, 0, &tm->bark);
+	mark_start(&mk->leaves, &mk->nleaves, 0, &tm->leaves);
+	for (size_t i = 0; i < t->nbranches && r == 0; i++) {
+		if (reuse_branch[i] >= 0)
+			r = copy_part(&tm->bark, &from->bark, from_mk->bark, (size_t)reuse_branch[i]);
+		else
+			r = tube_build(&tm->bark, t, i, &sc);
+		mark_next(&mk->bark, &mk->nbark, &mk->cap_bark, &tm->bark);
+	}
+	for (size_t i = 0; i < t->nleaves && r == 0; i++) {
+		if (reuse_leaf[i] >= 0)
+			r = copy_part(&tm->leaves, &from->leaves, from_mk->leaves, (size_t)reuse_leaf[i]);
+		else
+			r = leaf_build(&tm->leaves, &t->leaves[i], &sc);
+		mark_next(&mk->leaves, &mk->nleaves, &mk->cap_leaves, &tm->leaves);
+	}
+	scratch_finish(&sc);
+	if (r < 0) {
+		mesh_clear(&tm->bark);
+		mesh_clear(&tm->leaves);
+		mk->nbark = mk->nleaves = 0;
+	}
+	return r;
+}
+
 int tree_mesh_append(struct tree_mesh *tm, const struct tree *t, size_t first_branch,
 		     size_t first_leaf)
 {

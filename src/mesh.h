@@ -102,3 +102,12 @@ int tree_mesh_append_marked(struct tree_mesh *tm, const struct tree *t, size_t f
 /* Cuts tm back to the first nb branches' and nl leaves' parts. False (nothing changed)
  * when mk does not know where they end. */
 bool tree_mesh_truncate(struct tree_mesh *tm, struct tree_mesh_marks *mk, size_t nb, size_t nl);
+/*
+ * tree_mesh_build_marked of t into tm (not from), except that branch i's part is copied
+ * from from's part of its branch reuse_branch[i] when that is >= 0 (its indices moved
+ * with it), and leaf i's from leaf reuse_leaf[i]: the caller vouches they would come out
+ * the same (mesh_reuse.c). from_mk must know from's parts. Same results otherwise.
+ */
+int tree_mesh_build_reusing(struct tree_mesh *tm, struct tree_mesh_marks *mk, const struct tree *t,
+			    const struct tree_mesh *from, const struct tree_mesh_marks *from_mk,
+			    const int *reuse_branch, const int *reuse_leaf);

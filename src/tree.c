@@ -216,3 +216,12 @@ size_t tree_bytes(const struct tree *t)
 		n += t->leaves[i].npoints * sizeof(struct vec3) * (t->leaves[i].local ? 2 : 1);
 	return n;
 }
+
+void tree_swap(struct tree *a, struct tree *b)
+{
+	struct tree t = *a;
+
+	*a = *b;
+	*b = t;
+	tree_index_swapped(a, b);
+}

@@ -89,6 +89,8 @@ int tree_copy(struct tree *dst, const struct tree *src);
 void tree_truncate(struct tree *t, size_t nb, size_t nl);
 /* Bytes the tree's elements take (its arrays and what they point to). */
 size_t tree_bytes(const struct tree *t);
+/* Swaps two trees, their grids (tree_index.h) with them. */
+void tree_swap(struct tree *a, struct tree *b);
 
 /* Edits (tree_edit.c). Ids stay dense and in creation order, so a child always comes
  * after its parent. */

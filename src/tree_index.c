@@ -366,12 +366,149 @@ void tree_index_truncated(struct tree *t, size_t nb)
 		idx->nindexed = nb;
 }
 
+void tree_index_swapped(struct tree *a, struct tree *b)
+{
+	/* a grid is owned by the tree struct it belongs to: a copy's pointer is not ours */
+	struct tree_index *ia = a->index && a->index->owner == b ? a->index : NULL;
+	struct tree_index *ib = b->index && b->index->owner == a ? b->index : NULL;
+
+	if (ia)
+		ia->owner = a;
+	if (ib)
+		ib->owner = b;
+}
+
+static uint64_t points_key(const struct branch *b)
+{
+	uint64_t k = b->npoints * 0x9e3779b97f4a7c15ULL;
+
+	if (b->npoints) {
+		const struct vec3 *e[2] = { &b->points[0], &b->points[b->npoints - 1] };
+
+		for (int i = 0; i < 2; i++) {
+			uint64_t u[3];
+
+			memcpy(u, e[i], sizeof(u));
+			for (int j = 0; j < 3; j++) {
+				k ^= u[j] + 0x9e3779b97f4a7c15ULL + (k << 6) + (k >> 2);
+				k *= 0xff51afd7ed558ccdULL;
+			}
+		}
+	}
+	return k ^ (k >> 31);
+}
+
+/* For each of src's branches, dst's with the same points (each taken once), or -1. */
+static int match_points(const struct tree *dst, const struct tree *src, int *map)
+{
+	size_t cap = 16;
+	uint64_t *key;
+	int *first, *next;
+
+	while (cap < 2 * dst->nbranches)
+		cap *= 2;
+	key = malloc(cap * sizeof(*key));
+	first = malloc(cap * sizeof(*first));
+	next = malloc((dst->nbranches + 1) * sizeof(*next));
+	if (!key || !first || !next) {
+		free(key);
+		free(first);
+		free(next);
+		return -1;
+	}
+	for (size_t i = 0; i < cap; i++)
+		first[i] = -1;
+	for (size_t j = dst->nbranches; j-- > 0;) {
+		uint64_t k = points_key(&dst->branches[j]);
+		size_t i = (size_t)k & (cap - 1);
+
+		while (first[i] >= 0 && key[i] != k)
+			i = (i + 1) & (cap - 1);
+		key[i] = k;
+		next[j] = first[i];
+		first[i] = (int)j;
+	}
+	for (size_t s = 0; s < src->nbranches; s++) {
+		const struct branch *b = &src->branches[s];
+		uint64_t k = points_key(b);
+		size_t i = (size_t)k & (cap - 1);
+
+		map[s] = -1;
+		while (first[i] >= 0 && key[i] != k)
+			i = (i + 1) & (cap - 1);
+		/* the first unused one with these points: the chain is in id order */
+		for (int *j = &first[i]; *j >= 0; j = &next[*j]) {
+			const struct branch *c = &dst->branches[*j];
+
+			if (c->npoints == b->npoints &&
+			    (b->npoints == 0 || memcmp(c->points, b->points, b->npoints * sizeof(*b->points)) == 0)) {
+				map[s] = *j;
+				*j = next[*j]; /* taken */
+				break;
+			}
+		}
+	}
+	free(key);
+	free(first);
+	free(next);
+	return 0;
+}
+
+void tree_index_move(struct tree *dst, struct tree *src)
+{
+	struct tree_index *idx = owned(src);
+	bool *have;
+	int *map;
+
+	tree_index_destroy(dst);
+	if (!idx || idx->world) {
+		tree_index_keep(dst);
+		return;
+	}
+	src->index = NULL;
+	dst->index = idx;
+	idx->owner = dst;
+	if (idx->stale)
+		return;
+	map = malloc((src->nbranches + 1) * sizeof(*map));
+	have = calloc(dst->nbranches + 1, sizeof(*have));
+	if (!map || !have || match_points(dst, src, map) < 0) {
+		idx->stale = true;
+		free(map);
+		free(have);
+		return;
+	}
+	/* what the grid holds of src (its first nindexed branches) under dst's numbers */
+	for (size_t s = 0; s < idx->nslots; s++) {
+		int id = idx->slot_id[s];
+
+		if (id < 0)
+			continue;
+		if ((size_t)id >= src->nbranches || map[id] < 0) {
+			slot_gone(idx, s);
+			continue;
+		}
+		idx->slot_id[s] = map[id];
+		have[map[id]] = true;
+	}
+	for (size_t j = 0; j < dst->nbranches && !idx->stale; j++)
+		if (!have[j] && add_branch(idx, dst, j) < 0)
+			idx->stale = true;
+	idx->nindexed = dst->nbranches;
+	free(map);
+	free(have);
+}
+
 /* A query: the screen point p, the line of world points shown there (through p0 along
  * dir), and what the tree looks like on the screen (xf, NULL for the front view). */
 struct query {
 	const struct tree_index *idx;
 	const struct tree *t;
 	const struct camera_xf *xf;
+	/* a view's copy, whose points are shown on demand: what candidates are measured in */
+	const struct tree *view;
+	void (*show)(void *ctx, int branch);
+	void *ctx;
 	struct vec3 p, p0, dir;
 	struct tree_index_hit best;
 	size_t probes, budget;
@@ -387,16 +524,13 @@ static void consider(struct query *q, const struct entry *e)
 
 	if (id < 0 || (size_t)id >= q->t->nbranches)
 		return;
-	b = &q->t->branches[id];
+	b = &(q->view ? q->view : q->t)->branches[id];
 	if ((size_t)e->segment + 1 >= b->npoints)
 		return; /* a cut shortened the branch */
+	if (!b->points)
+		q->show(q->ctx, id); /* turned once, then read as the copy holds it */
 	a = b->points[e->segment];
 	c = b->points[e->segment + 1];
-	if (q->xf) {
-		/* the very points sketch_view's copy holds */
-		a = camera_to_view(q->xf, a);
-		c = camera_to_view(q->xf, c);
-	}
 	d2 = tree_segment_d2(a, c, q->p, &s);
 	if (!(d2 < INFINITY))
 		return; /* the scan never takes these either */
@@ -606,12 +740,13 @@ bool tree_index_nearest(const struct tree *t, struct vec3 p, struct tree_index_h
 	/* a view of idx->world: its grid, its points turned (the copy was made of it as it
 	 * is now, unless the stroke since changed it: then the copy's own points) */
 	q.xf = idx->xf->identity ? NULL : idx->xf;
+	q.view = t;
+	q.show = idx->show;
+	q.ctx = idx->ctx;
 	if (idx->world->nbranches != t->nbranches || !owned(idx->world) ||
 	    !answer(&q, idx->world->index, idx->world))
 		goto scan;
-	if (q.best.branch >= 0)
-		idx->show(idx->ctx, q.best.branch);
-	*hit = q.best;
+	*hit = q.best; /* shown: it was measured */
 	return true;
 scan:
 	if (idx && idx->owner == t && idx->world)

@@ -84,3 +84,9 @@ void tree_index_drop(struct tree *t);
 void tree_index_renumbered(struct tree *t, const int *map, size_t nold);
 /* Branches from nb on are gone. */
 void tree_index_truncated(struct tree *t, size_t nb);
+/* a and b were swapped, their grids with them (tree_swap). */
+void tree_index_swapped(struct tree *a, struct tree *b);
+/* dst's content was just put in place of src's (a checkpoint put back): src's grid goes
+ * to dst, keeping the branches of dst with the same points as one of src's (renumbered)
+ * and adding the others. Quicker than a new grid when the two share most branches. */
+void tree_index_move(struct tree *dst, struct tree *src);

@@ -80,9 +80,12 @@ static void same_mesh(const struct mesh *a, const struct mesh *b)
 {
 	CHECK_INT(a->nvertices, b->nvertices);
 	CHECK_INT(a->nindices, b->nindices);
-	CHECK(a->nvertices == 0 || memcmp(a->positions, b->positions, a->nvertices * 3 * sizeof(float)) == 0);
-	CHECK(a->nvertices == 0 || memcmp(a->normals, b->normals, a->nvertices * 3 * sizeof(float)) == 0);
-	CHECK(a->nindices == 0 || memcmp(a->indices, b->indices, a->nindices * sizeof(uint32_t)) == 0);
+	if (a->nvertices) {
+		CHECK(memcmp(a->positions, b->positions, a->nvertices * 3 * sizeof(float)) == 0);
+		CHECK(memcmp(a->normals, b->normals, a->nvertices * 3 * sizeof(float)) == 0);
+	}
+	if (a->nindices)
+		CHECK(memcmp(a->indices, b->indices, a->nindices * sizeof(uint32_t)) == 0);
 }
 
 static void same_tree(const struct tree *a, const struct tree *b)
@@ -275,7 +278,8 @@ static bool act(struct app *app, struct rng *r, int *propagations, bool gentle)
 	} else if (what < 57) {
 		press(app, BUTTON_3D);
 	} else if (what < 61) {
-		app_set_camera(app, (struct camera){ (float)rng_range(r, -80, 80), (float)rng_range(r, -15, 40) });
+		app_set_camera(app, (struct camera){ (float)rng_range(r, -80, 80),
+						    (float)rng_range(r, -15, 40) });
 	} else if (what < 62) {
 		press(app, BUTTON_VIEW);
 	} else if (what < 68) {
