@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include "history.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -81,16 +82,47 @@ static size_t distance(size_t a, size_t b)
 	return a > b ? a - b : b - a;
 }
 
-/* Over the budget, the checkpoints farthest from the cursor go, but never the last two. */
+/* Over the budget a checkpoint goes whose going leaves the smallest gap for how far it is
+ * from the cursor: far from it they thin out, so that a long walk back replays
+ * about as many ops as it has come (logarithmic spacing). The two nearest the cursor
+ * stay. */
 static void evict(struct history *h, size_t cursor)
 {
 	while (h->bytes > h->budget && h->ncps > 2) {
-		size_t far = 0;
+		size_t near[2] = { 0, 1 }, victim = SIZE_MAX;
+		double best = 0.0;
 
-		for (size_t i = 1; i < h->ncps; i++)
-			if (distance(h->cps[i].at, cursor) > distance(h->cps[far].at, cursor))
-				far = i;
-		checkpoint_drop(h, far);
+		for (size_t i = 0; i < h->ncps; i++) {
+			size_t d = distance(h->cps[i].at, cursor);
+
+			if (i < 2)
+				continue;
+			if (d < distance(h->cps[near[0]].at, cursor)) {
+				near[1] = near[0];
+				near[0] = i;
+			} else if (d < distance(h->cps[near[1]].at, cursor)) {
+				near[1] = i;
+			}
+		}
+		if (distance(h->cps[near[1]].at, cursor) < distance(h->cps[near[0]].at, cursor)) {
+			size_t x = near[0];
+
+			near[0] = near[1];
+			near[1] = x;
+		}
+		for (size_t i = 0; i < h->ncps; i++) {
+			size_t prev = i > 0 ? h->cps[i - 1].at : 0;
+			size_t next = i + 1 < h->ncps ? h->cps[i + 1].at : h->cps[i].at;
+			double score = (double)(next - prev) / (double)(distance(h->cps[i].at, cursor) + 1);
+
+			if (i == near[0] || i == near[1])
+				continue;
+			if (victim == SIZE_MAX || score < best) {
+				victim = i;
+				best = score;
+			}
+		}
+		checkpoint_drop(h, victim);
 	}
 }
 
@@ -129,11 +161,29 @@ static void record_checkpoint(struct history *h, size_t k, const struct tree *t,
 	evict(h, cursor);
 }
 
+/* Which half doubling of HISTORY_NEAR distance d is in (-1 below it). */
+static int band(size_t d)
+{
+	return d < HISTORY_NEAR ? -1 : (int)floor(2.0 * log2((double)d / HISTORY_NEAR));
+}
+
+/* Spacing checkpoints near the cursor, and two a doubling of the distance farther out:
+ * a replay towards the cursor copies the tree O(log n) times. (Where checkpoints are
+ * changes no result: each is an exact copy.) */
+static bool due(size_t k, size_t cursor)
+{
+	size_t d = cursor > k ? cursor - k : 0;
+
+	if (k == 0 || k % HISTORY_SPACING != 0)
+		return false;
+	return d < HISTORY_NEAR || band(d) != band(d - HISTORY_SPACING);
+}
+
 void history_record(struct history *h, size_t k, const struct tree *t, const struct rng *rng,
 		    bool grew, bool slow, size_t cursor)
 {
 	record_mark(h, k, t, rng, grew);
-	if (slow || (k > 0 && k % HISTORY_SPACING == 0 && k + HISTORY_NEAR > cursor))
+	if (slow || due(k, cursor))
 		record_checkpoint(h, k, t, rng, cursor);
 }
 

@@ -18,19 +18,20 @@
  *   such an op is cutting the tree back to the previous mark's counts (tree_truncate) and
  *   putting back that mark's state.
  * - Checkpoints: exact copies of the tree and generator at some states, taken going
- *   forward at every HISTORY_SPACING-th state less than HISTORY_NEAR below the cursor
- *   (a replay towards it copies the tree a few times, not at every spacing: --load stays
- *   linear), and after an op slow to apply (lift, propagate). Undoing any other op
- *   replays from the nearest checkpoint below.
+ *   forward: at every HISTORY_SPACING-th state less than HISTORY_NEAR below the cursor,
+ *   two at each doubling of that distance (so a replay towards the cursor, --load,
+ *   copies the tree O(log n) times), and after an op slow to apply (lift, propagate).
+ *   Undoing any other op replays from the nearest checkpoint below, and leaves spacing
+ *   checkpoints behind it for the next undo.
  *
  * Memory: marks take sizeof(struct history_mark) (about 200 bytes) a state, at most
- * DOC_MAX_OPS + 1 of them. Checkpoints take at most HISTORY_BUDGET_BYTES
- * (tree_bytes of their trees), except that the two nearest the cursor are always kept:
+ * DOC_MAX_OPS + 1 of them. Checkpoints take at most `budget` (HISTORY_BUDGET_BYTES, by
+ * tree_bytes of their trees), except that the two nearest the cursor are always kept:
  * the bound is HISTORY_BUDGET_BYTES or two copies of the largest tree, whichever is
- * more. Over it, the checkpoints farthest from the cursor go first.
+ * more. Over it, checkpoints thin out away from the cursor (evict() in history.c).
  */
-#define HISTORY_SPACING 32
-#define HISTORY_NEAR (4 * HISTORY_SPACING)
+#define HISTORY_SPACING 16
+#define HISTORY_NEAR (8 * HISTORY_SPACING)
 #define HISTORY_BUDGET_BYTES (64u << 20)
 
 struct history_mark {
