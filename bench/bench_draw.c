@@ -2,9 +2,12 @@
 #include "bench_draw.h"
 
 #include <math.h>
+#include <stdint.h>
 
 #include "bench_util.h"
+#include "layout.h"
 #include "rng.h"
+#include "sketch_view.h"
 
 static void pen_event(struct app *app, struct bench_pen *pen, enum event_type type, double x,
 		      double y)
@@ -63,6 +66,127 @@ struct app *bench_draw_tree(struct bench_pen *pen, int nbranches)
 		bench_draw_stroke(app, pen, x, y, x + dx, y + dy, 32, NULL);
 		if (i % 10 == 9)
 			leaf_loop(app, pen, x + dx, y + dy - 14);
+	}
+	return app;
+}
+
+static void button(struct app *app, struct bench_pen *pen, enum button b)
+{
+	struct event ev = { .type = EVENT_BUTTON, .time_us = pen->now_us, .button = (int)b };
+
+	ev.pressed = true;
+	app_handle_event(app, &ev);
+	ev.pressed = false;
+	app_handle_event(app, &ev);
+	pen->now_us += 500000;
+}
+
+/* Where a point of the tree is on the screen through the app's camera; false when it is
+ * off the canvas or on a button. */
+static bool seen_at(const struct app *app, struct vec3 world, double *x, double *y)
+{
+	struct camera_xf xf;
+	enum button hit;
+
+	camera_xf_init(&xf, app->camera, sketch_view_pivot(&app->tree));
+	view_to_screen(&app->view, camera_to_view(&xf, world), x, y);
+	return *x > 40 && *x < app->view.width - 40 && *y > 40 && *y < app->view.height - 40 &&
+	       !layout_hit(&app->view, *x, *y, &hit) && !layout_hit_view_button(&app->view, *x, *y);
+}
+
+static size_t children(const struct tree *t, size_t b)
+{
+	size_t n = 0;
+
+	for (size_t i = b + 1; i < t->nbranches; i++)
+		n += t->branches[i].parent == (int)b;
+	return n;
+}
+
+/* A random branch with at least `least` and at most `most` child branches, and a point
+ * of it as seen. */
+static bool pick(const struct app *app, struct rng *rng, size_t least, size_t most, double *x,
+		 double *y)
+{
+	for (int tries = 0; tries < 50; tries++) {
+		size_t b = rng_next(rng) % app->tree.nbranches;
+		const struct branch *br = &app->tree.branches[b];
+		size_t n = least || most < SIZE_MAX ? children(&app->tree, b) : 0;
+
+		if (n < least || n > most)
+			continue;
+		if (seen_at(app, br->points[(br->npoints - 1) / 2 + rng_next(rng) % (br->npoints / 2 + 1)],
+			    x, y))
+			return true;
+	}
+	return false;
+}
+
+static void tap(struct app *app, struct bench_pen *pen, double x, double y)
+{
+	pen_event(app, pen, EVENT_TIP_DOWN, x, y);
+	pen_event(app, pen, EVENT_TIP_UP, x, y);
+	pen->now_us += 300000;
+}
+
+/* A clone-mode circle round (x, y): clockwise on the screen adds a child. */
+static void circle(struct app *app, struct bench_pen *pen, double x, double y, bool add)
+{
+	double dir = add ? 1.0 : -1.0;
+
+	pen_event(app, pen, EVENT_TIP_DOWN, x + 40, y);
+	for (int i = 1; i <= 30; i++)
+		pen_event(app, pen, EVENT_MOTION, x + 40 * cos(dir * i * 0.23), y + 40 * sin(dir * i * 0.23));
+	pen_event(app, pen, EVENT_TIP_UP, x + 40 * cos(dir * 30 * 0.23), y + 40 * sin(dir * 30 * 0.23));
+	pen->now_us += 300000;
+}
+
+struct app *bench_draw_edited(struct bench_pen *pen, int nbranches, size_t nops, int npropagate)
+{
+	struct app *app = bench_draw_tree(pen, nbranches);
+	struct rng rng;
+	double x, y;
+
+	if (!app)
+		return NULL;
+	rng_seed(&rng, 43);
+	button(app, pen, BUTTON_3D);
+	pen->now_us += APP_TURN_US;
+	while (app->doc.nops < nops && app->tree.nbranches > 0) {
+		unsigned what = (unsigned)(rng_next(&rng) % 100);
+
+		if (what < 55) {
+			/* a branch drawn on the tree as turned */
+			app_set_camera(app, (struct camera){ (float)rng_range(&rng, -70, 70),
+							    (float)rng_range(&rng, -10, 30) });
+			if (pick(app, &rng, 0, SIZE_MAX, &x, &y))
+				bench_draw_stroke(app, pen, x, y, x + rng_range(&rng, -150, 150),
+						  y + rng_range(&rng, -120, -10), 24, NULL);
+		} else if (what < 65) {
+			if (pick(app, &rng, 0, SIZE_MAX, &x, &y))
+				leaf_loop(app, pen, x, y - 14);
+			pen->now_us += 4000000;
+		} else if (what < 98 || npropagate == 0) {
+			/* clone mode, from the front: tap a parent twice (a child more), or circle it */
+			app_set_camera(app, (struct camera){ 0, 0 });
+			button(app, pen, BUTTON_CLONE);
+			if (pick(app, &rng, 1, SIZE_MAX, &x, &y)) {
+				tap(app, pen, x, y);
+				if (what < 88)
+					tap(app, pen, x, y);
+				else
+					circle(app, pen, x, y, what < 92);
+			}
+			button(app, pen, BUTTON_CLONE);
+		} else {
+			app_set_camera(app, (struct camera){ 0, 0 });
+			/* a twig of one child, copied onto every branch: each doubles the tree */
+			button(app, pen, BUTTON_PROPAGATE);
+			if (pick(app, &rng, 1, 1, &x, &y))
+				tap(app, pen, x, y);
+			button(app, pen, BUTTON_PROPAGATE);
+			npropagate--;
+		}
 	}
 	return app;
 }

@@ -17,6 +17,13 @@ struct bench_pen {
 };
 
 struct app *bench_draw_tree(struct bench_pen *pen, int nbranches);
+/*
+ * A drawing of about `nops` edits the way a long session goes: bench_draw_tree's sketch
+ * of `nbranches` strokes, the 3D button, then strokes and leaves drawn on the tree turned
+ * this way and that, clone-mode taps and circles (children added and removed), and now
+ * and then a propagation (at most `npropagate`). Seeded.
+ */
+struct app *bench_draw_edited(struct bench_pen *pen, int nbranches, size_t nops, int npropagate);
 /* A wavy stroke of npoints points from (x0,y0) to (x1,y1). If event_s is given, the wall
  * time of each motion event is stored there (npoints - 2 entries). */
 void bench_draw_stroke(struct app *app, struct bench_pen *pen, double x0, double y0, double x1,
