@@ -1,6 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* Fig. 4: a branch drawn as its two outlines gets their radius profile, and later single
  * strokes taper the same way; what is not a pair of outlines stays two branches. */
+#include <math.h>
+#include <stdio.h>
+
 #include "app.h"
 #include "test.h"
 
@@ -89,24 +92,93 @@ static void test_not_outlines(void)
 	app_destroy(app);
 }
 
+/* Radius never grows from root to tip, and the root is at most a quarter of the length. */
+static void check_taper(const struct app *app)
+{
+	for (size_t i = 0; i < app->tree.nbranches; i++) {
+		const struct branch *b = &app->tree.branches[i];
+
+		for (size_t k = 1; k < b->npoints; k++)
+			CHECK(b->radii[k] <= b->radii[k - 1] * (1 + 1e-9));
+		CHECK(b->radii[0] <= 0.25 * vec3_polyline_length(b->points, b->npoints) * (1 + 1e-9));
+	}
+}
+
 static void test_outlines_meeting_at_the_tip(void)
 {
 	struct app *app = app_create(1280, 800, 1);
 
-	/* the second outline starts where the first ended: radius 0 at the tip */
+	/* a second stroke that starts where the first ended: a V of two branches
+	 * (docs/sketching.md: outlines do not close in to a point) */
 	line(app, 600, 736, 640, 300);
 	line(app, 640, 300, 680, 736);
-	CHECK_INT(app->tree.nbranches, 1);
-	CHECK(app->tree.has_profile);
-	/* later branches still end in a twig, not a needle of radius 0 */
+	CHECK_INT(app->tree.nbranches, 2);
+	CHECK(!app->tree.has_profile);
+	/* later branches still taper the default way, to a twig */
 	line(app, 640, 500, 900, 400);
-	CHECK(app->tree.branches[1].radii[app->tree.branches[1].npoints - 1] > 0);
+	CHECK(app->tree.branches[2].radii[app->tree.branches[2].npoints - 1] > 0);
+	check_taper(app);
 	app_destroy(app);
+}
+
+/* Two strokes from one point that open up are two branches, at any angle of a fan. */
+static void test_fan_is_two_branches(void)
+{
+	for (int deg = 5; deg <= 45; deg += 5) {
+		struct app *app = app_create(1280, 800, 1);
+		double a = deg * VEC_PI / 180.0;
+
+		line(app, 640, 736, 640, 436);
+		line(app, 640, 436, 640 + 200 * sin(a / 2), 436 - 200 * cos(a / 2));
+		line(app, 640, 436, 640 - 200 * sin(a / 2), 436 - 200 * cos(a / 2));
+		CHECK_INT(app->tree.nbranches, 3);
+		CHECK(!app->tree.has_profile);
+		/* and beside each other but 6 px apart at the root and opening up */
+		line(app, 640, 600, 640 + 200 * cos(a), 600 - 200 * sin(a));
+		line(app, 640, 594, 640 + 200 * cos(2 * a), 594 - 200 * sin(2 * a));
+		CHECK_INT(app->tree.nbranches, 5);
+		check_taper(app);
+		app_destroy(app);
+	}
+}
+
+/* Where each threshold of docs/sketching.md lies, both sides. */
+static void test_outline_thresholds(void)
+{
+	struct {
+		double gap_root, gap_tip; /* px, a vertical trunk 400 px long */
+		int branches;
+	} cases[] = {
+		{ 40, 40, 1 },   /* parallel */
+		{ 40, 9, 1 },    /* closes in 4.4x */
+		{ 40, 7, 2 },    /* 5.7x: two branches */
+		{ 40, 44, 1 },   /* widens within the wobble */
+		{ 40, 60, 2 },   /* widens 1.5x */
+		{ 1.6, 1.6, 2 }, /* on top of each other: no thickness at the root */
+		{ 3, 3, 1 },     /* a thin branch's thickness apart */
+		{ 190, 150, 1 }, /* root radius 95 px < 400 / 4 */
+		{ 220, 190, 2 }, /* 110 px > 400 / 4 */
+	};
+
+	for (size_t c = 0; c < sizeof(cases) / sizeof(cases[0]); c++) {
+		struct app *app = app_create(1280, 800, 1);
+
+		line(app, 640 - cases[c].gap_root / 2, 736, 640 - cases[c].gap_tip / 2, 336);
+		line(app, 640 + cases[c].gap_tip / 2, 336, 640 + cases[c].gap_root / 2, 736);
+		if (app->tree.nbranches != (size_t)cases[c].branches)
+			fprintf(stderr, "case %zu: %g -> %g px\n", c, cases[c].gap_root, cases[c].gap_tip);
+		CHECK_INT(app->tree.nbranches, cases[c].branches);
+		CHECK(app->tree.has_profile == (cases[c].branches == 1));
+		check_taper(app);
+		app_destroy(app);
+	}
 }
 
 int main(void)
 {
 	test_outlines_meeting_at_the_tip();
+	test_fan_is_two_branches();
+	test_outline_thresholds();
 	test_two_outlines();
 	test_not_outlines();
 	return 0;
