@@ -6,13 +6,11 @@
 #include "bench_util.h"
 #include "rng.h"
 
-static void pen_event(struct app *app, struct bench_pen *pen, enum event_type type, double x,
+/* One event of the pen's tip, at the pressure of all of them. */
+static void tip_event(struct app *app, struct bench_pen *pen, enum event_type type, double x,
 		      double y)
 {
-	struct event ev = { .type = type, .time_us = pen->now_us, .x = x, .y = y, .pressure = 0.6 };
-
-	pen->now_us += 8000;
-	app_handle_event(app, &ev);
+	pen_event(&pen->pen, app, type, EVENT_TOOL_PEN, x, y, 0.6);
 }
 
 void bench_draw_stroke(struct app *app, struct bench_pen *pen, double x0, double y0, double x1,
@@ -20,28 +18,28 @@ void bench_draw_stroke(struct app *app, struct bench_pen *pen, double x0, double
 {
 	double t0;
 
-	pen_event(app, pen, EVENT_TIP_DOWN, x0, y0);
+	tip_event(app, pen, EVENT_TIP_DOWN, x0, y0);
 	for (int i = 1; i < npoints - 1; i++) {
 		double t = (double)i / (npoints - 1);
 
 		t0 = bench_now();
-		pen_event(app, pen, EVENT_MOTION, x0 + (x1 - x0) * t + 4 * sin(t * 9), y0 + (y1 - y0) * t);
+		tip_event(app, pen, EVENT_MOTION, x0 + (x1 - x0) * t + 4 * sin(t * 9), y0 + (y1 - y0) * t);
 		if (event_s)
 			event_s[i - 1] = bench_now() - t0;
 	}
 	t0 = bench_now();
-	pen_event(app, pen, EVENT_TIP_UP, x1, y1);
+	tip_event(app, pen, EVENT_TIP_UP, x1, y1);
 	pen->last_commit_s = bench_now() - t0;
 	/* a pause, so strokes are never taken for two outlines of one branch */
-	pen->now_us += 4000000;
+	pen->pen.now_us += PEN_PAUSE_US;
 }
 
 static void leaf_loop(struct app *app, struct bench_pen *pen, double cx, double cy)
 {
-	pen_event(app, pen, EVENT_TIP_DOWN, cx + 12, cy);
+	tip_event(app, pen, EVENT_TIP_DOWN, cx + 12, cy);
 	for (int i = 1; i <= 24; i++)
-		pen_event(app, pen, EVENT_MOTION, cx + 12 * cos(i * 0.26), cy + 12 * sin(i * 0.26));
-	pen_event(app, pen, EVENT_TIP_UP, cx + 12 * cos(24 * 0.26), cy + 12 * sin(24 * 0.26));
+		tip_event(app, pen, EVENT_MOTION, cx + 12 * cos(i * 0.26), cy + 12 * sin(i * 0.26));
+	tip_event(app, pen, EVENT_TIP_UP, cx + 12 * cos(24 * 0.26), cy + 12 * sin(24 * 0.26));
 }
 
 struct app *bench_draw_tree(struct bench_pen *pen, int nbranches)

@@ -25,7 +25,7 @@ int main(void)
 
 	printf("rebuild = replay the whole history (undo/redo/--load); commit = one more stroke\n");
 	for (int n = 62; n <= 500; n *= 2) {
-		struct bench_pen pen = { .now_us = 1000 };
+		struct bench_pen pen = { .pen.now_us = 1000 };
 		struct app *app = bench_draw_tree(&pen, n);
 		double t_rebuild, last[REPS];
 		char name[64];
