@@ -50,7 +50,7 @@ int main(void)
 	}
 	printf("commit = one stroke appended and fsync'ed; restart = read, replay, rewrite the journal\n");
 	for (int n = 62; n <= 500; n *= 2) {
-		struct bench_pen pen = { .now_us = 1000 };
+		struct bench_pen pen = { .pen.now_us = 1000 };
 		struct app *app = bench_draw_tree(&pen, n);
 		struct error err;
 		struct autosave *a = autosave_create(dir, &err);

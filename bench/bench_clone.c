@@ -155,7 +155,7 @@ static int drawn_lifted(void)
 
 	printf("drawn trees lifted to 3D (with the merge), on the trunk\n");
 	for (size_t s = 0; s < sizeof(sizes) / sizeof(sizes[0]); s++) {
-		struct bench_pen pen = { .now_us = 1000 };
+		struct bench_pen pen = { .pen.now_us = 1000 };
 		struct app *app = bench_draw_tree(&pen, sizes[s]);
 		struct tree t;
 		struct rng rng;

@@ -9,13 +9,11 @@
 #include "rng.h"
 #include "sketch_view.h"
 
-static void pen_event(struct app *app, struct bench_pen *pen, enum event_type type, double x,
+/* One event of the pen's tip, at the pressure of all of them. */
+static void tip_event(struct app *app, struct bench_pen *pen, enum event_type type, double x,
 		      double y)
 {
-	struct event ev = { .type = type, .time_us = pen->now_us, .x = x, .y = y, .pressure = 0.6 };
-
-	pen->now_us += 8000;
-	app_handle_event(app, &ev);
+	pen_event(&pen->pen, app, type, EVENT_TOOL_PEN, x, y, 0.6);
 }
 
 void bench_draw_stroke(struct app *app, struct bench_pen *pen, double x0, double y0, double x1,
@@ -23,28 +21,28 @@ void bench_draw_stroke(struct app *app, struct bench_pen *pen, double x0, double
 {
 	double t0;
 
-	pen_event(app, pen, EVENT_TIP_DOWN, x0, y0);
+	tip_event(app, pen, EVENT_TIP_DOWN, x0, y0);
 	for (int i = 1; i < npoints - 1; i++) {
 		double t = (double)i / (npoints - 1);
 
 		t0 = bench_now();
-		pen_event(app, pen, EVENT_MOTION, x0 + (x1 - x0) * t + 4 * sin(t * 9), y0 + (y1 - y0) * t);
+		tip_event(app, pen, EVENT_MOTION, x0 + (x1 - x0) * t + 4 * sin(t * 9), y0 + (y1 - y0) * t);
 		if (event_s)
 			event_s[i - 1] = bench_now() - t0;
 	}
 	t0 = bench_now();
-	pen_event(app, pen, EVENT_TIP_UP, x1, y1);
+	tip_event(app, pen, EVENT_TIP_UP, x1, y1);
 	pen->last_commit_s = bench_now() - t0;
 	/* a pause, so strokes are never taken for two outlines of one branch */
-	pen->now_us += 4000000;
+	pen->pen.now_us += PEN_PAUSE_US;
 }
 
 static void leaf_loop(struct app *app, struct bench_pen *pen, double cx, double cy)
 {
-	pen_event(app, pen, EVENT_TIP_DOWN, cx + 12, cy);
+	tip_event(app, pen, EVENT_TIP_DOWN, cx + 12, cy);
 	for (int i = 1; i <= 24; i++)
-		pen_event(app, pen, EVENT_MOTION, cx + 12 * cos(i * 0.26), cy + 12 * sin(i * 0.26));
-	pen_event(app, pen, EVENT_TIP_UP, cx + 12 * cos(24 * 0.26), cy + 12 * sin(24 * 0.26));
+		tip_event(app, pen, EVENT_MOTION, cx + 12 * cos(i * 0.26), cy + 12 * sin(i * 0.26));
+	tip_event(app, pen, EVENT_TIP_UP, cx + 12 * cos(24 * 0.26), cy + 12 * sin(24 * 0.26));
 }
 
 struct app *bench_draw_tree(struct bench_pen *pen, int nbranches)
@@ -72,13 +70,7 @@ struct app *bench_draw_tree(struct bench_pen *pen, int nbranches)
 
 static void button(struct app *app, struct bench_pen *pen, enum button b)
 {
-	struct event ev = { .type = EVENT_BUTTON, .time_us = pen->now_us, .button = (int)b };
-
-	ev.pressed = true;
-	app_handle_event(app, &ev);
-	ev.pressed = false;
-	app_handle_event(app, &ev);
-	pen->now_us += 500000;
+	pen_button(&pen->pen, app, b);
 }
 
 /* Where a point of the tree is on the screen through the app's camera; false when it is
@@ -124,9 +116,9 @@ static bool pick(const struct app *app, struct rng *rng, size_t least, size_t mo
 
 static void tap(struct app *app, struct bench_pen *pen, double x, double y)
 {
-	pen_event(app, pen, EVENT_TIP_DOWN, x, y);
-	pen_event(app, pen, EVENT_TIP_UP, x, y);
-	pen->now_us += 300000;
+	tip_event(app, pen, EVENT_TIP_DOWN, x, y);
+	tip_event(app, pen, EVENT_TIP_UP, x, y);
+	pen->pen.now_us += 300000;
 }
 
 /* A clone-mode circle round (x, y): clockwise on the screen adds a child. */
@@ -134,11 +126,11 @@ static void circle(struct app *app, struct bench_pen *pen, double x, double y, b
 {
 	double dir = add ? 1.0 : -1.0;
 
-	pen_event(app, pen, EVENT_TIP_DOWN, x + 40, y);
+	tip_event(app, pen, EVENT_TIP_DOWN, x + 40, y);
 	for (int i = 1; i <= 30; i++)
-		pen_event(app, pen, EVENT_MOTION, x + 40 * cos(dir * i * 0.23), y + 40 * sin(dir * i * 0.23));
-	pen_event(app, pen, EVENT_TIP_UP, x + 40 * cos(dir * 30 * 0.23), y + 40 * sin(dir * 30 * 0.23));
-	pen->now_us += 300000;
+		tip_event(app, pen, EVENT_MOTION, x + 40 * cos(dir * i * 0.23), y + 40 * sin(dir * i * 0.23));
+	tip_event(app, pen, EVENT_TIP_UP, x + 40 * cos(dir * 30 * 0.23), y + 40 * sin(dir * 30 * 0.23));
+	pen->pen.now_us += 300000;
 }
 
 struct app *bench_draw_edited(struct bench_pen *pen, int nbranches, size_t nops, int npropagate)
@@ -151,7 +143,7 @@ struct app *bench_draw_edited(struct bench_pen *pen, int nbranches, size_t nops,
 		return NULL;
 	rng_seed(&rng, 43);
 	button(app, pen, BUTTON_3D);
-	pen->now_us += APP_TURN_US;
+	pen->pen.now_us += APP_TURN_US;
 	while (app->doc.nops < nops && app->tree.nbranches > 0) {
 		unsigned what = (unsigned)(rng_next(&rng) % 100);
 
@@ -165,7 +157,7 @@ struct app *bench_draw_edited(struct bench_pen *pen, int nbranches, size_t nops,
 		} else if (what < 65) {
 			if (pick(app, &rng, 0, SIZE_MAX, &x, &y))
 				leaf_loop(app, pen, x, y - 14);
-			pen->now_us += 4000000;
+			pen->pen.now_us += PEN_PAUSE_US;
 		} else if (what < 98 || npropagate == 0) {
 			/* clone mode, from the front: tap a parent twice (a child more), or circle it */
 			app_set_camera(app, (struct camera){ 0, 0 });

@@ -5,6 +5,7 @@
 #include <stdint.h>
 
 #include "app.h"
+#include "pen.h"
 
 /*
  * Drawings made the way a visitor makes them, through pen events: a trunk and
@@ -12,7 +13,7 @@
  * a leaf loop every tenth branch. Seeded, so every run draws the same.
  */
 struct bench_pen {
-	uint64_t now_us;
+	struct pen pen;       /* its clock (tests/app/pen.h) */
 	double last_commit_s; /* wall time of the latest tip-up (the commit) */
 };
 

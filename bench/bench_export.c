@@ -110,7 +110,7 @@ static int run_size(int nbranches, struct result *res)
 /* The mesh of a drawn tree: median build time, its size. */
 static int run_drawn(int nbranches, struct result *res)
 {
-	struct bench_pen pen = { .now_us = 1000 };
+	struct bench_pen pen = { .pen.now_us = 1000 };
 	struct app *app = bench_draw_tree(&pen, nbranches);
 	struct tree_mesh tm;
 	double times[REPS];

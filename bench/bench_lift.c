@@ -21,7 +21,7 @@ int main(void)
 	double pn = 0, pt = 0, first = 0;
 
 	for (size_t s = 0; s < sizeof(sizes) / sizeof(sizes[0]); s++) {
-		struct bench_pen pen = { .now_us = 1000 };
+		struct bench_pen pen = { .pen.now_us = 1000 };
 		struct app *app = bench_draw_tree(&pen, sizes[s]);
 		double t[REPS];
 		char name[64];

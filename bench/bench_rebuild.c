@@ -190,7 +190,7 @@ static void strokes(void)
 
 	printf("%-40s %8s %12s\n", "drawn strokes", "strokes", "median");
 	for (int n = 62; n <= 1000; n *= 2) {
-		struct bench_pen pen = { .now_us = 1000 };
+		struct bench_pen pen = { .pen.now_us = 1000 };
 		struct app *app = bench_draw_tree(&pen, n), *loaded;
 		double t_rebuild, last[REPS];
 		struct walk undo, redo;
@@ -225,7 +225,7 @@ static void strokes(void)
 static void session(void)
 {
 	struct series reb = { 0 }, ld = { 0 }, any[4] = { { 0 } };
-	struct bench_pen pen = { .now_us = 1000 };
+	struct bench_pen pen = { .pen.now_us = 1000 };
 	struct app *app = bench_draw_edited(&pen, 500, 2000, 2), *loaded;
 	struct walk undo, redo;
 	char name[64];

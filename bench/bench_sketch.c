@@ -33,7 +33,7 @@ static int run(bool turned)
 	if (!ev)
 		return 1;
 	for (int n = 125; n <= 1000; n *= 2) {
-		struct bench_pen pen = { .now_us = 1000 };
+		struct bench_pen pen = { .pen.now_us = 1000 };
 		struct app *app = bench_draw_tree(&pen, n);
 		double commit[REPS], orbit[REPS * 10];
 		char name[64];

@@ -13,6 +13,9 @@
 #define MIN_ROOT_RADIUS_M 0.015
 #define TIP_RADIUS_FRACTION 0.2
 #define CHILD_RADIUS_FRACTION 0.7
+/* A branch is never thicker at its root than a quarter of its length: a short twig on a
+ * thick limb is a twig, not a stump. */
+#define MAX_ROOT_RADIUS_PER_LENGTH 0.25
 
 int sketch_resample(const struct vec3 *in, size_t n, double step, struct vec3 **out, size_t *nout)
 {
@@ -177,6 +180,21 @@ static double radius_at(const struct branch *b, const struct sketch_hit *h)
 	return r0 + (r1 - r0) * h->seg_t;
 }
 
+/* A branch's radius at arc-length parameter s (0..1). */
+static double radius_at_param(const struct branch *b, double s)
+{
+	double len = vec3_polyline_length(b->points, b->npoints), want = s * len, walked = 0.0;
+
+	for (size_t i = 0; i + 1 < b->npoints; i++) {
+		double seg = vec3_dist(b->points[i], b->points[i + 1]);
+
+		if (walked + seg >= want && seg > 0)
+			return b->radii[i] + (b->radii[i + 1] - b->radii[i]) * (want - walked) / seg;
+		walked += seg;
+	}
+	return b->radii[b->npoints - 1];
+}
+
 /* Radius at s (0..1) as a fraction of the root's: the drawn profile once there is one. */
 static double profile_at(const struct tree *t, double s)
 {
@@ -235,11 +253,13 @@ static int add_branch(struct tree *t, const struct sketch_view *sv, struct vec3 
 			      CHILD_RADIUS_FRACTION * radius_at(&t->branches[hit.branch], &hit));
 		len = vec3_polyline_length(p, n);
 	}
+	root_r = fmin(root_r, MAX_ROOT_RADIUS_PER_LENGTH * len);
 	walked = 0.0;
 	for (size_t i = 0; i < n; i++) {
 		double s = len > 0 ? walked / len : 0.0;
 
-		radii[i] = drawn ? fmax(drawn[i], MIN_ROOT_RADIUS_M / 4) : root_r * profile_at(t, s);
+		radii[i] = drawn ? fmin(fmax(drawn[i], MIN_ROOT_RADIUS_M / 4), MAX_ROOT_RADIUS_PER_LENGTH * len)
+				 : root_r * profile_at(t, s);
 		if (i + 1 < n)
 			walked += vec3_dist(p[i], p[i + 1]);
 	}
@@ -333,10 +353,12 @@ static struct vec3 point_at(const struct vec3 *p, size_t n, double len, double s
 /*
  * Fig. 4: one branch drawn as its two outlines. The stroke b is taken as the second
  * outline of the branch `prev` the previous stroke drew when it came within
- * SKETCH_OUTLINE_PAUSE_US of it, is about as long, runs the same way and stays close
- * beside it all along: every pair of points at the same fraction of their lengths is
- * at most 0.6 x, and on average at most 0.3 x, the shorter length apart, and the two
- * chords are within 30 degrees. Returns 1 when it merged them, 0 when not, or -ENOMEM.
+ * SKETCH_OUTLINE_PAUSE_US of it, is about as long, runs the same way, and runs beside
+ * it as a branch's two edges do (docs/sketching.md): apart at the root by at least a
+ * thin branch's thickness and at most half the length, never opening up toward the
+ * tip, and closing in by at most SKETCH_OUTLINE_MAX_TAPER. A fan or a V of branches drawn
+ * one after the other meets at the root and opens up, so it stays two branches.
+ * Returns 1 when it merged them, 0 when not, or -ENOMEM.
  */
 static int outline_pair(struct tree *t, struct sketch_view *sv, const struct vec3 *b, size_t nb,
 			uint64_t start_us, int prev)
@@ -344,7 +366,7 @@ static int outline_pair(struct tree *t, struct sketch_view *sv, const struct vec
 	enum { N = 48 };
 	const struct branch *a;
 	struct vec3 axis[N], a0, a1, b0, b1, ca, cb;
-	double radii[N], la, lb, lmin, sum = 0.0, cosang;
+	double radii[N], gap[N], la, lb, lmin, cosang, narrowest;
 	bool reversed;
 	bool *remove;
 	int ret;
@@ -367,27 +389,42 @@ static int outline_pair(struct tree *t, struct sketch_view *sv, const struct vec
 	ca = vec3_sub(a1, a0);
 	cb = vec3_sub(b1, b0);
 	cosang = vec3_dot(ca, cb) / (vec3_len(ca) * vec3_len(cb) + 1e-12);
-	if (cosang < cos(30.0 * VEC_PI / 180.0))
+	if (cosang < cos(SKETCH_OUTLINE_MAX_CHORD_DEG * VEC_PI / 180.0))
 		return 0;
 	for (int i = 0; i < N; i++) {
 		double s = (double)i / (N - 1);
 		struct vec3 pa = point_at(a->points, a->npoints, la, s);
 		struct vec3 pb = point_at(b, nb, lb, reversed ? 1.0 - s : s);
-		double d;
 
 		/* compared on the screen: on a 3D tree the first outline lies at its parent's
 		 * depth, the second is still on the screen's plane */
 		pb.z = pa.z;
-		d = vec3_dist(pa, pb);
-
-		if (d > 0.6 * lmin)
-			return 0;
-		sum += d;
+		gap[i] = vec3_dist(pa, pb);
 		axis[i] = vec3_lerp(pa, pb, 0.5);
-		radii[i] = 0.5 * d;
 	}
-	if (sum / N > 0.3 * lmin)
+	/* as far apart at the root as a branch is thick: more than the thinnest branch, a
+	 * root radius of at most a quarter of the length, and no wider than the parent there
+	 * (two branches drawn one above the other on a trunk are as parallel as outlines) */
+	if (gap[0] < SKETCH_OUTLINE_MIN_GAP_M ||
+	    0.5 * gap[0] > MAX_ROOT_RADIUS_PER_LENGTH * vec3_polyline_length(axis, N))
 		return 0;
+	if (a->parent >= 0 &&
+	    0.5 * gap[0] > radius_at_param(&sv->tree->branches[a->parent], a->parent_t))
+		return 0;
+	/* never wider than anywhere nearer the root (but for a hand's wobble), and not
+	 * closing in to a point */
+	narrowest = gap[0];
+	for (int i = 1; i < N; i++) {
+		if (gap[i] > SKETCH_OUTLINE_WIDEN * narrowest + SKETCH_OUTLINE_WOBBLE_M)
+			return 0;
+		narrowest = fmin(narrowest, gap[i]);
+	}
+	if (gap[N - 1] * SKETCH_OUTLINE_MAX_TAPER < gap[0])
+		return 0;
+	/* the radius the wobble left: non-increasing from the root */
+	radii[0] = 0.5 * gap[0];
+	for (int i = 1; i < N; i++)
+		radii[i] = fmin(radii[i - 1], 0.5 * gap[i]);
 
 	/* The first outline's branch becomes the branch between the two. */
 	remove = calloc(t->nbranches, sizeof(*remove));
@@ -408,8 +445,8 @@ static int outline_pair(struct tree *t, struct sketch_view *sv, const struct vec
 		int k = (int)x;
 		double r = k + 1 < N ? radii[k] + (radii[k + 1] - radii[k]) * (x - k) : radii[N - 1];
 
-		/* never 0: outlines meeting at the tip must not make needle-thin twigs */
-		t->profile[i] = radii[0] > 0 ? fmin(fmax(r / radii[0], 0.25 * TIP_RADIUS_FRACTION), 4.0) : 1.0;
+		/* never 0: a twig, not a needle */
+		t->profile[i] = fmin(fmax(r / radii[0], 0.25 * TIP_RADIUS_FRACTION), 1.0);
 	}
 	t->has_profile = true;
 	return 1;

@@ -14,6 +14,15 @@
 #define SKETCH_MIN_LENGTH_M 0.1
 /* Two outlines of one branch (Fig. 4) are drawn within this pause of each other. */
 #define SKETCH_OUTLINE_PAUSE_US 3000000u
+/* ...and run beside each other as a branch's edges do (docs/sketching.md): their chords
+ * within this angle; at the root at least this far apart (a thin branch's thickness);
+ * never more than WIDEN x + WOBBLE apart than anywhere nearer the root; closing in by
+ * at most MAX_TAPER from root to tip (as much as a single stroke tapers). */
+#define SKETCH_OUTLINE_MAX_CHORD_DEG 30.0
+#define SKETCH_OUTLINE_MIN_GAP_M 0.03
+#define SKETCH_OUTLINE_WIDEN 1.15
+#define SKETCH_OUTLINE_WOBBLE_M 0.05
+#define SKETCH_OUTLINE_MAX_TAPER 5.0
 /* A closed stroke's area / length^2 at least (a V returning to its start is no leaf). */
 #define SKETCH_MIN_LEAF_ROUNDNESS 0.02
 /* At most this many samples a stroke: a longer stroke is sampled more coarsely. */

@@ -105,10 +105,15 @@ int sketch_view_init(struct sketch_view *sv, const struct tree *t, struct camera
 	sv->tree = s;
 	sv->nbranches = t->nbranches;
 	sv->lazy = true;
-	if (!tree_index_keep_view(s, t, &sv->xf, show, sv))
+	if (!tree_index_keep_view(s, t, &sv->xf, show, sv)) {
 		sketch_view_show_all(sv); /* no grid to ask: turned all at once, as scans need */
-	else if (t->nbranches > 0)
-		show_one(sv, false, t->nbranches - 1);
+		return 0;
+	}
+	/* the two-outline test reads the last branch and what it hangs on */
+	for (int b = (int)t->nbranches - 1, up = 0; b >= 0 && (size_t)up < t->nbranches; up++) {
+		show_one(sv, false, (size_t)b);
+		b = t->branches[b].parent < b ? t->branches[b].parent : -1;
+	}
 	return 0;
 }
 

@@ -14,10 +14,10 @@
  * Of a tree that keeps a grid (tree_index.h) the copy's points are turned only as they
  * are needed, so that a stroke on a turned tree costs what is near it, not the whole
  * tree: sketch_nearest finds its hits through the tree's grid and shows them, and the
- * last branch is shown from the start (the second outline of a branch looks at it). Code
- * that reads other points of the copy calls sketch_view_show_all first, before it
- * changes the tree other than by removing its last branch or appending: what is shown
- * later is turned from the tree as it is then.
+ * last branch and its ancestors are shown from the start (the two-outline test looks at
+ * the last branch and its parent). Code that reads other points of the copy calls
+ * sketch_view_show_all first, before it changes the tree other than by removing its last
+ * branch or appending: what is shown later is turned from the tree as it is then.
  */
 struct sketch_view {
 	struct camera_xf xf;

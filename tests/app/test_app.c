@@ -4,45 +4,31 @@
 
 #include "app.h"
 #include "layout.h"
+#include "pen.h"
 #include "test.h"
 
-static uint64_t now = 1000;
-
-static void ev_pen(struct app *app, enum event_type type, double x, double y, double p)
-{
-	struct event ev = { .type = type, .time_us = now, .x = x, .y = y, .pressure = p };
-
-	now += 8000;
-	app_handle_event(app, &ev);
-}
-
-static void ev_button(struct app *app, enum button b)
-{
-	struct event ev = { .type = EVENT_BUTTON, .time_us = now, .button = (int)b, .pressed = true };
-
-	app_handle_event(app, &ev);
-	ev.pressed = false;
-	ev.time_us += 50000;
-	app_handle_event(app, &ev);
-	now += 100000;
-}
+/* buttons held 50 ms */
+static struct pen pen = { .now_us = 1000, .hold_us = 50000 };
 
 static void draw_line(struct app *app, double x0, double y0, double x1, double y1)
 {
-	ev_pen(app, EVENT_PROXIMITY_IN, x0, y0, 0);
-	ev_pen(app, EVENT_TIP_DOWN, x0, y0, 0.3);
+	pen_event(&pen, app, EVENT_PROXIMITY_IN, EVENT_TOOL_PEN, x0, y0, 0);
+	pen_event(&pen, app, EVENT_TIP_DOWN, EVENT_TOOL_PEN, x0, y0, 0.3);
 	for (int i = 1; i <= 30; i++)
-		ev_pen(app, EVENT_MOTION, x0 + (x1 - x0) * i / 30, y0 + (y1 - y0) * i / 30, 0.6);
-	ev_pen(app, EVENT_TIP_UP, x1, y1, 0);
-	ev_pen(app, EVENT_PROXIMITY_OUT, x1, y1, 0);
+		pen_event(&pen, app, EVENT_MOTION, EVENT_TOOL_PEN, x0 + (x1 - x0) * i / 30,
+			  y0 + (y1 - y0) * i / 30, 0.6);
+	pen_event(&pen, app, EVENT_TIP_UP, EVENT_TOOL_PEN, x1, y1, 0);
+	pen_event(&pen, app, EVENT_PROXIMITY_OUT, EVENT_TOOL_PEN, x1, y1, 0);
 }
 
 static void draw_loop(struct app *app, double cx, double cy, double r)
 {
-	ev_pen(app, EVENT_TIP_DOWN, cx + r, cy, 0.5);
+	pen_event(&pen, app, EVENT_TIP_DOWN, EVENT_TOOL_PEN, cx + r, cy, 0.5);
 	for (int i = 1; i <= 36; i++)
-		ev_pen(app, EVENT_MOTION, cx + r * cos(i * 0.17), cy + r * sin(i * 0.17), 0.5);
-	ev_pen(app, EVENT_TIP_UP, cx + r * cos(36 * 0.17), cy + r * sin(36 * 0.17), 0);
+		pen_event(&pen, app, EVENT_MOTION, EVENT_TOOL_PEN, cx + r * cos(i * 0.17),
+			  cy + r * sin(i * 0.17), 0.5);
+	pen_event(&pen, app, EVENT_TIP_UP, EVENT_TOOL_PEN, cx + r * cos(36 * 0.17),
+		  cy + r * sin(36 * 0.17), 0);
 }
 
 static void same_mesh(const struct mesh *a, const struct mesh *b)
@@ -116,19 +102,19 @@ int main(void)
 
 		CHECK(tree_add_leaf(&snapshot, l->branch, l->origin, l->points, l->npoints) >= 0);
 	}
-	ev_button(app, BUTTON_UNDO);
-	ev_button(app, BUTTON_UNDO);
+	pen_button(&pen, app, BUTTON_UNDO);
+	pen_button(&pen, app, BUTTON_UNDO);
 	CHECK_INT(app->tree.nbranches, 2);
 	CHECK_INT(app->tree.nleaves, 0);
-	ev_button(app, BUTTON_REDO);
-	ev_button(app, BUTTON_REDO);
-	ev_button(app, BUTTON_REDO); /* nothing left to redo */
+	pen_button(&pen, app, BUTTON_REDO);
+	pen_button(&pen, app, BUTTON_REDO);
+	pen_button(&pen, app, BUTTON_REDO); /* nothing left to redo */
 	same_tree(&app->tree, &snapshot);
 
 	/* new clears, and is itself undoable */
-	ev_button(app, BUTTON_NEW);
+	pen_button(&pen, app, BUTTON_NEW);
 	CHECK_INT(app->tree.nbranches, 0);
-	ev_button(app, BUTTON_UNDO);
+	pen_button(&pen, app, BUTTON_UNDO);
 	same_tree(&app->tree, &snapshot);
 
 	/* the pen taps the on-screen buttons: undo, then redo */
@@ -141,10 +127,10 @@ int main(void)
 
 			if (buttons[i].button != BUTTON_UNDO && buttons[i].button != BUTTON_REDO)
 				continue;
-			ev_pen(app, EVENT_TIP_DOWN, cx, cy, 0.5);
+			pen_event(&pen, app, EVENT_TIP_DOWN, EVENT_TOOL_PEN, cx, cy, 0.5);
 			CHECK(app->buttons_down[buttons[i].button]);
 			CHECK(!app->stroke.active);
-			ev_pen(app, EVENT_TIP_UP, cx, cy, 0);
+			pen_event(&pen, app, EVENT_TIP_UP, EVENT_TOOL_PEN, cx, cy, 0);
 			CHECK(!app->buttons_down[buttons[i].button]);
 			CHECK_INT(app->tree.nleaves, buttons[i].button == BUTTON_UNDO ? 0 : 1);
 		}
@@ -153,19 +139,19 @@ int main(void)
 
 	/* modes toggle; on a sketch an editing mode makes it 3D first, as its own undoable
 	 * step (undoing it goes back to the sketch mode); export is a request for platform/ */
-	ev_button(app, BUTTON_LEAF);
+	pen_button(&pen, app, BUTTON_LEAF);
 	CHECK_INT(app->mode, APP_MODE_LEAF);
 	CHECK(app->tree.lifted);
 	CHECK_INT(app->doc.ops[app->doc.cursor - 1].kind, DOC_OP_LIFT);
-	ev_button(app, BUTTON_LEAF);
+	pen_button(&pen, app, BUTTON_LEAF);
 	CHECK_INT(app->mode, APP_MODE_SKETCH);
-	ev_button(app, BUTTON_CLONE);
+	pen_button(&pen, app, BUTTON_CLONE);
 	CHECK_INT(app->mode, APP_MODE_CLONE);
 	CHECK_INT(app->doc.ops[app->doc.cursor - 2].kind, DOC_OP_STROKE); /* already 3D */
-	ev_button(app, BUTTON_UNDO);
+	pen_button(&pen, app, BUTTON_UNDO);
 	CHECK(!app->tree.lifted);
 	CHECK_INT(app->mode, APP_MODE_SKETCH);
-	ev_button(app, BUTTON_EXPORT);
+	pen_button(&pen, app, BUTTON_EXPORT);
 	CHECK_INT(app_take_requests(app), APP_REQUEST_EXPORT);
 	CHECK_INT(app_take_requests(app), 0);
 	/* the answer: a message for APP_STATUS_US; a held one (saving) until the next */
@@ -195,13 +181,13 @@ int main(void)
 		const struct branch *nb3;
 		double z;
 
-		ev_button(app, BUTTON_3D);
+		pen_button(&pen, app, BUTTON_3D);
 		CHECK(app->tree.lifted);
 		CHECK_INT(app->doc.ops[app->doc.cursor - 1].kind, DOC_OP_LIFT);
 		CHECK(app->tree.nbranches > nb); /* the turned copy was merged in */
 		CHECK_NEAR(app->tree.branches[1].points[app->tree.branches[1].npoints - 1].x, tip.x, 1e-9);
 		CHECK_NEAR(app->tree.branches[1].points[app->tree.branches[1].npoints - 1].y, tip.y, 1e-9);
-		ev_button(app, BUTTON_3D); /* once is enough */
+		pen_button(&pen, app, BUTTON_3D); /* once is enough */
 		CHECK_INT(app->doc.ops[app->doc.cursor - 2].kind, DOC_OP_STROKE);
 		/* a branch drawn on the 3D tree lies in the plane of its attachment point */
 		draw_line(app, 634, 600, 500, 560);
@@ -210,11 +196,11 @@ int main(void)
 		CHECK_INT(nb3->parent, 0);
 		for (size_t i = 0; i < nb3->npoints; i++)
 			CHECK_NEAR(nb3->points[i].z, z, 1e-12);
-		ev_button(app, BUTTON_UNDO);
-		ev_button(app, BUTTON_UNDO);
+		pen_button(&pen, app, BUTTON_UNDO);
+		pen_button(&pen, app, BUTTON_UNDO);
 		CHECK(!app->tree.lifted);
 		CHECK_INT(app->tree.nbranches, nb);
-		ev_button(app, BUTTON_REDO);
+		pen_button(&pen, app, BUTTON_REDO);
 		CHECK(app->tree.lifted);
 	}
 

@@ -14,19 +14,8 @@
 #include <string.h>
 
 #include "arrange.h"
+#include "fail_alloc.h"
 #include "test.h"
-
-/* Allocation failures are injected by replacing malloc, as tests/export/test_export_oom.c
- * does; sanitizers replace it themselves, so not under them. */
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || \
-	__has_feature(memory_sanitizer)
-#define NO_MALLOC_HOOK 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define NO_MALLOC_HOOK 1
-#endif
 
 #define DEG (VEC_PI / 180.0)
 #define LEAF_N 12
@@ -772,58 +761,7 @@ static void test_preview(enum shape shape)
 	tree_finish(&t);
 }
 
-#ifndef NO_MALLOC_HOOK
-extern void *__libc_malloc(size_t n);
-extern void *__libc_calloc(size_t n, size_t size);
-extern void *__libc_realloc(void *p, size_t n);
-extern void __libc_free(void *p);
-
-static long calls;        /* allocations since the last reset */
-static long fail_at = -1; /* this one returns NULL; -1: none */
-static volatile long live; /* blocks allocated and not freed (volatile: the compiler
-			    * assumes malloc changes no variable) */
-
-static bool inject(void)
-{
-	return fail_at >= 0 && calls++ == fail_at;
-}
-
-void *malloc(size_t n)
-{
-	void *p = inject() ? NULL : __libc_malloc(n);
-
-	live += p != NULL;
-	return p;
-}
-
-void *calloc(size_t n, size_t size)
-{
-	void *p = inject() ? NULL : __libc_calloc(n, size);
-
-	live += p != NULL;
-	return p;
-}
-
-void *realloc(void *old, size_t n)
-{
-	void *p;
-
-	if (!old)
-		return malloc(n);
-	if (inject())
-		return NULL; /* the old block stays valid, as with a real failure */
-	p = __libc_realloc(old, n);
-	if (!p && n == 0)
-		live--;
-	return p;
-}
-
-void free(void *p)
-{
-	live -= p != NULL;
-	__libc_free(p);
-}
-
+#if FAIL_ALLOC_HOOK /* allocation failures: not under sanitizers, which own malloc */
 /* Fails each allocation of applying (and previewing) p in turn: -ENOMEM, the tree as it
  * was, nothing leaked; then it gets through. */
 static void check_oom(const struct tree *orig, int b, enum arrange_pattern p, bool preview)
@@ -834,18 +772,17 @@ static void check_oom(const struct tree *orig, int b, enum arrange_pattern p, bo
 		int r;
 
 		copy_tree(&t, orig);
-		before = live;
-		calls = 0;
-		fail_at = n;
+		before = fail_alloc_live();
+		fail_alloc_at(n);
 		r = preview ? arrange_preview(&t, b, p, &out) : arrange_apply(&t, b, p);
-		fail_at = -1;
+		fail_alloc_off();
 		if (preview) {
 			if (r < 0)
 				CHECK_INT(out.nbranches + out.nleaves, 0);
 			tree_finish(&out);
 		}
-		CHECK_INT(live - before, r < 0 || preview ? 0 : 2 * r);
-		if (calls <= n) {
+		CHECK_INT(fail_alloc_live() - before, r < 0 || preview ? 0 : 2 * r);
+		if (fail_alloc_calls() <= n) {
 			CHECK(r >= 0);
 			CHECK(n > 0);
 			tree_finish(&t);
@@ -867,17 +804,10 @@ static void check_oom(const struct tree *orig, int b, enum arrange_pattern p, bo
 static void test_oom(enum shape shape)
 {
 	struct tree t;
-	void *(*volatile alloc)(size_t) = malloc; /* not inlined: as the library calls it */
-	long was = live;
-	void *probe = alloc(1);
-	bool hooked = live == was + 1;
 	int b;
 
-	free(probe);
-	if (!hooked) {
-		fprintf(stderr, "malloc is not ours (valgrind?): no allocation failures\n");
+	if (!fail_alloc_hooked())
 		return;
-	}
 	tree_init(&t);
 	b = add_test_branch(&t, shape);
 	draw_leaf(&t, b, 0.6, 0, 1.0, true);

@@ -13,6 +13,7 @@
 
 #include "app.h"
 #include "clone.h"
+#include "pen.h"
 #include "test.h"
 
 #define MAXK 256
@@ -833,37 +834,8 @@ static void test_degenerate(void)
 
 /* ---- through the app: a drawing lifted with the 3D button ---- */
 
-static uint64_t now = 1000;
-
-static void ev(struct app *app, enum event_type type, double x, double y)
-{
-	struct event e = { .type = type, .time_us = now, .tool = EVENT_TOOL_PEN, .x = x, .y = y,
-			   .pressure = 0.5 };
-
-	now += 8000;
-	app_handle_event(app, &e);
-}
-
-static void line(struct app *app, double x0, double y0, double x1, double y1)
-{
-	ev(app, EVENT_PROXIMITY_IN, x0, y0);
-	ev(app, EVENT_TIP_DOWN, x0, y0);
-	for (int i = 1; i <= 10; i++)
-		ev(app, EVENT_MOTION, x0 + (x1 - x0) * i / 10, y0 + (y1 - y0) * i / 10);
-	ev(app, EVENT_TIP_UP, x1, y1);
-	ev(app, EVENT_PROXIMITY_OUT, x1, y1);
-	now += 4000000; /* a pause: no two strokes are one branch's outlines */
-}
-
-static void press(struct app *app, enum button b)
-{
-	struct event e = { .type = EVENT_BUTTON, .time_us = now, .button = (int)b, .pressed = true };
-
-	app_handle_event(app, &e);
-	e.pressed = false;
-	app_handle_event(app, &e);
-	now += 100000;
-}
+/* 10 motion events a line; a pause after each: no two strokes are one branch's outlines */
+static struct pen pen = { .now_us = 1000, .steps = 10, .pause_us = PEN_PAUSE_US };
 
 static void test_lifted_drawing(void)
 {
@@ -872,13 +844,13 @@ static void test_lifted_drawing(void)
 	int k[MAXK];
 
 	CHECK(app);
-	line(app, 560, 736, 560, 236);
-	line(app, 560, 536, 800, 400);
-	line(app, 560, 480, 330, 350);
-	line(app, 560, 400, 700, 250);
-	line(app, 560, 360, 420, 220);
-	line(app, 700, 454, 760, 500);
-	press(app, BUTTON_3D);
+	pen_line(&pen, app, 560, 736, 560, 236);
+	pen_line(&pen, app, 560, 536, 800, 400);
+	pen_line(&pen, app, 560, 480, 330, 350);
+	pen_line(&pen, app, 560, 400, 700, 250);
+	pen_line(&pen, app, 560, 360, 420, 220);
+	pen_line(&pen, app, 700, 454, 760, 500);
+	pen_button(&pen, app, BUTTON_3D);
 	CHECK(app->tree.lifted);
 	CHECK(kids(&app->tree, 0, k) >= 4);
 	/* a copy: the app's tree is the document's to change */

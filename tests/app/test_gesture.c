@@ -5,48 +5,12 @@
 #include <string.h>
 
 #include "app.h"
+#include "pen.h"
 #include "sketch.h"
 #include "test.h"
 
-static uint64_t now = 1000;
-
-static void ev(struct app *app, enum event_type type, enum event_tool tool, double x, double y)
-{
-	struct event e = { .type = type, .time_us = now, .tool = tool, .x = x, .y = y, .pressure = 0.5 };
-
-	now += 8000;
-	app_handle_event(app, &e);
-}
-
-/* A polyline through the given screen points, 10 samples a leg. */
-static void draw(struct app *app, enum event_tool tool, const double *xy, int npts)
-{
-	ev(app, EVENT_PROXIMITY_IN, tool, xy[0], xy[1]);
-	ev(app, EVENT_TIP_DOWN, tool, xy[0], xy[1]);
-	for (int k = 1; k < npts; k++)
-		for (int i = 1; i <= 10; i++)
-			ev(app, EVENT_MOTION, tool, xy[2 * k - 2] + (xy[2 * k] - xy[2 * k - 2]) * i / 10,
-			   xy[2 * k - 1] + (xy[2 * k + 1] - xy[2 * k - 1]) * i / 10);
-	ev(app, EVENT_TIP_UP, tool, xy[2 * npts - 2], xy[2 * npts - 1]);
-	ev(app, EVENT_PROXIMITY_OUT, tool, xy[2 * npts - 2], xy[2 * npts - 1]);
-}
-
-static void line(struct app *app, double x0, double y0, double x1, double y1)
-{
-	const double xy[] = { x0, y0, x1, y1 };
-
-	draw(app, EVENT_TOOL_PEN, xy, 2);
-}
-
-static void press(struct app *app, enum button b)
-{
-	struct event e = { .type = EVENT_BUTTON, .time_us = now, .button = (int)b, .pressed = true };
-
-	app_handle_event(app, &e);
-	e.pressed = false;
-	app_handle_event(app, &e);
-	now += 100000;
-}
+/* 10 motion events a leg */
+static struct pen pen = { .now_us = 1000, .steps = 10 };
 
 static void leaf(struct app *app, double cx, double cy)
 {
@@ -56,7 +20,7 @@ static void leaf(struct app *app, double cx, double cy)
 		xy[2 * i] = cx + 14 * cos(i * 0.25);
 		xy[2 * i + 1] = cy + 14 * sin(i * 0.25);
 	}
-	draw(app, EVENT_TOOL_PEN, xy, 26);
+	pen_stroke(&pen, app, EVENT_TOOL_PEN, xy, 26);
 }
 
 /* trunk; b1 from the trunk to the right; b2 from the middle of b1 upwards; a leaf at b1's tip */
@@ -65,9 +29,9 @@ static struct app *young_tree(void)
 	struct app *app = app_create(1280, 800, 3);
 
 	CHECK(app);
-	line(app, 640, 736, 640, 236);
-	line(app, 640, 536, 940, 436);
-	line(app, 790, 486, 820, 336);
+	pen_line(&pen, app, 640, 736, 640, 236);
+	pen_line(&pen, app, 640, 536, 940, 436);
+	pen_line(&pen, app, 790, 486, 820, 336);
 	leaf(app, 955, 425);
 	CHECK_INT(app->tree.nbranches, 3);
 	CHECK_INT(app->tree.branches[2].parent, 1);
@@ -91,7 +55,7 @@ static void test_cut(void)
 	size_t nops = app->doc.nops;
 
 	/* a slash across b1 once, before b2: b1 ends at the slash, b2 and the leaf go */
-	line(app, 700, 420, 720, 580);
+	pen_line(&pen, app, 700, 420, 720, 580);
 	CHECK_INT(app->doc.nops, nops + 1);
 	CHECK_INT(app->tree.nbranches, 2);
 	CHECK_INT(app->tree.nleaves, 0);
@@ -100,10 +64,10 @@ static void test_cut(void)
 	CHECK(b1->radii[b1->npoints - 1] > 0);
 
 	/* undo brings everything back, redo cuts again */
-	press(app, BUTTON_UNDO);
+	pen_button(&pen, app, BUTTON_UNDO);
 	CHECK_INT(app->tree.nbranches, 3);
 	CHECK_INT(app->tree.nleaves, 1);
-	press(app, BUTTON_REDO);
+	pen_button(&pen, app, BUTTON_REDO);
 	CHECK_INT(app->tree.nbranches, 2);
 	app_destroy(app);
 }
@@ -113,13 +77,13 @@ static void test_cut_keeps_lower_children(void)
 	struct app *app = young_tree();
 
 	/* a slash across the trunk above b1: the trunk is shortened, b1 and b2 stay */
-	line(app, 600, 300, 680, 320);
+	pen_line(&pen, app, 600, 300, 680, 320);
 	CHECK_INT(app->tree.nbranches, 3);
 	CHECK_NEAR(app->tree.branches[0].points[app->tree.branches[0].npoints - 1].y,
 		   view_to_world(&app->view, 0, 310).y, 0.05);
 	CHECK(app->tree.branches[1].parent_t > 0.4 && app->tree.branches[1].parent_t <= 1.0);
 	/* a slash across the trunk below b1: b1, b2 and the leaf go */
-	line(app, 600, 650, 680, 660);
+	pen_line(&pen, app, 600, 650, 680, 660);
 	CHECK_INT(app->tree.nbranches, 1);
 	CHECK_INT(app->tree.nleaves, 0);
 	app_destroy(app);
@@ -131,7 +95,7 @@ static void test_erase(void)
 	const double zigzag[] = { 700, 400, 712, 580, 724, 400 };
 
 	/* crossing b1 twice erases it from its base, with b2 and the leaf */
-	draw(app, EVENT_TOOL_PEN, zigzag, 3);
+	pen_stroke(&pen, app, EVENT_TOOL_PEN, zigzag, 3);
 	CHECK_INT(app->tree.nbranches, 1);
 	CHECK_INT(app->tree.nleaves, 0);
 	CHECK_INT(app->tree.branches[0].npoints > 10, 1);
@@ -143,12 +107,12 @@ static void test_branch_not_cut(void)
 	struct app *app = young_tree();
 
 	/* from the trunk, up and right, across b1 and b2: a new branch, not a cut */
-	line(app, 641, 620, 900, 300);
+	pen_line(&pen, app, 641, 620, 900, 300);
 	CHECK_INT(app->tree.nbranches, 4);
 	CHECK_INT(app->tree.branches[3].parent, 0);
 	/* begun just beside the trunk (20 px) and drawn across it: still a branch */
-	line(app, 620, 680, 500, 600);
-	line(app, 660, 400, 470, 330);
+	pen_line(&pen, app, 620, 680, 500, 600);
+	pen_line(&pen, app, 660, 400, 470, 330);
 	CHECK_INT(app->tree.nbranches, 6);
 	CHECK_INT(app->tree.branches[5].parent, 0);
 	CHECK_INT(app->tree.nleaves, 1);
@@ -162,15 +126,15 @@ static void test_eraser(void)
 	const double scrub[] = { 940, 400, 975, 440, 940, 445 };
 
 	/* an eraser tap on b2's tip takes b2 only */
-	draw(app, EVENT_TOOL_ERASER, tap, 1);
+	pen_stroke(&pen, app, EVENT_TOOL_ERASER, tap, 1);
 	CHECK_INT(app->tree.nbranches, 2);
 	CHECK_INT(app->tree.nleaves, 1);
 	/* scrubbing over the leaf (away from b1's tip) takes the leaf, then b1 too */
-	draw(app, EVENT_TOOL_ERASER, scrub, 3);
+	pen_stroke(&pen, app, EVENT_TOOL_ERASER, scrub, 3);
 	CHECK_INT(app->tree.nleaves, 0);
 	CHECK_INT(app->tree.nbranches, 1);
-	press(app, BUTTON_UNDO);
-	press(app, BUTTON_UNDO);
+	pen_button(&pen, app, BUTTON_UNDO);
+	pen_button(&pen, app, BUTTON_UNDO);
 	CHECK_INT(app->tree.nbranches, 3);
 	CHECK_INT(app->tree.nleaves, 1);
 	app_destroy(app);
@@ -182,7 +146,7 @@ static void test_slash_cuts_every_crossed_branch(void)
 
 	/* one horizontal slash through b1 and the trunk: both are cut there (b1 and the
 	 * trunk end at the slash; b2 and the leaf, beyond b1's cut, go) */
-	line(app, 560, 505, 760, 505);
+	pen_line(&pen, app, 560, 505, 760, 505);
 	CHECK_INT(app->tree.nbranches, 2);
 	CHECK_NEAR(app->tree.branches[0].points[app->tree.branches[0].npoints - 1].y,
 		   view_to_world(&app->view, 0, 505).y, 0.05);
@@ -195,15 +159,15 @@ static void test_erase_all_then_3d_again(void)
 	struct app *app = young_tree();
 	const double scrub[] = { 640, 740, 640, 200, 960, 440, 820, 330 };
 
-	press(app, BUTTON_3D);
+	pen_button(&pen, app, BUTTON_3D);
 	CHECK(app->tree.lifted);
-	draw(app, EVENT_TOOL_ERASER, scrub, 4);
+	pen_stroke(&pen, app, EVENT_TOOL_ERASER, scrub, 4);
 	CHECK_INT(app->tree.nbranches, 0);
 	/* the next visitor's tree starts flat and can be lifted */
-	line(app, 640, 736, 640, 300);
-	line(app, 640, 500, 800, 400);
+	pen_line(&pen, app, 640, 736, 640, 300);
+	pen_line(&pen, app, 640, 500, 800, 400);
 	CHECK(!app->tree.lifted);
-	press(app, BUTTON_3D);
+	pen_button(&pen, app, BUTTON_3D);
 	CHECK(app->tree.lifted);
 	app_destroy(app);
 }

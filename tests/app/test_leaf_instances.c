@@ -12,21 +12,10 @@
 #include <string.h>
 
 #include "arrange.h"
+#include "fail_alloc.h"
 #include "leaf_instances.h"
 #include "propagate.h"
 #include "test.h"
-
-/* Allocation failures are injected by replacing malloc, as test_arrange.c does;
- * sanitizers replace it themselves, so not under them. */
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || \
-	__has_feature(memory_sanitizer)
-#define NO_MALLOC_HOOK 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define NO_MALLOC_HOOK 1
-#endif
 
 /* A bent branch from `root` (or from the point at pt on parent). */
 static int add_bent(struct tree *t, int parent, double pt, struct vec3 root, struct vec3 dir,
@@ -534,73 +523,16 @@ static void test_determinism(void)
 	tree_finish(&t);
 }
 
-#ifndef NO_MALLOC_HOOK
-extern void *__libc_malloc(size_t n);
-extern void *__libc_calloc(size_t n, size_t size);
-extern void *__libc_realloc(void *p, size_t n);
-extern void __libc_free(void *p);
-
-static long calls;        /* allocations since the last reset */
-static long fail_at = -1; /* this one returns NULL; -1: none */
-static volatile long live; /* blocks allocated and not freed */
-
-static bool inject(void)
-{
-	return fail_at >= 0 && calls++ == fail_at;
-}
-
-void *malloc(size_t n)
-{
-	void *p = inject() ? NULL : __libc_malloc(n);
-
-	live += p != NULL;
-	return p;
-}
-
-void *calloc(size_t n, size_t size)
-{
-	void *p = inject() ? NULL : __libc_calloc(n, size);
-
-	live += p != NULL;
-	return p;
-}
-
-void *realloc(void *old, size_t n)
-{
-	void *p;
-
-	if (!old)
-		return malloc(n);
-	if (inject())
-		return NULL;
-	p = __libc_realloc(old, n);
-	if (!p && n == 0)
-		live--;
-	return p;
-}
-
-void free(void *p)
-{
-	live -= p != NULL;
-	__libc_free(p);
-}
-
+#if FAIL_ALLOC_HOOK /* allocation failures: not under sanitizers, which own malloc */
 /* Each allocation of a build fails in turn, on a fresh li and on one built before:
  * -ENOMEM, li empty, nothing leaked; then the build gets through. */
 static void test_oom(void)
 {
 	struct tree t;
-	void *(*volatile alloc)(size_t) = malloc;
-	long was = live;
-	void *probe = alloc(1);
-	bool hooked = live == was + 1;
 	int s;
 
-	free(probe);
-	if (!hooked) {
-		fprintf(stderr, "malloc is not ours (valgrind?): no allocation failures\n");
+	if (!fail_alloc_hooked())
 		return;
-	}
 	s = build_branches(&t);
 	add_leaf(&t, s, 0.9, 0.05, 7, 0.6);
 	add_leaf(&t, s, 0.5, 0.04, 7, 0.7);
@@ -609,24 +541,23 @@ static void test_oom(void)
 	for (int warm = 0; warm < 2; warm++) {
 		for (long n = 0;; n++) {
 			struct leaf_instances li;
-			long before = live;
+			long before = fail_alloc_live();
 			int r;
 
 			leaf_instances_init(&li);
 			if (warm)
 				CHECK_INT(leaf_instances_build(&li, &t), 0);
-			calls = 0;
-			fail_at = n;
+			fail_alloc_at(n);
 			r = leaf_instances_build(&li, &t);
-			fail_at = -1;
+			fail_alloc_off();
 			if (r < 0) {
 				CHECK_INT(r, -ENOMEM);
 				CHECK_INT(li.nshapes + li.ninstances + li.ninstanced, 0);
 				CHECK_INT(li.loose.nindices, 0);
 			}
 			leaf_instances_finish(&li);
-			CHECK_INT(live, before);
-			if (calls <= n) {
+			CHECK_INT(fail_alloc_live(), before);
+			if (fail_alloc_calls() <= n) {
 				CHECK_INT(r, 0);
 				break;
 			}

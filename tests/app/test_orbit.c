@@ -7,48 +7,13 @@
 #include "app.h"
 #include "gesture.h"
 #include "layout.h"
+#include "pen.h"
 #include "sketch_view.h"
 #include "test.h"
 
-static uint64_t now = 1000;
-
-static void ev(struct app *app, enum event_type type, enum event_tool tool, double x, double y)
-{
-	struct event e = { .type = type, .time_us = now, .tool = tool, .x = x, .y = y, .pressure = 0.5 };
-
-	now += 8000;
-	app_handle_event(app, &e);
-}
-
-static void draw(struct app *app, enum event_tool tool, const double *xy, int npts)
-{
-	ev(app, EVENT_PROXIMITY_IN, tool, xy[0], xy[1]);
-	ev(app, EVENT_TIP_DOWN, tool, xy[0], xy[1]);
-	for (int k = 1; k < npts; k++)
-		for (int i = 1; i <= 10; i++)
-			ev(app, EVENT_MOTION, tool, xy[2 * k - 2] + (xy[2 * k] - xy[2 * k - 2]) * i / 10,
-			   xy[2 * k - 1] + (xy[2 * k + 1] - xy[2 * k - 1]) * i / 10);
-	ev(app, EVENT_TIP_UP, tool, xy[2 * npts - 2], xy[2 * npts - 1]);
-	ev(app, EVENT_PROXIMITY_OUT, tool, xy[2 * npts - 2], xy[2 * npts - 1]);
-	now += 4000000; /* a pause: no two strokes here are one branch's outlines */
-}
-
-static void line(struct app *app, double x0, double y0, double x1, double y1)
-{
-	const double xy[] = { x0, y0, x1, y1 };
-
-	draw(app, EVENT_TOOL_PEN, xy, 2);
-}
-
-static void press(struct app *app, enum button b)
-{
-	struct event e = { .type = EVENT_BUTTON, .time_us = now, .button = (int)b, .pressed = true };
-
-	app_handle_event(app, &e);
-	e.pressed = false;
-	app_handle_event(app, &e);
-	now += 100000;
-}
+/* 10 motion events a leg; a pause after each stroke: no two strokes here are one
+ * branch's outlines */
+static struct pen pen = { .now_us = 1000, .steps = 10, .pause_us = PEN_PAUSE_US };
 
 /* A broad young tree, lifted. */
 static struct app *lifted_tree(void)
@@ -56,13 +21,13 @@ static struct app *lifted_tree(void)
 	struct app *app = app_create(1280, 800, 7);
 
 	CHECK(app);
-	line(app, 560, 736, 560, 236);
-	line(app, 560, 536, 800, 400);
-	line(app, 560, 480, 330, 350);
-	line(app, 560, 400, 700, 250);
-	line(app, 560, 360, 420, 220);
+	pen_line(&pen, app, 560, 736, 560, 236);
+	pen_line(&pen, app, 560, 536, 800, 400);
+	pen_line(&pen, app, 560, 480, 330, 350);
+	pen_line(&pen, app, 560, 400, 700, 250);
+	pen_line(&pen, app, 560, 360, 420, 220);
 	CHECK_INT(app->tree.nbranches, 5);
-	press(app, BUTTON_3D);
+	pen_button(&pen, app, BUTTON_3D);
 	CHECK(app->tree.lifted);
 	CHECK(camera_is_front(app->camera));
 	return app;
@@ -134,15 +99,15 @@ static void test_orbit_drag(void)
 	/* far from the tree, in the sky on the left: the drag turns the camera */
 	CHECK(app_would_orbit(app, 120, 150));
 	CHECK(!app_would_orbit(app, 560, 500)); /* on the trunk */
-	line(app, 120, 150, 320, 150);
+	pen_line(&pen, app, 120, 150, 320, 150);
 	CHECK_INT(app->doc.nops, nops); /* nothing drawn */
 	CHECK_NEAR(app->camera.yaw, -200 * app->view.m_per_px * APP_ORBIT_DEG_PER_M, 1e-3);
 	CHECK_NEAR(app->camera.pitch, 0, 1e-6);
 	CHECK(app->doc.view.yaw == app->camera.yaw); /* saved with the drawing */
 	/* dragging down looks from above, as far as the limit */
-	line(app, 120, 100, 120, 700);
+	pen_line(&pen, app, 120, 100, 120, 700);
 	CHECK(app->camera.pitch > 50);
-	line(app, 120, 100, 120, 700);
+	pen_line(&pen, app, 120, 100, 120, 700);
 	CHECK(app->camera.pitch == CAMERA_PITCH_MAX_DEG);
 	before = app->camera;
 	/* a stroke starting on the trunk draws, the camera stays */
@@ -151,7 +116,7 @@ static void test_orbit_drag(void)
 
 		to_screen(app, app->tree.branches[0].points[app->tree.branches[0].npoints / 2], &x, &y);
 		CHECK(!app_would_orbit(app, x, y));
-		line(app, x, y, x + 120, y - 60);
+		pen_line(&pen, app, x, y, x + 120, y - 60);
 	}
 	CHECK_INT(app->doc.nops, nops + 1);
 	CHECK(app->camera.yaw == before.yaw && app->camera.pitch == before.pitch);
@@ -165,7 +130,7 @@ static void test_orbit_drag(void)
 			xy[2 * i] = x + 12 + 16 * cos(i * 2 * VEC_PI / 24);
 			xy[2 * i + 1] = y + 16 * sin(i * 2 * VEC_PI / 24);
 		}
-		draw(app, EVENT_TOOL_PEN, xy, 25);
+		pen_stroke(&pen, app, EVENT_TOOL_PEN, xy, 25);
 		CHECK_INT(app->tree.nleaves, 1);
 	}
 	/* the quick test the cursor uses agrees with the full clearance everywhere */
@@ -184,9 +149,9 @@ static void test_orbit_drag(void)
 
 	/* a sketch does not turn: the drag is a stroke */
 	app = app_create(1280, 800, 7);
-	line(app, 560, 736, 560, 236);
+	pen_line(&pen, app, 560, 736, 560, 236);
 	CHECK(!app_would_orbit(app, 120, 150));
-	line(app, 120, 150, 320, 150);
+	pen_line(&pen, app, 120, 150, 320, 150);
 	CHECK(camera_is_front(app->camera));
 	CHECK_INT(app->doc.nops, 2);
 	app_destroy(app);
@@ -197,18 +162,18 @@ static void test_view_button_and_undo(void)
 	struct app *app = lifted_tree();
 	struct layout_button vb = layout_view_button(&app->view);
 
-	line(app, 120, 150, 420, 250);
+	pen_line(&pen, app, 120, 150, 420, 250);
 	CHECK(!camera_is_front(app->camera));
 	/* the pen taps the front view button */
-	line(app, vb.x + vb.w / 2, vb.y + vb.h / 2, vb.x + vb.w / 2 + 1, vb.y + vb.h / 2);
+	pen_line(&pen, app, vb.x + vb.w / 2, vb.y + vb.h / 2, vb.x + vb.w / 2 + 1, vb.y + vb.h / 2);
 	CHECK(camera_is_front(app->camera));
 	/* ...and so does the GPIO/--press button */
-	line(app, 120, 150, 420, 250);
-	press(app, BUTTON_VIEW);
+	pen_line(&pen, app, 120, 150, 420, 250);
+	pen_button(&pen, app, BUTTON_VIEW);
 	CHECK(camera_is_front(app->camera));
 	/* undoing 3D goes back to the sketch, seen from the front; the button is gone */
-	line(app, 120, 150, 420, 250);
-	press(app, BUTTON_UNDO);
+	pen_line(&pen, app, 120, 150, 420, 250);
+	pen_button(&pen, app, BUTTON_UNDO);
 	CHECK(!app->tree.lifted);
 	CHECK(camera_is_front(app->camera));
 	CHECK(!app_would_orbit(app, vb.x + vb.w / 2, vb.y + vb.h / 2));
@@ -221,10 +186,10 @@ static void test_turn_animation(void)
 	struct camera c;
 	uint64_t t0;
 
-	line(app, 560, 736, 560, 236);
-	line(app, 560, 536, 800, 400);
-	t0 = now;
-	press(app, BUTTON_3D);
+	pen_line(&pen, app, 560, 736, 560, 236);
+	pen_line(&pen, app, 560, 536, 800, 400);
+	t0 = pen.now_us;
+	pen_button(&pen, app, BUTTON_3D);
 	CHECK(app->turning);
 	CHECK(app_camera_at(app, t0 + APP_TURN_US / 8, &c));
 	CHECK(c.yaw > 10); /* swinging one way */
@@ -235,8 +200,8 @@ static void test_turn_animation(void)
 	CHECK(!app_camera_at(app, UINT64_MAX, &c));
 	/* the pen stops it */
 	app->pen.tool = EVENT_TOOL_PEN;
-	ev(app, EVENT_TIP_DOWN, EVENT_TOOL_PEN, 100, 100);
-	ev(app, EVENT_TIP_UP, EVENT_TOOL_PEN, 100, 100);
+	pen_event(&pen, app, EVENT_TIP_DOWN, EVENT_TOOL_PEN, 100, 100, 0.5);
+	pen_event(&pen, app, EVENT_TIP_UP, EVENT_TOOL_PEN, 100, 100, 0.5);
 	CHECK(!app->turning);
 	app_destroy(app);
 }
@@ -253,7 +218,7 @@ static void test_stroke_on_turned_tree(void)
 
 	CHECK(app_set_camera(app, (struct camera){ 90, 15 }));
 	to_screen(app, app->tree.branches[0].points[app->tree.branches[0].npoints * 3 / 4], &x, &y);
-	line(app, x, y, tx, ty);
+	pen_line(&pen, app, x, y, tx, ty);
 	CHECK_INT(app->tree.nbranches, 10); /* 5 drawn + 4 merged + this one */
 	b = &app->tree.branches[9];
 	CHECK_INT(b->parent, 0);
@@ -321,7 +286,7 @@ static void test_gestures_on_turned_tree(void)
 		}
 	}
 	CHECK(target > 0);
-	line(app, sx, sy, ex, ey);
+	pen_line(&pen, app, sx, sy, ex, ey);
 	CHECK_INT(app->tree.branches[target].parent, 0);
 	CHECK(tree_branch_length(&app->tree.branches[target]) < 0.9 * full);
 	CHECK(tree_branch_length(&app->tree.branches[target]) > 0.3 * full);
@@ -335,7 +300,7 @@ static void test_gestures_on_turned_tree(void)
 		xy[1] = ty;
 		xy[2] = tx + 20;
 		xy[3] = ty;
-		draw(app, EVENT_TOOL_ERASER, xy, 2);
+		pen_stroke(&pen, app, EVENT_TOOL_ERASER, xy, 2);
 		CHECK_INT(app->tree.nbranches, 0);
 		CHECK(!app->tree.lifted);
 		CHECK(camera_is_front(app->camera));
@@ -353,10 +318,10 @@ static void test_reload(void)
 	double x, y;
 
 	CHECK(again);
-	line(app, 120, 150, 380, 230);
+	pen_line(&pen, app, 120, 150, 380, 230);
 	to_screen(app, app->tree.branches[0].points[app->tree.branches[0].npoints / 2], &x, &y);
-	line(app, x, y, x - 150, y - 120);
-	line(app, 120, 150, 200, 100);
+	pen_line(&pen, app, x, y, x - 150, y - 120);
+	pen_line(&pen, app, 120, 150, 200, 100);
 	buf_init(&b);
 	CHECK_INT(doc_serialize(&app->doc, &app->tree, &b), 0);
 	CHECK_INT(doc_parse((const char *)b.data, b.len, "reload", &d, &err), 0);

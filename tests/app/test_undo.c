@@ -13,22 +13,14 @@
 #include <string.h>
 
 #include "app.h"
+#include "fail_alloc.h"
 #include "layout.h"
+#include "pen.h"
 #include "rng.h"
 #include "sketch_view.h"
 #include "test.h"
 
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || \
-	__has_feature(memory_sanitizer)
-#define NO_MALLOC_HOOK 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define NO_MALLOC_HOOK 1
-#endif
-
-static uint64_t now = 1000;
+static struct pen clock = { .now_us = 1000 }; /* the apps' events, all on one clock */
 static long checks;
 
 /* ---- the reference: the document replayed from scratch ---- */
@@ -147,20 +139,12 @@ static void same_as_replay(const struct app *a, bool mesh_may_be_empty)
 
 static void pen(struct app *app, enum event_type type, double x, double y, enum event_tool tool)
 {
-	struct event ev = { .type = type, .time_us = now, .x = x, .y = y, .pressure = 0.6, .tool = tool };
-
-	now += 8000;
-	app_handle_event(app, &ev);
+	pen_event(&clock, app, type, tool, x, y, 0.6);
 }
 
 static void press(struct app *app, enum button b)
 {
-	struct event ev = { .type = EVENT_BUTTON, .time_us = now, .button = (int)b, .pressed = true };
-
-	app_handle_event(app, &ev);
-	ev.pressed = false;
-	app_handle_event(app, &ev);
-	now += 200000;
+	pen_button(&clock, app, b);
 }
 
 static void stroke(struct app *app, double x0, double y0, double x1, double y1, int n,
@@ -173,7 +157,7 @@ static void stroke(struct app *app, double x0, double y0, double x1, double y1, 
 		pen(app, EVENT_MOTION, x0 + (x1 - x0) * t + 5 * sin(t * 7), y0 + (y1 - y0) * t, tool);
 	}
 	pen(app, EVENT_TIP_UP, x1, y1, tool);
-	now += pause_us;
+	clock.now_us += pause_us;
 }
 
 static void loop(struct app *app, double cx, double cy, double r, double dir)
@@ -184,14 +168,14 @@ static void loop(struct app *app, double cx, double cy, double r, double dir)
 		    EVENT_TOOL_PEN);
 	pen(app, EVENT_TIP_UP, cx + r * cos(dir * 30 * 0.23), cy + r * sin(dir * 30 * 0.23),
 	    EVENT_TOOL_PEN);
-	now += 4000000;
+	clock.now_us += PEN_PAUSE_US;
 }
 
 static void tap(struct app *app, double x, double y)
 {
 	pen(app, EVENT_TIP_DOWN, x, y, EVENT_TOOL_PEN);
 	pen(app, EVENT_TIP_UP, x, y, EVENT_TOOL_PEN);
-	now += 300000;
+	clock.now_us += 300000;
 }
 
 /* A point of a random branch (with children if asked) where the screen shows it, off the
@@ -247,30 +231,30 @@ static bool act(struct app *app, struct rng *r, int *propagations, bool gentle)
 		canvas_point(app, r, &x, &y);
 		y = app->view.height * 0.9;
 		stroke(app, x, y, x + rng_range(r, -30, 30), y - rng_range(r, 250, 500), 30,
-		       EVENT_TOOL_PEN, 4000000);
+		       EVENT_TOOL_PEN, PEN_PAUSE_US);
 	} else if (what < 33) {
 		if (pick(app, r, false, &x, &y))
 			stroke(app, x, y, x + rng_range(r, -160, 160), y - rng_range(r, 10, 140), 24,
-			       EVENT_TOOL_PEN, 4000000);
+			       EVENT_TOOL_PEN, PEN_PAUSE_US);
 	} else if (what < 36) {
 		/* anywhere: a branch, a cut or an erasure */
 		canvas_point(app, r, &x, &y);
 		canvas_point(app, r, &x1, &y1);
-		stroke(app, x, y, x1, y1, 20, EVENT_TOOL_PEN, 4000000);
+		stroke(app, x, y, x1, y1, 20, EVENT_TOOL_PEN, PEN_PAUSE_US);
 	} else if (what < 41) {
 		/* a slash across a branch, begun away from it */
 		if (pick(app, r, false, &x, &y))
-			stroke(app, x - 70, y - 50, x + 70, y + 50, 16, EVENT_TOOL_PEN, 4000000);
+			stroke(app, x - 70, y - 50, x + 70, y + 50, 16, EVENT_TOOL_PEN, PEN_PAUSE_US);
 	} else if (what < 44) {
 		if (pick(app, r, false, &x, &y))
-			stroke(app, x - 15, y, x + 15, y + 5, 8, EVENT_TOOL_ERASER, 4000000);
+			stroke(app, x - 15, y, x + 15, y + 5, 8, EVENT_TOOL_ERASER, PEN_PAUSE_US);
 	} else if (what < 48) {
 		/* two outlines of one branch, drawn one right after the other */
 		if (pick(app, r, false, &x, &y)) {
 			double dx = rng_range(r, -120, 120), dy = -rng_range(r, 60, 160);
 
 			stroke(app, x, y, x + dx, y + dy, 20, EVENT_TOOL_PEN, 300000);
-			stroke(app, x + 12, y, x + dx + 6, y + dy, 20, EVENT_TOOL_PEN, 4000000);
+			stroke(app, x + 12, y, x + dx + 6, y + dy, 20, EVENT_TOOL_PEN, PEN_PAUSE_US);
 		}
 	} else if (what < 55) {
 		if (pick(app, r, false, &x, &y))
@@ -395,57 +379,7 @@ static void session(uint64_t seed, int n, bool tiny_budget, bool gentle)
 	app_destroy(app);
 }
 
-#ifndef NO_MALLOC_HOOK
-extern void *__libc_malloc(size_t n);
-extern void *__libc_calloc(size_t n, size_t size);
-extern void *__libc_realloc(void *p, size_t n);
-extern void __libc_free(void *p);
-
-static long calls;
-static long fail_at = -1;
-static volatile long live;
-
-static bool inject(void)
-{
-	return fail_at >= 0 && calls++ == fail_at;
-}
-
-void *malloc(size_t n)
-{
-	void *p = inject() ? NULL : __libc_malloc(n);
-
-	live += p != NULL;
-	return p;
-}
-
-void *calloc(size_t n, size_t size)
-{
-	void *p = inject() ? NULL : __libc_calloc(n, size);
-
-	live += p != NULL;
-	return p;
-}
-
-void *realloc(void *old, size_t n)
-{
-	void *p;
-
-	if (!old)
-		return malloc(n);
-	if (inject())
-		return NULL;
-	p = __libc_realloc(old, n);
-	if (!p && n == 0)
-		live--;
-	return p;
-}
-
-void free(void *p)
-{
-	live -= p != NULL;
-	__libc_free(p);
-}
-
+#if FAIL_ALLOC_HOOK /* allocation failures: not under sanitizers, which own malloc */
 /* Each allocation of one undo or redo fails in turn: never a half-built tree; the state
  * is the replay's (the meshes may be left empty, with the failure reported). The app
  * first walks to state `at` the quick way, so that marks and checkpoints are used. */
@@ -454,13 +388,14 @@ static void oom_step(const struct app *orig, size_t at, enum button b)
 	for (long n = 0;; n++) {
 		struct app *a = loaded(orig);
 		bool failed;
+		long calls;
 
 		while (a->doc.cursor > at)
 			press(a, BUTTON_UNDO);
-		calls = 0;
-		fail_at = n;
+		fail_alloc_at(n);
 		press(a, b);
-		fail_at = -1;
+		calls = fail_alloc_calls();
+		fail_alloc_off();
 		failed = a->failed != 0;
 		CHECK(!failed || a->failed == -ENOMEM);
 		same_as_replay(a, failed);
@@ -472,20 +407,14 @@ static void oom_step(const struct app *orig, size_t at, enum button b)
 
 static void test_oom(void)
 {
-	struct app *app = app_create(1280, 800, 3);
-	void *(*volatile alloc)(size_t) = malloc;
-	long was = live;
-	void *probe = alloc(1);
-	bool hooked = live == was + 1;
+	struct app *app;
 	struct rng r;
 	int propagations = 1, changed = 0, lifts = 0;
 
-	free(probe);
-	if (!hooked) {
-		fprintf(stderr, "malloc is not ours (valgrind?): no allocation failures\n");
-		app_destroy(app);
+	if (!fail_alloc_hooked())
 		return;
-	}
+	app = app_create(1280, 800, 3);
+	CHECK(app);
 	rng_seed(&r, 11);
 	for (int i = 0; app->doc.nops < 90 && i < 400; i++)
 		act(app, &r, &propagations, true);

@@ -8,7 +8,7 @@ trap 'rm -rf "$T"' EXIT
 DEMO=$SRC/data/demo.edaha-trace
 ORBIT=$SRC/data/orbit.edaha-trace
 # Sketches whose 3D trees have golden pictures from the front and from 90 degrees.
-VIEW_SKETCHES="demo orbit lift-young lift-broadleaf lift-conifer lift-sine"
+VIEW_SKETCHES="demo orbit lift-young lift-broadleaf lift-conifer lift-sine sketch-fan sketch-fan-outlines"
 OUTPUTS="screen.png model.glb model.obj model.mtl skeleton.json drawing.edaha"
 
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -64,6 +64,12 @@ t_golden() {
 	# leaf mode with its suggestions: the thumbnail strip
 	run --out "$T/leaf" --replay "$SRC/data/edit-leaf-suggest.edaha-trace"
 	"$IMGCMP" "$SRC/golden/edit-leaf-suggest.png" "$T/leaf/screen.png" || fail "leaf suggestions differ from golden"
+	# five branches fanned from the trunk's top stay five branches (sketching.md)
+	local name
+	for name in sketch-fan sketch-fan-outlines; do
+		run --out "$T/$name" --replay "$SRC/data/$name.edaha-trace"
+		"$IMGCMP" "$SRC/golden/$name-screen.png" "$T/$name/screen.png" || fail "$name: screen differs from golden"
+	done
 }
 
 # The 3D trees from the front and turned by 90 degrees. The camera changes the picture

@@ -8,6 +8,9 @@ sketch-erase.edaha-trace     young tree, then a zigzag across that branch (an er
 sketch-eraser.edaha-trace    young tree, then an eraser tap on the second branch's tip
 sketch-outlines.edaha-trace  a trunk drawn as its two outlines, then one single stroke
 sketch-branch-across.edaha-trace  young tree, then a branch from the trunk across others
+sketch-fan.edaha-trace       a trunk, five main branches fanned 30 degrees apart from its top
+                             and two twigs on each, a third of a second between strokes
+sketch-fan-outlines.edaha-trace  the same with the trunk drawn as its two outlines
 
 The young tree: trunk (640,736)-(640,236); b1 from the trunk at y=536 to (940,436);
 b2 from the middle of b1 to (820,336); a leaf loop at b1's tip (955,425).
@@ -28,7 +31,7 @@ class Trace:
         self.lines.append("%d %s %s %.2f %.2f %.2f 0 0" % (self.t, kind, tool, x, y, p))
         self.t += STEP
 
-    def polyline(self, pts, tool="pen", legs=10):
+    def polyline(self, pts, tool="pen", legs=10, pause=4.0):
         x0, y0 = pts[0]
         self.ev("proximity-in", x0, y0, 0, tool)
         self.ev("tip-down", x0, y0, 0.5, tool)
@@ -38,7 +41,7 @@ class Trace:
         xl, yl = pts[-1]
         self.ev("tip-up", xl, yl, 0, tool)
         self.ev("proximity-out", xl, yl, 0, tool)
-        self.t += 4000000  # a pause: separate strokes, never two outlines of one branch
+        self.t += int(pause * 1e6)  # 4 s: separate strokes, never two outlines of one branch
 
     def loop(self, cx, cy, r=14):
         self.polyline([(cx + r * math.cos(i * 0.25), cy + r * math.sin(i * 0.25)) for i in range(26)], legs=1)
@@ -48,6 +51,22 @@ class Trace:
         self.polyline([(640, 536), (940, 436)], legs=30)
         self.polyline([(790, 486), (820, 336)], legs=20)
         self.loop(955, 425)
+
+    def fan(self, pause):
+        """Five mains from the trunk's top (640, 436), 30 degrees apart, then two twigs on
+        each, drawn at a child's pace: 4 px per 8 ms sample, `pause` s between strokes."""
+        top, length = (640, 436), 190
+        mains = []
+        for k in range(5):
+            a = math.radians((k - 2) * 30)
+            end = (top[0] + length * math.sin(a), top[1] - length * math.cos(a))
+            mains.append((a, end))
+            self.polyline([top, end], legs=48, pause=pause)
+        for a, _ in mains:
+            for f, turn in ((0.45, 0.6), (0.75, -0.6)):
+                x, y = top[0] + f * length * math.sin(a), top[1] - f * length * math.cos(a)
+                self.polyline([(x, y), (x + 60 * math.sin(a + turn), y - 60 * math.cos(a + turn))],
+                              legs=15, pause=pause)
 
     def write(self, path):
         with open(path, "w") as f:
@@ -81,6 +100,17 @@ def main(out):
     t.polyline([(650, 300), (680, 736)], legs=40)
     t.polyline([(640, 500), (900, 400)], legs=40)
     t.write(out + "/sketch-outlines.edaha-trace")
+
+    t = Trace("A trunk, five mains fanned 30 degrees apart from its top, two twigs on each; 1/3 s between strokes.")
+    t.polyline([(640, 736), (640, 436)], legs=75, pause=1 / 3)
+    t.fan(1 / 3)
+    t.write(out + "/sketch-fan.edaha-trace")
+
+    t = Trace("The same fan on a trunk drawn as its two outlines (40 px apart at the ground, 24 at the top).")
+    t.polyline([(620, 736), (628, 436)], legs=75, pause=1 / 3)
+    t.polyline([(652, 436), (660, 736)], legs=75, pause=1 / 3)
+    t.fan(1 / 3)
+    t.write(out + "/sketch-fan-outlines.edaha-trace")
 
 
 if __name__ == "__main__":

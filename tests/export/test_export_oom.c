@@ -2,8 +2,8 @@
 /*
  * Allocation failure: fails the 1st, 2nd, ... allocation of tree_mesh_build and every
  * exporter in turn; each must return -ENOMEM, leave nothing half-built and leak nothing.
- * Replaces malloc & co. the way glibc documents ("Replacing malloc"), so it is not built
- * with sanitizers, which replace them too.
+ * Allocations fail through tests/fail_alloc.c, which replaces malloc & co., so it is not
+ * built with sanitizers, which replace them too.
  */
 #include <errno.h>
 #include <stdbool.h>
@@ -12,67 +12,11 @@
 
 #include "buf.h"
 #include "export.h"
+#include "fail_alloc.h"
 #include "mesh.h"
 #include "synth_tree.h"
 #include "test.h"
 #include "tree.h"
-
-extern void *__libc_malloc(size_t n);
-extern void *__libc_calloc(size_t n, size_t size);
-extern void *__libc_realloc(void *p, size_t n);
-extern void __libc_free(void *p);
-
-static long calls;        /* allocations since the last reset */
-static long fail_at = -1; /* this one returns NULL; -1: none */
-static long live;         /* blocks allocated and not freed */
-
-/* A failing allocation, as POSIX describes it. Not inlined: break here to see who got it. */
-__attribute__((noinline)) static void *injected(void)
-{
-	errno = ENOMEM;
-	return NULL;
-}
-
-static bool inject(void)
-{
-	return fail_at >= 0 && calls++ == fail_at;
-}
-
-void *malloc(size_t n)
-{
-	void *p = inject() ? injected() : __libc_malloc(n);
-
-	live += p != NULL;
-	return p;
-}
-
-void *calloc(size_t n, size_t size)
-{
-	void *p = inject() ? injected() : __libc_calloc(n, size);
-
-	live += p != NULL;
-	return p;
-}
-
-void *realloc(void *old, size_t n)
-{
-	void *p;
-
-	if (!old)
-		return malloc(n);
-	if (inject())
-		return injected(); /* the old block stays valid, as with a real failure */
-	p = __libc_realloc(old, n);
-	if (!p && n == 0)
-		live--;
-	return p;
-}
-
-void free(void *p)
-{
-	live -= p != NULL;
-	__libc_free(p);
-}
 
 struct job {
 	const struct tree *tree;
@@ -139,15 +83,14 @@ static int op_skeleton(const struct job *j)
 static long exhaust(op_fn op, const struct job *j)
 {
 	for (long n = 0;; n++) {
-		long before = live;
+		long before = fail_alloc_live();
 		int r;
 
-		calls = 0;
-		fail_at = n;
+		fail_alloc_at(n);
 		r = op(j);
-		fail_at = -1;
-		CHECK_INT(live, before);
-		if (calls <= n) {
+		fail_alloc_off();
+		CHECK_INT(fail_alloc_live(), before);
+		if (fail_alloc_calls() <= n) {
 			CHECK_INT(r, 0);
 			return n;
 		}
