@@ -6,6 +6,9 @@
 edaha=$1 pen=$2 kmod=$3
 H=$(dirname "$0")
 modprobe uinput || exit 3
+# kiosk.conf's export and state directories are in /tmp, where the host's files show
+# through: a journal or export left there by anyone must not be this session's start
+rm -rf /tmp/export /tmp/state
 "$H/gpio_sim.sh" setup "$kmod" || exit 3
 export GPIO="$H/gpio_sim.sh"
 "$edaha" --config "$H/kiosk.conf" --record /out/session.edaha-trace --screenshot /out/final.png \

@@ -7,6 +7,7 @@
 # unplugged and plugged back mid-session is picked up again; then replays the trace with
 # `edaha --headless`. A touchscreen's finger then draws like the pen.
 # Environment: EDAHA, VM, UINPUT_PEN, INPUT_PROBE (from the build: tests/platform/).
+# The plain build runs it, ASan builds do not: tests/system/meson.build says why.
 set -uo pipefail
 : "${EDAHA:?}" "${VM:?}" "${UINPUT_PEN:?}" "${INPUT_PROBE:?}"
 HERE=$(cd "$(dirname "$0")" && pwd)

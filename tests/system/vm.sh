@@ -16,7 +16,7 @@
 #     -i  PID 1: sh (default: COMMAND runs as soon as udev has settled) or systemd
 #         (systemd boots edaha-vmtest.target: sysinit with udev, journald, sysusers and
 #         tmpfiles, then COMMAND as the unit edaha-vmtest.service, output on the console;
-#         /tmp is the guest's own tmpfs, and VM_APPEND adds to the kernel command line)
+#         VM_APPEND adds to the kernel command line)
 #     -u  an xHCI USB controller (id xhci) to hot-plug USB sticks on (usb-storage,
 #         bus=xhci.0) through QMP
 #     -q  QEMU's QMP monitor on the unix SOCKET (qmp.py: plug and pull sticks)
@@ -24,6 +24,10 @@
 #   VM_CACHE (where the initramfs is kept, default /tmp/edaha-vm-cache), VM_VERBOSE=1,
 #   VM_LOCK (the lock file that lets one guest run at a time, default /tmp/edaha-vm.lock).
 #
+# The guest sees the host's files where the host has them, /tmp and /home included, with
+# either PID 1: a checkout and its build may be anywhere (under systemd, tmp.mount is
+# masked and tmpfiles leaves /tmp as it is; units with PrivateTmp= or ProtectHome= still
+# get their own view). Writes stay in the guest's tmpfs.
 # COMMAND runs as root with the caller's working directory; its exit status becomes
 # ours. 77 (meson's "skipped") when QEMU or the kernel is missing, 125 when the guest
 # never reported one (boot failure, time limit).
@@ -95,9 +99,11 @@ mount -t tmpfs -o mode=0755 tmpfs /newroot/run
 if echo "$cmdline" | grep -q edaha.init=systemd; then
 	# the host may be a container: systemd must not believe it runs in one
 	rm -f /newroot/.dockerenv /newroot/run/.containerenv
-	# a /tmp of its own, as a booted system has: tmpfiles would empty the host's at boot,
-	# file by file over 9p
-	mount -t tmpfs -o mode=1777 tmpfs /newroot/tmp
+	# the host's /tmp stays in view, as under sh: a checkout or a build there is what
+	# COMMAND runs. tmpfiles' tmp.conf would empty it at boot (file by file over 9p, and
+	# the checkout with it); this one only makes sure it is there
+	mkdir -p /newroot/etc/tmpfiles.d
+	echo 'd /tmp 1777 root root -' > /newroot/etc/tmpfiles.d/tmp.conf
 	# units in /run/systemd/system: systemd keeps this /run
 	mkdir -p /newroot/run/systemd/system
 	cat /newroot/job/edaha-vmtest.target > /newroot/run/systemd/system/edaha-vmtest.target
@@ -173,7 +179,8 @@ append="console=ttyS0 quiet loglevel=3 panic=-1 rdinit=/init"
 [ "$init" = systemd ] && append+=" edaha.init=systemd systemd.unit=edaha-vmtest.target
  systemd.show_status=false systemd.firstboot=off systemd.mask=systemd-timesyncd.service
  systemd.mask=systemd-pstore.service systemd.mask=systemd-binfmt.service
- systemd.mask=systemd-repart.service systemd.mask=proc-sys-fs-binfmt_misc.automount ${VM_APPEND:-}"
+ systemd.mask=systemd-repart.service systemd.mask=proc-sys-fs-binfmt_misc.automount
+ systemd.mask=tmp.mount ${VM_APPEND:-}"
 append=$(echo $append)
 
 qemu=(qemu-system-x86_64 -accel tcg,thread=multi -cpu max -smp 2 -m 2048
