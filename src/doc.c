@@ -14,8 +14,10 @@ void doc_init(struct doc *d, uint64_t seed)
 void doc_op_finish(struct doc_op *op)
 {
 	free(op->points);
+	free(op->params);
 	op->points = NULL;
 	op->npoints = 0;
+	op->params = NULL;
 }
 
 void doc_finish(struct doc *d)
@@ -62,6 +64,7 @@ int doc_push(struct doc *d, struct doc_op *op)
 	d->cursor = d->nops;
 	op->points = NULL;
 	op->npoints = 0;
+	op->params = NULL;
 	return 0;
 }
 

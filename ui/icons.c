@@ -306,6 +306,23 @@ void icon_draw(struct batch *b, enum button button, struct pt centre, double siz
 	case BUTTON_FIXED_SIZE:
 		icon_pattern(&ic, true);
 		break;
+	case BUTTON_SEASON:
+	case BUTTON_TPL_BLANK:
+	case BUTTON_TPL_CHERRY:
+	case BUTTON_TPL_ZELKOVA:
+	case BUTTON_TPL_HEDGE:
+	case BUTTON_TPL_BALL:
+	case BUTTON_TPL_CONE:
+	case BUTTON_TPL_PALM:
+	case BUTTON_GEN_MORE:
+	case BUTTON_GEN_FEWER:
+	case BUTTON_GEN_WIDER:
+	case BUTTON_GEN_NARROWER:
+	case BUTTON_GEN_TALLER:
+	case BUTTON_GEN_SHORTER:
+	case BUTTON_GEN_LEAFIER:
+	case BUTTON_GEN_BARER:
+		break; /* TODO(i14-ui): their icons */
 	case BUTTON_COUNT:
 		break; /* not on the screen */
 	}

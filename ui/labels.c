@@ -21,6 +21,22 @@ static const char *const button_words[BUTTON_COUNT][NLANGS] = {
 	[BUTTON_FIXED_COUNT] = { "Count", "かず" },
 	[BUTTON_FIXED_SIZE] = { "Size", "おおきさ" },
 	[BUTTON_VIEW] = { "Front", "まえ" },
+	[BUTTON_SEASON] = { "Season", "きせつ" },
+	[BUTTON_TPL_BLANK] = { "Draw", "かく" },
+	[BUTTON_TPL_CHERRY] = { "Cherry", "さくら" },
+	[BUTTON_TPL_ZELKOVA] = { "Zelkova", "けやき" },
+	[BUTTON_TPL_HEDGE] = { "Hedge", "いけがき" },
+	[BUTTON_TPL_BALL] = { "Ball", "まる" },
+	[BUTTON_TPL_CONE] = { "Cone", "さんかく" },
+	[BUTTON_TPL_PALM] = { "Palm", "やし" },
+	[BUTTON_GEN_MORE] = { "More", "えだ+" },
+	[BUTTON_GEN_FEWER] = { "Fewer", "えだ-" },
+	[BUTTON_GEN_WIDER] = { "Wider", "ひろく" },
+	[BUTTON_GEN_NARROWER] = { "Narrower", "せまく" },
+	[BUTTON_GEN_TALLER] = { "Taller", "たかく" },
+	[BUTTON_GEN_SHORTER] = { "Shorter", "ひくく" },
+	[BUTTON_GEN_LEAFIER] = { "Leafier", "はっぱ+" },
+	[BUTTON_GEN_BARER] = { "Barer", "はっぱ-" },
 };
 
 /*
