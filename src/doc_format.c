@@ -97,16 +97,21 @@ int doc_serialize(const struct doc *d, const struct tree *t, struct buf *out)
 		}
 	}
 	if (t) {
+		/* generated elements are their generate op's: the drawing stays parameters */
 		buf_printf(out, "tree %zu %zu\n", t->nbranches, t->nleaves);
 		for (size_t i = 0; i < t->nbranches; i++) {
 			const struct branch *b = &t->branches[i];
 
+			if (b->origin == ORIGIN_GENERATE)
+				continue;
 			buf_printf(out, "branch %d %d %d %s %zu\n", b->id, b->parent, b->generation,
 				   origin_name(b->origin), b->npoints);
 		}
 		for (size_t i = 0; i < t->nleaves; i++) {
 			const struct leaf *l = &t->leaves[i];
 
+			if (l->origin == ORIGIN_GENERATE)
+				continue;
 			buf_printf(out, "leaf %d %d %s %zu\n", l->id, l->branch, origin_name(l->origin),
 				   l->npoints);
 		}

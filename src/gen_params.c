@@ -77,7 +77,7 @@ void gen_params_default(struct gen_params *p, enum gen_type type)
 	p->leaf_size = 0.15;
 	p->leaf_type = GEN_LEAF_OVAL;
 	p->season = SEASON_SUMMER;
-	p->trunk_height = 0.5;
+	p->trunk_height = 0.8;
 	p->clip = GEN_CLIP_SPHERE;
 	p->clip_center = vec3(0, 1.5, 0);
 	p->clip_radius = 1.0;
