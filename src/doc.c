@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 #include "doc.h"
+#include "gen.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -18,6 +19,29 @@ void doc_op_finish(struct doc_op *op)
 	op->points = NULL;
 	op->npoints = 0;
 	op->params = NULL;
+}
+
+int doc_op_copy(struct doc_op *dst, const struct doc_op *src)
+{
+	*dst = *src;
+	dst->points = NULL;
+	dst->params = NULL;
+	if (src->npoints) {
+		dst->points = malloc(src->npoints * sizeof(*dst->points));
+		if (!dst->points)
+			goto fail;
+		memcpy(dst->points, src->points, src->npoints * sizeof(*dst->points));
+	}
+	if (src->params) {
+		dst->params = malloc(sizeof(*dst->params));
+		if (!dst->params)
+			goto fail;
+		memcpy(dst->params, src->params, sizeof(*dst->params));
+	}
+	return 0;
+fail:
+	doc_op_finish(dst);
+	return -ENOMEM;
 }
 
 void doc_finish(struct doc *d)

@@ -83,6 +83,9 @@ struct doc {
 void doc_init(struct doc *d, uint64_t seed);
 void doc_finish(struct doc *d);
 void doc_op_finish(struct doc_op *op);
+/* dst becomes a copy of src with its own points and params. 0 or -ENOMEM (dst then holds
+ * nothing to free). */
+int doc_op_copy(struct doc_op *dst, const struct doc_op *src);
 /* Appends op at the cursor (dropping redo ops) and takes ownership of its points and
  * params.
  * Returns 0, -ENOMEM, or -ENOSPC when the op would take the drawing past a DOC_MAX_ limit
