@@ -129,5 +129,6 @@ int app_press_functional(struct app *app, enum button b, uint64_t time_us)
 	op = app_generated(app);
 	if (!op || !adjust_of(b, &a) || !gen_adjust(op->params, a, &q))
 		return 0;
+	q.season = app->tree.season; /* the visitor's season, not the file's */
 	return push_generate(app, &q, op->seed, time_us);
 }

@@ -52,12 +52,23 @@ void doc_finish(struct doc *d)
 	doc_init(d, d->seed);
 }
 
+size_t doc_op_weight(const struct doc_op *op)
+{
+	size_t n = op->npoints;
+
+	/* a generated tree costs what it makes: a hostile drawing of thousands of trees must
+	 * not keep --load busy for an hour */
+	if (op->params)
+		n += gen_count_branches(op->params) + gen_count_leaves(op->params);
+	return n;
+}
+
 size_t doc_total_points(const struct doc *d)
 {
 	size_t n = 0;
 
 	for (size_t i = 0; i < d->nops; i++)
-		n += d->ops[i].npoints;
+		n += doc_op_weight(&d->ops[i]);
 	return n;
 }
 
@@ -66,9 +77,9 @@ int doc_push(struct doc *d, struct doc_op *op)
 	size_t kept = 0;
 
 	for (size_t i = 0; i < d->cursor; i++)
-		kept += d->ops[i].npoints;
+		kept += doc_op_weight(&d->ops[i]);
 	if (d->cursor >= DOC_MAX_OPS || op->npoints > DOC_MAX_STROKE_POINTS ||
-	    kept + op->npoints > DOC_MAX_POINTS)
+	    kept + doc_op_weight(op) > DOC_MAX_POINTS)
 		return -ENOSPC;
 	/* A new edit after undo forgets the undone ones, as every editor does. */
 	for (size_t i = d->cursor; i < d->nops; i++)

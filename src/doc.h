@@ -76,7 +76,8 @@ struct doc {
  */
 #define DOC_MAX_OPS 20000u
 #define DOC_MAX_STROKE_POINTS 100000u
-#define DOC_MAX_POINTS 4000000u    /* in all strokes together */
+#define DOC_MAX_POINTS 4000000u    /* in all strokes together, generated elements counted
+				    * as points (doc_op_weight) */
 #define DOC_MAX_COORD_M 1000.0f    /* |x|, |y| on the sketch plane */
 #define DOC_MAX_FILE_BYTES (256u << 20)
 
@@ -91,7 +92,10 @@ int doc_op_copy(struct doc_op *dst, const struct doc_op *src);
  * Returns 0, -ENOMEM, or -ENOSPC when the op would take the drawing past a DOC_MAX_ limit
  * (op is left to the caller then). */
 int doc_push(struct doc *d, struct doc_op *op);
-/* Points in ops[0..nops). */
+/* What an op counts towards DOC_MAX_POINTS: a stroke its points, a generated tree its
+ * branches and leaves (gen_count_branches + gen_count_leaves). */
+size_t doc_op_weight(const struct doc_op *op);
+/* The weight of ops[0..nops). */
 size_t doc_total_points(const struct doc *d);
 bool doc_can_undo(const struct doc *d);
 bool doc_can_redo(const struct doc *d);

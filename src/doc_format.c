@@ -463,7 +463,8 @@ static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 				ret = doc_push(d, &op);
 				if (ret == -ENOSPC)
 					ret = error_at(r->err, -EINVAL, r->name, r->line,
-						       "the drawing has more than %u points in all",
+						       "the drawing has more than %u points in all "
+						       "(a generated tree's branches and leaves count as points)",
 						       DOC_MAX_POINTS);
 				else if (ret < 0)
 					error_at(r->err, ret, r->name, r->line, "out of memory");

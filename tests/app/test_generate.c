@@ -4,6 +4,7 @@
  * templates, the parameter buttons while the tree is as generated, the season button, each
  * an undoable op of the drawing; the pen taps the strip as the GPIO buttons press.
  */
+#include <errno.h>
 #include <string.h>
 
 #include "app.h"
@@ -180,10 +181,14 @@ static void test_parameter_buttons(void)
 	pen_button(&pen, app, BUTTON_GEN_BARER);
 	CHECK_INT(params_of(app)->leaf_amount, p.leaf_amount - 2);
 	CHECK_INT(app->tree.nleaves, 8 * (size_t)(p.leaf_amount - 2));
-	/* a season is no hand edit */
+	/* a season is no hand edit, and the buttons keep it */
 	pen_button(&pen, app, BUTTON_SEASON);
 	CHECK(params_of(app) != NULL);
 	CHECK_INT(app_side_items(app, items), 8);
+	CHECK_INT(app->tree.season, SEASON_AUTUMN);
+	pen_button(&pen, app, BUTTON_GEN_LEAFIER);
+	CHECK_INT(app->tree.season, SEASON_AUTUMN);
+	CHECK_INT(params_of(app)->leaf_amount, p.leaf_amount);
 
 	/* a stroke is: the buttons give way, and do nothing */
 	nops = app->doc.nops;
@@ -202,6 +207,7 @@ static void test_parameter_buttons(void)
 	while (app_gen_possible(app, BUTTON_GEN_BARER))
 		pen_button(&pen, app, BUTTON_GEN_BARER);
 	CHECK_INT(params_of(app)->leaf_amount, 0);
+	CHECK_INT(app->tree.nleaves, 0);
 	nops = app->doc.nops;
 	pen_button(&pen, app, BUTTON_GEN_BARER);
 	CHECK(app->doc.nops == nops);
@@ -286,8 +292,46 @@ static void test_drawing(void)
 	app_destroy(back);
 }
 
+/* A drawing of hundreds of large trees is refused as one of millions of points is: it
+ * would keep --load busy for minutes. */
+static void test_weight(void)
+{
+	struct gen_params p;
+	struct error err;
+	struct buf b, line;
+	struct doc d;
+	size_t n = 300;
+
+	gen_params_default(&p, GEN_LSYSTEM);
+	p.levels = 12;
+	buf_init(&line);
+	CHECK_INT(gen_write(&p, &line), 0);
+	buf_init(&b);
+	buf_printf(&b, "edaha-drawing 5\nseed 1\nhistory %zu %zu\n", n, n);
+	for (size_t i = 0; i < n; i++)
+		buf_printf(&b, "generate %zu 1 %zu %.*s\n", i, i, (int)line.len, (const char *)line.data);
+	buf_printf(&b, "end\n");
+	CHECK(!b.failed);
+	CHECK_INT(doc_parse((const char *)b.data, b.len, "many.edaha", &d, &err), -EINVAL);
+	CHECK(strstr(err.msg, "points in all") != NULL);
+	/* and as many as fit read */
+	CHECK(gen_count_branches(&p) + gen_count_leaves(&p) == 4095 + 2048 * 6);
+	buf_reset(&b);
+	n = DOC_MAX_POINTS / (4095 + 2048 * 6);
+	buf_printf(&b, "edaha-drawing 5\nseed 1\nhistory %zu %zu\n", n, n);
+	for (size_t i = 0; i < n; i++)
+		buf_printf(&b, "generate %zu 1 %zu %.*s\n", i, i, (int)line.len, (const char *)line.data);
+	buf_printf(&b, "end\n");
+	CHECK_INT(doc_parse((const char *)b.data, b.len, "fits.edaha", &d, &err), 0);
+	CHECK_INT(d.nops, n);
+	doc_finish(&d);
+	buf_finish(&b);
+	buf_finish(&line);
+}
+
 int main(void)
 {
+	test_weight();
 	test_new_strip();
 	test_parameter_buttons();
 	test_season();
