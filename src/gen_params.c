@@ -265,10 +265,12 @@ int gen_params_check(const struct gen_params *p, const char **key, struct error 
 		if (!in(p->twist, -360, 360))
 			return BAD("twist", "twist: %g is not within -360..360 degrees", p->twist);
 	}
-	if (!in(p->angle_min, 0, 180) || !in(p->angle_max, 0, 180))
-		return BAD("angle", "angle: min and max must be within 0..180 degrees");
+	if (!in(p->angle_min, 0, 180))
+		return BAD("angle.min", "angle.min: %g is not within 0..180 degrees", p->angle_min);
+	if (!in(p->angle_max, 0, 180))
+		return BAD("angle.max", "angle.max: %g is not within 0..180 degrees", p->angle_max);
 	if (p->angle_min > p->angle_max)
-		return BAD("angle", "angle: min %g is over max %g", p->angle_min, p->angle_max);
+		return BAD("angle.min", "angle: min %g is over max %g", p->angle_min, p->angle_max);
 	if (!in(p->randomness, 0, 1))
 		return BAD("angle.randomness", "angle.randomness: %g is not within 0..1", p->randomness);
 	if (!in(p->thickness, 0.001, 5))
