@@ -105,7 +105,7 @@ static void export_tree(const struct tree *t, struct buf *out)
 
 	tree_mesh_init(&tm);
 	CHECK_INT(tree_mesh_build(&tm, t), 0);
-	CHECK_INT(export_glb(&tm, out), 0);
+	CHECK_INT(export_glb(t, &tm, NULL, out), 0);
 	tree_mesh_finish(&tm);
 }
 

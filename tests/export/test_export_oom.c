@@ -44,7 +44,7 @@ static int op_glb(const struct job *j)
 	int r;
 
 	buf_init(&b);
-	r = export_glb(j->mesh, &b);
+	r = export_glb(j->tree, j->mesh, NULL, &b);
 	if (r < 0)
 		CHECK_INT(b.len, 0);
 	buf_finish(&b);
@@ -58,7 +58,7 @@ static int op_obj(const struct job *j)
 
 	buf_init(&obj);
 	buf_init(&mtl);
-	r = export_obj(j->mesh, "tree.mtl", &obj, &mtl);
+	r = export_obj(j->tree, j->mesh, NULL, "tree.mtl", &obj, &mtl);
 	if (r < 0)
 		CHECK_INT(obj.len + mtl.len, 0);
 	buf_finish(&obj);

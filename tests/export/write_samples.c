@@ -47,7 +47,7 @@ static int write_glb(const char *dir, const char *name, const struct tree *t)
 	buf_init(&b);
 	r = tree_mesh_build(&tm, t);
 	if (r >= 0)
-		r = export_glb(&tm, &b);
+		r = export_glb(t, &tm, NULL, &b);
 	if (r >= 0)
 		r = write_file(dir, name, &b);
 	buf_finish(&b);
@@ -86,7 +86,7 @@ static int synth_extras(const char *dir, const struct tree *t)
 	buf_init(&skel);
 	r = tree_mesh_build(&tm, t);
 	if (r >= 0)
-		r = export_obj(&tm, "synth-500.mtl", &obj, &mtl);
+		r = export_obj(t, &tm, NULL, "synth-500.mtl", &obj, &mtl);
 	if (r >= 0)
 		r = export_skeleton(t, &skel);
 	if (r >= 0)
