@@ -284,14 +284,15 @@ static int glb_build_json(struct glb *g, const struct tree_mesh *tm, enum export
 	return root ? 0 : -ENOMEM;
 }
 
-/* A colour channel as a normalized unsigned byte: the nearest of 0/255 .. 255/255. */
+/* A colour channel as a normalized unsigned byte: the nearest of 0/255 .. 255/255 (in
+ * double: in float, 0.9f * 255 rounds up to 229.5 and so to 230, not 229). */
 static unsigned char unorm8(float c)
 {
 	if (!(c > 0.0f))
 		return 0;
 	if (c >= 1.0f)
 		return 255;
-	return (unsigned char)(c * 255.0f + 0.5f);
+	return (unsigned char)((double)c * 255.0 + 0.5);
 }
 
 /* Each vertex of a leaf its palette entry's RGBA; the parts cover the mesh, in order. */
