@@ -35,18 +35,19 @@ static const double white[4] = { 1.0, 1.0, 1.0, 1.0 };
  * attribute on the one leaves primitive, rather than one primitive a palette colour:
  *
  * - The leaves' POSITION, NORMAL and indices stay byte for byte what summer has (one
- *   primitive, one draw), only COLOR_0 is added; primitives a colour would either reorder
- *   the indices or share the vertices between up to 6 primitives, and importers that copy a
- *   primitive's whole accessors (assimp up to 5.2) would then hold the leaves 6 times over.
- * - The Khronos validator takes it with no error, warning, info or hint
- *   (tests/export/validate_samples.sh checks), and viewers show it: three.js's GLTFLoader
- *   turns on vertexColors for a primitive with COLOR_0; Blender's importer multiplies
- *   COLOR_0 into the material's Base Color (a Color Attribute node).
- * - VEC4 normalized unsigned bytes: 4 bytes a vertex, a quarter of floats (a 30,000-leaf
- *   tree's 360,000 leaf vertices take 1.4 MB), what Blender stores (byte colours) and
- *   displays show anyway; alpha written as 1, where readers given RGB make up their own
- *   (assimp 5.2 reads it as 0). A byte is the palette's value to the nearest 1/255, so each
- *   byte value still says which palette entry a leaf has (entries differ by more).
+ *   primitive, one draw), only COLOR_0 is added. Primitives a colour would either reorder
+ *   the leaves' vertices and indices, or share the vertices between up to 6 primitives,
+ *   which importers that copy each primitive's whole accessors (Debian's assimp 5.2) then
+ *   hold 6 times over.
+ * - The Khronos validator takes it with no error or warning (validate_samples.sh and
+ *   seasons.sh check), nor info or hint; and viewers show it: three.js's GLTFLoader turns
+ *   on vertexColors for a primitive with COLOR_0, Blender's importer multiplies COLOR_0
+ *   into the material's Base Color (a Color Attribute node).
+ * - VEC4 normalized unsigned bytes: 4 bytes a vertex, a quarter of floats (a cherry leaf
+ *   has 12 vertices: 30,000 leaves take 1.4 MB), what Blender keeps anyway (byte colours).
+ *   Alpha is written, 1: given RGB floats, assimp 5.2 makes it 0. A byte is the palette's
+ *   value to the nearest 1/255; entries differ by 0.02 or more in some channel, so each
+ *   colour still says which entry its leaf has.
  */
 
 static struct json_object *jint(size_t v)
