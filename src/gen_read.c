@@ -505,6 +505,35 @@ static int read_root(struct reader *r, yaml_parser_t *y, const char *data, size_
 	return error_at(r->err, ret, r->name, line_of(r, line), "%s", why.msg);
 }
 
+/*
+ * A parameter file has no use for YAML's aliases (*name), and the loaded document shares
+ * an aliased node with its anchor, so a bad value there would be told at the anchor's
+ * line: they are refused where they are. A syntax error is left to the loader to tell.
+ */
+static int no_aliases(struct reader *r, const char *data, size_t len)
+{
+	yaml_parser_t y;
+	yaml_event_t ev;
+	int ret = 0;
+
+	if (!yaml_parser_initialize(&y))
+		return error_at(r->err, -ENOMEM, r->name, 0, "out of memory");
+	yaml_parser_set_input_string(&y, (const unsigned char *)data, len);
+	while (ret == 0 && yaml_parser_parse(&y, &ev)) {
+		yaml_event_type_t type = ev.type;
+
+		if (type == YAML_ALIAS_EVENT)
+			ret = error_at(r->err, -EINVAL, r->name,
+				       (unsigned long)ev.start_mark.line + 1 + r->offset,
+				       "an alias (*name): tree parameter files do not use them");
+		yaml_event_delete(&ev);
+		if (type == YAML_STREAM_END_EVENT)
+			break;
+	}
+	yaml_parser_delete(&y);
+	return ret;
+}
+
 int gen_read(const char *data, size_t len, const char *name, unsigned long line_offset,
 	     struct gen_params *p, struct error *err)
 {
@@ -514,8 +543,10 @@ int gen_read(const char *data, size_t len, const char *name, unsigned long line_
 	int ret;
 
 	if (len > GEN_READ_MAX_BYTES)
-		return error_at(err, -EINVAL, name, 0, "larger than %u bytes: not a tree parameter file",
-				GEN_READ_MAX_BYTES);
+		return error_at(err, -EINVAL, name, line_offset + 1,
+				"larger than %u bytes: not a tree parameter file", GEN_READ_MAX_BYTES);
+	if ((ret = no_aliases(&r, data, len)) < 0)
+		return ret;
 	gen_params_default(&tmp, GEN_LSYSTEM);
 	r.p = &tmp;
 	if (!yaml_parser_initialize(&y))
