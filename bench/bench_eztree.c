@@ -3,7 +3,7 @@
  * Runs bench/eztree/bench.mjs under node and reads what it prints:
  *
  *   eztree-info TEXT                       shown as it is (versions, the stand-ins)
- *   eztree-result LABEL TARGET TRIANGLES BARK LEAVES MEDIAN_S REPS OPTIONS...
+ *   eztree-result LABEL TARGET TRIANGLES BARK LEAVES MEDIAN_S CPU_S REPS OPTIONS...
  *
  * A separate process, run after our own timings, so the two never share the 2 cores.
  */
@@ -35,8 +35,9 @@ static bool parse_result(const char *line, struct eztree_result *r)
 	int used = 0;
 
 	memset(r, 0, sizeof(*r));
-	if (sscanf(line, "eztree-result %15s %zu %zu %zu %zu %lf %d %n", r->label, &r->target,
-		   &r->triangles, &r->bark, &r->leaves, &r->median_s, &r->reps, &used) < 7 ||
+	if (sscanf(line, "eztree-result %15s %zu %zu %zu %zu %lf %lf %d %n", r->label, &r->target,
+		   &r->triangles, &r->bark, &r->leaves, &r->median_s, &r->cpu_s, &r->reps,
+		   &used) < 8 ||
 	    used == 0)
 		return false;
 	snprintf(r->options, sizeof(r->options), "%s", line + used);

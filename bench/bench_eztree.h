@@ -16,6 +16,7 @@ struct eztree_result {
 	size_t triangles; /* ez-tree's: bark + leaves, as the indices it generates */
 	size_t bark, leaves;
 	double median_s;  /* one Tree.generate(), median after warm-up */
+	double cpu_s;     /* its CPU time, median: node's every thread (GC, JIT) */
 	int reps;
 	char options[256]; /* the preset and what was changed, as the script says it */
 };
