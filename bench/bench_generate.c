@@ -194,8 +194,10 @@ static int by_size(struct figures *out)
 		struct figures *f = &out[s];
 		int ret = cherry(sizes[s].levels, sizes[s].leaves, &p);
 
-		if (ret < 0 || (ret = measure(&p, REPS, f)) < 0)
+		if (ret < 0 || (ret = measure(&p, REPS, f)) < 0) {
+			fprintf(stderr, "bench_generate: ~%s: %s\n", sizes[s].label, strerror(-ret));
 			return ret;
+		}
 		printf("~%s: levels %d, leaves.amount %d: %zu branches, %zu leaves; %zu triangles "
 		       "(bark %zu, leaves %zu)\n",
 		       sizes[s].label, p.levels, p.leaf_amount, f->branches, f->leaves, tris(f),
@@ -258,8 +260,10 @@ static int presets(void)
 		read_s = time_read(text);
 		if (read_s < 0)
 			return -EINVAL;
-		if ((ret = build_once(&p, &g, &m, &c, &f)) < 0)
+		if ((ret = build_once(&p, &g, &m, &c, &f)) < 0) {
+			fprintf(stderr, "bench_generate: %s: %s\n", text->name, strerror(-ret));
 			return ret;
+		}
 		printf("%-8s %-8s %4d %8zu %7zu %9zu %10.1f %10.3f %10.3f %10.3f %8.1f\n",
 		       text->name, gen_type_name(p.type), p.precision, f.branches, f.leaves, tris(&f),
 		       read_s * 1e6, g * 1e3, m * 1e3, (g + m) * 1e3, 1e9 * (g + m) / (double)tris(&f));
