@@ -289,6 +289,7 @@ static int templates(void)
 {
 	double fresh[APP_REPS], tap[APP_REPS];
 	size_t nb = 0, nl = 0;
+	char what[96];
 
 	for (int i = 0; i < APP_REPS; i++) {
 		struct app *app = app_create(1280, 800, SEED);
@@ -308,10 +309,12 @@ static int templates(void)
 		app_destroy(app);
 	}
 	printf("\nthe kiosk (app_handle_event), median of %d fresh apps\n", APP_REPS);
-	printf("  New: the %d template thumbnails (app_templates_build)      %9.3f ms\n",
-	       GEN_PRESET_COUNT, 1e3 * bench_median(fresh, APP_REPS));
-	printf("  then tpl-cherry: the preset on the canvas (%zu branches, %zu leaves) %9.3f ms\n",
-	       nb, nl, 1e3 * bench_median(tap, APP_REPS));
+	snprintf(what, sizeof(what), "New: the %d template thumbnails (app_templates_build)",
+		 GEN_PRESET_COUNT);
+	printf("  %-70s %9.3f ms\n", what, 1e3 * bench_median(fresh, APP_REPS));
+	snprintf(what, sizeof(what),
+		 "then tpl-cherry: the preset on the canvas (%zu branches, %zu leaves)", nb, nl);
+	printf("  %-70s %9.3f ms\n", what, 1e3 * bench_median(tap, APP_REPS));
 	return 0;
 }
 
