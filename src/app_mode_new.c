@@ -13,6 +13,7 @@
  * is the same tree to the eye, and takes a fraction of the time to make.
  */
 #define PREVIEW_MAX_LEVELS 7
+#define PREVIEW_MAX_SHRUB_LEVELS 5 /* a shrub's crown of 3 children a fork fills at 5 */
 #define PREVIEW_MAX_LEAVES 3
 #define PREVIEW_PRECISION 5
 
@@ -25,8 +26,8 @@ static int build_template(struct tree_mesh *tm, enum gen_preset which)
 
 	if (ret < 0)
 		return ret;
-	if (p.levels > PREVIEW_MAX_LEVELS)
-		p.levels = PREVIEW_MAX_LEVELS;
+	if (p.levels > (p.type == GEN_SHRUB ? PREVIEW_MAX_SHRUB_LEVELS : PREVIEW_MAX_LEVELS))
+		p.levels = p.type == GEN_SHRUB ? PREVIEW_MAX_SHRUB_LEVELS : PREVIEW_MAX_LEVELS;
 	if (p.type != GEN_PALM && p.leaf_amount > PREVIEW_MAX_LEAVES)
 		p.leaf_amount = PREVIEW_MAX_LEAVES;
 	p.precision = PREVIEW_PRECISION;

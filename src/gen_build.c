@@ -72,6 +72,7 @@ int gen_build(struct tree *t, const struct gen_params *p, uint64_t seed)
 	if (gen_params_check(p, &key, &err) < 0)
 		return -EINVAL;
 	rng_seed(&g.rng, seed);
+	g.noutline = gen_leaf_outline(p->leaf_type, g.outline, GEN_LEAF_MAX_POINTS);
 	switch (p->type) {
 	case GEN_SHRUB:
 		ret = gen_shrub(&g);

@@ -89,16 +89,15 @@ static struct vec3 width_dir(struct vec3 a)
 	return vec3_norm_or(w, vec3(1, 0, 0));
 }
 
-void gen_leaf_points(enum gen_leaf type, struct vec3 base, struct vec3 axis, double size,
+void gen_leaf_points(const struct gen_ctx *g, struct vec3 base, struct vec3 axis, double size,
 		     struct vec3 *out, size_t *n)
 {
-	double outline[GEN_LEAF_MAX_POINTS][2];
 	struct vec3 a = vec3_norm_or(axis, vec3(0, 1, 0)), w = width_dir(a);
 
-	*n = gen_leaf_outline(type, outline, GEN_LEAF_MAX_POINTS);
+	*n = g->noutline;
 	for (size_t k = 0; k < *n; k++)
-		out[k] = vec3_add(base, vec3_add(vec3_scale(a, size * outline[k][0]),
-						 vec3_scale(w, size * outline[k][1])));
+		out[k] = vec3_add(base, vec3_add(vec3_scale(a, size * g->outline[k][0]),
+						 vec3_scale(w, size * g->outline[k][1])));
 }
 
 int gen_add_leaf(struct gen_ctx *g, int branch, double t, const struct vec3 *p, size_t n)

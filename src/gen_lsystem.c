@@ -70,7 +70,7 @@ static int tip_leaves(struct gen_ctx *g, int b, struct vec3 e, const struct gen_
 		size_t n;
 		int ret;
 
-		gen_leaf_points(p->leaf_type, vec3_lerp(a, z, t), axis, p->leaf_size, pts, &n);
+		gen_leaf_points(g, vec3_lerp(a, z, t), axis, p->leaf_size, pts, &n);
 		if (clip && !gen_clip_leaf(clip, pts, n))
 			continue;
 		if ((ret = gen_add_leaf(g, b, t, pts, n)) < 0)

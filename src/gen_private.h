@@ -6,21 +6,24 @@
 #include "gen.h"
 #include "rng.h"
 
+/* The most points of a leaf outline (gen_leaf.c). */
+#define GEN_LEAF_MAX_POINTS 24
+
 struct gen_ctx {
 	struct tree *t;
 	const struct gen_params *p;
 	struct rng rng;
+	/* the leaves' outline (gen_leaf_outline of p->leaf_type), made once a tree */
+	double outline[GEN_LEAF_MAX_POINTS][2];
+	size_t noutline;
 };
-
-/* The most points of a leaf outline (gen_leaf.c). */
-#define GEN_LEAF_MAX_POINTS 24
 
 /* A leaf of length 1 along +x from (0, 0), its width along y, counter-clockwise: how many
  * points it has (0 when max is too small). */
 size_t gen_leaf_outline(enum gen_leaf type, double out[][2], size_t max);
 /* The outline of a leaf of `size` from `base` along `axis`, its front turned up as far as
- * it goes: n points into out (GEN_LEAF_MAX_POINTS of room). */
-void gen_leaf_points(enum gen_leaf type, struct vec3 base, struct vec3 axis, double size,
+ * it goes: g->noutline points into out (GEN_LEAF_MAX_POINTS of room). */
+void gen_leaf_points(const struct gen_ctx *g, struct vec3 base, struct vec3 axis, double size,
 		     struct vec3 *out, size_t *n);
 /* Adds a leaf with points p on `branch` at arc-length parameter t, attached (its `local`
  * recorded). Its id, or -ENOMEM. */
