@@ -34,6 +34,14 @@ static void copy_doc(struct doc *d, const struct doc *src)
 	for (size_t i = 0; i < src->nops; i++) {
 		d->ops[i] = src->ops[i];
 		d->ops[i].points = NULL;
+		d->ops[i].params = NULL;
+		/* a generated tree's parameters are the op's own (a template tapped on the New
+		 * strip): shared, doc_finish would free them under the app */
+		if (src->ops[i].params) {
+			d->ops[i].params = malloc(sizeof(*d->ops[i].params));
+			CHECK(d->ops[i].params);
+			*d->ops[i].params = *src->ops[i].params;
+		}
 		if (src->ops[i].npoints) {
 			d->ops[i].points = malloc(src->ops[i].npoints * sizeof(*d->ops[i].points));
 			CHECK(d->ops[i].points);
