@@ -93,7 +93,7 @@ int render_previews(struct render *r, const struct app *app, const struct camera
 	glEnable(GL_SCISSOR_TEST);
 	glDisable(GL_BLEND);
 	for (size_t i = 0; i < n; i++) {
-		struct layout_rect s = layout_side_slot(&app->view, i, true);
+		struct layout_rect s = layout_side_slot(&app->view, i, LAYOUT_SIDE_CARDS);
 		const struct tree_mesh *tm = &app->previews[list[i]];
 		double b[4] = { INFINITY, INFINITY, -INFINITY, -INFINITY };
 		float mvp[16];

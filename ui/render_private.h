@@ -143,6 +143,8 @@ void render_ui_buttons(struct batch *b, const struct ui_text *t, const struct ap
  * wide (a longer label is set smaller). */
 int render_ui_label_px(double button_h);
 double render_ui_label_room(double button_w);
+/* A named card's word's size, for the band of that height under its picture. */
+int render_ui_card_label_px(double band);
 void render_ui_cursor(struct batch *b, const struct app *app);
 /* The branch clone mode works on, marked over the tree as the camera xf shows it. */
 void render_ui_selection(struct batch *b, const struct app *app, const struct camera_xf *xf);

@@ -234,6 +234,13 @@ static int build_stroke(struct app *app, enum event_tool tool, double x0, double
 	return 0;
 }
 
+/* The strokes of the scenes' histories, for what reads them (the side strip asks whether
+ * the tree is a generated one): never applied. */
+static struct doc_op scene_ops[5] = {
+	{ .kind = DOC_OP_STROKE }, { .kind = DOC_OP_STROKE }, { .kind = DOC_OP_STROKE },
+	{ .kind = DOC_OP_STROKE }, { .kind = DOC_OP_STROKE },
+};
+
 int scene_build(struct app *app, const char *name)
 {
 	int r;
@@ -241,6 +248,7 @@ int scene_build(struct app *app, const char *name)
 	/* all-zero is an empty mesh, stroke and history */
 	memset(app, 0, sizeof(*app));
 	app->mesh_serial = 1;
+	app->doc.ops = scene_ops;
 
 	if (!strcmp(name, "leaf")) {
 		/* drawing a new branch in leaf mode; undo possible, nothing to redo */
