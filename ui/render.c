@@ -283,8 +283,7 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 	struct camera_xf xf;
 	struct vec3 l;
 	float proj[16], light[3];
-	enum arrange_pattern shown[ARRANGE_COUNT];
-	bool previews = app->mode == APP_MODE_LEAF && app_suggestions(app, shown) > 0;
+	bool previews = render_previews_shown(app);
 	int ret, r2;
 
 	(void)app_camera_at(app, now_us, &cam);

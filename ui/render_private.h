@@ -11,6 +11,7 @@
 #include "atlas.h"
 #include "batch.h"
 #include "camera.h"
+#include "gen.h"
 #include "leaf_instances.h"
 #include "render.h"
 
@@ -63,6 +64,16 @@ struct render_instanced {
 	struct leaf_instances li;
 };
 
+/* A side strip picture on the GPU: a copy of one of the app's previews[] or templates[]
+ * (render_preview.c), as of a previews_serial. */
+struct render_picture {
+	struct render_mesh bark, leaves;
+	bool uploaded;
+	uint64_t serial;
+	double bounds[4]; /* a template's, through the template camera: x0, y0, x1, y1 */
+};
+#define RENDER_PICTURES (ARRANGE_COUNT + GEN_PRESET_COUNT)
+
 struct render {
 	/* lit tree meshes: world positions and normals */
 	GLuint tree_program;
@@ -91,10 +102,8 @@ struct render {
 	uint64_t mesh_serial;
 	size_t upload_bytes; /* what the last upload of the tree sent to the GPU */
 
-	/* the leaf suggestions' thumbnails */
-	struct render_mesh preview_bark[ARRANGE_COUNT], preview_leaves[ARRANGE_COUNT];
-	bool previews_uploaded;
-	uint64_t previews_serial;
+	/* the side strip's pictures: the leaf suggestions', then the templates' */
+	struct render_picture pictures[RENDER_PICTURES];
 
 	struct batch batch;
 	struct render_stats stats;
@@ -155,8 +164,10 @@ void render_ui_status(struct batch *b, const struct ui_text *t, const struct app
 		      uint64_t now_us);
 void render_ui_attract(struct batch *b, const struct ui_text *t, const struct app *app);
 
-/* render_preview.c: the 3D pictures inside the leaf suggestion thumbnails (the cards
- * behind them are render_ui_buttons'). 0 or a negative errno. */
+/* render_preview.c: the 3D pictures in the side strip's cards (the cards behind them are
+ * render_ui_buttons'): whether there are any, and drawing them, the leaf suggestions seen
+ * through xf. 0 or a negative errno. */
+bool render_previews_shown(const struct app *app);
 int render_previews(struct render *r, const struct app *app, const struct camera_xf *xf,
 		    const float light[3]);
 void render_previews_finish(struct render *r);

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "app.h"
+#include "app_mode.h"
 #include "arrange.h"
 #include "layout.h"
 #include "egl_headless.h"
@@ -466,6 +467,93 @@ static void test_turn(void)
 	app_destroy(app);
 }
 
+static void press_button(struct app *app, uint64_t *t, enum button b)
+{
+	struct event e = { .type = EVENT_BUTTON, .button = (int)b, .pressed = true };
+
+	e.time_us = (*t += 8000);
+	app_handle_event(app, &e);
+	e.pressed = false;
+	e.time_us = (*t += 80000);
+	app_handle_event(app, &e);
+}
+
+/* Pixels of a rectangle (top-down rows) that are not the card's paper: what is drawn on it. */
+static size_t drawn_in(const uint8_t *img, int width, struct layout_rect r)
+{
+	size_t n = 0;
+
+	for (int y = (int)r.y + 4; y < (int)(r.y + r.h) - 4; y++)
+		for (int x = (int)r.x + 4; x < (int)(r.x + r.w) - 4; x++) {
+			const uint8_t *p = img + ((size_t)y * (size_t)width + (size_t)x) * 4;
+
+			n += p[0] < 230 || p[1] < 230 || p[2] < 220;
+		}
+	return n;
+}
+
+/*
+ * The New strip: every card shows its tree (the blank one its sheet), each picture's meshes
+ * uploaded once until previews_serial changes; the leaf suggestions' slots are not the
+ * templates'.
+ */
+static void test_templates(void)
+{
+	struct fixture f;
+	struct app *app = app_create(640, 400, 1);
+	struct app_side_item items[APP_SIDE_MAX];
+	struct render_stats st;
+	struct render *r;
+	uint64_t t = 1000;
+	size_t n;
+
+	CHECK(app);
+	press_button(app, &t, BUTTON_NEW);
+	CHECK_INT(app->mode, APP_MODE_NEW);
+	CHECK(app->templates_ready);
+	n = app_side_items(app, items);
+	CHECK_INT(n, 1 + GEN_PRESET_COUNT);
+	CHECK_INT(app_side_kind(&items[0]), LAYOUT_SIDE_NAMED_CARDS);
+	fixture_init(&f, 640, 400);
+	r = render_create();
+	CHECK(r);
+
+	draw(&f, r, app, f.a);
+	render_get_stats(r, &st);
+	/* the (empty) tree's two meshes, two for each template */
+	CHECK_INT(st.uploads, 2 + 2 * GEN_PRESET_COUNT);
+	CHECK_INT(st.tree_triangles, 0);
+	for (size_t i = 0; i < n; i++) {
+		struct layout_rect card = layout_side_slot(&app->view, i, LAYOUT_SIDE_NAMED_CARDS);
+		size_t drawn = drawn_in(f.a, 640, layout_card_picture(card, LAYOUT_SIDE_NAMED_CARDS));
+
+		if (drawn < 200)
+			fprintf(stderr, "card %zu: %zu pixels drawn\n", i, drawn);
+		CHECK(drawn >= 200);
+	}
+	/* nothing changed: nothing uploaded, the same picture */
+	draw(&f, r, app, f.b);
+	render_get_stats(r, &st);
+	CHECK_INT(st.uploads, 0);
+	CHECK(memcmp(f.a, f.b, f.size) == 0);
+	/* the app's pictures changed: each template again */
+	app->previews_serial++;
+	draw(&f, r, app, f.b);
+	render_get_stats(r, &st);
+	CHECK_INT(st.uploads, 2 * GEN_PRESET_COUNT);
+	CHECK(memcmp(f.a, f.b, f.size) == 0);
+	/* drawing closes the strip: no pictures, no uploads */
+	pen_line(app, &t, 320, 368, 320, 200);
+	CHECK_INT(app->mode, APP_MODE_SKETCH);
+	draw(&f, r, app, f.b);
+	render_get_stats(r, &st);
+	CHECK_INT(st.uploads, 2);
+
+	render_destroy(r);
+	fixture_finish(&f);
+	app_destroy(app);
+}
+
 static char *font_data;
 static size_t font_len;
 
@@ -684,6 +772,7 @@ int main(void)
 	test_status_fades();
 	test_attract();
 	test_turn();
+	test_templates();
 	test_upload_only_on_serial();
 	test_expanded_indices();
 	test_instanced();
