@@ -13,10 +13,10 @@
 #include "app.h"
 #include "app_mode.h"
 #include "layout.h"
+#include "leaf_tint.h"
 #include "render_private.h"
 
 static const float bark_color[3] = { 0.47f, 0.32f, 0.20f };
-static const float leaf_color[3] = { 0.33f, 0.62f, 0.24f };
 
 /* The picture slot that holds the app's mesh m: previews[] first, then templates[]. */
 static int picture_of(const struct app *app, const struct tree_mesh *m)
@@ -73,7 +73,13 @@ static int upload(struct render *r, const struct app *app, int k, const struct t
 		return ret;
 	if (k >= ARRANGE_COUNT) {
 		struct camera_xf xf;
+		struct gen_params params;
+		struct error err;
 
+		/* a preset that will not read (its test says it does) shows summer */
+		p->season = gen_preset((enum gen_preset)(k - ARRANGE_COUNT), &params, &err) == 0
+				    ? params.season
+				    : SEASON_SUMMER;
 		template_xf(&xf);
 		p->bounds[0] = p->bounds[1] = INFINITY;
 		p->bounds[2] = p->bounds[3] = -INFINITY;
@@ -133,18 +139,23 @@ static int draw_picture(struct render *r, const struct app *app, int k, const st
 	/* inside the card's border; GL counts rows from the bottom */
 	GLint x = (GLint)(pic.x + 0.08 * pic.w), w = (GLint)(0.84 * pic.w);
 	GLint y = (GLint)(app->view.height - pic.y - 0.92 * pic.h), h = (GLint)(0.84 * pic.h);
+	float leaf[3] = { LEAF_TINT_SUMMER_RGB };
 	int ret = upload(r, app, k, tm);
 
 	if (ret < 0)
 		return ret;
 	p = &r->pictures[k];
+	/* leaves in the season of the tree they show, in one colour at this size; a leaf
+	 * suggestion shows its leaves in winter too, or it would suggest nothing */
 	if (k >= ARRANGE_COUNT) {
 		template_xf(&own);
 		xf = &own;
 		memcpy(b, p->bounds, sizeof(b));
+		(void)leaf_tint_uniform(p->season, leaf);
 	} else {
 		bounds(&tm->bark, xf, b);
 		bounds(&tm->leaves, xf, b);
+		(void)leaf_tint_uniform(app->tree.season, leaf);
 	}
 	if (!(b[0] <= b[2]) || w <= 0 || h <= 0)
 		return 0; /* nothing to show */
@@ -159,7 +170,7 @@ static int draw_picture(struct render *r, const struct app *app, int k, const st
 	render_mesh_draw(r, &p->bark);
 	glDisable(GL_CULL_FACE);
 	glUniform1i(r->tree_two_sided, 1);
-	glUniform3fv(r->tree_color, 1, leaf_color);
+	glUniform3fv(r->tree_color, 1, leaf);
 	render_mesh_draw(r, &p->leaves);
 	return 0;
 }
