@@ -9,6 +9,7 @@
  * the side strip from app_side_items().
  */
 #include "app.h"
+#include "layout.h"
 
 /* One place on the side strip: a button, or a card with a picture (a thumbnail). */
 struct app_side_item {
@@ -54,5 +55,7 @@ const struct app_mode_ops *app_mode_ops(enum app_mode mode);
 
 /* What the side strip shows now: the active mode's items. */
 size_t app_side_items(const struct app *app, struct app_side_item out[APP_SIDE_MAX]);
+/* How the side strip lays out items of this kind (all of a strip's are of one kind). */
+enum layout_side_kind app_side_kind(const struct app_side_item *item);
 /* The side strip item under (x, y), if any. */
 bool app_side_hit(const struct app *app, double x, double y, struct app_side_item *item);

@@ -117,12 +117,21 @@ size_t app_side_items(const struct app *app, struct app_side_item out[APP_SIDE_M
 	return m->side ? m->side(app, out, APP_SIDE_MAX) : 0;
 }
 
+/* Pictures a tap presses a button with are named (the templates); the leaf suggestions,
+ * which the mode takes, are not. */
+enum layout_side_kind app_side_kind(const struct app_side_item *item)
+{
+	if (!item->thumbnail)
+		return LAYOUT_SIDE_BUTTONS;
+	return item->button != BUTTON_COUNT ? LAYOUT_SIDE_NAMED_CARDS : LAYOUT_SIDE_CARDS;
+}
+
 bool app_side_hit(const struct app *app, double x, double y, struct app_side_item *item)
 {
 	struct app_side_item items[APP_SIDE_MAX];
 	size_t n = app_side_items(app, items), slot;
 
-	if (n == 0 || !layout_side_hit(&app->view, x, y, n, items[0].thumbnail, &slot))
+	if (n == 0 || !layout_side_hit(&app->view, x, y, n, app_side_kind(&items[0]), &slot))
 		return false;
 	*item = items[slot];
 	return true;

@@ -318,7 +318,7 @@ static bool act(struct app *app, struct rng *r, int *propagations, bool gentle)
 		/* leaf mode: a leaf, then its first suggestion */
 		press(app, BUTTON_LEAF);
 		if (app->mode == APP_MODE_LEAF && pick(app, r, false, &x, &y)) {
-			struct layout_rect s = layout_side_slot(&app->view, 0, true);
+			struct layout_rect s = layout_side_slot(&app->view, 0, LAYOUT_SIDE_CARDS);
 
 			loop(app, x, y - 14, 12, 1.0);
 			if (app->suggestions)
