@@ -3,6 +3,7 @@
  * the presets (presets/\*.yaml) as rendered thumbnails; a tap puts one on the canvas as a
  * 3D tree (app_generate.c). Drawing on the canvas instead closes it. */
 #include <errno.h>
+#include <math.h>
 
 #include "app_mode.h"
 #include "app_private.h"
@@ -13,9 +14,13 @@
  * is the same tree to the eye, and takes a fraction of the time to make.
  */
 #define PREVIEW_MAX_LEVELS 7
-#define PREVIEW_MAX_SHRUB_LEVELS 5 /* a shrub's crown of 3 children a fork fills at 5 */
+#define PREVIEW_MAX_SHRUB_LEVELS 6 /* a shrub's crown of 3 children a fork is full at 6 */
 #define PREVIEW_MAX_LEAVES 3
 #define PREVIEW_PRECISION 5
+/* leaves a pixel long say nothing: a thumbnail's leaves are drawn larger, so that the crown
+ * reads as leafy (or blossoming) at a glance, a shrub's as solid */
+#define PREVIEW_LEAF_SCALE 5.0
+#define PREVIEW_SHRUB_LEAF_SCALE 1.6
 
 static int build_template(struct tree_mesh *tm, enum gen_preset which)
 {
@@ -30,6 +35,9 @@ static int build_template(struct tree_mesh *tm, enum gen_preset which)
 		p.levels = p.type == GEN_SHRUB ? PREVIEW_MAX_SHRUB_LEVELS : PREVIEW_MAX_LEVELS;
 	if (p.type != GEN_PALM && p.leaf_amount > PREVIEW_MAX_LEAVES)
 		p.leaf_amount = PREVIEW_MAX_LEAVES;
+	if (p.type != GEN_PALM)
+		p.leaf_size = fmin(5.0, p.leaf_size * (p.type == GEN_SHRUB ? PREVIEW_SHRUB_LEAF_SCALE
+									    : PREVIEW_LEAF_SCALE));
 	p.precision = PREVIEW_PRECISION;
 	tree_init(&t);
 	/* the seed a template tap on an empty canvas of seed 1 uses: what the kiosk shows first */
