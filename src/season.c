@@ -14,18 +14,24 @@ static const char *const names[SEASON_COUNT] = {
 	[SEASON_SPRING] = "spring",
 };
 
-/* Summer's green is the one every exporter used before seasons (numfmt.h). */
+/*
+ * Linear RGB, as glTF's colours are (the exporters write them as they are; the renderer
+ * shows them through its own curve, ui/leaf_tint.c). Summer's green is the one every
+ * exporter used before seasons (numfmt.h); the others are picked in sRGB, as the comments
+ * give them, and converted.
+ */
 static const struct season_rgb summer[] = { { MATERIAL_LEAVES_RGB } };
-/* cherry blossom: pinks and a near white */
+/* cherry blossom, sRGB: (0.96, 0.72, 0.80), (0.93, 0.60, 0.72), (0.98, 0.90, 0.92) */
 static const struct season_rgb spring[] = {
-	{ 0.96f, 0.72f, 0.80f },
-	{ 0.93f, 0.60f, 0.72f },
-	{ 0.98f, 0.90f, 0.92f },
+	{ 0.911f, 0.477f, 0.604f },
+	{ 0.848f, 0.319f, 0.477f },
+	{ 0.955f, 0.787f, 0.828f },
 };
-/* yellow, gold, orange, scarlet, red, crimson */
+/* yellow, gold, orange, scarlet, red, crimson, sRGB: (0.90, 0.74, 0.16), (0.88, 0.58, 0.12),
+ * (0.86, 0.42, 0.10), (0.80, 0.26, 0.08), (0.70, 0.16, 0.08), (0.55, 0.10, 0.10) */
 static const struct season_rgb autumn[] = {
-	{ 0.90f, 0.74f, 0.16f }, { 0.88f, 0.58f, 0.12f }, { 0.86f, 0.42f, 0.10f },
-	{ 0.80f, 0.26f, 0.08f }, { 0.70f, 0.16f, 0.08f }, { 0.55f, 0.10f, 0.10f },
+	{ 0.787f, 0.507f, 0.022f }, { 0.748f, 0.296f, 0.013f }, { 0.711f, 0.147f, 0.010f },
+	{ 0.604f, 0.055f, 0.007f }, { 0.448f, 0.022f, 0.007f }, { 0.263f, 0.010f, 0.010f },
 };
 
 const char *season_name(enum season s)

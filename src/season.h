@@ -32,7 +32,8 @@ enum season season_next(enum season s);
 bool season_shows_leaves(enum season s);
 
 /*
- * A season's leaf colours: a small palette (linear RGB 0..1), each leaf taking one entry.
+ * A season's leaf colours: a small palette (linear RGB 0..1, as glTF's), each leaf taking
+ * one entry.
  * Summer has one entry (every leaf the same green); spring a few blossom pinks and
  * whites; autumn a run from yellow to deep red. Winter has none.
  */
