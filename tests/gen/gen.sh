@@ -1,0 +1,178 @@
+#!/bin/bash
+# SPDX-License-Identifier: MIT
+# The rules of functional trees (docs/functional-trees.md, docs/tree-params.md) asserted on
+# what the real binary writes: gen.sh TEST. Paths come from meson's environment: EDAHA,
+# GEN_CHECK (gen_check.c: the geometry), GLTF_VALIDATE, SRC (the source tree).
+set -uo pipefail
+: "${EDAHA:?}" "${GEN_CHECK:?}" "${SRC:?}"
+T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-gen.XXXXXX")
+trap 'rm -rf "$T"' EXIT
+HERE=$SRC/tests/gen
+PRESETS="cherry zelkova hedge ball cone palm"
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+# Under ASan the GL driver is preloaded into edaha only (see tests/meson.build).
+edaha() {
+	if [ -n "${EDAHA_GL_PRELOAD:-}" ]; then
+		LD_PRELOAD=$EDAHA_GL_PRELOAD ASAN_OPTIONS=${ASAN_OPTIONS:-}:verify_asan_link_order=0 "$EDAHA" "$@"
+	else
+		"$EDAHA" "$@"
+	fi
+}
+# run OUT ARGS...: a headless run that must succeed. The screen is small: these tests read
+# the model and skeleton, which --size never changes (functional-trees.md, Precision).
+run() {
+	local out=$1 rc=0
+	shift
+	edaha --headless --size 160x100 --out "$out" "$@" >"$T/stdout" 2>"$T/stderr" || rc=$?
+	[ $rc -eq 0 ] || { cat "$T/stderr" >&2; fail "edaha $* exited $rc"; }
+}
+gen() { # FILE OUT ARGS...
+	local file=$1 out=$2
+	shift 2
+	run "$out" --generate "$file" "$@"
+}
+check() { "$GEN_CHECK" "$@" || fail "gen_check $*"; }
+# param FILE KEY DEFAULT: a parameter file's value (gen_check param: libyaml), DEFAULT when
+# the file leaves it out: the tests read the presets rather than copy their numbers
+param() { "$GEN_CHECK" param "$@" || fail "gen_check param $*"; }
+# lsystem NAME KEY: VALUE...: a parameter file $T/NAME.yaml with those lines after the head
+lsystem() {
+	local name=$1
+	shift
+	{ echo "edaha-tree: 1"; echo "type: lsystem"; printf '%s\n' "$@"; } >"$T/$name.yaml"
+}
+
+# 1. Branch counts, children at their parent's tip, lengths by the ratios, levels; 2 and 3
+# children, levels 2..8, a vertical and a leaning trunk.
+t_structure() {
+	local l
+	for l in 2 3 4 5 6 7 8; do
+		lsystem "two$l" "levels: $l" "children: 2" "ratios: [0.8, 0.6]" "leaves: {amount: 2}"
+		gen "$T/two$l.yaml" "$T/two$l"
+		check tree "$T/two$l/skeleton.json" "$l" 2 0.8,0.6 2
+		lsystem "three$l" "levels: $l" "children: 3" "ratios: [0.9, 0.75, 0.6]" \
+			"trunk: {start: [0.3, 0, -0.2], end: [1, 2, 0.5]}" "angle: {min: 10, max: 80, randomness: 1}" \
+			"leaves: {amount: 1}"
+		gen "$T/three$l.yaml" "$T/three$l"
+		check tree "$T/three$l/skeleton.json" "$l" 3 0.9,0.75,0.6 1
+	done
+}
+
+# 2. MakeTree's angle: within [min, max] whatever the seed, spread over all of it at
+# randomness 1, over the middle randomness x (max - min) at less, and the same tree for
+# every seed at 0.
+t_angles() {
+	local seed files
+	lsystem full "levels: 7" "angle: {min: 20, max: 60, randomness: 1}" "leaves: {amount: 0}"
+	files=()
+	for seed in 1 2 3 4 5 6 7 8; do
+		gen "$T/full.yaml" "$T/full$seed" --seed $seed
+		files+=("$T/full$seed/skeleton.json")
+	done
+	# 8 x 126 angles: the widest gap a uniform draw leaves at an end is far below 3%
+	check angles 20 60 1 0.03 "${files[@]}"
+	cmp -s "$T/full1/skeleton.json" "$T/full2/skeleton.json" && fail "seeds 1 and 2 gave the same tree"
+	# three children, a wide range from 0
+	lsystem three "levels: 5" "children: 3" "angle: {min: 0, max: 110, randomness: 1}" "leaves: {amount: 0}"
+	files=()
+	for seed in 11 12 13 14; do
+		gen "$T/three.yaml" "$T/three$seed" --seed $seed
+		files+=("$T/three$seed/skeleton.json")
+	done
+	check angles 0 110 1 0.03 "${files[@]}"
+	# randomness 0.4: mid +- 0.2 (max - min), and all of that
+	lsystem part "levels: 7" "angle: {min: 10, max: 90, randomness: 0.4}" "leaves: {amount: 0}"
+	files=()
+	for seed in 1 2 3 4; do
+		gen "$T/part.yaml" "$T/part$seed" --seed $seed
+		files+=("$T/part$seed/skeleton.json")
+	done
+	check angles 10 90 0.4 0.03 "${files[@]}"
+	# randomness 0: every angle the middle, every seed the same tree
+	lsystem none "levels: 6" "angle: {min: 15, max: 75, randomness: 0}" "leaves: {amount: 2}"
+	for seed in 1 2 77 18446744073709551615; do
+		gen "$T/none.yaml" "$T/none$seed" --seed $seed
+		cmp -s "$T/none1/skeleton.json" "$T/none$seed/skeleton.json" ||
+			fail "randomness 0: seeds 1 and $seed gave different trees"
+	done
+	check angles 15 75 0 0 "$T/none1/skeleton.json"
+}
+
+# 3. Siblings spread apart about their parent's axis; the paper's alpha at a vertical
+# trunk's foot.
+t_spread() {
+	local spread children
+	for spread in 0 30 90 140 150 180 250 360; do
+		lsystem "s$spread" "levels: 3" "spread: $spread" "angle: {min: 20, max: 50, randomness: 1}" \
+			"leaves: {amount: 0}"
+		gen "$T/s$spread.yaml" "$T/s$spread" --seed $((spread + 5))
+		check spread "$spread" "$T/s$spread/skeleton.json"
+	done
+	for spread in 120 75; do
+		children=3
+		lsystem "t$spread" "levels: 3" "children: $children" "spread: $spread" "twist: 35" \
+			"angle: {min: 30, max: 60, randomness: 1}" "leaves: {amount: 0}"
+		gen "$T/t$spread.yaml" "$T/t$spread"
+		check spread "$spread" "$T/t$spread/skeleton.json"
+	done
+}
+
+# 4. Thickness: the trunk's base, every tip thickness_ratio of its base, children from
+# their parent's tip, linear along each branch; for every type.
+t_radii() {
+	lsystem two "levels: 6" "thickness: 0.3" "thickness_ratio: 0.6" "leaves: {amount: 0}"
+	gen "$T/two.yaml" "$T/two"
+	check radii lsystem 0.3 0.6 "$T/two/skeleton.json"
+	lsystem three "levels: 5" "children: 3" "thickness: 0.05" "thickness_ratio: 0.9"
+	gen "$T/three.yaml" "$T/three"
+	check radii lsystem 0.05 0.9 "$T/three/skeleton.json"
+	local p type
+	for p in $PRESETS; do
+		gen "$SRC/presets/$p.yaml" "$T/$p"
+		type=$(param "$SRC/presets/$p.yaml" type lsystem)
+		case $type in
+		lsystem) check radii lsystem "$(param "$SRC/presets/$p.yaml" thickness 0.15)" \
+			"$(param "$SRC/presets/$p.yaml" thickness_ratio 0.7)" "$T/$p/skeleton.json" ;;
+		shrub) check radii shrub "$(param "$SRC/presets/$p.yaml" thickness 0.06)" \
+			"$(param "$SRC/presets/$p.yaml" thickness_ratio 0.75)" "$T/$p/skeleton.json" ;;
+		palm) check radii palm "$(param "$SRC/presets/$p.yaml" thickness 0.2)" \
+			"$(param "$SRC/presets/$p.yaml" thickness_ratio 0.7)" "$T/$p/skeleton.json" ;;
+		esac
+	done
+	# a wrong thickness must fail: the check can
+	"$GEN_CHECK" radii lsystem 0.01 0.7 "$T/cherry/skeleton.json" >/dev/null 2>&1 &&
+		fail "gen_check radii passed a wrong thickness"
+	return 0
+}
+
+# 5. leaves.amount on each tip, none elsewhere; 0 is bare.
+t_leaves() {
+	local amount
+	for amount in 0 1 7; do
+		lsystem "a$amount" "levels: 6" "leaves: {amount: $amount}"
+		gen "$T/a$amount.yaml" "$T/a$amount"
+		check tree "$T/a$amount/skeleton.json" 6 2 0.75,0.7 $amount
+	done
+	lsystem most "levels: 3" "children: 3" "leaves: {amount: 200, size: 0.05}"
+	gen "$T/most.yaml" "$T/most"
+	check tree "$T/most/skeleton.json" 3 3 0.75,0.7,0.65 200
+	grep -q '"leaves":\[\]' "$T/a0/skeleton.json" || fail "amount 0: leaves in skeleton.json"
+}
+
+# 6. precision: bark triangles about linear in it, the skeleton the same.
+t_precision() {
+	local n args=()
+	for n in 4 8 12 16; do
+		lsystem "p$n" "precision: $n" "levels: 6" "children: 3" "leaves: {amount: 2}"
+		gen "$T/p$n.yaml" "$T/p$n"
+		cmp -s "$T/p4/skeleton.json" "$T/p$n/skeleton.json" ||
+			fail "precision $n changed skeleton.json"
+		args+=("$n" "$T/p$n/model.glb")
+	done
+	check precision "${args[@]}"
+	cmp -s "$T/p4/model.glb" "$T/p16/model.glb" && fail "precision changed nothing in model.glb"
+	return 0
+}
+
+"t_$1"
