@@ -175,4 +175,74 @@ t_precision() {
 	return 0
 }
 
+# The shrubs: the shape presets, and shrubs of our own grown to fill their shapes.
+SHRUBS="presets/hedge.yaml presets/ball.yaml presets/cone.yaml tests/gen/trees/shrub-sphere.yaml
+tests/gen/trees/shrub-box.yaml tests/gen/trees/shrub-cone.yaml tests/gen/trees/shrub-default.yaml"
+
+# shape_of FILE: its clip shape as gen_check clip takes it, with tree-params.md's defaults
+shape_of() {
+	local f=$1 centre
+	centre=$(param "$f" clip.center "0 1.5 0")
+	case $(param "$f" clip.shape sphere) in
+	sphere) echo "sphere $centre $(param "$f" clip.radius 1)" ;;
+	box) echo "box $centre $(param "$f" clip.size "2 1 1")" ;;
+	cone) echo "cone $centre $(param "$f" clip.radius 1) $(param "$f" clip.height 2)" ;;
+	esac
+}
+
+# fill_delta FILE: a surface point is leafy with a leaf's centre within two leaf lengths
+fill_delta() { awk -v s="$(param "$1" leaves.size 0.1)" 'BEGIN { print 2 * s }'; }
+
+# trunk_alone FILE OUT: the same shrub without its crown (levels 1, no leaves): its mesh is
+# the first part of the shrub's bark (check_clip.c)
+trunk_alone() {
+	local name
+	name=$(basename "$1" .yaml)
+	{
+		grep -v '^levels:' "$1" | sed 's/amount: [0-9]*/amount: 0/'
+		echo "levels: 1"
+		grep -q 'amount:' "$1" || echo "leaves: {amount: 0}"
+	} >"$T/$name-trunk.yaml"
+	gen "$T/$name-trunk.yaml" "$2"
+}
+
+# 7. A shrub's crown inside its shape, in skeleton.json and in model.glb; the shrubs of
+# tests/gen/trees/ grown to fill it (check_clip.c: the measure). The presets' fill is
+# t_shrub_fill_presets.
+t_shrubs() {
+	local file name fill
+	for file in $SHRUBS; do
+		name=$(basename "$file" .yaml)
+		gen "$SRC/$file" "$T/$name"
+		trunk_alone "$SRC/$file" "$T/$name-trunk"
+		echo "== $file: $(shape_of "$SRC/$file")"
+		fill=()
+		case $file in tests/gen/trees/shrub-[sbc]*) fill=(fill "$(fill_delta "$SRC/$file")" 0.9) ;; esac
+		# shellcheck disable=SC2046
+		check clip "$T/$name/skeleton.json" $(shape_of "$SRC/$file") \
+			glb "$T/$name/model.glb" "$T/$name-trunk/model.glb" "${fill[@]}"
+	done
+	# the check can fail: a ball 5 cm smaller than the one grown into
+	# shellcheck disable=SC2046
+	"$GEN_CHECK" clip "$T/ball/skeleton.json" $(shape_of "$SRC/presets/ball.yaml" | awk '{ $5 -= 0.05; print }') \
+		>/dev/null 2>&1 && fail "gen_check clip passed a ball 5 cm too small"
+	return 0
+}
+
+# KNOWN FAILURE (reported with issue 14): the shape presets and a shrub of defaults do not
+# fill their shapes by the measure t_shrubs' own shrubs meet (check_clip.c). Prints each
+# one's numbers, and fails if any falls short.
+t_shrub_fill_presets() {
+	local file name status=0
+	for file in presets/hedge.yaml presets/ball.yaml presets/cone.yaml tests/gen/trees/shrub-default.yaml; do
+		name=$(basename "$file" .yaml)
+		gen "$SRC/$file" "$T/$name"
+		echo "== $file: $(shape_of "$SRC/$file")"
+		# shellcheck disable=SC2046
+		"$GEN_CHECK" clip "$T/$name/skeleton.json" $(shape_of "$SRC/$file") \
+			fill "$(fill_delta "$SRC/$file")" 0.9 || status=1
+	done
+	[ $status -eq 0 ] || fail "shrubs that do not fill their shapes (above)"
+}
+
 "t_$1"
