@@ -245,4 +245,111 @@ t_shrub_fill_presets() {
 	[ $status -eq 0 ] || fail "shrubs that do not fill their shapes (above)"
 }
 
+# 8. A palm: every frond at the trunk's top, the trunk bare; fronds evenly round an upright
+# trunk.
+t_palm() {
+	gen "$SRC/presets/palm.yaml" "$T/palm"
+	check palm "$(param "$SRC/presets/palm.yaml" fronds 12)" "$(param "$SRC/presets/palm.yaml" leaves.amount 40)" \
+		"$T/palm/skeleton.json"
+	gen "$HERE/trees/palm-upright.yaml" "$T/upright"
+	check palm 9 11 "$T/upright/skeleton.json" even
+	check radii palm 0.2 0.7 "$T/upright/skeleton.json"
+	gen "$HERE/trees/palm-leaning.yaml" "$T/leaning"
+	check palm 64 0 "$T/leaning/skeleton.json"
+	# the check can fail
+	"$GEN_CHECK" palm 9 12 "$T/upright/skeleton.json" >/dev/null 2>&1 && fail "gen_check palm passed 12 leaflets for 11"
+	return 0
+}
+
+# without_season FILE: skeleton.json but its "season"
+without_season() { sed 's/"season":"[a-z]*",//' "$1"; }
+season_of() { grep -o '"season":"[a-z]*"' "$1" | cut -d'"' -f4; }
+
+# 9. The season button cycles spring -> summer -> autumn -> winter and changes no branch
+# and no leaf: only skeleton.json's "season".
+t_seasons() {
+	local entry f n presses want press i
+	# a full round on the cherry (spring) and the palm (summer); two presses on the others
+	for entry in presets/cherry.yaml:4 presets/palm.yaml:4 presets/ball.yaml:2 tests/gen/trees/lsystem-leaning.yaml:2; do
+		f=${entry%:*} presses=${entry#*:}
+		n=$(basename "$f" .yaml)
+		gen "$SRC/$f" "$T/$n-0"
+		want=$(param "$SRC/$f" season summer)
+		[ "$(season_of "$T/$n-0/skeleton.json")" = "$want" ] ||
+			fail "$f: starts in $(season_of "$T/$n-0/skeleton.json"), wanted $want"
+		press=()
+		for i in $(seq "$presses"); do
+			press+=(--press season)
+			gen "$SRC/$f" "$T/$n-$i" "${press[@]}"
+			cmp -s <(without_season "$T/$n-0/skeleton.json") <(without_season "$T/$n-$i/skeleton.json") ||
+				fail "$f: $i presses of season changed the branches or leaves"
+			case $(season_of "$T/$n-$((i - 1))/skeleton.json")/$(season_of "$T/$n-$i/skeleton.json") in
+			spring/summer | summer/autumn | autumn/winter | winter/spring) ;;
+			*) fail "$f: press $i went from $(season_of "$T/$n-$((i - 1))/skeleton.json") to $(season_of "$T/$n-$i/skeleton.json")" ;;
+			esac
+			grep -q "^season [0-9]* $(season_of "$T/$n-$i/skeleton.json")\$" "$T/$n-$i/drawing.edaha" ||
+				fail "$f: the drawing has no season op for $(season_of "$T/$n-$i/skeleton.json")"
+		done
+		if [ "$presses" -eq 4 ]; then
+			cmp -s "$T/$n-0/skeleton.json" "$T/$n-4/skeleton.json" || fail "$f: four presses are not a full round"
+		fi
+		echo "$f: $want and $presses presses on; branches and leaves unchanged"
+	done
+}
+
+# 10. A drawing stores the parameters, not the tree: --load of what --generate wrote gives
+# the same model and skeleton, and cherry's drawing is under 1% of its model. A template
+# pressed gives the tree of its preset file.
+t_round_trip() {
+	local p glb drawing
+	for p in $PRESETS; do
+		gen "$SRC/presets/$p.yaml" "$T/$p-a"
+		run "$T/$p-b" --load "$T/$p-a/drawing.edaha"
+		cmp -s "$T/$p-a/model.glb" "$T/$p-b/model.glb" || fail "$p: --load gave another model.glb"
+		cmp -s "$T/$p-a/skeleton.json" "$T/$p-b/skeleton.json" || fail "$p: --load gave another skeleton.json"
+		cmp -s "$T/$p-a/drawing.edaha" "$T/$p-b/drawing.edaha" || fail "$p: --load saved another drawing"
+		grep -q '^generate ' "$T/$p-a/drawing.edaha" || fail "$p: no generate op in the drawing"
+		run "$T/$p-tpl" --press "tpl-$p"
+		cmp -s "$T/$p-a/skeleton.json" "$T/$p-tpl/skeleton.json" ||
+			fail "--press tpl-$p and --generate presets/$p.yaml gave different trees"
+		echo "$p: --generate, --load and --press tpl-$p give the same tree"
+	done
+	glb=$(stat -c %s "$T/cherry-a/model.glb")
+	drawing=$(stat -c %s "$T/cherry-a/drawing.edaha")
+	echo "cherry: drawing.edaha $drawing bytes, model.glb $glb bytes ($(awk -v d="$drawing" -v g="$glb" 'BEGIN { printf "%.3f", 100 * d / g }')%)"
+	[ $((drawing * 100)) -lt "$glb" ] || fail "cherry's drawing is not under 1% of its model.glb"
+	# and the same for a file of every key, another seed
+	gen "$HERE/trees/lsystem-leaning.yaml" "$T/own-a" --seed 1234
+	run "$T/own-b" --load "$T/own-a/drawing.edaha"
+	cmp -s "$T/own-a/model.glb" "$T/own-b/model.glb" || fail "lsystem-leaning: --load gave another model.glb"
+	cmp -s "$T/own-a/skeleton.json" "$T/own-b/skeleton.json" || fail "lsystem-leaning: --load gave another skeleton.json"
+}
+
+# 11. Every generated model.glb passes the Khronos validator.
+t_validator() {
+	local p f i rc press files=()
+	for p in $PRESETS; do
+		gen "$SRC/presets/$p.yaml" "$T/$p"
+		files+=("$T/$p/model.glb")
+	done
+	for f in "$HERE"/trees/*.yaml; do
+		p=$(basename "$f" .yaml)
+		gen "$f" "$T/$p"
+		files+=("$T/$p/model.glb")
+	done
+	# the cherry in its other seasons (its file's is spring): leaves of other colours, or none
+	press=()
+	for i in 1 2 3; do
+		press+=(--press season)
+		gen "$SRC/presets/cherry.yaml" "$T/season$i" "${press[@]}"
+		files+=("$T/season$i/model.glb")
+	done
+	"$GLTF_VALIDATE" "${files[@]}" >"$T/validator.log"
+	rc=$?
+	grep -E 'errors|error:' "$T/validator.log"
+	[ $rc -ne 77 ] || exit 77
+	[ $rc -eq 0 ] || { cat "$T/validator.log"; fail "glTF validator"; }
+	[ "$(grep -c ': 0 errors' "$T/validator.log")" -eq ${#files[@]} ] || fail "the validator did not report on every file"
+}
+
 "t_$1"
