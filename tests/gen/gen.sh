@@ -352,4 +352,79 @@ t_validator() {
 	[ "$(grep -c ': 0 errors' "$T/validator.log")" -eq ${#files[@]} ] || fail "the validator did not report on every file"
 }
 
+# refused FILE LINE TEXT OPTION: edaha OPTION FILE exits 2 with one line, "edaha: FILE:LINE: "
+# (LINE 0: "edaha: FILE: ") and TEXT after it, and writes nothing: --out is not made, or an
+# empty one (every other time) stays empty
+REFUSED=0
+refused() {
+	local file=$1 line=$2 text=$3 opt=$4 rc=0 want msg
+	rm -rf "$T/out"
+	REFUSED=$((REFUSED + 1))
+	[ $((REFUSED % 2)) -eq 0 ] && mkdir "$T/out"
+	edaha --headless --size 160x100 --out "$T/out" "$opt" "$file" >/dev/null 2>"$T/err" || rc=$?
+	msg=$(cat "$T/err")
+	[ $rc -eq 2 ] || { echo "$msg"; fail "$file: exit $rc, wanted 2"; }
+	[ "$(wc -l <"$T/err")" -eq 1 ] || { echo "$msg"; fail "$file: not one line"; }
+	if [ "$line" -gt 0 ]; then want="edaha: $file:$line: "; else want="edaha: $file: "; fi
+	case $msg in
+	"$want"*"$text"*) ;;
+	*) echo "$msg"; fail "$file: wanted \"$want...$text...\"" ;;
+	esac
+	[ ! -e "$T/out" ] || [ -z "$(ls -A "$T/out")" ] || fail "$file: wrote $(ls "$T/out")"
+}
+
+# refuse_listed LIST: refused for each FILE LINE TEXT in LIST (tests/gen/malformed/EXPECT)
+refuse_listed() {
+	local dir=$HERE/malformed file line text opt n=0
+	while read -r file line text; do
+		case $file in '' | '#'*) continue ;; esac
+		case $file in *.edaha) opt=--load ;; *) opt=--generate ;; esac
+		[ -f "$dir/$file" ] || fail "$1 lists $file, which is not there"
+		refused "$dir/$file" "$line" "$text" "$opt"
+		n=$((n + 1))
+	done <"$dir/$1"
+	echo "$n files of $1 refused with exit 2 and FILE:LINE"
+}
+
+# 12. Malformed and hostile parameter files, in a file and in a drawing: exit 2, one line
+# naming the file and the line at fault, nothing written.
+t_malformed() {
+	local f
+	refuse_listed EXPECT
+	# every file there is listed
+	for f in "$HERE"/malformed/*.yaml "$HERE"/malformed/*.edaha; do
+		grep -q "^$(basename "$f") " "$HERE/malformed/EXPECT" "$HERE/malformed/EXPECT-bugs" ||
+			fail "$f is in no list"
+	done
+	# whole-file faults name no line: too large for a parameter file (64 KiB), for any
+	# input (1 MiB), missing, a directory, a device
+	{ echo "edaha-tree: 1"; head -c 1000000 /dev/zero | tr '\0' '#'; echo; } >"$T/1mb.yaml"
+	refused "$T/1mb.yaml" 0 "larger than 65536 bytes" --generate
+	head -c 2000000 /dev/zero >"$T/2mb.yaml"
+	refused "$T/2mb.yaml" 0 "file too large" --generate
+	refused "$T/missing.yaml" 0 "No such file or directory" --generate
+	refused "$HERE/malformed" 0 "Is a directory" --generate
+	refused /dev/null 0 "not a regular file" --generate
+	# over what a good run wrote: nothing changes
+	gen "$SRC/presets/palm.yaml" "$T/good"
+	cp -r "$T/good" "$T/before"
+	edaha --headless --out "$T/good" --generate "$HERE/malformed/levels-13.yaml" 2>/dev/null
+	[ $? -eq 2 ] || fail "levels-13.yaml over a good run: not exit 2"
+	diff -r "$T/before" "$T/good" >/dev/null || fail "levels-13.yaml over a good run changed its files"
+}
+
+# KNOWN BUGS (reported with issue 14): EXPECT-bugs, and a drawing whose generate line is
+# longer than a parameter file may be, which is refused without its line
+t_malformed_known_bugs() {
+	local status=0
+	(refuse_listed EXPECT-bugs) || status=1
+	{
+		printf 'edaha-drawing 5\nseed 1\nhistory 1 1\n'
+		printf 'generate 100000 1 7 {edaha-tree: 1, levels: 4%70000s}\n' ''
+		printf 'tree 0 0\nend\n'
+	} >"$T/long-line.edaha"
+	(refused "$T/long-line.edaha" 4 "" --load) || status=1
+	[ $status -eq 0 ] || fail "known bugs (above)"
+}
+
 "t_$1"
