@@ -57,6 +57,10 @@ t_structure() {
 		gen "$T/three$l.yaml" "$T/three$l"
 		check tree "$T/three$l/skeleton.json" "$l" 3 0.9,0.75,0.6 1
 	done
+	# the checks can fail: ratios 0.1% off, a level more
+	"$GEN_CHECK" tree "$T/two8/skeleton.json" 8 2 0.8008,0.6 2 >/dev/null 2>&1 && fail "gen_check tree passed a wrong ratio"
+	"$GEN_CHECK" tree "$T/three7/skeleton.json" 8 3 0.9,0.75,0.6 1 >/dev/null 2>&1 && fail "gen_check tree passed a wrong level count"
+	return 0
 }
 
 # 2. MakeTree's angle: within [min, max] whatever the seed, spread over all of it at
@@ -97,6 +101,10 @@ t_angles() {
 			fail "randomness 0: seeds 1 and $seed gave different trees"
 	done
 	check angles 15 75 0 0 "$T/none1/skeleton.json"
+	# the checks can fail: a range 1 degree narrower at either end
+	"$GEN_CHECK" angles 21 60 1 0.03 "$T/full1/skeleton.json" >/dev/null 2>&1 && fail "gen_check angles passed a narrower range"
+	"$GEN_CHECK" angles 20 59 1 0.03 "$T/full1/skeleton.json" >/dev/null 2>&1 && fail "gen_check angles passed a narrower range"
+	return 0
 }
 
 # 3. Siblings spread apart about their parent's axis; the paper's alpha at a vertical
@@ -116,6 +124,9 @@ t_spread() {
 		gen "$T/t$spread.yaml" "$T/t$spread"
 		check spread "$spread" "$T/t$spread/skeleton.json"
 	done
+	# the check can fail: 1.5 degrees off
+	"$GEN_CHECK" spread 121.5 "$T/t120/skeleton.json" >/dev/null 2>&1 && fail "gen_check spread passed 121.5 for 120"
+	return 0
 }
 
 # 4. Thickness: the trunk's base, every tip thickness_ratio of its base, children from
@@ -158,6 +169,9 @@ t_leaves() {
 	gen "$T/most.yaml" "$T/most"
 	check tree "$T/most/skeleton.json" 3 3 0.75,0.7,0.65 200
 	grep -q '"leaves":\[\]' "$T/a0/skeleton.json" || fail "amount 0: leaves in skeleton.json"
+	# the check can fail
+	"$GEN_CHECK" tree "$T/a7/skeleton.json" 6 2 0.75,0.7 6 >/dev/null 2>&1 && fail "gen_check tree passed 6 leaves a tip for 7"
+	return 0
 }
 
 # 6. precision: bark triangles about linear in it, the skeleton the same.
@@ -171,6 +185,9 @@ t_precision() {
 		args+=("$n" "$T/p$n/model.glb")
 	done
 	check precision "${args[@]}"
+	# the check can fail: not linear when one run's sides are misnamed
+	"$GEN_CHECK" precision 4 "$T/p4/model.glb" 8 "$T/p8/model.glb" 10 "$T/p12/model.glb" 16 "$T/p16/model.glb" \
+		>/dev/null 2>&1 && fail "gen_check precision passed a run of 12 sides as 10"
 	cmp -s "$T/p4/model.glb" "$T/p16/model.glb" && fail "precision changed nothing in model.glb"
 	return 0
 }
