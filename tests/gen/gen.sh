@@ -444,4 +444,16 @@ t_malformed_known_bugs() {
 	[ $status -eq 0 ] || fail "known bugs (above)"
 }
 
+# KNOWN BUG (reported with issue 14): tree-params.md counts a shrub's leaves as
+# leaves.amount "on each of them but the trunk", and so does gen_count_leaves (the limit
+# check); a shrub of levels 1 puts them on its trunk (fuzz_gen_read found it)
+t_shrub_trunk_leaves() {
+	local n
+	printf 'edaha-tree: 1\ntype: shrub\nlevels: 1\nleaves: {amount: 4}\n' >"$T/one.yaml"
+	gen "$T/one.yaml" "$T/one"
+	n=$(grep -o '"branch":0,' "$T/one/skeleton.json" | wc -l)
+	echo "a shrub of levels 1: $n leaves on its trunk"
+	[ "$n" -eq 0 ] || fail "a shrub's trunk has $n leaves"
+}
+
 "t_$1"
