@@ -92,8 +92,10 @@ int gen_lsystem_grow(struct gen_ctx *g, int b, struct vec3 e, double length,
 	double lengths[GEN_MAX_CHILDREN];
 	int ret;
 
+	bool br_is_trunk = br->parent < 0;
+
 	if (level <= 1)
-		return tip_leaves(g, b, e, clip);
+		return clip && br_is_trunk ? 0 : tip_leaves(g, b, e, clip);
 	for (int i = 0; i < p->children; i++)
 		theta[i] = gen_angle(g);
 	turned = gen_rotate(e, d, p->twist * DEG);
@@ -146,8 +148,9 @@ int gen_lsystem_grow(struct gen_ctx *g, int b, struct vec3 e, double length,
 		if ((ret = gen_lsystem_grow(g, ids[i], refs[i], lengths[i], clip)) < 0)
 			return ret;
 	}
-	/* every child clipped away: this branch is a tip of the crown */
-	return made ? 0 : tip_leaves(g, b, e, clip);
+	/* every child clipped away: this branch is a tip of the crown (a shrub's trunk is not
+	 * one: it stays bare) */
+	return made || (clip && br_is_trunk) ? 0 : tip_leaves(g, b, e, clip);
 }
 
 int gen_lsystem(struct gen_ctx *g)

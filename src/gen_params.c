@@ -90,20 +90,20 @@ void gen_params_default(struct gen_params *p, enum gen_type type)
 	switch (type) {
 	case GEN_SHRUB:
 		p->precision = 6;
-		p->levels = 6;
+		p->levels = 7;
 		p->children = 3;
 		p->angle_min = 30;
 		p->angle_max = 70;
 		p->randomness = 0.8;
-		p->ratios[0] = 0.6;
-		p->ratios[1] = 0.55;
-		p->ratios[2] = 0.5;
+		p->ratios[0] = 0.8;
+		p->ratios[1] = 0.75;
+		p->ratios[2] = 0.7;
 		p->spread = 120;
 		p->twist = 60;
 		p->thickness = 0.06;
 		p->thickness_ratio = 0.75;
-		p->leaf_amount = 4;
-		p->leaf_size = 0.1;
+		p->leaf_amount = 5;
+		p->leaf_size = 0.15;
 		p->leaf_type = GEN_LEAF_ROUND;
 		break;
 	case GEN_PALM:

@@ -226,8 +226,12 @@ static int unknown(struct reader *r, const yaml_node_t *key, const char *k, cons
 
 static int not_for(struct reader *r, const yaml_node_t *key, const char *k)
 {
-	return fail(r, key, "%s: not a parameter of a %s (docs/tree-params.md)", k,
-		    gen_type_name(r->p->type));
+	static const char *const a_type[GEN_TYPE_COUNT] = {
+		[GEN_LSYSTEM] = "an lsystem tree", [GEN_SHRUB] = "a shrub", [GEN_PALM] = "a palm",
+	};
+
+	return fail(r, key, "%s: not a parameter of %s (docs/tree-params.md)", k,
+		    (unsigned)r->p->type < GEN_TYPE_COUNT ? a_type[r->p->type] : "this type");
 }
 
 /* ---- the sections --------------------------------------------------------------- */
@@ -440,9 +444,34 @@ static int read_head(struct reader *r, const yaml_node_t *root)
 	return 0;
 }
 
+/* The lines of data as YAML counts them (breaks: \n, \r, \r\n, U+0085, U+2028, U+2029),
+ * a last one without its break included. */
+static unsigned long lines(const char *data, size_t len)
+{
+	const unsigned char *d = (const unsigned char *)data;
+	unsigned long n = 1;
+
+	for (size_t i = 0; i < len; i++) {
+		size_t at = i;
+
+		if (d[i] == '\r' && i + 1 < len && d[i + 1] == '\n')
+			at = ++i;
+		else if (d[i] == 0xc2 && i + 1 < len && d[i + 1] == 0x85)
+			at = ++i;
+		else if (d[i] == 0xe2 && i + 2 < len && d[i + 1] == 0x80 && (d[i + 2] == 0xa8 || d[i + 2] == 0xa9))
+			at = (i += 2);
+		else if (d[i] != '\n' && d[i] != '\r')
+			continue;
+		/* a break ends a line; one that ends the data starts none */
+		if (at + 1 < len)
+			n++;
+	}
+	return n;
+}
+
 static int yaml_fail(struct reader *r, const yaml_parser_t *y, const char *data, size_t len)
 {
-	unsigned long line;
+	unsigned long line, last;
 
 	if (y->error == YAML_MEMORY_ERROR)
 		return error_at(r->err, -ENOMEM, r->name, 0, "out of memory");
@@ -455,7 +484,10 @@ static int yaml_fail(struct reader *r, const yaml_parser_t *y, const char *data,
 		return error_at(r->err, -EINVAL, r->name, line + r->offset, "not YAML text: %s",
 				y->problem ? y->problem : "unreadable");
 	}
-	line = (unsigned long)y->problem_mark.line + 1 + r->offset;
+	line = (unsigned long)y->problem_mark.line + 1;
+	/* at the end of a file without a last line end libyaml's mark is on a line past it */
+	last = lines(data, len);
+	line = (line > last ? last : line) + r->offset;
 	return error_at(r->err, -EINVAL, r->name, line, "YAML error: %s%s%s",
 			y->problem ? y->problem : "error", y->context ? " " : "",
 			y->context ? y->context : "");
