@@ -189,6 +189,11 @@ t_precision() {
 	"$GEN_CHECK" precision 4 "$T/p4/model.glb" 8 "$T/p8/model.glb" 10 "$T/p12/model.glb" 16 "$T/p16/model.glb" \
 		>/dev/null 2>&1 && fail "gen_check precision passed a run of 12 sides as 10"
 	cmp -s "$T/p4/model.glb" "$T/p16/model.glb" && fail "precision changed nothing in model.glb"
+	# the view never changes the drawing's n: a large screen exports what a small one does
+	edaha --headless --size 1280x800 --out "$T/large" --generate "$T/p8.yaml" >/dev/null ||
+		fail "--size 1280x800 failed"
+	cmp -s "$T/p8/model.glb" "$T/large/model.glb" || fail "--size changed model.glb"
+	cmp -s "$T/p8/model.obj" "$T/large/model.obj" || fail "--size changed model.obj"
 	return 0
 }
 
