@@ -17,15 +17,8 @@ SIZE=640x400
 TURNED=45,15
 fails=0
 
-fail() { echo "FAIL: $*" >&2; exit 1; }
-# Under ASan the GL driver is preloaded into edaha only (see tests/meson.build).
-edaha() {
-	if [ -n "${EDAHA_GL_PRELOAD:-}" ]; then
-		LD_PRELOAD=$EDAHA_GL_PRELOAD ASAN_OPTIONS=${ASAN_OPTIONS:-}:verify_asan_link_order=0 "$EDAHA" "$@"
-	else
-		"$EDAHA" "$@"
-	fi
-}
+# fail, and edaha (the GL driver preloaded under ASan)
+. "$(dirname "$0")/../tools/edaha.sh"
 run() { # name args...: the screen of a headless run, as $T/name.png
 	local name=$1 rc=0
 	shift

@@ -11,14 +11,8 @@ set -uo pipefail
 T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-seasons.XXXXXX")
 trap 'rm -rf "$T"' EXIT
 
-fail() { echo "FAIL: $*" >&2; exit 1; }
-edaha() {
-	if [ -n "${EDAHA_GL_PRELOAD:-}" ]; then
-		LD_PRELOAD=$EDAHA_GL_PRELOAD ASAN_OPTIONS=${ASAN_OPTIONS:-}:verify_asan_link_order=0 "$EDAHA" "$@"
-	else
-		"$EDAHA" "$@"
-	fi
-}
+# fail, and edaha (the GL driver preloaded under ASan)
+. "$(dirname "$0")/../tools/edaha.sh"
 
 seasons="spring summer autumn winter"
 presses=()

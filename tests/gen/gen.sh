@@ -10,15 +10,8 @@ trap 'rm -rf "$T"' EXIT
 HERE=$SRC/tests/gen
 PRESETS="cherry zelkova hedge ball cone palm"
 
-fail() { echo "FAIL: $*" >&2; exit 1; }
-# Under ASan the GL driver is preloaded into edaha only (see tests/meson.build).
-edaha() {
-	if [ -n "${EDAHA_GL_PRELOAD:-}" ]; then
-		LD_PRELOAD=$EDAHA_GL_PRELOAD ASAN_OPTIONS=${ASAN_OPTIONS:-}:verify_asan_link_order=0 "$EDAHA" "$@"
-	else
-		"$EDAHA" "$@"
-	fi
-}
+# fail, and edaha (the GL driver preloaded under ASan)
+. "$(dirname "$0")/../tools/edaha.sh"
 # run OUT ARGS...: a headless run that must succeed. The screen is small: these tests read
 # the model and skeleton, which --size never changes (functional-trees.md, Precision).
 run() {
