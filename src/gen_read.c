@@ -12,6 +12,7 @@
 #include <yaml.h>
 
 #include "gen.h"
+#include "yaml_node.h"
 
 /* A parameter file is a few dozen lines; anything much larger is not one. */
 #define GEN_READ_MAX_BYTES (64u << 10)
@@ -43,35 +44,6 @@ static int fail(struct reader *r, const yaml_node_t *n, const char *fmt, ...)
 	return error_at(r->err, -EINVAL, r->name, line_of(r, n), "%s", msg);
 }
 
-static const char *kind(const yaml_node_t *n)
-{
-	switch (n->type) {
-	case YAML_SCALAR_NODE:
-		return "a scalar";
-	case YAML_SEQUENCE_NODE:
-		return "a list";
-	case YAML_MAPPING_NODE:
-		return "a mapping";
-	default:
-		return "nothing";
-	}
-}
-
-/* A scalar's text; NULL if n is no scalar or holds a NUL byte. */
-static const char *text(const yaml_node_t *n)
-{
-	if (n->type != YAML_SCALAR_NODE)
-		return NULL;
-	if (strlen((const char *)n->data.scalar.value) != n->data.scalar.length)
-		return NULL;
-	return (const char *)n->data.scalar.value;
-}
-
-static bool plain(const yaml_node_t *n)
-{
-	return n->type == YAML_SCALAR_NODE && n->data.scalar.style == YAML_PLAIN_SCALAR_STYLE;
-}
-
 /* The user's text in a message: cut short, anything unprintable as '?'. */
 static const char *shown(const char *s, char out[24])
 {
@@ -90,13 +62,13 @@ static const char *shown(const char *s, char out[24])
 /* A decimal number: digits with an optional sign, point and exponent; finite. */
 static int get_number(struct reader *r, const yaml_node_t *n, const char *what, double *v)
 {
-	const char *s = text(n);
+	const char *s = yaml_node_text(n);
 	char buf[24], *end;
 	double x;
 
-	if (!s || !plain(n))
+	if (!s || !yaml_node_plain(n))
 		return fail(r, n, "%s: expected a number, got %s", what,
-			    n->type == YAML_SCALAR_NODE ? "a quoted string" : kind(n));
+			    n->type == YAML_SCALAR_NODE ? "a quoted string" : yaml_node_kind(n));
 	{
 		const char *q = s + (*s == '-' || *s == '+');
 
@@ -129,11 +101,11 @@ static int get_int(struct reader *r, const yaml_node_t *n, const char *what, int
 
 static int get_word(struct reader *r, const yaml_node_t *n, const char *what, const char **w)
 {
-	const char *s = text(n);
+	const char *s = yaml_node_text(n);
 
-	if (!s || !plain(n))
+	if (!s || !yaml_node_plain(n))
 		return fail(r, n, "%s: expected a word, got %s", what,
-			    n->type == YAML_SCALAR_NODE ? "a quoted string" : kind(n));
+			    n->type == YAML_SCALAR_NODE ? "a quoted string" : yaml_node_kind(n));
 	*w = s;
 	return 0;
 }
@@ -143,7 +115,7 @@ static int get_point(struct reader *r, const yaml_node_t *n, const char *what, s
 	double c[3];
 
 	if (n->type != YAML_SEQUENCE_NODE)
-		return fail(r, n, "%s: expected [x, y, z], got %s", what, kind(n));
+		return fail(r, n, "%s: expected [x, y, z], got %s", what, yaml_node_kind(n));
 	if (n->data.sequence.items.top - n->data.sequence.items.start != 3)
 		return fail(r, n, "%s: expected [x, y, z], three numbers", what);
 	for (int i = 0; i < 3; i++) {
@@ -168,7 +140,7 @@ static int for_each_pair(struct reader *r, const yaml_node_t *n, const char *wha
 	yaml_node_pair_t *start, *top;
 
 	if (n->type != YAML_MAPPING_NODE)
-		return fail(r, n, "%s: expected a mapping, got %s", what, kind(n));
+		return fail(r, n, "%s: expected a mapping, got %s", what, yaml_node_kind(n));
 	start = n->data.mapping.pairs.start;
 	top = n->data.mapping.pairs.top;
 	for (yaml_node_pair_t *pair = start; pair < top; pair++) {
@@ -179,12 +151,12 @@ static int for_each_pair(struct reader *r, const yaml_node_t *n, const char *wha
 
 		if (!key || !value)
 			return fail(r, n, "%s: broken YAML node", what);
-		k = text(key);
-		if (!k || !plain(key))
-			return fail(r, key, "%s: expected a plain key, got %s", what, kind(key));
+		k = yaml_node_text(key);
+		if (!k || !yaml_node_plain(key))
+			return fail(r, key, "%s: expected a plain key, got %s", what, yaml_node_kind(key));
 		for (yaml_node_pair_t *q = start; q < pair; q++) {
 			const yaml_node_t *other = yaml_document_get_node(&r->doc, q->key);
-			const char *o = other ? text(other) : NULL;
+			const char *o = other ? yaml_node_text(other) : NULL;
 			char buf[24];
 
 			if (o && !strcmp(o, k))
@@ -206,7 +178,7 @@ static const yaml_node_t *lookup(struct reader *r, const yaml_node_t *n, const c
 	for (yaml_node_pair_t *pair = n->data.mapping.pairs.start; pair < n->data.mapping.pairs.top;
 	     pair++) {
 		const yaml_node_t *kn = yaml_document_get_node(&r->doc, pair->key);
-		const char *s = kn ? text(kn) : NULL;
+		const char *s = kn ? yaml_node_text(kn) : NULL;
 
 		if (s && !strcmp(s, k)) {
 			if (key)
@@ -307,7 +279,7 @@ static int read_clip(struct reader *r, const yaml_node_t *v)
 	int ret;
 
 	if (v->type != YAML_MAPPING_NODE)
-		return fail(r, v, "clip: expected a mapping, got %s", kind(v));
+		return fail(r, v, "clip: expected a mapping, got %s", yaml_node_kind(v));
 	if (shape) {
 		if ((ret = get_word(r, shape, "clip.shape", &w)) < 0)
 			return ret;
@@ -329,7 +301,7 @@ static int read_ratios(struct reader *r, const yaml_node_t *v)
 	size_t n;
 
 	if (v->type != YAML_SEQUENCE_NODE)
-		return fail(r, v, "ratios: expected a list of numbers, got %s", kind(v));
+		return fail(r, v, "ratios: expected a list of numbers, got %s", yaml_node_kind(v));
 	n = (size_t)(v->data.sequence.items.top - v->data.sequence.items.start);
 	if (n != (size_t)r->p->children)
 		return fail(r, v, "ratios: %zu given for %d children; one a child", n, r->p->children);
@@ -444,53 +416,9 @@ static int read_head(struct reader *r, const yaml_node_t *root)
 	return 0;
 }
 
-/* The lines of data as YAML counts them (breaks: \n, \r, \r\n, U+0085, U+2028, U+2029),
- * a last one without its break included. */
-static unsigned long lines(const char *data, size_t len)
-{
-	const unsigned char *d = (const unsigned char *)data;
-	unsigned long n = 1;
-
-	for (size_t i = 0; i < len; i++) {
-		size_t at = i;
-
-		if (d[i] == '\r' && i + 1 < len && d[i + 1] == '\n')
-			at = ++i;
-		else if (d[i] == 0xc2 && i + 1 < len && d[i + 1] == 0x85)
-			at = ++i;
-		else if (d[i] == 0xe2 && i + 2 < len && d[i + 1] == 0x80 && (d[i + 2] == 0xa8 || d[i + 2] == 0xa9))
-			at = (i += 2);
-		else if (d[i] != '\n' && d[i] != '\r')
-			continue;
-		/* a break ends a line; one that ends the data starts none */
-		if (at + 1 < len)
-			n++;
-	}
-	return n;
-}
-
 static int yaml_fail(struct reader *r, const yaml_parser_t *y, const char *data, size_t len)
 {
-	unsigned long line, last;
-
-	if (y->error == YAML_MEMORY_ERROR)
-		return error_at(r->err, -ENOMEM, r->name, 0, "out of memory");
-	if (y->error == YAML_READER_ERROR) {
-		size_t end = y->problem_offset < len ? y->problem_offset : len;
-
-		line = 1;
-		for (size_t i = 0; i < end; i++)
-			line += data[i] == '\n';
-		return error_at(r->err, -EINVAL, r->name, line + r->offset, "not YAML text: %s",
-				y->problem ? y->problem : "unreadable");
-	}
-	line = (unsigned long)y->problem_mark.line + 1;
-	/* at the end of a file without a last line end libyaml's mark is on a line past it */
-	last = lines(data, len);
-	line = (line > last ? last : line) + r->offset;
-	return error_at(r->err, -EINVAL, r->name, line, "YAML error: %s%s%s",
-			y->problem ? y->problem : "error", y->context ? " " : "",
-			y->context ? y->context : "");
+	return yaml_node_parse_error(r->err, r->name, r->offset, y, data, len);
 }
 
 static int read_root(struct reader *r, yaml_parser_t *y, const char *data, size_t len)
@@ -511,7 +439,7 @@ static int read_root(struct reader *r, yaml_parser_t *y, const char *data, size_
 				GEN_PARAMS_VERSION);
 	if (root->type != YAML_MAPPING_NODE)
 		return fail(r, root, "expected a mapping (edaha-tree:, type:, ...) at the top, got %s",
-			    kind(root));
+			    yaml_node_kind(root));
 	if (!yaml_parser_load(y, &second))
 		return yaml_fail(r, y, data, len);
 	more = yaml_document_get_root_node(&second) != NULL;
