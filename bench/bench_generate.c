@@ -26,6 +26,7 @@
 
 #include "app.h"
 #include "bench_eztree.h"
+#include "bench_draw.h"
 #include "bench_util.h"
 #include "gen.h"
 #include "gen_presets.h"
@@ -271,20 +272,6 @@ static int presets(void)
 	return 0;
 }
 
-/* Seconds app_handle_event takes over one press of b (released afterwards, untimed). */
-static double press(struct app *app, enum button b)
-{
-	struct event ev = { .type = EVENT_BUTTON, .time_us = app->last_time_us + 1000,
-			    .button = (int)b, .pressed = true };
-	double t0 = bench_now(), dt;
-
-	app_handle_event(app, &ev);
-	dt = bench_now() - t0;
-	ev.pressed = false;
-	app_handle_event(app, &ev);
-	return dt;
-}
-
 static int templates(void)
 {
 	double fresh[APP_REPS], tap[APP_REPS];
@@ -297,13 +284,13 @@ static int templates(void)
 		if (!app)
 			return -ENOMEM;
 		/* on an empty canvas New only opens the strip: its time is the thumbnails' */
-		fresh[i] = press(app, BUTTON_NEW);
+		fresh[i] = bench_press(app, BUTTON_NEW);
 		if (!app->templates_ready) {
 			fprintf(stderr, "bench_generate: New made no thumbnails\n");
 			app_destroy(app);
 			return -EINVAL;
 		}
-		tap[i] = press(app, BUTTON_TPL_CHERRY);
+		tap[i] = bench_press(app, BUTTON_TPL_CHERRY);
 		nb = app->tree.nbranches;
 		nl = app->tree.nleaves;
 		app_destroy(app);
