@@ -182,3 +182,16 @@ struct app *bench_draw_edited(struct bench_pen *pen, int nbranches, size_t nops,
 	}
 	return app;
 }
+
+double bench_press(struct app *app, enum button b)
+{
+	struct event ev = { .type = EVENT_BUTTON, .time_us = app->last_time_us + 1000,
+			    .button = (int)b, .pressed = true };
+	double t0 = bench_now(), dt;
+
+	app_handle_event(app, &ev);
+	dt = bench_now() - t0;
+	ev.pressed = false;
+	app_handle_event(app, &ev);
+	return dt;
+}

@@ -29,3 +29,5 @@ struct app *bench_draw_edited(struct bench_pen *pen, int nbranches, size_t nops,
  * time of each motion event is stored there (npoints - 2 entries). */
 void bench_draw_stroke(struct app *app, struct bench_pen *pen, double x0, double y0, double x1,
 		       double y1, int npoints, double *event_s);
+/* Seconds app_handle_event takes over one press of b (released afterwards, untimed). */
+double bench_press(struct app *app, enum button b);

@@ -72,10 +72,10 @@ static int run_size(int nbranches, struct result *res)
 		r = tree_mesh_build(&tm, &t);
 		t1 = bench_now();
 		if (r >= 0)
-			r = export_glb(&tm, &glb);
+			r = export_glb(&t, &tm, NULL, &glb);
 		t2 = bench_now();
 		if (r >= 0)
-			r = export_obj(&tm, "tree.mtl", &obj, &mtl);
+			r = export_obj(&t, &tm, NULL, "tree.mtl", &obj, &mtl);
 		t3 = bench_now();
 		if (r >= 0)
 			r = export_skeleton(&t, &skel);

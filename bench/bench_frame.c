@@ -12,8 +12,9 @@
  * and, with the leaves drawn instanced (GLES 3: a call a leaf shape, leaf_instances.c) and
  * merged (one mesh of every leaf, as on GLES 2): the frame's time and draw calls, the
  * upload alone (what follows an edit: grouping the leaves included) and the bytes it
- * sends to the GPU. Last, the main thread's CPU time a frame by leaf count, and on the
- * smallest tree what the labels cost: frames with and without them, interleaved.
+ * sends to the GPU. Then the main thread's CPU time a frame by leaf count, and on the
+ * smallest tree what the labels cost: frames with and without them, interleaved. Last, the
+ * functional trees' presets in summer and in autumn.
  */
 #include <GLES2/gl2.h>
 #include <errno.h>
@@ -26,6 +27,7 @@
 #include "bench_util.h"
 #include "egl_headless.h"
 #include "font_file.h"
+#include "gen.h"
 #include "mesh.h"
 #include "propagate.h"
 #include "render.h"
@@ -366,6 +368,65 @@ static int propagated(struct bench *b)
 	return 0;
 }
 
+/*
+ * The functional trees (issue 14): each preset as a template tap puts it on the canvas
+ * (its marks made, as the app's), in summer (one leaf colour, the plain programs) and in
+ * autumn (a colour a leaf, the tinted ones): the frame that uploads it, a steady frame and
+ * its CPU time, the draw calls.
+ */
+static int presets(struct bench *b)
+{
+	static const enum season seasons[] = { SEASON_SUMMER, SEASON_AUTUMN };
+
+	printf("the presets (the New strip's trees), median of %d frames: upload frame, steady "
+	       "frame, its main-thread CPU; draw calls\n", FRAMES);
+	for (int i = 0; i < GEN_PRESET_COUNT; i++) {
+		struct gen_params p;
+		struct error err;
+		struct render_stats st;
+		struct tree t;
+		int r;
+
+		tree_init(&t);
+		r = gen_preset((enum gen_preset)i, &p, &err);
+		if (r == 0)
+			r = gen_build(&t, &p, SEED);
+		if (r < 0) {
+			fprintf(stderr, "bench_frame: preset %s: %s\n", gen_preset_name((enum gen_preset)i),
+				r == -EINVAL ? err.msg : strerror(-r));
+			tree_finish(&t);
+			return r;
+		}
+		tree_finish(&b->app.tree);
+		b->app.tree = t;
+		r = tree_mesh_build_marked(&b->app.mesh, &b->app.tree, &b->app.mesh_marks);
+		if (r < 0)
+			return r;
+		for (size_t k = 0; k < sizeof(seasons) / sizeof(*seasons); k++) {
+			double up, steady, cpu[FRAMES];
+
+			b->app.tree.season = seasons[k];
+			up = bench_run(upload_frame, b, FRAMES);
+			steady = bench_run(steady_frame, b, FRAMES);
+			for (int f = 0; f < FRAMES; f++) {
+				double t0 = thread_cpu_s();
+
+				frame(b);
+				cpu[f] = thread_cpu_s() - t0;
+			}
+			render_get_stats(b->render, &st);
+			printf("  %-8s %-6s %7zu triangles: %7.3f ms, %7.3f ms, CPU %6.3f ms; %u draw calls\n",
+			       gen_preset_name((enum gen_preset)i), season_name(seasons[k]),
+			       st.tree_triangles, 1e3 * up, 1e3 * steady, 1e3 * bench_median(cpu, FRAMES),
+			       st.draw_calls);
+		}
+		if (b->failed)
+			return b->failed;
+	}
+	tree_clear(&b->app.tree);
+	return 0;
+}
+
 int main(void)
 {
 	struct bench b = { 0 };
@@ -389,6 +450,7 @@ int main(void)
 	view_init(&b.app.view, WIDTH, HEIGHT);
 	tree_init(&b.app.tree);
 	tree_mesh_init(&b.app.mesh);
+	tree_mesh_marks_init(&b.app.mesh_marks);
 	b.app.pen.in_proximity = true;
 	b.app.pen.x = 400;
 	b.app.pen.y = 300;
@@ -442,10 +504,13 @@ int main(void)
 		goto out;
 	if (frame_cpu(&b) < 0)
 		goto out;
+	if (presets(&b) < 0)
+		goto out;
 	status = 0;
 out:
 	render_destroy(b.render);
 	tree_mesh_finish(&b.app.mesh);
+	tree_mesh_marks_finish(&b.app.mesh_marks);
 	tree_finish(&b.app.tree);
 	free(b.rgba);
 	free(font);

@@ -83,19 +83,6 @@ static double load(const struct app *app, int reps, struct app **out)
 	return bench_median(t, (size_t)reps);
 }
 
-static double press(struct app *app, enum button b)
-{
-	struct event ev = { .type = EVENT_BUTTON, .time_us = app->last_time_us + 1000,
-			    .button = (int)b, .pressed = true };
-	double t0 = bench_now(), dt;
-
-	app_handle_event(app, &ev);
-	dt = bench_now() - t0;
-	ev.pressed = false;
-	app_handle_event(app, &ev);
-	return dt;
-}
-
 /* Press times sorted by what the op undone or redone had done: only appended (a stroke,
  * a leaf, a clone added) or changed elements (a cut, a clone removed). */
 struct walk {
@@ -131,10 +118,10 @@ static void walk(struct app *app, size_t n, struct walk *undo, struct walk *redo
 	for (size_t i = 0; i < n && doc_can_undo(&app->doc); i++) {
 		size_t from = app->doc.cursor;
 
-		walk_add(undo, app, from, press(app, BUTTON_UNDO));
+		walk_add(undo, app, from, bench_press(app, BUTTON_UNDO));
 	}
 	for (size_t i = 0; i < n && doc_can_redo(&app->doc); i++) {
-		double dt = press(app, BUTTON_REDO);
+		double dt = bench_press(app, BUTTON_REDO);
 
 		walk_add(redo, app, app->doc.cursor, dt);
 	}
@@ -162,7 +149,7 @@ static void cut(struct app *app, struct bench_pen *pen, int k)
 		m = history_mark(&app->history, app->doc.cursor);
 		if (m && !m->grew)
 			return;
-		press(app, BUTTON_UNDO);
+		bench_press(app, BUTTON_UNDO);
 	}
 }
 
@@ -229,7 +216,7 @@ static void session(void)
 	struct app *app = bench_draw_edited(&pen, 500, 2000, 2), *loaded;
 	struct walk undo, redo;
 	char name[64];
-	size_t kinds[8] = { 0 };
+	size_t kinds[DOC_OP_SEASON + 1] = { 0 };
 
 	for (size_t i = 0; i < app->doc.nops; i++)
 		kinds[app->doc.ops[i].kind]++;

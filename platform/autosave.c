@@ -24,6 +24,7 @@ struct autosave_id {
 	const void *points;
 	size_t npoints;
 	int branch, pattern;
+	const void *params;
 };
 
 struct autosave {
@@ -77,13 +78,14 @@ const char *autosave_path(const struct autosave *a)
 static struct autosave_id id_of(const struct doc_op *op)
 {
 	return (struct autosave_id){ op->kind, op->time_us, op->points, op->npoints, op->branch,
-				     op->pattern };
+				     op->pattern, op->params };
 }
 
 static bool id_equal(const struct autosave_id *a, const struct autosave_id *b)
 {
 	return a->kind == b->kind && a->time_us == b->time_us && a->points == b->points &&
-	       a->npoints == b->npoints && a->branch == b->branch && a->pattern == b->pattern;
+	       a->npoints == b->npoints && a->branch == b->branch && a->pattern == b->pattern &&
+	       a->params == b->params;
 }
 
 /* The first op of d the journal does not hold as it is. */

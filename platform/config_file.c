@@ -13,6 +13,7 @@
 #include <yaml.h>
 
 #include "fileio.h"
+#include "yaml_node.h"
 
 struct cfg_parser {
 	const char *name;
@@ -60,51 +61,22 @@ static void warn_unknown(struct cfg_parser *p, const yaml_node_t *key, const cha
 		      line_of(key), k, section);
 }
 
-static const char *kind(const yaml_node_t *n)
-{
-	switch (n->type) {
-	case YAML_SCALAR_NODE:
-		return "a scalar";
-	case YAML_SEQUENCE_NODE:
-		return "a list";
-	case YAML_MAPPING_NODE:
-		return "a mapping";
-	default:
-		return "nothing";
-	}
-}
-
-/* A scalar's text (NUL-terminated by libyaml); NULL if n is no scalar or holds a NUL. */
-static const char *text(const yaml_node_t *n)
-{
-	if (n->type != YAML_SCALAR_NODE)
-		return NULL;
-	if (strlen((const char *)n->data.scalar.value) != n->data.scalar.length)
-		return NULL;
-	return (const char *)n->data.scalar.value;
-}
-
-static bool plain(const yaml_node_t *n)
-{
-	return n->type == YAML_SCALAR_NODE && n->data.scalar.style == YAML_PLAIN_SCALAR_STYLE;
-}
-
 static bool is_null(const yaml_node_t *n)
 {
-	const char *s = text(n);
+	const char *s = yaml_node_text(n);
 
-	return plain(n) && s && (!*s || strcmp(s, "~") == 0 || strcmp(s, "null") == 0);
+	return yaml_node_plain(n) && s && (!*s || strcmp(s, "~") == 0 || strcmp(s, "null") == 0);
 }
 
 static int get_string(struct cfg_parser *p, const yaml_node_t *n, const char *what, char *out,
 		      size_t size)
 {
-	const char *s = text(n);
+	const char *s = yaml_node_text(n);
 
 	if (!s)
 		return n->type == YAML_SCALAR_NODE
 			       ? fail(p, n, "%s holds a NUL byte", what)
-			       : fail(p, n, "expected a string for %s, got %s", what, kind(n));
+			       : fail(p, n, "expected a string for %s, got %s", what, yaml_node_kind(n));
 	if (!*s)
 		return fail(p, n, "%s is empty", what);
 	if (strlen(s) >= size)
@@ -120,13 +92,13 @@ static int get_string(struct cfg_parser *p, const yaml_node_t *n, const char *wh
 static int get_int(struct cfg_parser *p, const yaml_node_t *n, const char *what, long lo,
 		   long hi, long *v)
 {
-	const char *s = text(n);
+	const char *s = yaml_node_text(n);
 	char *end;
 	long x;
 
-	if (!s || !plain(n))
+	if (!s || !yaml_node_plain(n))
 		return fail(p, n, "expected an integer for %s, got %s", what,
-			    n->type == YAML_SCALAR_NODE ? "a quoted string" : kind(n));
+			    n->type == YAML_SCALAR_NODE ? "a quoted string" : yaml_node_kind(n));
 	if (!((s[0] >= '0' && s[0] <= '9') || (s[0] == '-' && s[1] >= '0' && s[1] <= '9')))
 		return fail(p, n, "%s \"%.40s\" is not an integer", what, s);
 	errno = 0;
@@ -141,9 +113,9 @@ static int get_int(struct cfg_parser *p, const yaml_node_t *n, const char *what,
 
 static int get_bool(struct cfg_parser *p, const yaml_node_t *n, const char *what, bool *v)
 {
-	const char *s = text(n);
+	const char *s = yaml_node_text(n);
 
-	if (s && plain(n)) {
+	if (s && yaml_node_plain(n)) {
 		if (strcmp(s, "true") == 0 || strcmp(s, "yes") == 0 || strcmp(s, "on") == 0) {
 			*v = true;
 			return 0;
@@ -171,11 +143,11 @@ static int get_rotation(struct cfg_parser *p, const yaml_node_t *n, const char *
 
 static int get_fraction(struct cfg_parser *p, const yaml_node_t *n, const char *what, double *v)
 {
-	const char *s = text(n);
+	const char *s = yaml_node_text(n);
 	char *end;
 	double x;
 
-	if (!s || !plain(n) || !*s)
+	if (!s || !yaml_node_plain(n) || !*s)
 		return fail(p, n, "expected a number for %s", what);
 	errno = 0;
 	x = strtod(s, &end);
@@ -203,7 +175,7 @@ static int for_each_pair(struct cfg_parser *p, const yaml_node_t *n, const char 
 	if (is_null(n))
 		return 0;
 	if (n->type != YAML_MAPPING_NODE)
-		return fail(p, n, "expected a mapping for %s, got %s", what, kind(n));
+		return fail(p, n, "expected a mapping for %s, got %s", what, yaml_node_kind(n));
 	start = n->data.mapping.pairs.start;
 	top = n->data.mapping.pairs.top;
 	for (yaml_node_pair_t *pair = start; pair < top; pair++) {
@@ -214,12 +186,12 @@ static int for_each_pair(struct cfg_parser *p, const yaml_node_t *n, const char 
 
 		if (!key || !value)
 			return fail(p, n, "broken YAML node in %s", what);
-		k = text(key);
+		k = yaml_node_text(key);
 		if (!k)
-			return fail(p, key, "expected a plain key in %s, got %s", what, kind(key));
+			return fail(p, key, "expected a plain key in %s, got %s", what, yaml_node_kind(key));
 		for (yaml_node_pair_t *q = start; q < pair; q++) {
 			const yaml_node_t *other = yaml_document_get_node(&p->doc, q->key);
-			const char *o = other ? text(other) : NULL;
+			const char *o = other ? yaml_node_text(other) : NULL;
 
 			if (o && strcmp(o, k) == 0)
 				return fail(p, key, "duplicate key \"%.40s\" in %s (first on line %lu)",
@@ -250,11 +222,11 @@ static bool digits(const char **s, unsigned *v)
 
 static int parse_mode(struct cfg_parser *p, const yaml_node_t *n)
 {
-	const char *s = text(n), *q;
+	const char *s = yaml_node_text(n), *q;
 	unsigned w, h, hz = 0;
 
 	if (!s)
-		return fail(p, n, "expected a mode like 1920x1080 or 1920x1080@60, got %s", kind(n));
+		return fail(p, n, "expected a mode like 1920x1080 or 1920x1080@60, got %s", yaml_node_kind(n));
 	if (strcmp(s, "preferred") == 0 || strcmp(s, "auto") == 0) {
 		p->c->display.mode_w = p->c->display.mode_h = p->c->display.mode_hz = 0;
 		return 0;
@@ -275,9 +247,9 @@ static int parse_mode(struct cfg_parser *p, const yaml_node_t *n)
 static int get_auto_string(struct cfg_parser *p, const yaml_node_t *n, const char *what,
 			   char *out, size_t size)
 {
-	const char *s = text(n);
+	const char *s = yaml_node_text(n);
 
-	if (is_null(n) || (s && plain(n) && strcmp(s, "auto") == 0)) {
+	if (is_null(n) || (s && yaml_node_plain(n) && strcmp(s, "auto") == 0)) {
 		out[0] = '\0';
 		return 0;
 	}
@@ -306,15 +278,15 @@ static int display_pair(struct cfg_parser *p, const yaml_node_t *key, const char
 
 static int parse_area(struct cfg_parser *p, const yaml_node_t *n)
 {
-	const char *s = text(n);
+	const char *s = yaml_node_text(n);
 	double v[4];
 	size_t count;
 
-	if (s && plain(n) && strcmp(s, "fit") == 0) {
+	if (s && yaml_node_plain(n) && strcmp(s, "fit") == 0) {
 		p->c->input.area = CONFIG_AREA_FIT;
 		return 0;
 	}
-	if (s && plain(n) && strcmp(s, "stretch") == 0) {
+	if (s && yaml_node_plain(n) && strcmp(s, "stretch") == 0) {
 		p->c->input.area = CONFIG_AREA_STRETCH;
 		return 0;
 	}
@@ -379,7 +351,7 @@ static int line_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k
 
 		l->have_line = true;
 		/* a plain integer is an offset; anything else (or quoted) a line name */
-		if (plain(v) && text(v) && text(v)[0] >= '0' && text(v)[0] <= '9') {
+		if (yaml_node_plain(v) && yaml_node_text(v) && yaml_node_text(v)[0] >= '0' && yaml_node_text(v)[0] <= '9') {
 			if ((r = get_int(p, v, what, 0, 65535, &off)) < 0)
 				return r;
 			l->line->offset = (int)off;
@@ -425,7 +397,7 @@ static int lines_pair(struct cfg_parser *p, const yaml_node_t *key, const char *
 	line->conf_line = line_of(key);
 	if (v->type != YAML_MAPPING_NODE)
 		return fail(p, v, "expected a mapping {chip, line, ...} for %s, got %s", what,
-			    kind(v));
+			    yaml_node_kind(v));
 	if ((r = for_each_pair(p, v, what, line_pair, &l)) < 0)
 		return r;
 	if (!l.have_chip)
@@ -477,11 +449,11 @@ static int kiosk_pair(struct cfg_parser *p, const yaml_node_t *key, const char *
 		return r;
 	}
 	if (strcmp(k, "export_dir") == 0) {
-		const char *s = text(v);
+		const char *s = yaml_node_text(v);
 		int r;
 
 		/* no copy kept: the stick is the only place */
-		if (is_null(v) || (s && plain(v) && strcmp(s, "none") == 0)) {
+		if (is_null(v) || (s && yaml_node_plain(v) && strcmp(s, "none") == 0)) {
 			p->c->kiosk.export_dir[0] = '\0';
 			return 0;
 		}
@@ -562,11 +534,11 @@ static int top_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
 	if (strcmp(k, "font") == 0)
 		return get_auto_string(p, v, "font", p->c->font, sizeof(p->c->font));
 	if (strcmp(k, "language") == 0) {
-		const char *s = text(v);
+		const char *s = yaml_node_text(v);
 
-		if (s && plain(v) && strcmp(s, "en") == 0)
+		if (s && yaml_node_plain(v) && strcmp(s, "en") == 0)
 			p->c->language = CONFIG_LANG_EN;
-		else if (s && plain(v) && strcmp(s, "ja") == 0)
+		else if (s && yaml_node_plain(v) && strcmp(s, "ja") == 0)
 			p->c->language = CONFIG_LANG_JA;
 		else
 			return fail(p, v, "language must be en or ja");
@@ -603,23 +575,7 @@ void config_defaults(struct config *c)
 static int yaml_fail(struct cfg_parser *p, const yaml_parser_t *y, const char *data,
 		     size_t len)
 {
-	unsigned long line;
-
-	if (y->error == YAML_MEMORY_ERROR)
-		return error_at(p->err, -ENOMEM, p->name, 0, "out of memory");
-	if (y->error == YAML_READER_ERROR) {
-		size_t end = y->problem_offset < len ? y->problem_offset : len;
-
-		line = 1;
-		for (size_t i = 0; i < end; i++)
-			line += data[i] == '\n';
-		return error_at(p->err, -EINVAL, p->name, line, "not YAML text: %s",
-				y->problem ? y->problem : "unreadable");
-	}
-	line = (unsigned long)y->problem_mark.line + 1;
-	return error_at(p->err, -EINVAL, p->name, line, "YAML error: %s%s%s",
-			y->problem ? y->problem : "error", y->context ? " " : "",
-			y->context ? y->context : "");
+	return yaml_node_parse_error(p->err, p->name, 0, y, data, len);
 }
 
 int config_parse(const char *data, size_t len, const char *name, struct config *c, FILE *warn,
@@ -665,7 +621,7 @@ int config_parse(const char *data, size_t len, const char *name, struct config *
 			r = 0;
 		else if (root->type != YAML_MAPPING_NODE)
 			r = fail(&p, root, "expected a mapping (display:, input:, gpio:, ...) at the top, got %s",
-				 kind(root));
+				 yaml_node_kind(root));
 		else
 			r = for_each_pair(&p, root, "the top level", top_pair, NULL);
 	} else {

@@ -38,10 +38,10 @@ int export_set_build(struct export_set *s, const struct app *app, const uint8_t 
 
 	for (size_t i = 0; i < EXPORT_NAMES_NSUFFIXES; i++)
 		buf_reset(&f[i]);
-	if ((r = export_glb(&app->mesh, &f[EXPORT_SET_GLB])) < 0)
+	if ((r = export_glb(&app->tree, &app->mesh, &app->mesh_marks, &f[EXPORT_SET_GLB])) < 0)
 		return error_set(err, r, "cannot build the .glb: %s", strerror(-r));
-	r = export_obj(&app->mesh, EXPORT_SET_MTL_PLACEHOLDER, &f[EXPORT_SET_OBJ],
-		       &f[EXPORT_SET_MTL]);
+	r = export_obj(&app->tree, &app->mesh, &app->mesh_marks, EXPORT_SET_MTL_PLACEHOLDER,
+		       &f[EXPORT_SET_OBJ], &f[EXPORT_SET_MTL]);
 	if (r < 0)
 		return error_set(err, r, "cannot build the .obj: %s", strerror(-r));
 	if ((r = doc_serialize(&app->doc, &app->tree, &f[EXPORT_SET_EDAHA])) < 0)

@@ -11,6 +11,7 @@
 #include "docfile.h"
 #include "egl_headless.h"
 #include "fileio.h"
+#include "gen.h"
 #include "font_file.h"
 #include "output.h"
 #include "render.h"
@@ -88,6 +89,26 @@ static int load_doc(struct run *r, const char *path)
 		doc_finish(&doc);
 		fprintf(stderr, "edaha: out of memory loading %s\n", path);
 		return 1;
+	}
+	return 0;
+}
+
+/* The tree parameter file, read before anything runs: a bad one stops the run (exit 2)
+ * with FILE:LINE and nothing written. */
+static int read_params(const char *path, struct gen_params *p)
+{
+	struct error err = { { 0 } };
+	size_t len;
+	char *data;
+	int ret = fileio_read_all(path, 1u << 20, &data, &len, &err);
+
+	if (ret == 0) {
+		ret = gen_read(data, len, path, 0, p, &err);
+		free(data);
+	}
+	if (ret < 0) {
+		fprintf(stderr, "edaha: %s\n", err.msg);
+		return input_status(ret);
 	}
 	return 0;
 }
@@ -186,6 +207,7 @@ static int render_and_write(struct run *r)
 int headless_run(const struct options *o)
 {
 	struct run r = { .o = o };
+	struct gen_params params;
 	struct trace *traces = calloc(o->nsteps ? o->nsteps : 1, sizeof(*traces));
 	struct error err = { { 0 } };
 	int status;
@@ -197,6 +219,8 @@ int headless_run(const struct options *o)
 		goto out;
 	}
 	status = load_traces(o, traces);
+	if (status == 0 && o->generate)
+		status = read_params(o->generate, &params);
 	if (status == 0 && o->load)
 		status = load_doc(&r, o->load);
 	if (status == 0 && o->record) {
@@ -208,6 +232,9 @@ int headless_run(const struct options *o)
 	}
 	if (status)
 		goto out;
+	/* the tree first, as a template tap on the canvas (or on the loaded drawing) */
+	if (o->generate && app_generate(r.app, &params, r.now_us + GAP_BETWEEN_INPUTS_US) == 0)
+		r.now_us += GAP_BETWEEN_INPUTS_US;
 	for (size_t i = 0; i < o->nsteps; i++) {
 		if (o->steps[i].kind == STEP_REPLAY)
 			replay(&r, &traces[i]);

@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "app.h"
+#include "app_mode.h"
 #include "autosave.h"
 #include "buf.h"
 #include "fileio.h"
@@ -35,6 +36,15 @@
 /* How often the journal gets the pen-to-screen figures while visitors draw. */
 #define KIOSK_STATS_LOG_US (300u * 1000000u)
 
+/* A place of the side strip as the screen shows it (ui/render_ui.c draws a parameter
+ * button that would change nothing disabled). */
+struct kiosk_side_look {
+	bool thumbnail, lit, enabled;
+	enum button button;
+	int tap;
+	const struct tree_mesh *preview;
+};
+
 /*
  * What a frame shows, apart from the clock: when none of it changed since the last
  * frame, the screen is already right and nothing is drawn.
@@ -54,6 +64,9 @@ struct kiosk_look {
 	unsigned suggestions;
 	enum app_status status; /* the message on screen */
 	bool attract;           /* the attract screen */
+	enum season season;     /* the season button's picture, the leaves' colours */
+	size_t nside;           /* the side strip: what it holds, and how each place shows */
+	struct kiosk_side_look side[APP_SIDE_MAX];
 };
 
 /* A pen event on its way to the screen: its kernel time, and frames shown before it. */
@@ -114,6 +127,8 @@ static uint64_t now_us(void)
 
 static void look_of(const struct app *app, uint64_t now_us, struct kiosk_look *l)
 {
+	struct app_side_item items[APP_SIDE_MAX];
+
 	memset(l, 0, sizeof(*l)); /* padding too, though only fields are compared */
 	l->status = app_status_at(app, now_us, NULL);
 	l->attract = app_attract_at(app, now_us, NULL);
@@ -136,6 +151,34 @@ static void look_of(const struct app *app, uint64_t now_us, struct kiosk_look *l
 	l->camera = app->camera;
 	l->selected = app->selected;
 	l->suggestions = app->suggestions;
+	l->season = app->tree.season;
+	l->nside = app_side_items(app, items);
+	for (size_t i = 0; i < l->nside; i++) {
+		enum button b = items[i].button;
+
+		l->side[i] = (struct kiosk_side_look){
+			.thumbnail = items[i].thumbnail,
+			.lit = items[i].lit,
+			.enabled = b < BUTTON_GEN_MORE || b > BUTTON_GEN_BARER || app_gen_possible(app, b),
+			.button = b,
+			.tap = items[i].tap,
+			.preview = items[i].preview,
+		};
+	}
+}
+
+static bool side_equal(const struct kiosk_look *a, const struct kiosk_look *b)
+{
+	if (a->nside != b->nside)
+		return false;
+	for (size_t i = 0; i < a->nside; i++) {
+		const struct kiosk_side_look *x = &a->side[i], *y = &b->side[i];
+
+		if (x->thumbnail != y->thumbnail || x->lit != y->lit || x->enabled != y->enabled ||
+		    x->button != y->button || x->tap != y->tap || x->preview != y->preview)
+			return false;
+	}
+	return true;
 }
 
 static bool look_equal(const struct kiosk_look *a, const struct kiosk_look *b)
@@ -149,7 +192,8 @@ static bool look_equal(const struct kiosk_look *a, const struct kiosk_look *b)
 	       memcmp(a->buttons, b->buttons, sizeof(a->buttons)) == 0 &&
 	       a->camera.yaw == b->camera.yaw && a->camera.pitch == b->camera.pitch &&
 	       a->selected == b->selected && a->suggestions == b->suggestions &&
-	       a->status == b->status && a->attract == b->attract;
+	       a->status == b->status && a->attract == b->attract && a->season == b->season &&
+	       side_equal(a, b);
 }
 
 /* Whether frames must keep coming at now_us without any input: the turn into 3D, a
@@ -671,6 +715,7 @@ static enum button mode_button(const struct app *app)
 		return BUTTON_LEAF;
 	case APP_MODE_PROPAGATE:
 		return BUTTON_PROPAGATE;
+	case APP_MODE_NEW:
 	case APP_MODE_SKETCH:
 		break;
 	}

@@ -29,12 +29,18 @@ void options_usage(FILE *f)
 	      "  --seed N            random seed of a new drawing (default 1); a loaded\n"
 	      "                      drawing keeps its own seed\n"
 	      "  --load FILE         continue a saved drawing (a drawing.edaha file)\n"
+	      "  --generate FILE     start from the tree a parameter file describes (a\n"
+	      "                      functional tree: docs/tree-params.md); --replay,\n"
+	      "                      --press and --view apply after it\n"
 	      "  --replay FILE       feed recorded input: an edaha trace or a `libinput record`\n"
 	      "                      YAML file; may be repeated\n"
 	      "  --press BUTTON      press and release a button: 3d, clone, leaf, propagate,\n"
-	      "                      undo, redo, export, new, fixed-count, fixed-size, view;\n"
-	      "                      may be repeated. --replay and --press apply in the order\n"
-	      "                      given.\n"
+	      "                      undo, redo, export, new, fixed-count, fixed-size, view,\n"
+	      "                      season, tpl-blank, tpl-cherry, tpl-zelkova, tpl-hedge,\n"
+	      "                      tpl-ball, tpl-cone, tpl-palm, gen-more, gen-fewer,\n"
+	      "                      gen-wider, gen-narrower, gen-taller, gen-shorter,\n"
+	      "                      gen-leafier, gen-barer; may be repeated. --replay and\n"
+	      "                      --press apply in the order given.\n"
 	      "  --view YAW[,PITCH]  show a 3D tree turned: the camera's azimuth (90 = from\n"
 	      "                      the right) and height in degrees, after all input\n"
 	      "  --idle SECONDS      show the screen this long after the last input, as the\n"
@@ -165,13 +171,14 @@ int options_parse(struct options *o, int argc, char **argv)
 {
 	enum { OPT_HEADLESS = 256, OPT_SIZE, OPT_SEED, OPT_OUT, OPT_LOAD, OPT_REPLAY, OPT_PRESS,
 	       OPT_VIEW, OPT_RECORD, OPT_HELP, OPT_VERSION, OPT_KIOSK_FRAMES, OPT_SCREENSHOT,
-	       OPT_CONFIG, OPT_STATS, OPT_LANG, OPT_IDLE };
+	       OPT_CONFIG, OPT_STATS, OPT_LANG, OPT_IDLE, OPT_GENERATE };
 	static const struct option longopts[] = {
 		{ "headless", no_argument, NULL, OPT_HEADLESS },
 		{ "size", required_argument, NULL, OPT_SIZE },
 		{ "seed", required_argument, NULL, OPT_SEED },
 		{ "out", required_argument, NULL, OPT_OUT },
 		{ "load", required_argument, NULL, OPT_LOAD },
+		{ "generate", required_argument, NULL, OPT_GENERATE },
 		{ "replay", required_argument, NULL, OPT_REPLAY },
 		{ "press", required_argument, NULL, OPT_PRESS },
 		{ "view", required_argument, NULL, OPT_VIEW },
@@ -216,6 +223,11 @@ int options_parse(struct options *o, int argc, char **argv)
 		case OPT_LOAD:
 			o->load = optarg;
 			break;
+		case OPT_GENERATE:
+			if (!optarg[0])
+				return usage_error("%s needs a file name", "--generate");
+			o->generate = optarg;
+			break;
 		case OPT_RECORD:
 			o->record = optarg;
 			break;
@@ -229,7 +241,8 @@ int options_parse(struct options *o, int argc, char **argv)
 			s.kind = STEP_PRESS;
 			if (!button_from_name(optarg, &s.button))
 				return usage_error("unknown button \"%s\" (3d, clone, leaf, propagate, undo, "
-						   "redo, export, new, fixed-count, fixed-size, view)", optarg);
+						   "redo, export, new, fixed-count, fixed-size, view, season, "
+						   "tpl-..., gen-...: see --help)", optarg);
 			if ((ret = add_step(o, s)))
 				return ret;
 			break;
@@ -280,10 +293,10 @@ int options_parse(struct options *o, int argc, char **argv)
 		return usage_error("unexpected argument \"%s\"", argv[optind]);
 	if (o->help || o->version)
 		return 0;
-	if (!o->headless && (o->out_dir || o->nsteps || o->view_given || o->idle_given))
+	if (!o->headless && (o->out_dir || o->nsteps || o->view_given || o->idle_given || o->generate))
 		return usage_error("%s needs --headless",
 				   o->out_dir ? "--out" : o->nsteps ? "--replay/--press" :
-				   o->view_given ? "--view" : "--idle");
+				   o->view_given ? "--view" : o->generate ? "--generate" : "--idle");
 	if (o->headless && (o->kiosk_frames || o->screenshot || o->config || o->stats))
 		return usage_error("%s is for the kiosk, not --headless",
 				   o->kiosk_frames ? "--kiosk-frames" : o->screenshot ? "--screenshot" :

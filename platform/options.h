@@ -27,6 +27,7 @@ struct options {
 	bool seed_given;
 	const char *out_dir;
 	const char *load;
+	const char *generate; /* a tree parameter file (docs/tree-params.md) */
 	const char *record;
 	bool view_given;
 	double view_yaw, view_pitch; /* degrees */

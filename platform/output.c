@@ -25,10 +25,10 @@ int output_write(const struct app *app, const char *dir, const struct output_nam
 	buf_init(&b);
 	ret = fileio_mkdirs(dir, err);
 	if (ret == 0 && n->glb)
-		ret = write_buf(dir, n->glb, &a, export_glb(&app->mesh, &a), err);
+		ret = write_buf(dir, n->glb, &a, export_glb(&app->tree, &app->mesh, &app->mesh_marks, &a), err);
 	if (ret == 0 && n->obj && n->mtl) {
 		buf_reset(&a);
-		ret = export_obj(&app->mesh, n->mtl, &a, &b);
+		ret = export_obj(&app->tree, &app->mesh, &app->mesh_marks, n->mtl, &a, &b);
 		ret = write_buf(dir, n->obj, &a, ret, err);
 		if (ret == 0)
 			ret = write_buf(dir, n->mtl, &b, 0, err);

@@ -5,8 +5,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "app_mode.h"
 #include "app_private.h"
 #include "clone.h"
+#include "gen.h"
 #include "lift.h"
 #include "propagate.h"
 #include "sketch.h"
@@ -38,6 +40,8 @@ struct app *app_create(int width, int height, uint64_t seed)
 	app->suggest_branch = -1;
 	for (int i = 0; i < ARRANGE_COUNT; i++)
 		tree_mesh_init(&app->previews[i]);
+	for (int i = 0; i < GEN_PRESET_COUNT; i++)
+		tree_mesh_init(&app->templates[i]);
 	return app;
 }
 
@@ -53,6 +57,8 @@ void app_destroy(struct app *app)
 	tree_finish(&app->before);
 	for (int i = 0; i < ARRANGE_COUNT; i++)
 		tree_mesh_finish(&app->previews[i]);
+	for (int i = 0; i < GEN_PRESET_COUNT; i++)
+		tree_mesh_finish(&app->templates[i]);
 	free(app->stroke.points);
 	free(app);
 }
@@ -93,6 +99,17 @@ int app_apply_op(struct app *app, const struct doc_op *op)
 
 		return ret == -ENOENT || ret == -ENOSPC ? SKETCH_GREW : ret < 0 ? ret : SKETCH_GREW;
 	}
+	case DOC_OP_GENERATE: {
+		/* a drawing's parameters were checked when read: nothing else is refused */
+		int ret = op->params ? gen_build(&app->tree, op->params, op->seed) : -EINVAL;
+
+		return ret == -EINVAL ? SKETCH_CHANGED : ret < 0 ? ret : SKETCH_CHANGED;
+	}
+	case DOC_OP_SEASON:
+		/* the leaves' colours: no element changes */
+		if ((unsigned)op->pattern < SEASON_COUNT)
+			app->tree.season = (enum season)op->pattern;
+		return SKETCH_GREW;
 	}
 	return SKETCH_CHANGED;
 }
@@ -287,19 +304,39 @@ int app_press_button(struct app *app, enum button button, uint64_t time_us)
 		app->requests |= APP_REQUEST_EXPORT;
 		return 0;
 	case BUTTON_NEW:
-		/* Undoable, so a visitor who pressed it by accident gets the tree back. */
-		app->mode = APP_MODE_SKETCH;
+		/* Undoable, so a visitor who pressed it by accident gets the tree back; then the
+		 * side strip offers trees to start from (app_mode_new.c). */
 		app->selected = -1;
 		app_clear_suggestions(app);
-		if (app->tree.nbranches == 0 && app->tree.nleaves == 0)
-			return 0;
-		ret = app_push_op(app, &op);
-		return ret == -ENOSPC ? 0 : ret;
+		ret = 0;
+		if (app->tree.nbranches != 0 || app->tree.nleaves != 0)
+			ret = app_push_op(app, &op);
+		if (ret < 0 && ret != -ENOSPC)
+			return ret;
+		app->mode = APP_MODE_NEW;
+		return app_mode_ops(APP_MODE_NEW)->enter(app, time_us);
 	case BUTTON_VIEW:
 		app->turning = false;
 		app->orbiting = false;
 		app_camera_store(app, (struct camera){ 0.0f, 0.0f });
 		return 0;
+	case BUTTON_SEASON:
+	case BUTTON_TPL_BLANK:
+	case BUTTON_TPL_CHERRY:
+	case BUTTON_TPL_ZELKOVA:
+	case BUTTON_TPL_HEDGE:
+	case BUTTON_TPL_BALL:
+	case BUTTON_TPL_CONE:
+	case BUTTON_TPL_PALM:
+	case BUTTON_GEN_MORE:
+	case BUTTON_GEN_FEWER:
+	case BUTTON_GEN_WIDER:
+	case BUTTON_GEN_NARROWER:
+	case BUTTON_GEN_TALLER:
+	case BUTTON_GEN_SHORTER:
+	case BUTTON_GEN_LEAFIER:
+	case BUTTON_GEN_BARER:
+		return app_press_functional(app, button, time_us);
 	case BUTTON_COUNT:
 		break;
 	}
@@ -316,7 +353,7 @@ void app_handle_event(struct app *app, const struct event *ev)
 {
 	int ret = 0;
 	enum button hit;
-	enum arrange_pattern pattern;
+	struct app_side_item item;
 
 	app->last_time_us = ev->time_us;
 	switch (ev->type) {
@@ -351,15 +388,11 @@ void app_handle_event(struct app *app, const struct event *ev)
 			ret = button_event(app, hit, true, ev->time_us);
 			break;
 		}
-		/* a tap on a suggestion applies it; the pen is then held until it lifts */
-		if (!app->side_held && app_thumbnail_hit(app, ev->x, ev->y, &pattern)) {
-			int b = app->suggest_branch;
-
+		/* a tap on the side strip (a suggestion): the pen is then held until it lifts */
+		if (!app->side_held && app_side_hit(app, ev->x, ev->y, &item)) {
 			app->side_held = true;
 			app_fail(app, ret);
-			ret = app_push_edit(app, DOC_OP_ARRANGE, b, (int)pattern, ev->time_us);
-			if (ret == 0)
-				ret = app_update_suggestions(app, b); /* tapping again keeps adding */
+			ret = app_side_tap(app, &item, ev->time_us);
 			break;
 		}
 		if (app->side_held)

@@ -9,6 +9,7 @@
 #include "camera.h"
 #include "doc.h"
 #include "event.h"
+#include "gen.h"
 #include "history.h"
 #include "mesh.h"
 #include "rng.h"
@@ -27,6 +28,7 @@ enum app_mode {
 	APP_MODE_CLONE,
 	APP_MODE_LEAF,
 	APP_MODE_PROPAGATE,
+	APP_MODE_NEW, /* the New strip: templates to start from (app_mode_new.c) */
 };
 
 /* Propagation pattern: until a pattern button is pressed, fixed count for a branch with
@@ -138,7 +140,10 @@ struct app {
 	int suggest_branch;        /* leaf mode: the branch whose leaves suggest... */
 	unsigned suggestions;      /* ...these arrangements (1u << enum arrange_pattern) */
 	struct tree_mesh previews[ARRANGE_COUNT]; /* their thumbnails' meshes */
-	uint64_t previews_serial;  /* bumped when they change */
+	/* The New strip's thumbnails: the presets, made the first time the strip opens. */
+	struct tree_mesh templates[GEN_PRESET_COUNT];
+	bool templates_ready;
+	uint64_t previews_serial;  /* bumped when either changes */
 	bool side_held;            /* the pen tip is on a thumbnail */
 	uint64_t last_time_us;     /* of the last event: idle time counts from it */
 	uint64_t attract_after_us; /* idle time before the attract screen; 0: never */
@@ -179,3 +184,11 @@ enum app_status app_status_at(const struct app *app, uint64_t now_us, uint64_t *
 bool app_attract_at(const struct app *app, uint64_t now_us, uint64_t *from_us);
 /* Rebuilds tree and meshes from the document up to its cursor. 0 or -ENOMEM. */
 int app_rebuild(struct app *app);
+/* Puts the tree p describes on the canvas, as a template tap does (--generate): one
+ * undoable op. 0, -ENOMEM. */
+int app_generate(struct app *app, const struct gen_params *p, uint64_t time_us);
+/* The generate op of the tree on the canvas while nobody has edited it by hand (season
+ * changes aside), or NULL: the parameter buttons work on it. */
+const struct doc_op *app_generated(const struct app *app);
+/* Whether parameter button b would change the generated tree (at a limit it would not). */
+bool app_gen_possible(const struct app *app, enum button b);

@@ -16,7 +16,7 @@
 
 static bool slow_op(const struct doc_op *op)
 {
-	return op->kind == DOC_OP_LIFT || op->kind == DOC_OP_PROPAGATE;
+	return op->kind == DOC_OP_LIFT || op->kind == DOC_OP_PROPAGATE || op->kind == DOC_OP_GENERATE;
 }
 
 /* What app_push_op and replays apply: op on top of the app's tree, then the state is

@@ -1,17 +1,30 @@
 /* SPDX-License-Identifier: MIT */
-/* The editing modes on the pen (seed 000, sections 3.4-3.6): clone taps and circles, the
- * leaf arrangement suggestions, propagation taps. The algorithms are clone.c, arrange.c
- * and propagate.c; docs/editing.md says what the pen does. */
+/* The kiosk's modes (app_mode.h): entering and leaving them, and dispatching the pen's
+ * strokes and the side strip's taps to the active one. What each mode does is its own
+ * file: app_mode_sketch.c, app_mode_clone.c, app_mode_leaf.c, app_mode_propagate.c,
+ * app_mode_new.c; docs/editing.md and docs/functional-trees.md say what the pen does. */
 #include <errno.h>
-#include <math.h>
 
+#include "app_mode.h"
 #include "app_private.h"
 #include "layout.h"
-#include "propagate.h"
 #include "sketch.h"
 #include "sketch_view.h"
 
-/* Records an editing op (clone, arrange, propagate). A full drawing takes no more. */
+static const struct app_mode_ops *const modes[] = {
+	[APP_MODE_SKETCH] = &app_mode_sketch_ops,
+	[APP_MODE_CLONE] = &app_mode_clone_ops,
+	[APP_MODE_LEAF] = &app_mode_leaf_ops,
+	[APP_MODE_PROPAGATE] = &app_mode_propagate_ops,
+	[APP_MODE_NEW] = &app_mode_new_ops,
+};
+
+const struct app_mode_ops *app_mode_ops(enum app_mode mode)
+{
+	return (unsigned)mode < sizeof(modes) / sizeof(*modes) ? modes[mode] : modes[APP_MODE_SKETCH];
+}
+
+/* Records an editing op (clone, arrange, propagate, ...). A full drawing takes no more. */
 int app_push_edit(struct app *app, enum doc_op_kind kind, int branch, int pattern,
 		  uint64_t time_us)
 {
@@ -21,7 +34,7 @@ int app_push_edit(struct app *app, enum doc_op_kind kind, int branch, int patter
 	return ret == -ENOSPC ? 0 : ret;
 }
 
-static bool has_child_branch(const struct tree *t, int b)
+bool app_has_child_branch(const struct tree *t, int b)
 {
 	for (size_t i = (size_t)b + 1; i < t->nbranches; i++)
 		if (t->branches[i].parent == b)
@@ -29,7 +42,7 @@ static bool has_child_branch(const struct tree *t, int b)
 	return false;
 }
 
-static bool has_leaf(const struct tree *t, int b)
+bool app_has_leaf(const struct tree *t, int b)
 {
 	for (size_t i = 0; i < t->nleaves; i++)
 		if (t->leaves[i].branch == b)
@@ -37,64 +50,7 @@ static bool has_leaf(const struct tree *t, int b)
 	return false;
 }
 
-void app_clear_suggestions(struct app *app)
-{
-	if (app->suggestions == 0 && app->suggest_branch < 0)
-		return;
-	app->suggestions = 0;
-	app->suggest_branch = -1;
-	app->previews_serial++;
-}
-
-/* The arrangements the leaves on branch b suggest, with a small mesh for each thumbnail. */
-int app_update_suggestions(struct app *app, int b)
-{
-	app_clear_suggestions(app);
-	if (app->mode != APP_MODE_LEAF || b < 0 || (size_t)b >= app->tree.nbranches)
-		return 0;
-	app->suggest_branch = b;
-	app->suggestions = arrange_suggest(&app->tree, b);
-	for (int p = 0; p < ARRANGE_COUNT; p++) {
-		struct tree preview;
-		int ret;
-
-		if (!(app->suggestions & (1u << p)))
-			continue;
-		ret = arrange_preview(&app->tree, b, (enum arrange_pattern)p, &preview);
-		if (ret == 0)
-			ret = tree_mesh_build(&app->previews[p], &preview);
-		tree_finish(&preview);
-		if (ret == -ENOMEM) {
-			app_clear_suggestions(app);
-			return ret;
-		}
-		if (ret < 0)
-			app->suggestions &= ~(1u << p);
-	}
-	app->previews_serial++;
-	return 0;
-}
-
-size_t app_suggestions(const struct app *app, enum arrange_pattern out[ARRANGE_COUNT])
-{
-	size_t n = 0;
-
-	for (int p = 0; p < ARRANGE_COUNT; p++)
-		if (app->suggestions & (1u << p))
-			out[n++] = (enum arrange_pattern)p;
-	return n;
-}
-
-/* After undo/redo the ids the modes hold may name nothing, or something else. */
-int app_refresh_mode_state(struct app *app)
-{
-	if (app->selected >= 0 && (size_t)app->selected >= app->tree.nbranches)
-		app->selected = -1;
-	return app_update_suggestions(app, app->suggest_branch);
-}
-
-/* The branch shown within APP_TAP_M of view-space point p, or -1. */
-static int branch_near(const struct app *app, struct vec3 p, double within)
+int app_branch_near(const struct app *app, struct vec3 p, double within)
 {
 	struct sketch_view sv;
 	struct sketch_hit h;
@@ -106,102 +62,27 @@ static int branch_near(const struct app *app, struct vec3 p, double within)
 	return h.branch >= 0 && h.dist <= within ? h.branch : -1;
 }
 
-static struct vec3 stroke_point(const struct app *app, size_t i)
+struct vec3 app_stroke_point(const struct app *app, size_t i)
 {
 	return view_to_world(&app->view, app->stroke.points[i].x, app->stroke.points[i].y);
 }
 
-/*
- * A clone-mode circle: how far the pen went round the stroke's centre. +1 clockwise as
- * the visitor sees it (add a child), -1 anticlockwise (remove one), 0 not a circle.
- */
-static int stroke_circle(const struct app *app, double len, struct vec3 *centre)
+/* After undo/redo the ids the modes hold may name nothing, or something else. */
+int app_refresh_mode_state(struct app *app)
 {
-	const struct app_stroke *s = &app->stroke;
-	struct vec3 c = vec3(0, 0, 0);
-	double turn = 0.0, prev = 0.0;
-
-	if (s->npoints < 8 || len < APP_CIRCLE_MIN_M)
-		return 0;
-	for (size_t i = 0; i < s->npoints; i++)
-		c = vec3_add(c, stroke_point(app, i));
-	c = vec3_scale(c, 1.0 / (double)s->npoints);
-	for (size_t i = 0; i < s->npoints; i++) {
-		struct vec3 p = stroke_point(app, i);
-		double a = atan2(p.y - c.y, p.x - c.x), d;
-
-		if (i > 0) {
-			d = a - prev;
-			d = d > VEC_PI ? d - 2 * VEC_PI : d < -VEC_PI ? d + 2 * VEC_PI : d;
-			turn += d;
-		}
-		prev = a;
-	}
-	*centre = c;
-	/* view space has y up: a positive turn is anticlockwise */
-	return fabs(turn) < APP_CIRCLE_TURN ? 0 : turn < 0 ? 1 : -1;
+	if (app->selected >= 0 && (size_t)app->selected >= app->tree.nbranches)
+		app->selected = -1;
+	return app_update_suggestions(app, app->suggest_branch);
 }
 
-static enum propagate_pattern propagate_pattern_for(const struct app *app, int b)
-{
-	if (app->pattern == APP_PATTERN_FIXED_COUNT)
-		return PROPAGATE_FIXED_COUNT;
-	if (app->pattern == APP_PATTERN_FIXED_SIZE)
-		return PROPAGATE_FIXED_SIZE;
-	return has_child_branch(&app->tree, b) ? PROPAGATE_FIXED_COUNT : PROPAGATE_FIXED_SIZE;
-}
-
-/*
- * What a finished pen stroke means in the clone and propagate modes (seed 000, 3.4 and
- * 3.6): taps pick branches, circles add and remove clones. Sets *taken when the stroke
- * was one of those; anything else is sketched as in the sketch mode.
- */
 int app_mode_stroke(struct app *app, double len, bool *taken)
 {
-	const struct app_stroke *s = &app->stroke;
-	uint64_t t = s->points[0].time_us;
-	bool tap = s->npoints < 2 || len < SKETCH_MIN_LENGTH_M;
-	struct vec3 c;
-	int b, dir;
+	const struct app_mode_ops *m = app_mode_ops(app->mode);
 
 	*taken = false;
-	if (s->tool != EVENT_TOOL_PEN || !app->tree.lifted)
+	if (app->stroke.tool != EVENT_TOOL_PEN)
 		return 0;
-	switch (app->mode) {
-	case APP_MODE_CLONE:
-		if (tap) {
-			*taken = true;
-			b = branch_near(app, stroke_point(app, 0), APP_TAP_M);
-			/* a tap picks a parent; tapping it again adds a child */
-			if (b < 0 || b != app->selected) {
-				app->selected = b;
-				return 0;
-			}
-			return has_child_branch(&app->tree, b) ?
-				       app_push_edit(app, DOC_OP_CLONE_ADD, b, 0, t) : 0;
-		}
-		dir = stroke_circle(app, len, &c);
-		if (dir == 0)
-			return 0;
-		*taken = true;
-		b = app->selected >= 0 ? app->selected : branch_near(app, c, 1.0);
-		if (b < 0 || !has_child_branch(&app->tree, b))
-			return 0;
-		app->selected = b;
-		return app_push_edit(app, dir > 0 ? DOC_OP_CLONE_ADD : DOC_OP_CLONE_REMOVE, b, 0, t);
-	case APP_MODE_PROPAGATE:
-		if (!tap)
-			return 0;
-		*taken = true;
-		b = branch_near(app, stroke_point(app, 0), APP_TAP_M);
-		if (b < 0 || !(has_child_branch(&app->tree, b) || has_leaf(&app->tree, b)))
-			return 0;
-		return app_push_edit(app, DOC_OP_PROPAGATE, b, (int)propagate_pattern_for(app, b), t);
-	case APP_MODE_SKETCH:
-	case APP_MODE_LEAF:
-		break;
-	}
-	return 0;
+	return m->stroke ? m->stroke(app, len, taken) : 0;
 }
 
 /*
@@ -212,6 +93,7 @@ int app_mode_stroke(struct app *app, double len, bool *taken)
  */
 int app_set_mode(struct app *app, enum app_mode mode, uint64_t time_us)
 {
+	const struct app_mode_ops *m = app_mode_ops(mode);
 	int ret = 0;
 
 	app->selected = -1;
@@ -225,21 +107,42 @@ int app_set_mode(struct app *app, enum app_mode mode, uint64_t time_us)
 	if (ret < 0 || !app->tree.lifted)
 		return ret;
 	app->mode = mode;
-	/* leaves drawn before: the newest one's branch says what it suggests at once */
-	for (size_t i = app->tree.nleaves; i-- > 0;)
-		if (app->tree.leaves[i].origin == ORIGIN_SKETCH)
-			return app_update_suggestions(app, app->tree.leaves[i].branch);
-	return 0;
+	return m->enter ? m->enter(app, time_us) : 0;
 }
 
-/* The leaf suggestion thumbnail at (x, y), if any is shown there. */
-bool app_thumbnail_hit(const struct app *app, double x, double y, enum arrange_pattern *p)
+size_t app_side_items(const struct app *app, struct app_side_item out[APP_SIDE_MAX])
 {
-	enum arrange_pattern list[ARRANGE_COUNT];
-	size_t n = app_suggestions(app, list), slot;
+	const struct app_mode_ops *m = app_mode_ops(app->mode);
 
-	if (app->mode != APP_MODE_LEAF || !layout_side_hit(&app->view, x, y, n, true, &slot))
+	return m->side ? m->side(app, out, APP_SIDE_MAX) : 0;
+}
+
+/* Pictures a tap presses a button with are named (the templates); the leaf suggestions,
+ * which the mode takes, are not. */
+enum layout_side_kind app_side_kind(const struct app_side_item *item)
+{
+	if (!item->thumbnail)
+		return LAYOUT_SIDE_BUTTONS;
+	return item->button != BUTTON_COUNT ? LAYOUT_SIDE_NAMED_CARDS : LAYOUT_SIDE_CARDS;
+}
+
+bool app_side_hit(const struct app *app, double x, double y, struct app_side_item *item)
+{
+	struct app_side_item items[APP_SIDE_MAX];
+	size_t n = app_side_items(app, items), slot;
+
+	if (n == 0 || !layout_side_hit(&app->view, x, y, n, app_side_kind(&items[0]), &slot))
 		return false;
-	*p = list[slot];
+	*item = items[slot];
 	return true;
+}
+
+/* A tap on the side strip: its button pressed as a GPIO one is, or the mode's own tap. */
+int app_side_tap(struct app *app, const struct app_side_item *item, uint64_t time_us)
+{
+	const struct app_mode_ops *m = app_mode_ops(app->mode);
+
+	if (item->button != BUTTON_COUNT)
+		return app_press_button(app, item->button, time_us);
+	return m->side_tap ? m->side_tap(app, item, time_us) : 0;
 }

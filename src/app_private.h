@@ -33,12 +33,27 @@ int app_redo(struct app *app);
 /* app_modes.c */
 int app_push_edit(struct app *app, enum doc_op_kind kind, int branch, int pattern,
 		  uint64_t time_us);
-void app_clear_suggestions(struct app *app);
-int app_update_suggestions(struct app *app, int b);
 int app_refresh_mode_state(struct app *app);
 int app_mode_stroke(struct app *app, double len, bool *taken);
 int app_set_mode(struct app *app, enum app_mode mode, uint64_t time_us);
-bool app_thumbnail_hit(const struct app *app, double x, double y, enum arrange_pattern *p);
+struct app_side_item;
+int app_side_tap(struct app *app, const struct app_side_item *item, uint64_t time_us);
+bool app_has_child_branch(const struct tree *t, int b);
+bool app_has_leaf(const struct tree *t, int b);
+/* The branch shown within `within` metres of view-space point p, or -1. */
+int app_branch_near(const struct app *app, struct vec3 p, double within);
+/* Point i of the stroke under the pen, in view space. */
+struct vec3 app_stroke_point(const struct app *app, size_t i);
+
+/* app_mode_leaf.c */
+void app_clear_suggestions(struct app *app);
+int app_update_suggestions(struct app *app, int b);
+
+/* app_mode_new.c: the templates' thumbnails, made once. 0 or -ENOMEM. */
+int app_templates_build(struct app *app);
+
+/* app_generate.c: the season, template and parameter buttons. */
+int app_press_functional(struct app *app, enum button b, uint64_t time_us);
 
 /* app_view.c */
 void app_camera_store(struct app *app, struct camera c);

@@ -3,6 +3,7 @@
  * into 3D, and what on-screen control the pen lands on. */
 #include <math.h>
 
+#include "app_mode.h"
 #include "app_private.h"
 #include "layout.h"
 #include "sketch_view.h"
@@ -25,11 +26,12 @@ void app_camera_follow_tree(struct app *app)
 	}
 }
 
-/* The on-screen button at (x, y): the bar, the front view button of a 3D tree and, in
- * propagate mode, the two patterns. */
+/* The on-screen button at (x, y): the bar, the front view button of a 3D tree and what
+ * the side strip holds as buttons (the propagation patterns, the templates, the parameter
+ * buttons); they press as the GPIO ones do, down on the tip and up on its lift. */
 bool app_ui_hit(const struct app *app, double x, double y, enum button *button)
 {
-	size_t slot;
+	struct app_side_item item;
 
 	if (layout_hit(&app->view, x, y, button))
 		return true;
@@ -37,8 +39,8 @@ bool app_ui_hit(const struct app *app, double x, double y, enum button *button)
 		*button = BUTTON_VIEW;
 		return true;
 	}
-	if (app->mode == APP_MODE_PROPAGATE && layout_side_hit(&app->view, x, y, 2, false, &slot)) {
-		*button = slot == 0 ? BUTTON_FIXED_COUNT : BUTTON_FIXED_SIZE;
+	if (app_side_hit(app, x, y, &item) && item.button != BUTTON_COUNT) {
+		*button = item.button;
 		return true;
 	}
 	return false;
@@ -47,11 +49,10 @@ bool app_ui_hit(const struct app *app, double x, double y, enum button *button)
 bool app_would_orbit(const struct app *app, double x, double y)
 {
 	enum button hit;
-
-	enum arrange_pattern p;
+	struct app_side_item item;
 
 	if (!app->tree.lifted || app->pen.tool != EVENT_TOOL_PEN || app_ui_hit(app, x, y, &hit) ||
-	    app_thumbnail_hit(app, x, y, &p))
+	    app_side_hit(app, x, y, &item))
 		return false;
 	return !sketch_view_near(&app->tree, app->camera, view_to_world(&app->view, x, y),
 				 APP_ORBIT_CLEARANCE_M);

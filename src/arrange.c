@@ -589,6 +589,8 @@ int arrange_preview(const struct tree *t, int b, enum arrange_pattern p, struct 
 	if (ret < 0)
 		return ret;
 	out->lifted = t->lifted;
+	out->sides = t->sides;
+	out->season = t->season;
 	for (size_t i = 0; i < t->nleaves; i++) {
 		const struct leaf *l = &t->leaves[i];
 		struct leaf *c;

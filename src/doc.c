@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 #include "doc.h"
+#include "gen.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -14,8 +15,33 @@ void doc_init(struct doc *d, uint64_t seed)
 void doc_op_finish(struct doc_op *op)
 {
 	free(op->points);
+	free(op->params);
 	op->points = NULL;
 	op->npoints = 0;
+	op->params = NULL;
+}
+
+int doc_op_copy(struct doc_op *dst, const struct doc_op *src)
+{
+	*dst = *src;
+	dst->points = NULL;
+	dst->params = NULL;
+	if (src->npoints) {
+		dst->points = malloc(src->npoints * sizeof(*dst->points));
+		if (!dst->points)
+			goto fail;
+		memcpy(dst->points, src->points, src->npoints * sizeof(*dst->points));
+	}
+	if (src->params) {
+		dst->params = malloc(sizeof(*dst->params));
+		if (!dst->params)
+			goto fail;
+		memcpy(dst->params, src->params, sizeof(*dst->params));
+	}
+	return 0;
+fail:
+	doc_op_finish(dst);
+	return -ENOMEM;
 }
 
 void doc_finish(struct doc *d)
@@ -26,12 +52,23 @@ void doc_finish(struct doc *d)
 	doc_init(d, d->seed);
 }
 
+size_t doc_op_weight(const struct doc_op *op)
+{
+	size_t n = op->npoints;
+
+	/* a generated tree costs what it makes: a hostile drawing of thousands of trees must
+	 * not keep --load busy for an hour */
+	if (op->params)
+		n += gen_count_branches(op->params) + gen_count_leaves(op->params);
+	return n;
+}
+
 size_t doc_total_points(const struct doc *d)
 {
 	size_t n = 0;
 
 	for (size_t i = 0; i < d->nops; i++)
-		n += d->ops[i].npoints;
+		n += doc_op_weight(&d->ops[i]);
 	return n;
 }
 
@@ -40,9 +77,9 @@ int doc_push(struct doc *d, struct doc_op *op)
 	size_t kept = 0;
 
 	for (size_t i = 0; i < d->cursor; i++)
-		kept += d->ops[i].npoints;
+		kept += doc_op_weight(&d->ops[i]);
 	if (d->cursor >= DOC_MAX_OPS || op->npoints > DOC_MAX_STROKE_POINTS ||
-	    kept + op->npoints > DOC_MAX_POINTS)
+	    kept + doc_op_weight(op) > DOC_MAX_POINTS)
 		return -ENOSPC;
 	/* A new edit after undo forgets the undone ones, as every editor does. */
 	for (size_t i = d->cursor; i < d->nops; i++)
@@ -62,6 +99,7 @@ int doc_push(struct doc *d, struct doc_op *op)
 	d->cursor = d->nops;
 	op->points = NULL;
 	op->npoints = 0;
+	op->params = NULL;
 	return 0;
 }
 

@@ -10,6 +10,8 @@
 #include "error.h"
 #include "event.h"
 
+struct gen_params;
+
 /*
  * The drawing as inputs, not polygons: the random seed and the edit history (ops).
  * The tree is what you get by applying ops[0..cursor) in order from an empty canvas;
@@ -26,6 +28,11 @@ enum doc_op_kind {
 	DOC_OP_ARRANGE,      /* leaf mode: leaf arrangement `pattern` (enum arrange_pattern) */
 	DOC_OP_PROPAGATE,    /* propagate mode: `branch`'s children everywhere, `pattern`
 			      * (enum propagate_pattern) */
+	/* Functional trees (version 5, seed 001): the canvas becomes the tree `params` (owned)
+	 * give with generator seed `seed`: a template of the New strip, --generate, or one of
+	 * the parameter buttons on it. */
+	DOC_OP_GENERATE,
+	DOC_OP_SEASON,       /* the season button: `pattern` is the season (enum season) */
 };
 
 /* Stored as float so that what is written is exactly what is replayed. */
@@ -44,7 +51,9 @@ struct doc_op {
 	struct camera camera; /* strokes: the camera they were drawn in (the front view
 			       * before version 3) */
 	int branch;           /* editing ops: the branch they work on */
-	int pattern;          /* arrange, propagate: which pattern */
+	int pattern;          /* arrange, propagate: which pattern; season: the season */
+	struct gen_params *params; /* generate: the tree's parameters (owned) */
+	uint64_t seed;        /* generate: the generator's seed */
 };
 
 struct doc {
@@ -56,9 +65,9 @@ struct doc {
 };
 
 /* 2 added the lift op, 3 the camera (of strokes drawn on a turned 3D tree, and the
- * view when saved), 4 the editing ops (clone, arrange, propagate); older files read as
- * before. */
-#define DOC_FORMAT_VERSION 4
+ * view when saved), 4 the editing ops (clone, arrange, propagate), 5 the generated trees
+ * and the season; older files read as before. */
+#define DOC_FORMAT_VERSION 5
 
 /*
  * Limits on a drawing, far beyond what a visitor draws in a day, so that a damaged or
@@ -67,18 +76,26 @@ struct doc {
  */
 #define DOC_MAX_OPS 20000u
 #define DOC_MAX_STROKE_POINTS 100000u
-#define DOC_MAX_POINTS 4000000u    /* in all strokes together */
+#define DOC_MAX_POINTS 4000000u    /* in all strokes together, generated elements counted
+				    * as points (doc_op_weight) */
 #define DOC_MAX_COORD_M 1000.0f    /* |x|, |y| on the sketch plane */
 #define DOC_MAX_FILE_BYTES (256u << 20)
 
 void doc_init(struct doc *d, uint64_t seed);
 void doc_finish(struct doc *d);
 void doc_op_finish(struct doc_op *op);
-/* Appends op at the cursor (dropping redo ops) and takes ownership of its points.
+/* dst becomes a copy of src with its own points and params. 0 or -ENOMEM (dst then holds
+ * nothing to free). */
+int doc_op_copy(struct doc_op *dst, const struct doc_op *src);
+/* Appends op at the cursor (dropping redo ops) and takes ownership of its points and
+ * params.
  * Returns 0, -ENOMEM, or -ENOSPC when the op would take the drawing past a DOC_MAX_ limit
  * (op is left to the caller then). */
 int doc_push(struct doc *d, struct doc_op *op);
-/* Points in ops[0..nops). */
+/* What an op counts towards DOC_MAX_POINTS: a stroke its points, a generated tree its
+ * branches and leaves (gen_count_branches + gen_count_leaves). */
+size_t doc_op_weight(const struct doc_op *op);
+/* The weight of ops[0..nops). */
 size_t doc_total_points(const struct doc *d);
 bool doc_can_undo(const struct doc *d);
 bool doc_can_redo(const struct doc *d);

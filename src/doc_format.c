@@ -10,6 +10,7 @@
 
 #include "arrange.h"
 #include "doc.h"
+#include "gen.h"
 #include "propagate.h"
 #include "tree.h"
 
@@ -69,6 +70,17 @@ int doc_serialize(const struct doc *d, const struct tree *t, struct buf *out)
 		case DOC_OP_LIFT:
 			buf_printf(out, "lift %llu\n", (unsigned long long)op->time_us);
 			break;
+		case DOC_OP_GENERATE:
+			buf_printf(out, "generate %llu %d %llu ", (unsigned long long)op->time_us,
+				   GEN_VERSION, (unsigned long long)op->seed);
+			if (op->params && gen_write(op->params, out) < 0)
+				return -ENOMEM;
+			buf_printf(out, "\n");
+			break;
+		case DOC_OP_SEASON:
+			buf_printf(out, "season %llu %s\n", (unsigned long long)op->time_us,
+				   season_name((enum season)op->pattern));
+			break;
 		case DOC_OP_CLONE_ADD:
 		case DOC_OP_CLONE_REMOVE:
 			buf_printf(out, "%s %llu %d\n", edit_keywords[op->kind],
@@ -85,16 +97,21 @@ int doc_serialize(const struct doc *d, const struct tree *t, struct buf *out)
 		}
 	}
 	if (t) {
+		/* generated elements are their generate op's: the drawing stays parameters */
 		buf_printf(out, "tree %zu %zu\n", t->nbranches, t->nleaves);
 		for (size_t i = 0; i < t->nbranches; i++) {
 			const struct branch *b = &t->branches[i];
 
+			if (b->origin == ORIGIN_GENERATE)
+				continue;
 			buf_printf(out, "branch %d %d %d %s %zu\n", b->id, b->parent, b->generation,
 				   origin_name(b->origin), b->npoints);
 		}
 		for (size_t i = 0; i < t->nleaves; i++) {
 			const struct leaf *l = &t->leaves[i];
 
+			if (l->origin == ORIGIN_GENERATE)
+				continue;
 			buf_printf(out, "leaf %d %d %s %zu\n", l->id, l->branch, origin_name(l->origin),
 				   l->npoints);
 		}
@@ -148,6 +165,11 @@ static int reader_next(struct reader *r)
 				break;
 			if (r->nfields == 0 && *s == '#')
 				break;
+			/* a generated tree's parameters are the rest of its line, as YAML */
+			if (r->nfields == 4 && !strcmp(r->fields[0], "generate")) {
+				r->fields[r->nfields++] = s;
+				break;
+			}
 			if (r->nfields == MAX_FIELDS)
 				return error_at(r->err, -EINVAL, r->name, r->line, "too many fields");
 			r->fields[r->nfields++] = s;
@@ -299,6 +321,54 @@ static int parse_edit(struct reader *r, struct doc_op *op)
 	return 0;
 }
 
+/* generate T GENERATOR SEED {PARAMETERS}, season T NAME (version 5) */
+static int parse_functional(struct reader *r, struct doc_op *op)
+{
+	uint64_t v;
+	int ret;
+
+	if (op->kind == DOC_OP_SEASON) {
+		enum season season;
+
+		if ((ret = expect_fields(r, 3, "season")) < 0 ||
+		    (ret = parse_u64(r, r->fields[1], UINT64_MAX, &op->time_us, "time")) < 0)
+			return ret;
+		if (!season_from_name(r->fields[2], &season))
+			return error_at(r->err, -EINVAL, r->name, r->line,
+					"unknown season \"%s\" (spring, summer, autumn, winter)",
+					r->fields[2]);
+		op->pattern = (int)season;
+		return 0;
+	}
+	if ((ret = expect_fields(r, 5, "generate (time, generator, seed, parameters)")) < 0 ||
+	    (ret = parse_u64(r, r->fields[1], UINT64_MAX, &op->time_us, "time")) < 0 ||
+	    (ret = parse_u64(r, r->fields[2], UINT32_MAX, &v, "generator version")) < 0 ||
+	    (ret = parse_u64(r, r->fields[3], UINT64_MAX, &op->seed, "seed")) < 0)
+		return ret;
+	if (v < 1 || v > GEN_VERSION)
+		return error_at(r->err, -EINVAL, r->name, r->line,
+				"generator version %llu is not supported (this edaha has 1 to %d)",
+				(unsigned long long)v, GEN_VERSION);
+	op->params = malloc(sizeof(*op->params));
+	if (!op->params)
+		return error_at(r->err, -ENOMEM, r->name, r->line, "out of memory");
+	/* the parameters are YAML on this one line: their errors name it */
+	return gen_read(r->fields[4], strlen(r->fields[4]), r->name, r->line - 1, op->params, r->err);
+}
+
+static bool functional_keyword(const char *kw, uint64_t version, enum doc_op_kind *kind)
+{
+	if (version < 5)
+		return false;
+	if (!strcmp(kw, "generate"))
+		*kind = DOC_OP_GENERATE;
+	else if (!strcmp(kw, "season"))
+		*kind = DOC_OP_SEASON;
+	else
+		return false;
+	return true;
+}
+
 static bool edit_keyword(const char *kw, uint64_t version, enum doc_op_kind *kind)
 {
 	if (version < 4)
@@ -320,7 +390,7 @@ static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 	while ((ret = reader_next(r)) > 0) {
 		const char *kw = r->fields[0];
 		struct doc_op op = { 0 };
-		enum doc_op_kind edit;
+		enum doc_op_kind edit, functional;
 
 		if (strcmp(kw, "end") == 0) {
 			if ((ret = expect_fields(r, 1, "end")) < 0)
@@ -364,7 +434,8 @@ static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 				return ret;
 			have_history = true;
 		} else if (strcmp(kw, "stroke") == 0 || strcmp(kw, "new") == 0 ||
-			   (version >= 2 && strcmp(kw, "lift") == 0) || edit_keyword(kw, version, &edit)) {
+			   (version >= 2 && strcmp(kw, "lift") == 0) || edit_keyword(kw, version, &edit) ||
+			   functional_keyword(kw, version, &functional)) {
 			if (!have_history)
 				return error_at(r->err, -EINVAL, r->name, r->line,
 						"\"%s\" before the history line", kw);
@@ -375,6 +446,9 @@ static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 			if (edit_keyword(kw, version, &edit)) {
 				op.kind = edit;
 				ret = parse_edit(r, &op);
+			} else if (functional_keyword(kw, version, &functional)) {
+				op.kind = functional;
+				ret = parse_functional(r, &op);
 			} else if (kw[0] == 's') {
 				op.kind = DOC_OP_STROKE;
 				ret = parse_stroke(r, &op, version);
@@ -389,7 +463,8 @@ static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 				ret = doc_push(d, &op);
 				if (ret == -ENOSPC)
 					ret = error_at(r->err, -EINVAL, r->name, r->line,
-						       "the drawing has more than %u points in all",
+						       "the drawing has more than %u points in all "
+						       "(a generated tree's branches and leaves count as points)",
 						       DOC_MAX_POINTS);
 				else if (ret < 0)
 					error_at(r->err, ret, r->name, r->line, "out of memory");

@@ -35,6 +35,22 @@ static const char *const button_names[BUTTON_COUNT] = {
 	[BUTTON_FIXED_COUNT] = "fixed-count",
 	[BUTTON_FIXED_SIZE] = "fixed-size",
 	[BUTTON_VIEW] = "view",
+	[BUTTON_SEASON] = "season",
+	[BUTTON_TPL_BLANK] = "tpl-blank",
+	[BUTTON_TPL_CHERRY] = "tpl-cherry",
+	[BUTTON_TPL_ZELKOVA] = "tpl-zelkova",
+	[BUTTON_TPL_HEDGE] = "tpl-hedge",
+	[BUTTON_TPL_BALL] = "tpl-ball",
+	[BUTTON_TPL_CONE] = "tpl-cone",
+	[BUTTON_TPL_PALM] = "tpl-palm",
+	[BUTTON_GEN_MORE] = "gen-more",
+	[BUTTON_GEN_FEWER] = "gen-fewer",
+	[BUTTON_GEN_WIDER] = "gen-wider",
+	[BUTTON_GEN_NARROWER] = "gen-narrower",
+	[BUTTON_GEN_TALLER] = "gen-taller",
+	[BUTTON_GEN_SHORTER] = "gen-shorter",
+	[BUTTON_GEN_LEAFIER] = "gen-leafier",
+	[BUTTON_GEN_BARER] = "gen-barer",
 };
 
 #define N(a) (sizeof(a) / sizeof((a)[0]))

@@ -41,6 +41,24 @@ enum button {
 	BUTTON_FIXED_COUNT, /* propagation pattern: same number of children */
 	BUTTON_FIXED_SIZE,  /* propagation pattern: same size and spacing */
 	BUTTON_VIEW,        /* a turned 3D tree back to the front view */
+	/* Functional trees (seed 001): the season, the New strip's templates and the
+	 * parameter buttons of a generated tree (docs/functional-trees.md). */
+	BUTTON_SEASON,
+	BUTTON_TPL_BLANK,
+	BUTTON_TPL_CHERRY,
+	BUTTON_TPL_ZELKOVA,
+	BUTTON_TPL_HEDGE,
+	BUTTON_TPL_BALL,
+	BUTTON_TPL_CONE,
+	BUTTON_TPL_PALM,
+	BUTTON_GEN_MORE,
+	BUTTON_GEN_FEWER,
+	BUTTON_GEN_WIDER,
+	BUTTON_GEN_NARROWER,
+	BUTTON_GEN_TALLER,
+	BUTTON_GEN_SHORTER,
+	BUTTON_GEN_LEAFIER,
+	BUTTON_GEN_BARER,
 	BUTTON_COUNT
 };
 

@@ -9,12 +9,25 @@
  * Exporters append to `out` in memory; platform/ puts the bytes into files. All return 0
  * or a negative errno (-ENOMEM; -EFBIG past glTF's 4 GiB; -EINVAL for a bad MTL name) and
  * leave `out` as it was on failure. Same input, same bytes.
+ *
+ * The meshes are m, made from tree t; mk says where each of t's leaves' part of m's leaves
+ * begins (the app keeps it with its mesh, tree_mesh_build_marked), NULL or unknown when
+ * there is none. t's season is what the leaves show (season.h): in summer every leaf is the
+ * one green and the files are what they were before seasons, byte for byte (the marks are
+ * not looked at); in spring and autumn each leaf takes its palette entry
+ * (season_leaf_color), all leaves the palette's first entry where mk does not describe m;
+ * in winter there are no leaves in the files at all. The bark is the same in every season.
  */
 
-/* glTF 2.0 binary: y up, metres, normals, "bark" and double-sided "leaves" materials. */
-int export_glb(const struct tree_mesh *m, struct buf *out);
-/* Wavefront OBJ with its MTL; the OBJ refers to the MTL as mtl_name (e.g. "model.mtl"). */
-int export_obj(const struct tree_mesh *m, const char *mtl_name, struct buf *obj, struct buf *mtl);
+/* glTF 2.0 binary: y up, metres, normals, "bark" and double-sided leaves materials; in
+ * spring and autumn the leaves' colours are their vertices' COLOR_0 (export_gltf.c). */
+int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
+	       struct buf *out);
+/* Wavefront OBJ with its MTL; the OBJ refers to the MTL as mtl_name (e.g. "model.mtl").
+ * In spring and autumn the leaves' faces are grouped by colour, one material each
+ * ("leaves-autumn-3": palette entry 3), and the MTL has the materials used. */
+int export_obj(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
+	       const char *mtl_name, struct buf *obj, struct buf *mtl);
 /* Renames the MTL an OBJ made by export_obj refers to (its mtllib line), for an OBJ built
  * before its file's name was known. 0, -EINVAL (no mtllib line, a bad name) or -ENOMEM
  * (obj unchanged then). */

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 #include "export.h"
+#include "export_leaves.h"
 #include "numfmt.h"
 
 #include <errno.h>
@@ -17,6 +18,7 @@
 #define GLB_HEADER_LEN 12u
 #define GLB_CHUNK_HEADER_LEN 8u
 
+#define GL_UNSIGNED_BYTE 5121
 #define GL_FLOAT 5126
 #define GL_UNSIGNED_INT 5125
 #define GL_TRIANGLES 4
@@ -25,6 +27,28 @@
 
 static const double bark_color[4] = { MATERIAL_BARK_RGB, 1.0 };
 static const double leaves_color[4] = { MATERIAL_LEAVES_RGB, 1.0 };
+/* glTF multiplies COLOR_0 by the base colour: white leaves it the leaf's own colour. */
+static const double white[4] = { 1.0, 1.0, 1.0, 1.0 };
+
+/*
+ * Spring's and autumn's leaves: each leaf its own colour, given as a COLOR_0 vertex
+ * attribute on the one leaves primitive, rather than one primitive a palette colour:
+ *
+ * - The leaves' POSITION, NORMAL and indices stay byte for byte what summer has (one
+ *   primitive, one draw), only COLOR_0 is added. Primitives a colour would either reorder
+ *   the leaves' vertices and indices, or share the vertices between up to 6 primitives,
+ *   which importers that copy each primitive's whole accessors (Debian's assimp 5.2) then
+ *   hold 6 times over.
+ * - The Khronos validator takes it with no error or warning (validate_samples.sh and
+ *   seasons.sh check), nor info or hint; and viewers show it: three.js's GLTFLoader turns
+ *   on vertexColors for a primitive with COLOR_0, Blender's importer multiplies COLOR_0
+ *   into the material's Base Color (a Color Attribute node).
+ * - VEC4 normalized unsigned bytes: 4 bytes a vertex, a quarter of floats (a cherry leaf
+ *   has 12 vertices: 30,000 leaves take 1.4 MB), what Blender keeps anyway (byte colours).
+ *   Alpha is written, 1: given RGB floats, assimp 5.2 makes it 0. A byte is the palette's
+ *   value to the nearest 1/255; entries differ by 0.02 or more in some channel, so each
+ *   colour still says which entry its leaf has.
+ */
 
 static struct json_object *jint(size_t v)
 {
@@ -54,22 +78,28 @@ static struct json_object *jvec(const double *v, size_t n)
 	return arr;
 }
 
+enum glb_data {
+	GLB_FLOATS,
+	GLB_U32,
+	GLB_LEAF_RGBA, /* data is a struct export_leaves: each vertex its leaf's colour */
+};
+
 /* What goes into the BIN chunk, in order. */
 struct glb_view {
-	const void *data; /* floats or uint32_t, 4 bytes each */
-	size_t count;     /* 4-byte elements */
-	bool is_float;
+	const void *data;
+	size_t count; /* 4-byte elements */
+	enum glb_data kind;
 };
 
 struct glb {
 	struct json_object *root;
-	struct glb_view views[6];
+	struct glb_view views[7]; /* bark: 3, leaves: 3 or 4 */
 	size_t nviews;
 	size_t bin_len;
 };
 
 static struct json_object *glb_add_view(struct glb *g, struct json_object *views, const void *data,
-					size_t count, bool is_float, int target)
+					size_t count, enum glb_data kind, int target)
 {
 	struct json_object *v = json_object_new_object();
 	size_t len = 4 * count;
@@ -78,7 +108,7 @@ static struct json_object *glb_add_view(struct glb *g, struct json_object *views
 	v = json_out_set(v, "byteOffset", jint(g->bin_len));
 	v = json_out_set(v, "byteLength", jint(len));
 	v = json_out_set(v, "target", jint((size_t)target));
-	g->views[g->nviews++] = (struct glb_view){ data, count, is_float };
+	g->views[g->nviews++] = (struct glb_view){ data, count, kind };
 	/* Every element is 4 bytes, so every view stays 4-byte aligned. */
 	g->bin_len += len;
 	return json_out_push(views, v);
@@ -134,8 +164,20 @@ static struct json_object *glb_material(const char *name, const double color[4],
 	return mat;
 }
 
+/* The leaves' material: summer's green as before seasons, else white under COLOR_0. */
+static struct json_object *glb_leaves_material(enum export_look how, enum season s)
+{
+	char name[32];
+
+	if (how == EXPORT_LEAVES_GREEN)
+		return glb_material("leaves", leaves_color, 0.8, true);
+	snprintf(name, sizeof(name), "leaves-%s", season_name(s));
+	return glb_material(name, white, 0.8, true);
+}
+
 /* Builds the JSON document and the list of BIN views. */
-static int glb_build_json(struct glb *g, const struct tree_mesh *tm)
+static int glb_build_json(struct glb *g, const struct tree_mesh *tm, enum export_look how,
+			  enum season season, const struct export_leaves *el)
 {
 	const struct {
 		const struct mesh *mesh;
@@ -159,39 +201,55 @@ static int glb_build_json(struct glb *g, const struct tree_mesh *tm)
 	for (size_t i = 0; i < sizeof(prims) / sizeof(prims[0]); i++) {
 		const struct mesh *m = prims[i].mesh;
 		const char *name = prims[i].name;
-		size_t first = g->nviews;
+		bool leaves = i == 1, colored = leaves && how == EXPORT_LEAVES_COLORED;
+		size_t first = g->nviews, idx = first + (colored ? 3 : 2);
 		struct json_object *prim, *attrs, *pos;
 
 		/* An empty primitive is invalid glTF: leave it out. */
-		if (m->nindices < 3 || m->nvertices == 0)
+		if (m->nindices < 3 || m->nvertices == 0 || (leaves && how == EXPORT_LEAVES_NONE))
 			continue;
 
+		/* Accessors and bufferViews are numbered alike: POSITION, NORMAL, COLOR_0 (the
+		 * leaves in spring and autumn only), indices. */
 		pos = glb_accessor(name, "POSITION", first, GL_FLOAT, m->nvertices, "VEC3");
 		accessors = json_out_push(accessors, glb_bounds(pos, m));
 		accessors = json_out_push(accessors, glb_accessor(name, "NORMAL", first + 1, GL_FLOAT,
 							  m->nvertices, "VEC3"));
-		accessors = json_out_push(accessors, glb_accessor(name, "indices", first + 2,
+		views = glb_add_view(g, views, m->positions, 3 * m->nvertices, GLB_FLOATS,
+				     GL_ARRAY_BUFFER);
+		views = glb_add_view(g, views, m->normals, 3 * m->nvertices, GLB_FLOATS,
+				     GL_ARRAY_BUFFER);
+		if (colored) {
+			struct json_object *col = glb_accessor(name, "COLOR_0", first + 2,
+							       GL_UNSIGNED_BYTE, m->nvertices, "VEC4");
+
+			col = json_out_set(col, "normalized", json_object_new_boolean(1));
+			accessors = json_out_push(accessors, col);
+			views = glb_add_view(g, views, el, m->nvertices, GLB_LEAF_RGBA,
+					     GL_ARRAY_BUFFER);
+		}
+		accessors = json_out_push(accessors, glb_accessor(name, "indices", idx,
 							  GL_UNSIGNED_INT, m->nindices, "SCALAR"));
-		views = glb_add_view(g, views, m->positions, 3 * m->nvertices, true, GL_ARRAY_BUFFER);
-		views = glb_add_view(g, views, m->normals, 3 * m->nvertices, true, GL_ARRAY_BUFFER);
-		views = glb_add_view(g, views, m->indices, m->nindices, false,
+		views = glb_add_view(g, views, m->indices, m->nindices, GLB_U32,
 				     GL_ELEMENT_ARRAY_BUFFER);
 
-		/* Accessors and bufferViews are numbered alike: three per primitive. */
 		attrs = json_object_new_object();
 		attrs = json_out_set(attrs, "POSITION", jint(first));
 		attrs = json_out_set(attrs, "NORMAL", jint(first + 1));
+		if (colored)
+			attrs = json_out_set(attrs, "COLOR_0", jint(first + 2));
 		prim = json_object_new_object();
 		prim = json_out_set(prim, "attributes", attrs);
-		prim = json_out_set(prim, "indices", jint(first + 2));
+		prim = json_out_set(prim, "indices", jint(idx));
 		prim = json_out_set(prim, "material", jint(nprims));
 		prim = json_out_set(prim, "mode", jint(GL_TRIANGLES));
 		primitives = json_out_push(primitives, prim);
 
-		if (i == 0)
+		if (!leaves)
 			materials = json_out_push(materials, glb_material("bark", bark_color, 0.9, false));
 		else
-			materials = json_out_push(materials, glb_material("leaves", leaves_color, 0.8, true));
+			materials = json_out_push(materials,
+						  glb_leaves_material(how, season));
 		nprims++;
 	}
 
@@ -227,6 +285,37 @@ static int glb_build_json(struct glb *g, const struct tree_mesh *tm)
 	return root ? 0 : -ENOMEM;
 }
 
+/* A colour channel as a normalized unsigned byte: the nearest of 0/255 .. 255/255 (in
+ * double: in float, 0.9f * 255 rounds up to 229.5 and so to 230, not 229). */
+static unsigned char unorm8(float c)
+{
+	if (!(c > 0.0f))
+		return 0;
+	if (c >= 1.0f)
+		return 255;
+	return (unsigned char)((double)c * 255.0 + 0.5);
+}
+
+/* Each vertex of a leaf its palette entry's RGBA; the parts cover the mesh, in order. */
+static void glb_write_leaf_rgba(unsigned char *p, const struct export_leaves *el)
+{
+	unsigned char rgba[SEASON_MAX_COLORS][4];
+	size_t n = export_leaves_nparts(el);
+
+	for (size_t k = 0; k < el->ncolors && k < SEASON_MAX_COLORS; k++) {
+		rgba[k][0] = unorm8(el->palette[k].r);
+		rgba[k][1] = unorm8(el->palette[k].g);
+		rgba[k][2] = unorm8(el->palette[k].b);
+		rgba[k][3] = 255;
+	}
+	for (size_t i = 0; i < n; i++) {
+		struct export_leaf_part part = export_leaves_part(el, i);
+
+		for (size_t v = part.first_vertex; v < part.end_vertex; v++)
+			memcpy(p + 4 * v, rgba[part.color], 4);
+	}
+}
+
 /* Little-endian, whatever the host: reserved once, then written in place. */
 static int glb_append_view(struct buf *out, const struct glb_view *v)
 {
@@ -236,10 +325,15 @@ static int glb_append_view(struct buf *out, const struct glb_view *v)
 	if (r < 0)
 		return r;
 	p = out->data + out->len;
+	if (v->kind == GLB_LEAF_RGBA) {
+		glb_write_leaf_rgba(p, v->data);
+		out->len += 4 * v->count;
+		return 0;
+	}
 	for (size_t i = 0; i < v->count; i++, p += 4) {
 		uint32_t u;
 
-		if (v->is_float)
+		if (v->kind == GLB_FLOATS)
 			memcpy(&u, &((const float *)v->data)[i], sizeof(u));
 		else
 			u = ((const uint32_t *)v->data)[i];
@@ -298,16 +392,21 @@ static int glb_write(struct buf *out, const char *json, size_t json_len, const s
 	return append_fill(out, bin_padded - g->bin_len, 0);
 }
 
-int export_glb(const struct tree_mesh *m, struct buf *out)
+int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
+	       struct buf *out)
 {
+	enum export_look how = export_look(t->season);
+	struct export_leaves el;
 	struct glb g;
 	struct buf json;
 	size_t start = out->len;
 	int r;
 
+	if (how == EXPORT_LEAVES_COLORED)
+		export_leaves_init(&el, t, &m->leaves, mk);
 	memset(&g, 0, sizeof(g));
 	buf_init(&json);
-	r = glb_build_json(&g, m);
+	r = glb_build_json(&g, m, how, t->season, how == EXPORT_LEAVES_COLORED ? &el : NULL);
 	if (r < 0)
 		return r;
 	r = json_out_append(g.root, NULL, &json);

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 #include "export.h"
+#include "export_leaves.h"
 #include "numfmt.h"
 
 #include <errno.h>
@@ -9,6 +10,14 @@
 
 static const double bark_color[3] = { MATERIAL_BARK_RGB };
 static const double leaves_color[3] = { MATERIAL_LEAVES_RGB };
+
+#define OBJ_MATERIAL_NAME 32
+
+/* "leaves-autumn-3": the season's palette entry 3, readable in any material list. */
+static void obj_leaves_material_name(char name[OBJ_MATERIAL_NAME], enum season s, size_t k)
+{
+	snprintf(name, OBJ_MATERIAL_NAME, "leaves-%s-%zu", season_name(s), k);
+}
 
 static size_t fmt_u32(char *out, uint32_t v)
 {
@@ -45,10 +54,12 @@ static int obj_vec3s(struct buf *obj, const char *tag, const float *v, size_t n,
 	return 0;
 }
 
-/* "f a//na b//nb c//nc": vertex and normal numbers are 1-based over the whole file. */
-static int obj_faces(struct buf *obj, const struct mesh *m, uint32_t v0, uint32_t n0, bool back)
+/* "f a//na b//nb c//nc" for the triangles of indices [from, to): vertex and normal numbers
+ * are 1-based over the whole file. */
+static int obj_faces(struct buf *obj, const struct mesh *m, size_t from, size_t to, uint32_t v0,
+		     uint32_t n0, bool back)
 {
-	for (size_t t = 0; t + 2 < m->nindices; t += 3) {
+	for (size_t t = from; t + 2 < to; t += 3) {
 		const uint32_t *tri = &m->indices[t];
 		/* A back face runs the other way round. */
 		uint32_t order[3] = { tri[0], back ? tri[2] : tri[1], back ? tri[1] : tri[2] };
@@ -71,7 +82,42 @@ static int obj_faces(struct buf *obj, const struct mesh *m, uint32_t v0, uint32_
 	return 0;
 }
 
-static int obj_write(const struct tree_mesh *tm, const char *mtl_name, struct buf *obj)
+/* Spring's and autumn's leaf faces, front and back, a group a colour, each behind its
+ * material: a few usemtl lines, however many leaves. */
+static int obj_colored_faces(struct buf *obj, const struct export_leaves *el, uint32_t v0,
+			     uint32_t n0)
+{
+	unsigned used = export_leaves_colors_used(el);
+	size_t n = export_leaves_nparts(el);
+	uint32_t n_back = n0 + (uint32_t)el->mesh->nvertices;
+
+	for (size_t k = 0; k < el->ncolors; k++) {
+		char name[OBJ_MATERIAL_NAME];
+		int r;
+
+		if (!(used & 1u << k))
+			continue;
+		obj_leaves_material_name(name, el->tree->season, k);
+		if ((r = buf_printf(obj, "usemtl %s\n", name)) < 0)
+			return r;
+		for (int back = 0; back < 2; back++) {
+			for (size_t i = 0; i < n; i++) {
+				struct export_leaf_part p = export_leaves_part(el, i);
+
+				if (p.color != k)
+					continue;
+				r = obj_faces(obj, el->mesh, p.first_index, p.end_index, v0,
+					      back ? n_back : n0, back);
+				if (r < 0)
+					return r;
+			}
+		}
+	}
+	return 0;
+}
+
+static int obj_write(const struct tree_mesh *tm, enum export_look how,
+		     const struct export_leaves *el, const char *mtl_name, struct buf *obj)
 {
 	uint32_t nv = 0, nn = 0; /* v and vn lines so far */
 	int r;
@@ -86,22 +132,27 @@ static int obj_write(const struct tree_mesh *tm, const char *mtl_name, struct bu
 		if ((r = buf_printf(obj, "o bark\nusemtl bark\n")) < 0 ||
 		    (r = obj_vec3s(obj, "v", m->positions, m->nvertices, 1.0)) < 0 ||
 		    (r = obj_vec3s(obj, "vn", m->normals, m->nvertices, 1.0)) < 0 ||
-		    (r = obj_faces(obj, m, nv + 1, nn + 1, false)) < 0)
+		    (r = obj_faces(obj, m, 0, m->nindices, nv + 1, nn + 1, false)) < 0)
 			return r;
 		nv += (uint32_t)m->nvertices;
 		nn += (uint32_t)m->nvertices;
 	}
 
-	if (tm->leaves.nindices >= 3) {
+	if (tm->leaves.nindices >= 3 && how != EXPORT_LEAVES_NONE) {
 		const struct mesh *m = &tm->leaves;
+		uint32_t n_back = nn + 1 + (uint32_t)m->nvertices;
 
 		/* OBJ has no double-sided materials: the back side is its own faces and normals. */
-		if ((r = buf_printf(obj, "o leaves\nusemtl leaves\n")) < 0 ||
+		if ((r = buf_printf(obj, how == EXPORT_LEAVES_GREEN ? "o leaves\nusemtl leaves\n"
+								 : "o leaves\n")) < 0 ||
 		    (r = obj_vec3s(obj, "v", m->positions, m->nvertices, 1.0)) < 0 ||
 		    (r = obj_vec3s(obj, "vn", m->normals, m->nvertices, 1.0)) < 0 ||
-		    (r = obj_vec3s(obj, "vn", m->normals, m->nvertices, -1.0)) < 0 ||
-		    (r = obj_faces(obj, m, nv + 1, nn + 1, false)) < 0 ||
-		    (r = obj_faces(obj, m, nv + 1, nn + 1 + (uint32_t)m->nvertices, true)) < 0)
+		    (r = obj_vec3s(obj, "vn", m->normals, m->nvertices, -1.0)) < 0)
+			return r;
+		if (how == EXPORT_LEAVES_COLORED)
+			return obj_colored_faces(obj, el, nv + 1, nn + 1);
+		if ((r = obj_faces(obj, m, 0, m->nindices, nv + 1, nn + 1, false)) < 0 ||
+		    (r = obj_faces(obj, m, 0, m->nindices, nv + 1, n_back, true)) < 0)
 			return r;
 	}
 	return 0;
@@ -121,27 +172,60 @@ static int mtl_material(struct buf *mtl, const char *name, const double kd[3])
 			  name, kd[0], kd[1], kd[2]);
 }
 
-int export_obj(const struct tree_mesh *m, const char *mtl_name, struct buf *obj, struct buf *mtl)
+/* The MTL: bark, then the leaves' materials that the OBJ uses (summer's one green always,
+ * as before seasons). */
+static int mtl_write(enum export_look how, const struct export_leaves *el, struct buf *mtl)
+{
+	unsigned used;
+	int r = buf_printf(mtl, "# edaha tree materials\n");
+
+	if (r >= 0)
+		r = mtl_material(mtl, "bark", bark_color);
+	if (r < 0 || how == EXPORT_LEAVES_NONE)
+		return r;
+	if (how == EXPORT_LEAVES_GREEN) {
+		if ((r = buf_printf(mtl, "\n")) < 0)
+			return r;
+		return mtl_material(mtl, "leaves", leaves_color);
+	}
+	used = export_leaves_colors_used(el);
+	for (size_t k = 0; k < el->ncolors && r >= 0; k++) {
+		const double kd[3] = { el->palette[k].r, el->palette[k].g, el->palette[k].b };
+		char name[OBJ_MATERIAL_NAME];
+
+		if (!(used & 1u << k))
+			continue;
+		obj_leaves_material_name(name, el->tree->season, k);
+		if ((r = buf_printf(mtl, "\n")) >= 0)
+			r = mtl_material(mtl, name, kd);
+	}
+	return r;
+}
+
+int export_obj(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
+	       const char *mtl_name, struct buf *obj, struct buf *mtl)
 {
 	size_t obj_start = obj->len, mtl_start = mtl->len;
+	enum export_look how = export_look(t->season);
+	struct export_leaves el;
+	const struct export_leaves *colored;
+	size_t leaf_normals;
 	int r;
 
 	/* The name lands on the mtllib line: one line, not empty. */
 	if (!mtl_name || !*mtl_name || strpbrk(mtl_name, "\r\n"))
 		return -EINVAL;
-	/* 1-based uint32 face numbers, leaves' normals counted twice. */
-	if (m->bark.nvertices + 2 * m->leaves.nvertices >= UINT32_MAX)
+	/* 1-based uint32 face numbers, leaves' normals counted twice (if there are leaves). */
+	leaf_normals = how == EXPORT_LEAVES_NONE ? 0 : 2 * m->leaves.nvertices;
+	if (m->bark.nvertices + leaf_normals >= UINT32_MAX)
 		return -EFBIG;
+	if (how == EXPORT_LEAVES_COLORED)
+		export_leaves_init(&el, t, &m->leaves, mk);
+	colored = how == EXPORT_LEAVES_COLORED ? &el : NULL;
 
-	r = obj_write(m, mtl_name, obj);
+	r = obj_write(m, how, colored, mtl_name, obj);
 	if (r >= 0)
-		r = buf_printf(mtl, "# edaha tree materials\n");
-	if (r >= 0)
-		r = mtl_material(mtl, "bark", bark_color);
-	if (r >= 0)
-		r = buf_printf(mtl, "\n");
-	if (r >= 0)
-		r = mtl_material(mtl, "leaves", leaves_color);
+		r = mtl_write(how, colored, mtl);
 	if (r < 0) {
 		obj->len = obj_start;
 		mtl->len = mtl_start;

@@ -51,6 +51,8 @@ static struct json_object *jbranch(const struct branch *b)
 	o = json_out_set(o, "parent", json_object_new_int(b->parent));
 	o = json_out_set(o, "generation", json_object_new_int(b->generation));
 	o = json_out_set(o, "origin", json_object_new_string(origin_name(b->origin)));
+	if (b->origin == ORIGIN_GENERATE)
+		o = json_out_set(o, "level", json_object_new_int(b->level));
 	o = json_out_set(o, "parent_t", jnum(b->parent_t));
 	o = json_out_set(o, "points", jpoints(b->points, b->npoints));
 	return json_out_set(o, "radii", radii);
@@ -89,6 +91,7 @@ int export_skeleton(const struct tree *t, struct buf *out)
 	root = json_out_set(root, "up", json_object_new_string("y"));
 	root = json_out_set(root, "units", json_object_new_string("m"));
 	root = json_out_set(root, "view", view);
+	root = json_out_set(root, "season", json_object_new_string(season_name(t->season)));
 	root = json_out_set(root, "branches", branches);
 	root = json_out_set(root, "leaves", leaves);
 	if (!root)

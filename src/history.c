@@ -70,6 +70,8 @@ static void record_mark(struct history *h, size_t k, const struct tree *t, const
 		.nleaves = t->nleaves,
 		.rng = *rng,
 		.lifted = t->lifted,
+		.sides = t->sides,
+		.season = t->season,
 		.last_sketched = t->last_sketched,
 		.last_sketched_end_us = t->last_sketched_end_us,
 		.has_profile = t->has_profile,
@@ -195,6 +197,8 @@ const struct history_mark *history_mark(const struct history *h, size_t k)
 void history_mark_restore(const struct history_mark *m, struct tree *t, struct rng *rng)
 {
 	t->lifted = m->lifted;
+	t->sides = m->sides;
+	t->season = m->season;
 	t->last_sketched = m->last_sketched;
 	t->last_sketched_end_us = m->last_sketched_end_us;
 	t->has_profile = m->has_profile;

@@ -41,6 +41,8 @@ struct history_mark {
 	struct rng rng;
 	/* the tree's sketching state (struct tree) */
 	bool lifted;
+	int sides;
+	enum season season;
 	int last_sketched;
 	uint64_t last_sketched_end_us;
 	bool has_profile;

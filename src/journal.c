@@ -91,7 +91,7 @@ static bool fits(const struct doc *d, size_t from, const struct doc *part)
 	size_t points = doc_total_points(part);
 
 	for (size_t i = 0; i < from; i++)
-		points += d->ops[i].npoints;
+		points += doc_op_weight(&d->ops[i]);
 	return from + part->nops <= DOC_MAX_OPS && points <= DOC_MAX_POINTS;
 }
 

@@ -780,6 +780,8 @@ int lift_tree_with(struct tree *t, struct rng *rng, bool merge, enum lift_pick p
 	/* keep what sketching remembers */
 	a.last_sketched = -1;
 	a.lifted = true;
+	a.sides = t->sides;
+	a.season = t->season;
 	a.has_profile = t->has_profile;
 	memcpy(a.profile, t->profile, sizeof(a.profile));
 	tree_finish(t);

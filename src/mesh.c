@@ -136,6 +136,7 @@ struct lod {
 	double sag[MESH_MAX_SIDES + 1];
 	double cs[MESH_MAX_SIDES + 1][MESH_MAX_SIDES], sn[MESH_MAX_SIDES + 1][MESH_MAX_SIDES];
 	double cos_turn, sin_turn; /* of MESH_DROP_TURN_DEG */
+	int fixed; /* every ring's sides (a tree's `sides`), or 0: by radius */
 };
 
 static void lod_init(struct lod *l)
@@ -157,6 +158,8 @@ static int lod_sides(const struct lod *l, double radius)
 	double px = radius * TUBE_PX_PER_M;
 	int s = MESH_MIN_SIDES;
 
+	if (l->fixed)
+		return l->fixed;
 	if (!(px > 0)) /* NaN too */
 		return s;
 	while (s < MESH_MAX_SIDES && px * l->sag[s] > MESH_SIDE_ERROR_PX)
@@ -177,6 +180,14 @@ double mesh_drop_tolerance(double radius)
 	double px = MESH_DROP_ERROR_PX / TUBE_PX_PER_M, rel = MESH_DROP_RADIUS_FRACTION * radius;
 
 	return rel < px ? rel : px;
+}
+
+/* A tree's fixed ring sides within what the tables hold, or 0 (by radius). */
+static int tree_sides(const struct tree *t)
+{
+	if (t->sides <= 0)
+		return 0;
+	return t->sides < MESH_MIN_SIDES ? MESH_MIN_SIDES : t->sides > MESH_MAX_SIDES ? MESH_MAX_SIDES : t->sides;
 }
 
 /* Per-build scratch arrays, grown to the longest polyline seen, reused across elements. */
@@ -1069,6 +1080,7 @@ int tree_mesh_append_marked(struct tree_mesh *tm, const struct tree *t, size_t f
 
 	memset(&sc, 0, sizeof(sc));
 	lod_init(&sc.lod);
+	sc.lod.fixed = tree_sides(t);
 	if (mk) {
 		marks_reserve_first(&mk->bark, &mk->cap_bark);
 		marks_reserve_first(&mk->leaves, &mk->cap_leaves);
@@ -1142,6 +1154,7 @@ int tree_mesh_build_reusing(struct tree_mesh *tm, struct tree_mesh_marks *mk, co
 		return -ENOMEM;
 	memset(&sc, 0, sizeof(sc));
 	lod_init(&sc.lod);
+	sc.lod.fixed = tree_sides(t);
 	marks_reserve_first(&mk->bark, &mk->cap_bark);
 	marks_reserve_first(&mk->leaves, &mk->cap_leaves);
 	mark_start(&mk->bark, &mk->nbark, 0, &tm->bark);

@@ -191,8 +191,8 @@ int tree_mesh_rebuild_from(struct tree_mesh *tm, struct tree_mesh_marks *mk, con
 	struct tree_mesh_marks out_mk;
 	int ret;
 
-	/* the old parts must be known, and ids fit the maps */
-	if (mk->nbark != old->nbranches + 1 || mk->nleaves != old->nleaves + 1 ||
+	/* the old parts must be known, made with the same sides, and ids fit the maps */
+	if (old->sides != t->sides || mk->nbark != old->nbranches + 1 || mk->nleaves != old->nleaves + 1 ||
 	    t->nbranches >= INT32_MAX || old->nbranches >= INT32_MAX || old->nleaves >= INT32_MAX)
 		return tree_mesh_build_marked(tm, t, mk);
 	reuse_branch = malloc((t->nbranches + 1) * sizeof(*reuse_branch));

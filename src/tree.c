@@ -20,6 +20,8 @@ const char *origin_name(enum origin origin)
 		return "merge";
 	case ORIGIN_ARRANGE:
 		return "arrange";
+	case ORIGIN_GENERATE:
+		return "generate";
 	}
 	return "sketch";
 }
@@ -49,6 +51,8 @@ void tree_clear(struct tree *t)
 	t->has_profile = false;
 	memset(t->profile, 0, sizeof(t->profile));
 	t->lifted = false;
+	t->sides = 0;
+	t->season = SEASON_SUMMER;
 }
 
 void tree_finish(struct tree *t)
@@ -181,6 +185,8 @@ int tree_copy(struct tree *dst, const struct tree *src)
 		dst->nleaves++;
 	}
 	dst->lifted = src->lifted;
+	dst->sides = src->sides;
+	dst->season = src->season;
 	dst->last_sketched = src->last_sketched;
 	dst->last_sketched_end_us = src->last_sketched_end_us;
 	dst->has_profile = src->has_profile;

@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "season.h"
 #include "vec.h"
 
 /* How an element came to be; written to skeleton.json as a string. */
@@ -14,6 +15,7 @@ enum origin {
 	ORIGIN_PROPAGATE,
 	ORIGIN_MERGE,
 	ORIGIN_ARRANGE,
+	ORIGIN_GENERATE, /* made by a tree generator from its parameters (seed 001, gen.h) */
 };
 
 const char *origin_name(enum origin origin);
@@ -23,6 +25,8 @@ struct branch {
 	int parent;      /* -1 for the trunk */
 	double parent_t; /* arc-length parameter 0..1 on the parent where it attaches */
 	int generation;  /* 0 for the trunk */
+	int level;       /* a generated branch's level (gen.h: the trunk's is `levels`, tips
+			  * are 1); 0 for every other branch */
 	enum origin origin;
 	struct vec3 *points; /* root first, world metres */
 	double *radii;       /* one per point, metres */
@@ -60,7 +64,12 @@ struct tree {
 	struct leaf *leaves;
 	size_t nleaves, cap_leaves;
 
-	bool lifted; /* the 3D button made it a 3D tree */
+	bool lifted; /* the 3D button made it a 3D tree (or a generator made it, in 3D) */
+	/* What every element's look depends on, beside the elements (undone with them):
+	 * the sides of every ring of bark (a generated tree's `precision`; 0: the mesh's
+	 * level of detail picks them, mesh.h), and the season (season.h). */
+	int sides;
+	enum season season;
 	/* What sketching carries from stroke to stroke; rebuilt with the tree. */
 	int last_sketched;             /* the branch the latest stroke drew, or -1 */
 	uint64_t last_sketched_end_us; /* when that stroke ended */

@@ -121,11 +121,11 @@ static void icon_clone(const struct icon *ic)
 	segment(ic, cx, cy - 0.27, cx, cy + 0.27, LINE, ic->bg);
 }
 
-/* A leaf on a short stalk, its midrib cut out. */
-static void icon_leaf(const struct icon *ic)
+/* A leaf from (ax, ay) to its tip (bx, by), half as wide as `width` at most, widest
+ * towards the stalk, its midrib cut out. */
+static void leaf_shape(const struct icon *ic, double ax, double ay, double bx, double by,
+		       double width)
 {
-	/* tip to tip along the diagonal, widest in the middle */
-	const double ax = -0.62, ay = 0.62, bx = 0.84, by = -0.84;
 	const double len = hypot(bx - ax, by - ay);
 	const double ux = (bx - ax) / len, uy = (by - ay) / len;
 	struct pt outline[2 * 15];
@@ -136,16 +136,32 @@ static void icon_leaf(const struct icon *ic)
 			/* one side tip to tip, the other back */
 			double t = side < 0 ? (double)i / 14.0 : 1.0 - (double)i / 14.0;
 			/* fuller towards the stalk, like a real leaf */
-			double w = 0.5 * sin(VEC_PI * t) * (1.0 - 0.25 * t);
+			double w = width * sin(VEC_PI * t) * (1.0 - 0.25 * t);
 
 			outline[n++] = (struct pt){ ax + ux * len * t - uy * w * side,
 						    ay + uy * len * t + ux * w * side };
 		}
 	}
 	fill(ic, outline, n, ic->ink);
-	segment(ic, -0.92, 0.92, ax, ay, LINE, ic->ink);
 	segment(ic, ax + ux * 0.2, ay + uy * 0.2, ax + ux * len * 0.8, ay + uy * len * 0.8,
 		LINE * 0.55, ic->bg);
+}
+
+/* A leaf on a short stalk. */
+static void icon_leaf(const struct icon *ic)
+{
+	leaf_shape(ic, -0.62, 0.62, 0.84, -0.84, 0.5);
+	segment(ic, -0.92, 0.92, -0.62, 0.62, LINE, ic->ink);
+}
+
+/* A round badge with a plus or a minus cut out: "more of it", "less of it". */
+static void badge(const struct icon *ic, double cx, double cy, bool plus)
+{
+	disc(ic, cx, cy, 0.46, ic->bg);
+	disc(ic, cx, cy, 0.38, ic->ink);
+	segment(ic, cx - 0.21, cy, cx + 0.21, cy, LINE, ic->bg);
+	if (plus)
+		segment(ic, cx, cy - 0.21, cx, cy + 0.21, LINE, ic->bg);
 }
 
 /* Arrows fanning out from one point: "grow more branches like this". */
@@ -267,6 +283,202 @@ static void icon_pattern(const struct icon *ic, bool fixed_size)
 	}
 }
 
+/* A fork of branches, more of them for "more", with its badge. */
+static void icon_branches(const struct icon *ic, bool more)
+{
+	const struct pt trunk[3] = { { -0.3, 0.95 }, { -0.28, 0.3 }, { -0.2, -0.2 } };
+	const struct pt left[3] = { { -0.25, 0.1 }, { -0.62, -0.35 }, { -0.78, -0.85 } };
+	const struct pt right[3] = { { -0.2, -0.2 }, { 0.12, -0.55 }, { 0.34, -0.9 } };
+
+	line(ic, trunk, NPTS(trunk), LINE * 1.3, ic->ink);
+	line(ic, left, NPTS(left), LINE, ic->ink);
+	line(ic, right, NPTS(right), LINE, ic->ink);
+	if (more) {
+		segment(ic, -0.62, -0.35, -0.95, -0.45, LINE * 0.8, ic->ink);
+		segment(ic, -0.2, -0.2, -0.3, -0.8, LINE * 0.8, ic->ink);
+		segment(ic, 0.12, -0.55, 0.5, -0.55, LINE * 0.8, ic->ink);
+	}
+	badge(ic, 0.46, 0.42, more);
+}
+
+/* A round crown centred at (x, cy) on a trunk down to the ground at `foot`. */
+static void small_tree(const struct icon *ic, double x, double cy, double rx, double ry,
+		       double foot)
+{
+	struct pt crown[32];
+
+	segment(ic, x, foot, x, cy, LINE * 1.3, ic->ink);
+	for (int i = 0; i < 32; i++) {
+		double a = 2.0 * VEC_PI * i / 32.0;
+
+		crown[i] = (struct pt){ x + rx * cos(a), cy + ry * sin(a) };
+	}
+	fill(ic, crown, NPTS(crown), ic->ink);
+}
+
+/* A tree with arrows either side: pointing out from a wide crown, in at a narrow one. */
+static void icon_width(const struct icon *ic, bool wider)
+{
+	const double y = -0.2, rx = wider ? 0.5 : 0.24;
+
+	small_tree(ic, 0.0, y, rx, 0.52, 0.95);
+	for (int side = -1; side <= 1; side += 2) {
+		if (wider) {
+			segment(ic, side * (rx + 0.12), y, side * 0.75, y, LINE, ic->ink);
+			arrow_head(ic, side * 1.08, y, side, 0.0, 0.4, 0.3, ic->ink);
+		} else {
+			segment(ic, side * 1.08, y, side * 0.75, y, LINE, ic->ink);
+			arrow_head(ic, side * (rx + 0.1), y, -side, 0.0, 0.4, 0.3, ic->ink);
+		}
+	}
+}
+
+/* A tree with an arrow beside it: up by a tall tree, down by a short one. */
+static void icon_height(const struct icon *ic, bool taller)
+{
+	const double ax = 0.58;
+
+	if (taller) {
+		small_tree(ic, -0.32, -0.36, 0.38, 0.58, 0.95);
+		segment(ic, ax, 0.92, ax, -0.5, LINE, ic->ink);
+		arrow_head(ic, ax, -0.98, 0.0, -1.0, 0.44, 0.32, ic->ink);
+	} else {
+		small_tree(ic, -0.32, 0.3, 0.42, 0.32, 0.95);
+		segment(ic, ax, -0.92, ax, 0.45, LINE, ic->ink);
+		arrow_head(ic, ax, 0.95, 0.0, 1.0, 0.44, 0.32, ic->ink);
+	}
+}
+
+/* A leaf with its badge. */
+static void icon_leaves(const struct icon *ic, bool more)
+{
+	leaf_shape(ic, -0.72, 0.5, 0.62, -0.86, 0.46);
+	segment(ic, -0.95, 0.75, -0.72, 0.5, LINE, ic->ink);
+	badge(ic, 0.46, 0.42, more);
+}
+
+/* A blank sheet and a pencil: "draw your own". */
+static void icon_blank(const struct icon *ic)
+{
+	const struct pt sheet[5] = { { -0.72, -0.86 }, { 0.12, -0.86 }, { 0.56, -0.42 },
+				     { 0.56, 0.86 }, { -0.72, 0.86 } };
+	const struct pt fold[3] = { { 0.12, -0.86 }, { 0.12, -0.42 }, { 0.56, -0.42 } };
+	const struct pt outline[6] = { sheet[0], sheet[1], sheet[2], sheet[3], sheet[4], sheet[0] };
+	/* the pencil along (1, -1), its point at the lower left, on the sheet */
+	const double px = -0.1, py = 0.5, k = 0.7071, len = 1.2, half = 0.15;
+	const double bx = px + k * 0.34, by = py - k * 0.34;
+	const struct pt body[4] = {
+		{ bx + k * half, by + k * half },
+		{ bx + k * len + k * half, by - k * len + k * half },
+		{ bx + k * len - k * half, by - k * len - k * half },
+		{ bx - k * half, by - k * half },
+	};
+	const struct pt tip[3] = { { px, py }, body[0], body[3] };
+	const struct pt drawn[4] = { { -0.5, 0.62 }, { -0.38, 0.4 }, { -0.26, 0.62 }, { -0.14, 0.5 } };
+
+	fill(ic, sheet, NPTS(sheet), ic->bg);
+	fill(ic, fold, NPTS(fold), faded(ic->ink, 0.45f));
+	line(ic, outline, NPTS(outline), LINE * 0.8, ic->ink);
+	line(ic, fold, NPTS(fold), LINE * 0.6, ic->ink);
+	line(ic, drawn, NPTS(drawn), LINE * 0.6, ic->ink);
+	fill(ic, body, NPTS(body), ic->ink);
+	fill(ic, tip, NPTS(tip), faded(ic->ink, 0.55f));
+}
+
+/* Spring: a cherry blossom, five notched petals round a cut-out heart. */
+static void icon_blossom(const struct icon *ic)
+{
+	for (int k = 0; k < 5; k++) {
+		double a = -0.5 * VEC_PI + 2.0 * VEC_PI * k / 5.0, c = cos(a), s = sin(a);
+		/* the notch: a small wedge of the background at the petal's outer end */
+		const struct pt notch[3] = { { 0.92 * c, 0.92 * s },
+					     { 0.7 * c - 0.12 * s, 0.7 * s + 0.12 * c },
+					     { 0.7 * c + 0.12 * s, 0.7 * s - 0.12 * c } };
+
+		disc(ic, 0.48 * c, 0.48 * s, 0.36, ic->ink);
+		fill(ic, notch, NPTS(notch), ic->bg);
+	}
+	disc(ic, 0.0, 0.0, 0.2, ic->bg);
+	disc(ic, 0.0, 0.0, 0.09, ic->ink);
+}
+
+/* Summer: the sun. */
+static void icon_sun(const struct icon *ic)
+{
+	disc(ic, 0.0, 0.0, 0.44, ic->ink);
+	for (int k = 0; k < 8; k++) {
+		double a = 2.0 * VEC_PI * k / 8.0;
+
+		segment(ic, 0.64 * cos(a), 0.64 * sin(a), 0.9 * cos(a), 0.9 * sin(a), LINE, ic->ink);
+	}
+}
+
+/* Autumn: a maple leaf, five pointed lobes (each convex) on a stalk. */
+static void icon_maple(const struct icon *ic)
+{
+	static const struct {
+		double deg, len, width;
+	} lobes[5] = {
+		{ -90.0, 0.95, 0.3 },  { -145.0, 0.9, 0.28 }, { -35.0, 0.9, 0.28 },
+		{ 160.0, 0.6, 0.2 }, { 20.0, 0.6, 0.2 },
+	};
+	const double cx = 0.0, cy = 0.12;
+
+	segment(ic, cx, cy, 0.1, 0.95, LINE * 0.8, ic->ink);
+	for (size_t k = 0; k < NPTS(lobes); k++) {
+		double a = lobes[k].deg * VEC_PI / 180.0, dx = cos(a), dy = sin(a);
+		double l = lobes[k].len, w = lobes[k].width, at = 0.38 * l;
+		const struct pt kite[4] = {
+			{ cx - dx * 0.1, cy - dy * 0.1 },
+			{ cx + dx * at - dy * w, cy + dy * at + dx * w },
+			{ cx + dx * l, cy + dy * l },
+			{ cx + dx * at + dy * w, cy + dy * at - dx * w },
+		};
+
+		fill(ic, kite, NPTS(kite), ic->ink);
+	}
+	disc(ic, cx, cy, 0.26, ic->ink);
+}
+
+/* Winter: a snowflake, six arms with twigs. */
+static void icon_snowflake(const struct icon *ic)
+{
+	for (int k = 0; k < 6; k++) {
+		double a = -0.5 * VEC_PI + VEC_PI * k / 3.0, dx = cos(a), dy = sin(a);
+
+		segment(ic, 0.0, 0.0, 0.92 * dx, 0.92 * dy, LINE * 0.85, ic->ink);
+		for (int side = -1; side <= 1; side += 2) {
+			double b = a + side * VEC_PI / 4.0;
+
+			segment(ic, 0.55 * dx, 0.55 * dy, 0.55 * dx + 0.3 * cos(b), 0.55 * dy + 0.3 * sin(b),
+				LINE * 0.7, ic->ink);
+		}
+	}
+	disc(ic, 0.0, 0.0, 0.14, ic->ink);
+}
+
+void icon_draw_season(struct batch *b, enum season season, struct pt centre, double size,
+		      struct rgba ink, struct rgba bg)
+{
+	struct icon ic = { b, centre, 0.5 * size, ink, bg };
+
+	switch (season) {
+	case SEASON_SPRING:
+		icon_blossom(&ic);
+		break;
+	case SEASON_AUTUMN:
+		icon_maple(&ic);
+		break;
+	case SEASON_WINTER:
+		icon_snowflake(&ic);
+		break;
+	case SEASON_SUMMER:
+	case SEASON_COUNT:
+		icon_sun(&ic);
+		break;
+	}
+}
+
 void icon_draw(struct batch *b, enum button button, struct pt centre, double size,
 	       struct rgba ink, struct rgba bg)
 {
@@ -306,6 +518,35 @@ void icon_draw(struct batch *b, enum button button, struct pt centre, double siz
 	case BUTTON_FIXED_SIZE:
 		icon_pattern(&ic, true);
 		break;
+	case BUTTON_SEASON:
+		icon_sun(&ic); /* summer's; icon_draw_season shows the tree's */
+		break;
+	case BUTTON_TPL_BLANK:
+		icon_blank(&ic);
+		break;
+	case BUTTON_GEN_MORE:
+	case BUTTON_GEN_FEWER:
+		icon_branches(&ic, button == BUTTON_GEN_MORE);
+		break;
+	case BUTTON_GEN_WIDER:
+	case BUTTON_GEN_NARROWER:
+		icon_width(&ic, button == BUTTON_GEN_WIDER);
+		break;
+	case BUTTON_GEN_TALLER:
+	case BUTTON_GEN_SHORTER:
+		icon_height(&ic, button == BUTTON_GEN_TALLER);
+		break;
+	case BUTTON_GEN_LEAFIER:
+	case BUTTON_GEN_BARER:
+		icon_leaves(&ic, button == BUTTON_GEN_LEAFIER);
+		break;
+	case BUTTON_TPL_CHERRY:
+	case BUTTON_TPL_ZELKOVA:
+	case BUTTON_TPL_HEDGE:
+	case BUTTON_TPL_BALL:
+	case BUTTON_TPL_CONE:
+	case BUTTON_TPL_PALM:
+		break; /* cards: their picture is the tree itself (render_preview.c) */
 	case BUTTON_COUNT:
 		break; /* not on the screen */
 	}

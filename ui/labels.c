@@ -8,6 +8,11 @@
  * not ("spread" for propagate, "save" for export: what it does for them).
  * Japanese: hiragana; undo/redo as "back"/"forward" (もどす/すすめる) rather than
  * やりなおし, which a child reads as "start over", the new button's job.
+ *
+ * The New strip's cards name their trees as a child would: the blank one "draw" (かく),
+ * the shrubs by their shapes (まる, さんかく). The parameter buttons are pairs in the same
+ * form (wider/narrower, ひろく/せまく); the Japanese branch and leaf pairs carry a plus and
+ * a minus sign (U+2212), not a hyphen, which after kana reads as the long vowel ー.
  */
 static const char *const button_words[BUTTON_COUNT][NLANGS] = {
 	[BUTTON_3D] = { "3D", "りったい" },
@@ -21,6 +26,22 @@ static const char *const button_words[BUTTON_COUNT][NLANGS] = {
 	[BUTTON_FIXED_COUNT] = { "Count", "かず" },
 	[BUTTON_FIXED_SIZE] = { "Size", "おおきさ" },
 	[BUTTON_VIEW] = { "Front", "まえ" },
+	[BUTTON_SEASON] = { "Season", "きせつ" },
+	[BUTTON_TPL_BLANK] = { "Draw", "かく" },
+	[BUTTON_TPL_CHERRY] = { "Cherry", "さくら" },
+	[BUTTON_TPL_ZELKOVA] = { "Zelkova", "けやき" },
+	[BUTTON_TPL_HEDGE] = { "Hedge", "いけがき" },
+	[BUTTON_TPL_BALL] = { "Ball", "まる" },
+	[BUTTON_TPL_CONE] = { "Cone", "さんかく" },
+	[BUTTON_TPL_PALM] = { "Palm", "やし" },
+	[BUTTON_GEN_MORE] = { "More", "えだ+" },
+	[BUTTON_GEN_FEWER] = { "Fewer", "えだ\u2212" },
+	[BUTTON_GEN_WIDER] = { "Wider", "ひろく" },
+	[BUTTON_GEN_NARROWER] = { "Narrower", "せまく" },
+	[BUTTON_GEN_TALLER] = { "Taller", "たかく" },
+	[BUTTON_GEN_SHORTER] = { "Shorter", "ひくく" },
+	[BUTTON_GEN_LEAFIER] = { "Leafier", "はっぱ+" },
+	[BUTTON_GEN_BARER] = { "Barer", "はっぱ\u2212" },
 };
 
 /*

@@ -8,34 +8,56 @@
 #include <string.h>
 
 #include "app.h"
+#include "leaf_colors.h"
+#include "leaf_tint.h"
 #include "render_private.h"
 #include "sketch_view.h"
 
-/* GLSL ES 1.00 so the same shaders run on GLES 2 and 3. */
-static const char tree_vs[] =
-	"uniform mat4 u_mvp;\n"
-	"attribute vec3 a_position;\n"
-	"attribute vec3 a_normal;\n"
-	"varying vec3 v_normal;\n"
-	"void main() {\n"
-	"	v_normal = a_normal;\n"
-	"	gl_Position = u_mvp * vec4(a_position, 1.0);\n"
-	"}\n";
+/* GLSL ES 1.00 so the same shaders run on GLES 2 and 3. With TINT defined, each vertex
+ * has its own colour (leaves in spring and autumn); without, the program is the one it
+ * always was, and summer's pixels are too. */
+#define TREE_VS                                                                            \
+	"uniform mat4 u_mvp;\n"                                                            \
+	"attribute vec3 a_position;\n"                                                     \
+	"attribute vec3 a_normal;\n"                                                       \
+	"varying vec3 v_normal;\n"                                                         \
+	"#ifdef TINT\n"                                                                    \
+	"attribute vec3 a_tint;\n"                                                         \
+	"varying vec3 v_tint;\n"                                                           \
+	"#endif\n"                                                                         \
+	"void main() {\n"                                                                  \
+	"	v_normal = a_normal;\n"                                                   \
+	"#ifdef TINT\n"                                                                    \
+	"	v_tint = a_tint;\n"                                                       \
+	"#endif\n"                                                                         \
+	"	gl_Position = u_mvp * vec4(a_position, 1.0);\n"                           \
+	"}\n"
 
-const char render_tree_fs[] =
-	"precision mediump float;\n"
-	"uniform vec3 u_color;\n"
-	"uniform vec3 u_light;\n"
-	"uniform bool u_two_sided;\n"
-	"varying vec3 v_normal;\n"
-	"void main() {\n"
-	"	vec3 n = normalize(v_normal);\n"
-	/* a leaf seen from behind is lit like its front */
-	"	if (u_two_sided && !gl_FrontFacing)\n"
-	"		n = -n;\n"
-	"	float lambert = max(dot(n, u_light), 0.0);\n"
-	"	gl_FragColor = vec4(u_color * (0.45 + 0.7 * lambert), 1.0);\n"
-	"}\n";
+#define TREE_FS                                                                            \
+	"precision mediump float;\n"                                                       \
+	"#ifdef TINT\n"                                                                    \
+	"varying vec3 v_tint;\n"                                                           \
+	"#define LEAF_COLOR v_tint\n"                                                      \
+	"#else\n"                                                                          \
+	"uniform vec3 u_color;\n"                                                          \
+	"#define LEAF_COLOR u_color\n"                                                     \
+	"#endif\n"                                                                         \
+	"uniform vec3 u_light;\n"                                                          \
+	"uniform bool u_two_sided;\n"                                                      \
+	"varying vec3 v_normal;\n"                                                         \
+	"void main() {\n"                                                                  \
+	"	vec3 n = normalize(v_normal);\n"                                          \
+	/* a leaf seen from behind is lit like its front */                                \
+	"	if (u_two_sided && !gl_FrontFacing)\n"                                    \
+	"		n = -n;\n"                                                       \
+	"	float lambert = max(dot(n, u_light), 0.0);\n"                             \
+	"	gl_FragColor = vec4(LEAF_COLOR * (0.45 + 0.7 * lambert), 1.0);\n"         \
+	"}\n"
+
+static const char tree_vs[] = TREE_VS;
+static const char tinted_vs[] = "#define TINT\n" TREE_VS;
+const char render_tree_fs[] = TREE_FS;
+const char render_tinted_fs[] = "#define TINT\n" TREE_FS;
 
 /* Flat shapes and glyphs alike: colour times the atlas's coverage (solid for shapes).
  * Texel coordinates become texture ones here, in the vertex shader's high precision. */
@@ -70,7 +92,6 @@ static const char flat_fs[] =
 /* Warm paper, like the sheet a child would draw on. */
 static const float paper[3] = { 0.975f, 0.953f, 0.898f };
 static const float bark_color[3] = { 0.47f, 0.32f, 0.20f };
-static const float leaf_color[3] = { 0.33f, 0.62f, 0.24f };
 /* Towards the light: from the upper left, in front of the sketch plane. */
 static const float light_dir[3] = { -0.4418339f, 0.7069342f, 0.5522924f };
 
@@ -83,8 +104,8 @@ static void drain_gl_errors(void)
 
 struct render *render_create(void)
 {
-	static const char *const tree_attribs[] = { "a_position", "a_normal" };
-	static const GLuint tree_locations[] = { ATTR_POSITION, ATTR_NORMAL };
+	static const char *const tree_attribs[] = { "a_position", "a_normal", "a_tint" };
+	static const GLuint tree_locations[] = { ATTR_POSITION, ATTR_NORMAL, ATTR_TINT };
 	static const char *const flat_attribs[] = { "a_position", "a_color", "a_uv" };
 	static const GLuint flat_locations[] = { ATTR_POSITION, ATTR_COLOR, ATTR_UV };
 	struct render *r = calloc(1, sizeof(*r));
@@ -97,7 +118,10 @@ struct render *render_create(void)
 	r->tree_program =
 		render_program("tree", tree_vs, render_tree_fs, tree_attribs, tree_locations, 2);
 	r->flat_program = render_program("flat", flat_vs, flat_fs, flat_attribs, flat_locations, 3);
-	if (!r->tree_program || !r->flat_program || render_text_init(r) < 0)
+	if (!r->tree_program || !r->flat_program ||
+	    !render_program_tree_init(&r->tinted, "tinted", tinted_vs, render_tinted_fs,
+				      tree_attribs, tree_locations, 3) ||
+	    render_text_init(r) < 0)
 		goto fail;
 	r->tree_mvp = glGetUniformLocation(r->tree_program, "u_mvp");
 	r->tree_color = glGetUniformLocation(r->tree_program, "u_color");
@@ -133,8 +157,10 @@ void render_destroy(struct render *r)
 	render_text_finish(r);
 	glDeleteBuffers(1, &r->flat_vbo);
 	glDeleteProgram(r->tree_program);
+	glDeleteProgram(r->tinted.program);
 	glDeleteProgram(r->flat_program);
 	batch_finish(&r->batch);
+	free(r->tint_scratch);
 	free(r);
 }
 
@@ -203,12 +229,40 @@ static bool leaves_instanced(const struct render *r, const struct app *app)
 	return r->instanced && app->tree.nleaves > 0 && app->mesh.leaves.nindices > 0;
 }
 
+float *render_tint_scratch(struct render *r, size_t n)
+{
+	if (n > r->tint_cap) {
+		float *p = realloc(r->tint_scratch, n * sizeof(*p));
+
+		if (!p)
+			return NULL;
+		r->tint_scratch = p;
+		r->tint_cap = n;
+	}
+	return r->tint_scratch;
+}
+
+/* The merged leaves' colours in the tree's season. */
+static int upload_leaf_tints(struct render *r, const struct app *app)
+{
+	const struct mesh *m = &app->mesh.leaves;
+	float *rgb = m->nvertices <= SIZE_MAX / 3 ? render_tint_scratch(r, 3 * m->nvertices + 3) : NULL;
+
+	if (!rgb)
+		return -ENOMEM;
+	(void)leaf_tint_vertices(&app->tree, &app->mesh_marks, m->nvertices, rgb);
+	return render_mesh_upload_tints(&r->leaves, m, rgb);
+}
+
 int render_upload_tree(struct render *r, const struct app *app)
 {
 	bool inst = leaves_instanced(r, app);
+	/* summer is one colour, as the leaves always were; winter's are not drawn */
+	bool tinted = leaf_colors_vary(app->tree.season);
 	int ret;
 
-	if (r->uploaded && r->mesh_serial == app->mesh_serial && r->uploaded_instanced == inst)
+	if (r->uploaded && r->mesh_serial == app->mesh_serial && r->uploaded_instanced == inst &&
+	    r->uploaded_season == app->tree.season)
 		return 0;
 	/* not marked uploaded until both succeed, so a failure is retried next frame */
 	r->uploaded = false;
@@ -218,19 +272,57 @@ int render_upload_tree(struct render *r, const struct app *app)
 	if (ret == 0 && inst) {
 		/* the leaves go one way or the other: the unused copy gives its memory back */
 		render_mesh_finish(&r->leaves);
-		ret = render_instanced_upload(r, &app->tree, &app->mesh.leaves);
+		ret = render_instanced_upload(r, &app->tree, &app->mesh.leaves, &app->mesh_marks,
+					      tinted);
 	} else if (ret == 0) {
 		render_instanced_clear(r); /* GL names 0 and empty arrays on GLES 2: no-ops */
 		ret = render_mesh_upload(&r->leaves, &app->mesh.leaves, r->uint_indices);
+		if (ret == 0 && tinted)
+			ret = upload_leaf_tints(r, app);
 		r->upload_bytes += r->leaves.bytes;
 	}
 	r->uploaded_instanced = inst;
+	r->uploaded_tinted = tinted;
+	r->uploaded_season = app->tree.season;
 	r->stats.uploads += 2;
 	if (ret < 0)
 		return ret;
 	r->uploaded = true;
 	r->mesh_serial = app->mesh_serial;
 	return 0;
+}
+
+/* The leaves in the tree's season: one colour (summer), a colour each (spring, autumn: the
+ * tinted programs), or none (winter). */
+static void draw_leaves(struct render *r, const struct app *app, const float mvp[16],
+			const float light[3])
+{
+	float colour[3];
+
+	if (!leaf_tint_uniform(app->tree.season, colour))
+		return;
+	if (!r->uploaded_tinted) {
+		glUniform1i(r->tree_two_sided, 1);
+		glUniform3fv(r->tree_color, 1, colour);
+		if (r->uploaded_instanced) {
+			/* the leaves that are no shape's copies, merged; then a call a shape */
+			render_mesh_draw(r, &r->inst.loose);
+			render_instanced_draw(r, mvp, light, colour);
+		} else {
+			render_mesh_draw(r, &r->leaves);
+		}
+		return;
+	}
+	glUseProgram(r->tinted.program);
+	glUniformMatrix4fv(r->tinted.mvp, 1, GL_FALSE, mvp);
+	glUniform3fv(r->tinted.light, 1, light);
+	glUniform1i(r->tinted.two_sided, 1);
+	if (r->uploaded_instanced) {
+		render_mesh_draw_tinted(r, &r->inst.loose);
+		render_instanced_draw(r, mvp, light, NULL);
+	} else {
+		render_mesh_draw_tinted(r, &r->leaves);
+	}
 }
 
 static int draw_tree(struct render *r, const struct app *app, const struct camera_xf *xf,
@@ -257,16 +349,7 @@ static int draw_tree(struct render *r, const struct app *app, const struct camer
 
 	/* leaves are single polygons seen from either side */
 	glDisable(GL_CULL_FACE);
-	glUniform1i(r->tree_two_sided, 1);
-	glUniform3fv(r->tree_color, 1, leaf_color);
-	if (r->uploaded_instanced) {
-		/* the leaves that are no shape's copies, merged; then a call a shape */
-		render_mesh_draw(r, &r->inst.loose);
-		render_instanced_draw(r, mvp, light, leaf_color);
-	} else {
-		render_mesh_draw(r, &r->leaves);
-	}
-
+	draw_leaves(r, app, mvp, light);
 	glDisable(GL_DEPTH_TEST);
 	return ret;
 }
@@ -283,8 +366,7 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 	struct camera_xf xf;
 	struct vec3 l;
 	float proj[16], light[3];
-	enum arrange_pattern shown[ARRANGE_COUNT];
-	bool previews = app->mode == APP_MODE_LEAF && app_suggestions(app, shown) > 0;
+	bool previews = render_previews_shown(app);
 	int ret, r2;
 
 	(void)app_camera_at(app, now_us, &cam);

@@ -59,6 +59,20 @@ GLuint render_program(const char *name, const char *vertex_src, const char *frag
 	return program;
 }
 
+bool render_program_tree_init(struct render_program_tree *p, const char *name, const char *vs,
+			      const char *fs, const char *const *attribs, const GLuint *locations,
+			      size_t nattribs)
+{
+	p->program = render_program(name, vs, fs, attribs, locations, nattribs);
+	if (!p->program)
+		return false;
+	p->mvp = glGetUniformLocation(p->program, "u_mvp");
+	p->color = glGetUniformLocation(p->program, "u_color");
+	p->light = glGetUniformLocation(p->program, "u_light");
+	p->two_sided = glGetUniformLocation(p->program, "u_two_sided");
+	return true;
+}
+
 bool render_has_extension(const char *name)
 {
 	const char *list = (const char *)glGetString(GL_EXTENSIONS);

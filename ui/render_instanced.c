@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "leaf_instances.h"
+#include "leaf_tint.h"
 #include "render_private.h"
 #include "tree.h"
 
@@ -21,41 +22,49 @@
  * rotation times a uniform scale, so it turns normals as it turns positions; normalised
  * here and again per fragment, lit by render_tree_fs exactly as the merged leaves are.
  */
-static const char instanced_vs[] =
-	"uniform mat4 u_mvp;\n"
-	"attribute vec3 a_position;\n"
-	"attribute vec3 a_normal;\n"
-	"attribute vec4 a_row0;\n"
-	"attribute vec4 a_row1;\n"
-	"attribute vec4 a_row2;\n"
-	"varying vec3 v_normal;\n"
-	"void main() {\n"
-	"	vec4 p = vec4(a_position, 1.0);\n"
-	"	vec3 world = vec3(dot(a_row0, p), dot(a_row1, p), dot(a_row2, p));\n"
-	"	v_normal = normalize(vec3(dot(a_row0.xyz, a_normal), dot(a_row1.xyz, a_normal),\n"
-	"				  dot(a_row2.xyz, a_normal)));\n"
-	"	gl_Position = u_mvp * vec4(world, 1.0);\n"
-	"}\n";
+#define INSTANCED_VS                                                                       \
+	"uniform mat4 u_mvp;\n"                                                            \
+	"attribute vec3 a_position;\n"                                                     \
+	"attribute vec3 a_normal;\n"                                                       \
+	"attribute vec4 a_row0;\n"                                                         \
+	"attribute vec4 a_row1;\n"                                                         \
+	"attribute vec4 a_row2;\n"                                                         \
+	"varying vec3 v_normal;\n"                                                         \
+	"#ifdef TINT\n"                                                                    \
+	"attribute vec3 a_tint;\n"                                                         \
+	"varying vec3 v_tint;\n"                                                           \
+	"#endif\n"                                                                         \
+	"void main() {\n"                                                                  \
+	"#ifdef TINT\n"                                                                    \
+	"	v_tint = a_tint;\n"                                                       \
+	"#endif\n"                                                                         \
+	"	vec4 p = vec4(a_position, 1.0);\n"                                        \
+	"	vec3 world = vec3(dot(a_row0, p), dot(a_row1, p), dot(a_row2, p));\n"     \
+	"	v_normal = normalize(vec3(dot(a_row0.xyz, a_normal), dot(a_row1.xyz, a_normal),\n" \
+	"				  dot(a_row2.xyz, a_normal)));\n"                 \
+	"	gl_Position = u_mvp * vec4(world, 1.0);\n"                                \
+	"}\n"
+
+static const char instanced_vs[] = INSTANCED_VS;
+/* the colour of each instance comes per instance too (spring, autumn) */
+static const char instanced_tinted_vs[] = "#define TINT\n" INSTANCED_VS;
 
 #define MATRIX_BYTES (12 * sizeof(float))
 
 int render_instanced_create(struct render *r)
 {
 	static const char *const attribs[] = { "a_position", "a_normal", "a_row0", "a_row1",
-					       "a_row2" };
+					       "a_row2", "a_tint" };
 	static const GLuint locations[] = { ATTR_POSITION, ATTR_NORMAL, ATTR_ROW0, ATTR_ROW0 + 1,
-					    ATTR_ROW0 + 2 };
+					    ATTR_ROW0 + 2, ATTR_TINT };
 	struct render_instanced *in = &r->inst;
 
 	leaf_instances_init(&in->li);
-	in->program = render_program("instanced leaves", instanced_vs, render_tree_fs, attribs,
-				     locations, 5);
-	if (!in->program)
+	if (!render_program_tree_init(&in->plain, "instanced leaves", instanced_vs, render_tree_fs,
+				      attribs, locations, 5) ||
+	    !render_program_tree_init(&in->tinted, "instanced tinted leaves", instanced_tinted_vs,
+				      render_tinted_fs, attribs, locations, 6))
 		return -1;
-	in->mvp = glGetUniformLocation(in->program, "u_mvp");
-	in->color = glGetUniformLocation(in->program, "u_color");
-	in->light = glGetUniformLocation(in->program, "u_light");
-	in->two_sided = glGetUniformLocation(in->program, "u_two_sided");
 	return 0;
 }
 
@@ -67,7 +76,9 @@ void render_instanced_clear(struct render *r)
 		render_mesh_finish(&in->shapes[k]);
 	render_mesh_finish(&in->loose);
 	glDeleteBuffers(1, &in->matrices);
+	glDeleteBuffers(1, &in->tints);
 	in->matrices = 0;
+	in->tints = 0;
 	in->nshapes = 0;
 	leaf_instances_finish(&in->li);
 }
@@ -75,8 +86,10 @@ void render_instanced_clear(struct render *r)
 void render_instanced_finish(struct render *r)
 {
 	render_instanced_clear(r);
-	glDeleteProgram(r->inst.program);
-	r->inst.program = 0;
+	glDeleteProgram(r->inst.plain.program);
+	glDeleteProgram(r->inst.tinted.program);
+	r->inst.plain.program = 0;
+	r->inst.tinted.program = 0;
 }
 
 static int upload(struct render *r, const struct leaf_instances *li, const struct mesh *merged)
@@ -118,7 +131,40 @@ static int upload(struct render *r, const struct leaf_instances *li, const struc
 	return 0;
 }
 
-int render_instanced_upload(struct render *r, const struct tree *t, const struct mesh *merged)
+/* Every leaf's colour in t's season: an instance's, and the loose mesh's vertices'. */
+static int upload_tints(struct render *r, const struct tree *t, const struct mesh *merged,
+			const struct tree_mesh_marks *mk)
+{
+	struct render_instanced *in = &r->inst;
+	const struct leaf_instances *li = &in->li;
+	const struct mesh *loose = in->nshapes ? &li->loose : merged;
+	size_t n = li->ninstanced > loose->nvertices ? li->ninstanced : loose->nvertices;
+	float *rgb = n <= SIZE_MAX / 3 - 1 ? render_tint_scratch(r, 3 * n + 3) : NULL;
+	int ret;
+
+	if (!rgb)
+		return -ENOMEM;
+	if (in->nshapes)
+		ret = leaf_tint_loose(t, mk, li, rgb);
+	else
+		ret = leaf_tint_vertices(t, mk, loose->nvertices, rgb) ? 0 : -EINVAL;
+	if (ret == 0)
+		ret = render_mesh_upload_tints(&in->loose, loose, rgb);
+	if (ret < 0)
+		return ret;
+	r->upload_bytes += 3 * sizeof(float) * (loose->nvertices + li->ninstanced);
+	leaf_tint_instances(t, li, rgb);
+	if (!in->tints)
+		glGenBuffers(1, &in->tints);
+	glBindBuffer(GL_ARRAY_BUFFER, in->tints);
+	glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(li->ninstanced * 3 * sizeof(float)),
+		     li->ninstanced ? rgb : NULL, GL_STATIC_DRAW);
+	glBindBuffer(GL_ARRAY_BUFFER, 0);
+	return 0;
+}
+
+int render_instanced_upload(struct render *r, const struct tree *t, const struct mesh *merged,
+			    const struct tree_mesh_marks *mk, bool tinted)
 {
 	int ret;
 
@@ -127,6 +173,13 @@ int render_instanced_upload(struct render *r, const struct tree *t, const struct
 	ret = leaf_instances_build(&r->inst.li, t);
 	if (ret == 0)
 		ret = upload(r, &r->inst.li, merged);
+	if (ret == 0 && tinted) {
+		ret = upload_tints(r, t, merged, mk);
+	} else if (ret == 0) {
+		/* one colour: the last season's no longer hold */
+		glDeleteBuffers(1, &r->inst.tints);
+		r->inst.tints = 0;
+	}
 	if (ret < 0) {
 		r->inst.nshapes = 0;
 		r->inst.loose.count = 0;
@@ -138,18 +191,24 @@ void render_instanced_draw(struct render *r, const float mvp[16], const float li
 			   const float color[3])
 {
 	struct render_instanced *in = &r->inst;
+	const struct render_program_tree *p = color ? &in->plain : &in->tinted;
 
 	if (in->nshapes == 0)
 		return;
-	glUseProgram(in->program);
-	glUniformMatrix4fv(in->mvp, 1, GL_FALSE, mvp);
-	glUniform3fv(in->light, 1, light);
-	glUniform3fv(in->color, 1, color);
-	glUniform1i(in->two_sided, 1);
+	glUseProgram(p->program);
+	glUniformMatrix4fv(p->mvp, 1, GL_FALSE, mvp);
+	glUniform3fv(p->light, 1, light);
+	if (color)
+		glUniform3fv(p->color, 1, color);
+	glUniform1i(p->two_sided, 1);
 	glEnableVertexAttribArray(ATTR_NORMAL);
 	for (GLuint i = 0; i < 3; i++) {
 		glEnableVertexAttribArray(ATTR_ROW0 + i);
 		glVertexAttribDivisor(ATTR_ROW0 + i, 1);
+	}
+	if (!color) {
+		glEnableVertexAttribArray(ATTR_TINT);
+		glVertexAttribDivisor(ATTR_TINT, 1);
 	}
 	for (size_t k = 0; k < in->nshapes; k++) {
 		const struct render_mesh *rm = &in->shapes[k];
@@ -165,6 +224,11 @@ void render_instanced_draw(struct render *r, const float mvp[16], const float li
 		for (GLuint i = 0; i < 3; i++)
 			glVertexAttribPointer(ATTR_ROW0 + i, 4, GL_FLOAT, GL_FALSE, MATRIX_BYTES,
 					      at + 4 * sizeof(float) * i);
+		if (!color) {
+			glBindBuffer(GL_ARRAY_BUFFER, in->tints);
+			glVertexAttribPointer(ATTR_TINT, 3, GL_FLOAT, GL_FALSE, 0,
+					      (const char *)(uintptr_t)(in->first[k] * 3 * sizeof(float)));
+		}
 		if (rm->indexed) {
 			glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, rm->indices);
 			glDrawElementsInstanced(GL_TRIANGLES, rm->count, GL_UNSIGNED_INT, NULL,
@@ -182,5 +246,9 @@ void render_instanced_draw(struct render *r, const float mvp[16], const float li
 	for (GLuint i = 0; i < 3; i++) {
 		glVertexAttribDivisor(ATTR_ROW0 + i, 0);
 		glDisableVertexAttribArray(ATTR_ROW0 + i);
+	}
+	if (!color) {
+		glVertexAttribDivisor(ATTR_TINT, 0);
+		glDisableVertexAttribArray(ATTR_TINT);
 	}
 }

@@ -54,6 +54,9 @@ int render_mesh_upload(struct render_mesh *rm, const struct mesh *m, bool uint_i
 	rm->count = 0;
 	rm->ntriangles = 0;
 	rm->bytes = 0;
+	/* colours belong to what was there before */
+	glDeleteBuffers(1, &rm->tints);
+	rm->tints = 0;
 	if (m->nindices > INT_MAX || m->nindices % 3 != 0)
 		return -EINVAL;
 	/* an index past the vertices would read outside the buffer: refuse the mesh */
@@ -83,6 +86,40 @@ int render_mesh_upload(struct render_mesh *rm, const struct mesh *m, bool uint_i
 	return 0;
 }
 
+/* Without 32-bit indices the colours are expanded as the positions were. */
+int render_mesh_upload_tints(struct render_mesh *rm, const struct mesh *m, const float *rgb)
+{
+	float *expanded = NULL;
+	size_t n = m->nvertices;
+
+	if (!rm->indexed) {
+		n = m->nindices;
+		expanded = malloc((n ? n : 1) * 3 * sizeof(float));
+		if (!expanded)
+			return -ENOMEM;
+		for (size_t i = 0; i < n; i++)
+			memcpy(expanded + 3 * i, rgb + 3 * (size_t)m->indices[i], 3 * sizeof(float));
+		rgb = expanded;
+	}
+	buffer_data(&rm->tints, GL_ARRAY_BUFFER, n * 3 * sizeof(float), rgb);
+	glBindBuffer(GL_ARRAY_BUFFER, 0);
+	free(expanded);
+	rm->bytes += n * 3 * sizeof(float);
+	return 0;
+}
+
+void render_mesh_draw_tinted(struct render *r, const struct render_mesh *rm)
+{
+	if (rm->count == 0 || !rm->tints)
+		return;
+	glBindBuffer(GL_ARRAY_BUFFER, rm->tints);
+	glVertexAttribPointer(ATTR_TINT, 3, GL_FLOAT, GL_FALSE, 0, NULL);
+	glEnableVertexAttribArray(ATTR_TINT);
+	render_mesh_draw(r, rm);
+	/* the other programs do not read it */
+	glDisableVertexAttribArray(ATTR_TINT);
+}
+
 void render_mesh_draw(struct render *r, const struct render_mesh *rm)
 {
 	if (rm->count == 0)
@@ -110,5 +147,6 @@ void render_mesh_finish(struct render_mesh *rm)
 	glDeleteBuffers(1, &rm->positions);
 	glDeleteBuffers(1, &rm->normals);
 	glDeleteBuffers(1, &rm->indices);
+	glDeleteBuffers(1, &rm->tints);
 	memset(rm, 0, sizeof(*rm));
 }

@@ -8,6 +8,7 @@
 #include <math.h>
 
 #include "app.h"
+#include "app_mode.h"
 #include "labels.h"
 #include "layout.h"
 #include "render_private.h"
@@ -73,11 +74,29 @@ static void status_icon(struct batch *b, enum app_status s, struct pt c, double 
 #define MESSAGE_OF_HEIGHT 0.05
 #define CARD_TOP_OF_HEIGHT 0.05
 
+/* The canvas right of the side strip: a message there covers none of its buttons. */
+static struct layout_rect free_canvas(const struct app *app)
+{
+	struct layout_rect canvas = layout_canvas(&app->view);
+	struct app_side_item items[APP_SIDE_MAX];
+	size_t n = app_side_items(app, items);
+	double right = 0.0;
+
+	for (size_t i = 0; i < n; i++) {
+		struct layout_rect t = layout_side_target(&app->view, i, app_side_kind(&items[0]));
+
+		right = fmax(right, t.x + t.w);
+	}
+	canvas.w -= right;
+	canvas.x += right;
+	return canvas;
+}
+
 void render_ui_status(struct batch *b, const struct ui_text *t, const struct app *app,
 		      uint64_t now_us)
 {
 	const struct view *v = &app->view;
-	struct layout_rect canvas = layout_canvas(v);
+	struct layout_rect canvas = free_canvas(app);
 	uint64_t until;
 	enum app_status s = app_status_at(app, now_us, &until);
 	const char *msg = t->font ? labels_status(s, t->lang) : NULL;

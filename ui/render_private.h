@@ -11,12 +11,14 @@
 #include "atlas.h"
 #include "batch.h"
 #include "camera.h"
+#include "gen.h"
 #include "leaf_instances.h"
 #include "render.h"
 
 struct app;
 struct mesh;
 struct tree;
+struct tree_mesh_marks;
 
 /* Attribute locations, bound before linking so all programs agree. */
 enum {
@@ -25,6 +27,7 @@ enum {
 	ATTR_COLOR = 1,  /* flat program */
 	ATTR_ROW0 = 2,   /* instanced leaves: the rows of each instance's 3x4 matrix, 2..4 */
 	ATTR_UV = 5,     /* flat program: the atlas texel; clear of the instanced rows */
+	ATTR_TINT = 6,   /* tinted programs: a leaf's colour, per vertex or per instance */
 };
 
 struct font;
@@ -38,6 +41,7 @@ struct ui_text {
 /* A tree mesh on the GPU. */
 struct render_mesh {
 	GLuint positions, normals, indices;
+	GLuint tints;      /* leaves in a season of many colours: 3 floats a vertex */
 	GLsizei count;     /* indices to draw, or vertices when not indexed */
 	bool indexed;      /* false: expanded to a plain triangle list */
 	size_t ntriangles;
@@ -50,9 +54,15 @@ struct render_mesh {
  * attribute that advances per instance; the leaves no other is a copy of, merged, drawn
  * as before with the tree program.
  */
-struct render_instanced {
+struct render_program_tree {
 	GLuint program;
 	GLint mvp, color, light, two_sided;
+};
+
+struct render_instanced {
+	/* plain (one colour) and tinted (a colour an instance, tints) */
+	struct render_program_tree plain, tinted;
+	GLuint tints;
 	struct render_mesh shapes[LEAF_INSTANCES_MAX_SHAPES];
 	size_t first[LEAF_INSTANCES_MAX_SHAPES], count[LEAF_INSTANCES_MAX_SHAPES];
 	size_t nshapes;
@@ -63,10 +73,23 @@ struct render_instanced {
 	struct leaf_instances li;
 };
 
+/* A side strip picture on the GPU: a copy of one of the app's previews[] or templates[]
+ * (render_preview.c), as of a previews_serial. */
+struct render_picture {
+	struct render_mesh bark, leaves;
+	bool uploaded;
+	uint64_t serial;
+	double bounds[4]; /* a template's, through the template camera: x0, y0, x1, y1 */
+	enum season season; /* a template's: its preset's */
+};
+#define RENDER_PICTURES (ARRANGE_COUNT + GEN_PRESET_COUNT)
+
 struct render {
 	/* lit tree meshes: world positions and normals */
 	GLuint tree_program;
 	GLint tree_mvp, tree_color, tree_light, tree_two_sided;
+	/* the same with a colour a vertex (ATTR_TINT): leaves in spring and autumn */
+	struct render_program_tree tinted;
 	/* screen-space triangles, flat or showing the atlas's glyphs */
 	GLuint flat_program;
 	GLint flat_proj, flat_texel, flat_atlas;
@@ -88,20 +111,26 @@ struct render {
 	struct render_instanced inst;
 	bool uploaded;       /* the meshes hold mesh_serial's tree */
 	bool uploaded_instanced; /* ...its leaves in inst, not in leaves */
+	bool uploaded_tinted;    /* ...with a colour each (leaf_colors_vary) */
+	enum season uploaded_season;
 	uint64_t mesh_serial;
+	float *tint_scratch;     /* the colours on their way to the GPU, kept between uploads */
+	size_t tint_cap;         /* in floats */
 	size_t upload_bytes; /* what the last upload of the tree sent to the GPU */
 
-	/* the leaf suggestions' thumbnails */
-	struct render_mesh preview_bark[ARRANGE_COUNT], preview_leaves[ARRANGE_COUNT];
-	bool previews_uploaded;
-	uint64_t previews_serial;
+	/* the side strip's pictures: the leaf suggestions', then the templates' */
+	struct render_picture pictures[RENDER_PICTURES];
 
 	struct batch batch;
 	struct render_stats stats;
 };
 
-/* render.c: the tree program's fragment shader (the instanced program shares it) */
+/* render.c: the tree program's fragment shader (the instanced program shares it), and
+ * that of the tinted programs (a `varying vec3 v_tint` instead of u_color) */
 extern const char render_tree_fs[];
+extern const char render_tinted_fs[];
+/* Room for n floats of colours (r->tint_scratch), or NULL. */
+float *render_tint_scratch(struct render *r, size_t n);
 /* Uploads the tree's meshes if mesh_serial changed (render_frame does it first): for
  * benchmarks. 0 or a negative errno. */
 int render_upload_tree(struct render *r, const struct app *app);
@@ -109,20 +138,33 @@ int render_upload_tree(struct render *r, const struct app *app);
 /* render_gl.c: a linked program with attributes at the given locations, or 0 (stderr says why). */
 GLuint render_program(const char *name, const char *vertex_src, const char *fragment_src,
 		      const char *const *attribs, const GLuint *locations, size_t nattribs);
+/* A lit program (the tree program's uniforms) from these sources: false if it did not
+ * build (stderr says why). */
+bool render_program_tree_init(struct render_program_tree *p, const char *name, const char *vs,
+			      const char *fs, const char *const *attribs, const GLuint *locations,
+			      size_t nattribs);
 bool render_has_extension(const char *name);
 int render_gl_major_version(void);
 
 /* render_mesh.c */
 int render_mesh_upload(struct render_mesh *rm, const struct mesh *m, bool uint_indices);
+/* A colour for every vertex of m, which rm was uploaded from (3 floats a vertex);
+ * 0 or -ENOMEM. */
+int render_mesh_upload_tints(struct render_mesh *rm, const struct mesh *m, const float *rgb);
 void render_mesh_draw(struct render *r, const struct render_mesh *rm);
+/* With a tinted program in use: the mesh with its vertices' colours. */
+void render_mesh_draw_tinted(struct render *r, const struct render_mesh *rm);
 void render_mesh_finish(struct render_mesh *rm);
 
 /* render_instanced.c (GLES 3 only). create: 0, or -1 (stderr says why; draw merged).
  * upload: the shapes, their matrices and the loose leaves of t (`merged`, t's leaves
- * mesh, when no shape has copies); 0 or a negative errno (then nothing is drawn until the
- * next upload). draw: with the tree program's lighting, counted in r->stats. */
+ * mesh, when no shape has copies; mk its marks), and with `tinted` every leaf's colour in
+ * t's season (leaf_tint.h); 0 or a negative errno (then nothing is drawn until the next
+ * upload). draw: with the tree program's lighting, in one colour (color) or, color NULL,
+ * each instance its own; counted in r->stats. */
 int render_instanced_create(struct render *r);
-int render_instanced_upload(struct render *r, const struct tree *t, const struct mesh *merged);
+int render_instanced_upload(struct render *r, const struct tree *t, const struct mesh *merged,
+			    const struct tree_mesh_marks *mk, bool tinted);
 void render_instanced_draw(struct render *r, const float mvp[16], const float light[3],
 			   const float color[3]);
 /* Frees the GPU copies (the program stays until finish). */
@@ -143,6 +185,8 @@ void render_ui_buttons(struct batch *b, const struct ui_text *t, const struct ap
  * wide (a longer label is set smaller). */
 int render_ui_label_px(double button_h);
 double render_ui_label_room(double button_w);
+/* A named card's word's size, for the band of that height under its picture. */
+int render_ui_card_label_px(double band);
 void render_ui_cursor(struct batch *b, const struct app *app);
 /* The branch clone mode works on, marked over the tree as the camera xf shows it. */
 void render_ui_selection(struct batch *b, const struct app *app, const struct camera_xf *xf);
@@ -153,8 +197,10 @@ void render_ui_status(struct batch *b, const struct ui_text *t, const struct app
 		      uint64_t now_us);
 void render_ui_attract(struct batch *b, const struct ui_text *t, const struct app *app);
 
-/* render_preview.c: the 3D pictures inside the leaf suggestion thumbnails (the cards
- * behind them are render_ui_buttons'). 0 or a negative errno. */
+/* render_preview.c: the 3D pictures in the side strip's cards (the cards behind them are
+ * render_ui_buttons'): whether there are any, and drawing them, the leaf suggestions seen
+ * through xf. 0 or a negative errno. */
+bool render_previews_shown(const struct app *app);
 int render_previews(struct render *r, const struct app *app, const struct camera_xf *xf,
 		    const float light[3]);
 void render_previews_finish(struct render *r);

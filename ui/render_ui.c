@@ -3,6 +3,7 @@
 #include <math.h>
 
 #include "app.h"
+#include "app_mode.h"
 #include "icons.h"
 #include "labels.h"
 #include "layout.h"
@@ -26,7 +27,25 @@ static const struct rgba button_pressed_fill = { 0.870f, 0.840f, 0.770f, 1.0f };
 static const struct rgba button_border = { 0.640f, 0.580f, 0.500f, 1.0f };
 static const struct rgba shadow = { 0.350f, 0.250f, 0.150f, 0.28f };
 
-/* Each button has its own colour, so children can say "the green one". */
+/* The season button's colour is its season's: blossom pink, sun orange, maple red, snow blue. */
+static struct rgba season_accent(enum season season)
+{
+	switch (season) {
+	case SEASON_SPRING:
+		return (struct rgba){ 0.88f, 0.38f, 0.58f, 1.0f };
+	case SEASON_AUTUMN:
+		return (struct rgba){ 0.80f, 0.22f, 0.10f, 1.0f };
+	case SEASON_WINTER:
+		return (struct rgba){ 0.30f, 0.55f, 0.85f, 1.0f };
+	case SEASON_SUMMER:
+	case SEASON_COUNT:
+		break;
+	}
+	return (struct rgba){ 0.92f, 0.58f, 0.06f, 1.0f };
+}
+
+/* Each button has its own colour, so children can say "the green one"; a pair of
+ * parameter buttons shares one, so they read as a pair. */
 static struct rgba accent(enum button button)
 {
 	switch (button) {
@@ -42,6 +61,26 @@ static struct rgba accent(enum button button)
 		return (struct rgba){ 0.90f, 0.48f, 0.12f, 1.0f };
 	case BUTTON_EXPORT:
 		return (struct rgba){ 0.10f, 0.50f, 0.62f, 1.0f };
+	case BUTTON_GEN_MORE: /* branches: bark brown */
+	case BUTTON_GEN_FEWER:
+		return (struct rgba){ 0.55f, 0.34f, 0.16f, 1.0f };
+	case BUTTON_GEN_WIDER:
+	case BUTTON_GEN_NARROWER:
+		return (struct rgba){ 0.16f, 0.44f, 0.72f, 1.0f };
+	case BUTTON_GEN_TALLER:
+	case BUTTON_GEN_SHORTER:
+		return (struct rgba){ 0.62f, 0.30f, 0.66f, 1.0f };
+	case BUTTON_GEN_LEAFIER:
+	case BUTTON_GEN_BARER:
+		return (struct rgba){ 0.24f, 0.58f, 0.22f, 1.0f };
+	case BUTTON_TPL_BLANK: /* the cards: the tree's greens */
+	case BUTTON_TPL_CHERRY:
+	case BUTTON_TPL_ZELKOVA:
+	case BUTTON_TPL_HEDGE:
+	case BUTTON_TPL_BALL:
+	case BUTTON_TPL_CONE:
+	case BUTTON_TPL_PALM:
+		return (struct rgba){ 0.30f, 0.50f, 0.26f, 1.0f };
 	default:
 		return (struct rgba){ 0.33f, 0.30f, 0.28f, 1.0f };
 	}
@@ -159,12 +198,9 @@ void render_ui_stroke(struct batch *b, const struct app *app)
 	}
 }
 
+/* A bar button is lit while its mode is on (the side strip's say so themselves: `lit`). */
 static bool button_active(const struct app *app, enum button button)
 {
-	if (button == BUTTON_FIXED_COUNT)
-		return app->pattern == APP_PATTERN_FIXED_COUNT;
-	if (button == BUTTON_FIXED_SIZE)
-		return app->pattern == APP_PATTERN_FIXED_SIZE;
 	switch (app->mode) {
 	case APP_MODE_CLONE:
 		return button == BUTTON_CLONE;
@@ -172,6 +208,7 @@ static bool button_active(const struct app *app, enum button button)
 		return button == BUTTON_LEAF;
 	case APP_MODE_PROPAGATE:
 		return button == BUTTON_PROPAGATE;
+	case APP_MODE_NEW:
 	case APP_MODE_SKETCH:
 		/* drawing on a 3D tree: the 3D button is lit, as its GPIO LED is */
 		return button == BUTTON_3D && app->tree.lifted;
@@ -187,6 +224,10 @@ static bool button_enabled(const struct app *app, enum button button)
 		return doc_can_redo(&app->doc);
 	if (button == BUTTON_VIEW)
 		return !camera_is_front(app->camera);
+	if (button == BUTTON_SEASON)
+		return app->tree.nbranches > 0; /* an empty canvas has no season to show */
+	if (button >= BUTTON_GEN_MORE && button <= BUTTON_GEN_BARER)
+		return app_gen_possible(app, button);
 	return true;
 }
 
@@ -199,9 +240,19 @@ static bool button_enabled(const struct app *app, enum button button)
 #define LABEL_SIDE_OF_WIDTH 0.05 /* kept clear at either end */
 #define LABEL_BASELINE_OF_HEIGHT 0.85
 
+/* A named card's band is 0.34 of a button's height (layout.c): its word is the size of a
+ * button's label, its baseline high enough for descenders. */
+#define CARD_LABEL_OF_BAND (LABEL_OF_HEIGHT / 0.34)
+#define CARD_BASELINE_OF_BAND 0.28
+
 int render_ui_label_px(double button_h)
 {
 	return (int)fmax(1.0, round(LABEL_OF_HEIGHT * button_h));
+}
+
+int render_ui_card_label_px(double band)
+{
+	return (int)fmax(1.0, round(CARD_LABEL_OF_BAND * band));
 }
 
 double render_ui_label_room(double button_w)
@@ -222,14 +273,23 @@ static void draw_label(struct batch *b, const struct ui_text *t, const char *lab
 		  y + LABEL_BASELINE_OF_HEIGHT * lb->h, c);
 }
 
-static void draw_button(struct batch *b, const struct ui_text *t, const struct app *app,
-			const struct layout_button *lb)
+static void draw_icon(struct batch *b, const struct app *app, enum button button, struct pt at,
+		      double size, struct rgba ink, struct rgba bg)
 {
-	bool active = button_active(app, lb->button);
+	if (button == BUTTON_SEASON)
+		icon_draw_season(b, app->tree.season, at, size, ink, bg);
+	else
+		icon_draw(b, button, at, size, ink, bg);
+}
+
+static void draw_button(struct batch *b, const struct ui_text *t, const struct app *app,
+			const struct layout_button *lb, bool active)
+{
 	bool pressed = lb->button < BUTTON_COUNT && app->buttons_down[lb->button];
 	bool enabled = button_enabled(app, lb->button);
 	float alpha = enabled ? 1.0f : 0.3f;
-	struct rgba colour = accent(lb->button);
+	struct rgba colour = lb->button == BUTTON_SEASON ? season_accent(app->tree.season)
+							 : accent(lb->button);
 	double w = lb->w, h = lb->h;
 	double radius = 0.24 * h, border = fmax(1.5, 0.045 * h);
 	/* a pressed button sinks onto its shadow */
@@ -257,48 +317,86 @@ static void draw_button(struct batch *b, const struct ui_text *t, const struct a
 	batch_rounded_rect(b, lb->x, y, w, h, radius, fill);
 	batch_rounded_frame(b, lb->x, y, w, h, radius, active ? 1.6 * border : border, edge);
 	if (!label[0]) {
-		icon_draw(b, lb->button, (struct pt){ lb->x + 0.5 * w, y + 0.5 * h }, 0.62 * h,
+		draw_icon(b, app, lb->button, (struct pt){ lb->x + 0.5 * w, y + 0.5 * h }, 0.62 * h,
 			  icon_ink, fill);
 		return;
 	}
 	/* the icon up, the word under it */
-	icon_draw(b, lb->button, (struct pt){ lb->x + 0.5 * w, y + 0.36 * h }, 0.48 * h, icon_ink,
-		  fill);
+	draw_icon(b, app, lb->button, (struct pt){ lb->x + 0.5 * w, y + 0.36 * h }, 0.48 * h,
+		  icon_ink, fill);
 	draw_label(b, t, label, lb, y, label_ink);
 }
 
-/* What the active mode offers on the left: leaf suggestions (their pictures are drawn
- * into these cards by render_preview.c), or the two propagation patterns. */
-static void render_ui_side(struct batch *b, const struct ui_text *t, const struct app *app)
+/* A named card's word, in the band of height `band` under its picture: as large as a
+ * button's label beside it. */
+static void draw_card_label(struct batch *b, const struct ui_text *t, const char *label,
+			    struct layout_rect r, double y, double band, struct rgba c)
 {
-	const struct view *v = &app->view;
-	enum arrange_pattern shown[ARRANGE_COUNT];
-	size_t n;
+	int px = render_ui_card_label_px(band);
+	struct text_extent e;
 
-	if (app->mode == APP_MODE_PROPAGATE) {
-		for (size_t i = 0; i < 2; i++) {
-			struct layout_rect r = layout_side_slot(v, i, false);
-			struct layout_button lb = { i == 0 ? BUTTON_FIXED_COUNT : BUTTON_FIXED_SIZE,
-						    r.x, r.y, r.w, r.h };
-
-			draw_button(b, t, app, &lb);
-		}
-		return;
-	}
-	if (app->mode != APP_MODE_LEAF)
-		return;
-	n = app_suggestions(app, shown);
-	for (size_t i = 0; i < n; i++) {
-		struct layout_rect r = layout_side_slot(v, i, true);
-		struct rgba leaf = accent(BUTTON_LEAF);
-		double radius = 0.12 * r.w, border = fmax(1.5, 0.03 * r.w);
-
-		batch_rounded_rect(b, r.x, r.y + 0.04 * r.w, r.w, r.h, radius, shadow);
-		batch_rounded_rect(b, r.x, r.y, r.w, r.h, radius, button_fill);
-		batch_rounded_frame(b, r.x, r.y, r.w, r.h, radius, border, leaf);
-	}
+	px = text_fit(t->font, label, px, (int)fmax(1.0, 0.7 * px), render_ui_label_room(r.w));
+	text_measure(t->font, label, px, &e);
+	text_draw(b, t->font, label, px, r.x + 0.5 * (r.w - e.width),
+		  y + r.h - CARD_BASELINE_OF_BAND * band, c);
 }
 
+/*
+ * A card of the side strip: a picture (drawn into it by render_preview.c), or the blank
+ * canvas's empty sheet, framed in the colour of what it makes, its word under it when it
+ * is named; lit when it is the choice in effect.
+ */
+static void draw_card(struct batch *b, const struct ui_text *t, const struct app *app,
+		      const struct app_side_item *item, struct layout_rect r,
+		      enum layout_side_kind kind)
+{
+	struct rgba frame = accent(item->button == BUTTON_COUNT ? BUTTON_LEAF : item->button);
+	bool pressed = item->button != BUTTON_COUNT && app->buttons_down[item->button];
+	double radius = 0.12 * r.w, border = fmax(1.5, 0.03 * r.w);
+	double y = r.y + (pressed ? 0.03 * r.w : 0.0);
+	struct layout_rect pic = layout_card_picture((struct layout_rect){ r.x, y, r.w, r.h }, kind);
+	const char *label = t->font && kind == LAYOUT_SIDE_NAMED_CARDS
+				    ? labels_button(item->button, t->lang)
+				    : "";
+
+	if (item->lit) {
+		double glow = 0.06 * r.w;
+
+		batch_rounded_rect(b, r.x - glow, y - glow, r.w + 2.0 * glow, r.h + 2.0 * glow,
+				   radius + glow, with_alpha(frame, 0.32f));
+	}
+	if (!pressed)
+		batch_rounded_rect(b, r.x, r.y + 0.04 * r.w, r.w, r.h, radius, shadow);
+	batch_rounded_rect(b, r.x, y, r.w, r.h, radius, pressed ? button_pressed_fill : button_fill);
+	batch_rounded_frame(b, r.x, y, r.w, r.h, radius, item->lit ? 1.6 * border : border, frame);
+	if (!item->preview && item->button != BUTTON_COUNT)
+		icon_draw(b, item->button, (struct pt){ pic.x + 0.5 * pic.w, pic.y + 0.52 * pic.h },
+			  0.66 * pic.w, scaled(frame, 0.9f), button_fill);
+	if (label[0])
+		draw_card_label(b, t, label, r, y, r.h - pic.h, scaled(frame, 0.8f));
+}
+
+/* The side strip, from what the active mode offers (app_side_items): buttons in pairs, or
+ * cards. A parameter button that would change nothing is drawn disabled. */
+static void render_ui_side(struct batch *b, const struct ui_text *t, const struct app *app)
+{
+	struct app_side_item items[APP_SIDE_MAX];
+	size_t n = app_side_items(app, items);
+	enum layout_side_kind kind = n ? app_side_kind(&items[0]) : LAYOUT_SIDE_BUTTONS;
+
+	for (size_t i = 0; i < n; i++) {
+		struct layout_rect r = layout_side_slot(&app->view, i, kind);
+
+		if (kind == LAYOUT_SIDE_BUTTONS) {
+			struct layout_button lb = { items[i].button, r.x, r.y, r.w, r.h,
+						    layout_side_target(&app->view, i, kind) };
+
+			draw_button(b, t, app, &lb, items[i].lit);
+		} else {
+			draw_card(b, t, app, &items[i], r, kind);
+		}
+	}
+}
 void render_ui_selection(struct batch *b, const struct app *app, const struct camera_xf *xf)
 {
 	const struct branch *br;
@@ -338,11 +436,11 @@ void render_ui_buttons(struct batch *b, const struct ui_text *t, const struct ap
 	batch_rect(b, bar.x, bar.y, bar.w, bar.h, bar_fill);
 	batch_rect(b, bar.x, bar.y, fmax(1.0, 2.0 * s), bar.h, bar_edge);
 	for (size_t i = 0; i < n && i < LAYOUT_NBUTTONS; i++)
-		draw_button(b, t, app, &buttons[i]);
+		draw_button(b, t, app, &buttons[i], button_active(app, buttons[i].button));
 	if (app->tree.lifted) {
 		struct layout_button view = layout_view_button(v);
 
-		draw_button(b, t, app, &view);
+		draw_button(b, t, app, &view, false);
 	}
 	render_ui_side(b, t, app);
 }

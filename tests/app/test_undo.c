@@ -10,6 +10,7 @@
  * undo or redo.
  */
 #include <errno.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "app.h"
@@ -31,16 +32,8 @@ static void copy_doc(struct doc *d, const struct doc *src)
 	d->ops = calloc(src->nops + 1, sizeof(*d->ops));
 	CHECK(d->ops);
 	d->cap = src->nops + 1;
-	for (size_t i = 0; i < src->nops; i++) {
-		d->ops[i] = src->ops[i];
-		d->ops[i].points = NULL;
-		if (src->ops[i].npoints) {
-			d->ops[i].points = malloc(src->ops[i].npoints * sizeof(*d->ops[i].points));
-			CHECK(d->ops[i].points);
-			memcpy(d->ops[i].points, src->ops[i].points,
-			       src->ops[i].npoints * sizeof(*d->ops[i].points));
-		}
-	}
+	for (size_t i = 0; i < src->nops; i++)
+		CHECK_INT(doc_op_copy(&d->ops[i], &src->ops[i]), 0);
 	d->nops = src->nops;
 	d->cursor = src->cursor;
 	d->view = src->view;
@@ -85,6 +78,8 @@ static void same_tree(const struct tree *a, const struct tree *b)
 	CHECK_INT(a->nbranches, b->nbranches);
 	CHECK_INT(a->nleaves, b->nleaves);
 	CHECK_INT(a->lifted, b->lifted);
+	CHECK_INT(a->sides, b->sides);
+	CHECK_INT(a->season, b->season);
 	CHECK_INT(a->last_sketched, b->last_sketched);
 	CHECK_INT(a->last_sketched_end_us, b->last_sketched_end_us);
 	CHECK_INT(a->has_profile, b->has_profile);
@@ -96,6 +91,7 @@ static void same_tree(const struct tree *a, const struct tree *b)
 		CHECK_INT(x->parent, y->parent);
 		SAME(x->parent_t, y->parent_t);
 		CHECK_INT(x->generation, y->generation);
+		CHECK_INT(x->level, y->level);
 		CHECK_INT(x->origin, y->origin);
 		CHECK_INT(x->npoints, y->npoints);
 		CHECK(memcmp(x->points, y->points, x->npoints * sizeof(*x->points)) == 0);
@@ -128,7 +124,8 @@ static void same_as_replay(const struct app *a, bool mesh_may_be_empty)
 		same_mesh(&a->mesh.leaves, &b->mesh.leaves);
 	}
 	if (!a->tree.lifted) {
-		CHECK_INT(a->mode, APP_MODE_SKETCH);
+		/* a sketch is drawn on (the New strip may be open on an empty canvas) */
+		CHECK(a->mode == APP_MODE_SKETCH || (a->mode == APP_MODE_NEW && a->tree.nbranches == 0));
 		CHECK(!a->turning);
 	}
 	app_destroy(b);
@@ -215,6 +212,36 @@ static void canvas_point(const struct app *app, struct rng *r, double *x, double
 	} while (layout_hit(&app->view, *x, *y, &hit) || layout_hit_view_button(&app->view, *x, *y));
 }
 
+/* A tree from the New strip: the blank canvas or, as --generate puts them, a small
+ * L-system tree, shrub or palm (the presets have hundreds to thousands of elements: the
+ * sessions would take minutes; test_generate taps them). */
+static void new_tree(struct app *app, struct rng *r)
+{
+	struct gen_params p;
+
+	switch (rng_next(r) % 4) {
+	case 0:
+		press(app, BUTTON_TPL_BLANK);
+		return;
+	case 1:
+		gen_params_default(&p, GEN_PALM);
+		p.fronds = 5;
+		p.leaf_amount = 6;
+		break;
+	case 2:
+		gen_params_default(&p, GEN_LSYSTEM);
+		p.levels = 4;
+		break;
+	default:
+		gen_params_default(&p, GEN_SHRUB);
+		p.levels = 3;
+		break;
+	}
+	p.randomness = rng_uniform(r);
+	CHECK_INT(app_generate(app, &p, clock.now_us), 0);
+	clock.now_us += PEN_PAUSE_US;
+}
+
 /* One thing a visitor does; returns true if it was undo or redo. A gentle visitor seldom
  * cuts or erases, so the tree grows large. */
 static bool act(struct app *app, struct rng *r, int *propagations, bool gentle)
@@ -293,7 +320,7 @@ static bool act(struct app *app, struct rng *r, int *propagations, bool gentle)
 		/* leaf mode: a leaf, then its first suggestion */
 		press(app, BUTTON_LEAF);
 		if (app->mode == APP_MODE_LEAF && pick(app, r, false, &x, &y)) {
-			struct layout_rect s = layout_side_slot(&app->view, 0, true);
+			struct layout_rect s = layout_side_slot(&app->view, 0, LAYOUT_SIDE_CARDS);
 
 			loop(app, x, y - 14, 12, 1.0);
 			if (app->suggestions)
@@ -302,8 +329,18 @@ static bool act(struct app *app, struct rng *r, int *propagations, bool gentle)
 		if (app->mode == APP_MODE_LEAF)
 			press(app, BUTTON_LEAF);
 	} else if (what < 75) {
-		if (rng_next(r) % 3 == 0)
+		if (rng_next(r) % 3 == 0) {
 			press(app, BUTTON_NEW);
+			/* the New strip: mostly a template, small ones (the sessions stay quick) */
+			if (rng_next(r) % 3)
+				new_tree(app, r);
+		}
+	} else if (what < 78) {
+		/* a generated tree's parameter buttons, or the season (on any tree) */
+		if (app_generated(app) && rng_next(r) % 3)
+			press(app, (enum button)(BUTTON_GEN_MORE + rng_next(r) % 8));
+		else
+			press(app, BUTTON_SEASON);
 	} else if (what < 90) {
 		press(app, BUTTON_UNDO);
 		return true;

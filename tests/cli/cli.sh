@@ -11,15 +11,8 @@ ORBIT=$SRC/data/orbit.edaha-trace
 VIEW_SKETCHES="demo orbit lift-young lift-broadleaf lift-conifer lift-sine sketch-fan sketch-fan-outlines"
 OUTPUTS="screen.png model.glb model.obj model.mtl skeleton.json drawing.edaha"
 
-fail() { echo "FAIL: $*" >&2; exit 1; }
-# Under ASan the GL driver is preloaded into edaha only (see tests/meson.build).
-edaha() {
-	if [ -n "${EDAHA_GL_PRELOAD:-}" ]; then
-		LD_PRELOAD=$EDAHA_GL_PRELOAD ASAN_OPTIONS=${ASAN_OPTIONS:-}:verify_asan_link_order=0 "$EDAHA" "$@"
-	else
-		"$EDAHA" "$@"
-	fi
-}
+# fail, and edaha (the GL driver preloaded under ASan)
+. "$(dirname "$0")/../tools/edaha.sh"
 run() {
 	local rc=0
 	edaha --headless "$@" >"$T/stdout" 2>"$T/stderr" || rc=$?

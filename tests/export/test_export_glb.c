@@ -7,97 +7,11 @@
 
 #include "buf.h"
 #include "export.h"
+#include "glb_read.h"
 #include "mesh.h"
 #include "synth_tree.h"
 #include "test.h"
 #include "tree.h"
-
-static uint32_t u32(const unsigned char *p)
-{
-	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
-}
-
-struct glb {
-	struct json_object *json;
-	const unsigned char *bin;
-	size_t bin_len; /* 0: no BIN chunk */
-};
-
-/* Checks the container and returns the parsed JSON chunk and the BIN chunk. */
-static void parse_glb(const struct buf *b, struct glb *g)
-{
-	uint32_t json_len;
-	char *text;
-
-	CHECK(b->len >= 20 && b->len % 4 == 0);
-	CHECK_INT(u32(b->data), 0x46546c67);
-	CHECK_INT(u32(b->data + 4), 2);
-	CHECK_INT(u32(b->data + 8), b->len);
-	json_len = u32(b->data + 12);
-	CHECK_INT(u32(b->data + 16), 0x4e4f534a);
-	CHECK(json_len % 4 == 0 && json_len > 0 && 20 + (size_t)json_len <= b->len);
-	/* padding is spaces */
-	text = calloc(json_len + 1, 1);
-	CHECK(text);
-	memcpy(text, b->data + 20, json_len);
-	CHECK(strlen(text) == json_len);
-	g->json = json_tokener_parse(text);
-	CHECK(g->json);
-	free(text);
-
-	if (20 + (size_t)json_len == b->len) {
-		g->bin = NULL;
-		g->bin_len = 0;
-		return;
-	}
-	CHECK(28 + (size_t)json_len <= b->len);
-	g->bin_len = u32(b->data + 20 + json_len);
-	CHECK_INT(u32(b->data + 24 + json_len), 0x004e4942);
-	CHECK(g->bin_len % 4 == 0);
-	CHECK_INT(28 + (size_t)json_len + g->bin_len, b->len);
-	g->bin = b->data + 28 + json_len;
-}
-
-static struct json_object *get(struct json_object *o, const char *key)
-{
-	struct json_object *v = NULL;
-
-	CHECK(json_object_object_get_ex(o, key, &v));
-	return v;
-}
-
-static int64_t get_int(struct json_object *o, const char *key)
-{
-	struct json_object *v = get(o, key);
-
-	CHECK(json_object_is_type(v, json_type_int));
-	return json_object_get_int64(v);
-}
-
-static const char *get_str(struct json_object *o, const char *key)
-{
-	struct json_object *v = get(o, key);
-
-	CHECK(json_object_is_type(v, json_type_string));
-	return json_object_get_string(v);
-}
-
-static struct json_object *at(struct json_object *arr, size_t i)
-{
-	CHECK(json_object_is_type(arr, json_type_array));
-	CHECK(i < json_object_array_length(arr));
-	return json_object_array_get_idx(arr, i);
-}
-
-static size_t count(struct json_object *o, const char *key)
-{
-	struct json_object *v;
-
-	if (!json_object_object_get_ex(o, key, &v))
-		return 0;
-	CHECK(json_object_is_type(v, json_type_array));
-	return json_object_array_length(v);
-}
 
 static void export_tree(const struct tree *t, struct buf *out)
 {
@@ -105,7 +19,7 @@ static void export_tree(const struct tree *t, struct buf *out)
 
 	tree_mesh_init(&tm);
 	CHECK_INT(tree_mesh_build(&tm, t), 0);
-	CHECK_INT(export_glb(&tm, out), 0);
+	CHECK_INT(export_glb(t, &tm, NULL, out), 0);
 	tree_mesh_finish(&tm);
 }
 
@@ -130,67 +44,6 @@ static void test_empty(void)
 	json_object_put(g.json);
 	buf_finish(&b);
 	tree_finish(&t);
-}
-
-/* Accessors agree with the BIN chunk: views in range, bounds exact, indices in range. */
-static void check_accessors(const struct glb *g)
-{
-	struct json_object *accessors = get(g->json, "accessors");
-	struct json_object *views = get(g->json, "bufferViews");
-	struct json_object *buffer = at(get(g->json, "buffers"), 0);
-
-	CHECK_INT(get_int(buffer, "byteLength"), g->bin_len);
-	CHECK(!json_object_object_get_ex(buffer, "uri", NULL));
-	for (size_t i = 0; i < json_object_array_length(views); i++) {
-		struct json_object *v = at(views, i);
-		int64_t target = get_int(v, "target");
-
-		CHECK_INT(get_int(v, "buffer"), 0);
-		CHECK(get_int(v, "byteOffset") % 4 == 0);
-		CHECK(get_int(v, "byteOffset") + get_int(v, "byteLength") <= (int64_t)g->bin_len);
-		CHECK(target == 34962 || target == 34963);
-	}
-	for (size_t i = 0; i < json_object_array_length(accessors); i++) {
-		struct json_object *a = at(accessors, i);
-		struct json_object *v = at(views, (size_t)get_int(a, "bufferView"));
-		const unsigned char *data = g->bin + get_int(v, "byteOffset");
-		int64_t n = get_int(a, "count");
-		int64_t comp = get_int(a, "componentType");
-		const char *type = get_str(a, "type");
-
-		CHECK(n > 0);
-		if (!strcmp(type, "VEC3")) {
-			CHECK_INT(comp, 5126);
-			CHECK_INT(get_int(v, "byteLength"), 12 * n);
-		} else {
-			/* indices: in range of the primitive's vertex count (the accessor before) */
-			int64_t nv = get_int(at(accessors, i - 1), "count");
-
-			CHECK(!strcmp(type, "SCALAR"));
-			CHECK_INT(comp, 5125);
-			CHECK_INT(get_int(v, "byteLength"), 4 * n);
-			CHECK(n % 3 == 0);
-			for (int64_t k = 0; k < n; k++)
-				CHECK(u32(data + 4 * k) < nv);
-		}
-		if (json_object_object_get_ex(a, "min", NULL)) {
-			/* the printed bounds read back as exactly the float extremes */
-			for (int c = 0; c < 3; c++) {
-				float lo = 0, hi = 0;
-
-				for (int64_t k = 0; k < n; k++) {
-					uint32_t bits = u32(data + 12 * k + 4 * c);
-					float f;
-
-					memcpy(&f, &bits, sizeof(f));
-					lo = k == 0 || f < lo ? f : lo;
-					hi = k == 0 || f > hi ? f : hi;
-				}
-				CHECK((float)json_object_get_double(at(get(a, "min"), (size_t)c)) == lo);
-				CHECK((float)json_object_get_double(at(get(a, "max"), (size_t)c)) == hi);
-			}
-		}
-	}
 }
 
 static void test_tree(void)

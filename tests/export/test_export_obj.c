@@ -121,7 +121,7 @@ static void export_tree(const struct tree *t, struct buf *obj, struct buf *mtl,
 			struct tree_mesh *tm)
 {
 	CHECK_INT(tree_mesh_build(tm, t), 0);
-	CHECK_INT(export_obj(tm, "tree.mtl", obj, mtl), 0);
+	CHECK_INT(export_obj(t, tm, NULL, "tree.mtl", obj, mtl), 0);
 }
 
 static void test_tree(void)
@@ -186,8 +186,8 @@ static void test_tree(void)
 	/* bad names are refused, nothing written */
 	buf_reset(&obj2);
 	buf_reset(&mtl2);
-	CHECK_INT(export_obj(&tm, "a\nb", &obj2, &mtl2), -EINVAL);
-	CHECK_INT(export_obj(&tm, NULL, &obj2, &mtl2), -EINVAL);
+	CHECK_INT(export_obj(&t, &tm, NULL, "a\nb", &obj2, &mtl2), -EINVAL);
+	CHECK_INT(export_obj(&t, &tm, NULL, NULL, &obj2, &mtl2), -EINVAL);
 	CHECK_INT(obj2.len + mtl2.len, 0);
 
 	buf_finish(&obj);
@@ -226,9 +226,11 @@ static void test_numbers(void)
 	const float pos[] = { -0.0000001f, 1.5f, -2.25f, 123.456789f, -0.0000004f, 0.0000026f };
 	const float nor[] = { 0, 1, 0, 0, 1, 0 };
 	const uint32_t idx[] = { 0, 1, 0 };
+	struct tree t;
 	struct tree_mesh tm;
 	struct buf obj, mtl;
 
+	tree_init(&t);
 	tree_mesh_init(&tm);
 	buf_init(&obj);
 	buf_init(&mtl);
@@ -237,7 +239,7 @@ static void test_numbers(void)
 	tm.bark.indices = (uint32_t *)idx;
 	tm.bark.nvertices = 2;
 	tm.bark.nindices = 3;
-	CHECK_INT(export_obj(&tm, "m.mtl", &obj, &mtl), 0);
+	CHECK_INT(export_obj(&t, &tm, NULL, "m.mtl", &obj, &mtl), 0);
 	CHECK_INT(buf_append(&obj, "", 1), 0);
 	CHECK(strstr((const char *)obj.data, "\nv 0.000000 1.500000 -2.250000\n"));
 	/* 123.456789f is 123.4567871... as a float */
@@ -245,6 +247,7 @@ static void test_numbers(void)
 	CHECK(strstr((const char *)obj.data, "\nf 1//1 2//2 1//1\n"));
 	buf_finish(&obj);
 	buf_finish(&mtl);
+	tree_finish(&t);
 }
 
 int main(void)

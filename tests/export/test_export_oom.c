@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Allocation failure: fails the 1st, 2nd, ... allocation of tree_mesh_build and every
- * exporter in turn; each must return -ENOMEM, leave nothing half-built and leak nothing.
+ * exporter in turn, the glTF and OBJ exporters in every season; each must return -ENOMEM,
+ * leave nothing half-built and leak nothing.
  * Allocations fail through tests/fail_alloc.c, which replaces malloc & co., so it is not
  * built with sanitizers, which replace them too.
  */
@@ -21,6 +22,7 @@
 struct job {
 	const struct tree *tree;
 	const struct tree_mesh *mesh;
+	const struct tree_mesh_marks *marks;
 };
 
 typedef int (*op_fn)(const struct job *j);
@@ -44,7 +46,7 @@ static int op_glb(const struct job *j)
 	int r;
 
 	buf_init(&b);
-	r = export_glb(j->mesh, &b);
+	r = export_glb(j->tree, j->mesh, j->marks, &b);
 	if (r < 0)
 		CHECK_INT(b.len, 0);
 	buf_finish(&b);
@@ -58,7 +60,7 @@ static int op_obj(const struct job *j)
 
 	buf_init(&obj);
 	buf_init(&mtl);
-	r = export_obj(j->mesh, "tree.mtl", &obj, &mtl);
+	r = export_obj(j->tree, j->mesh, j->marks, "tree.mtl", &obj, &mtl);
 	if (r < 0)
 		CHECK_INT(obj.len + mtl.len, 0);
 	buf_finish(&obj);
@@ -102,29 +104,41 @@ static long exhaust(op_fn op, const struct job *j)
 
 int main(void)
 {
+	static const enum season seasons[] = { SEASON_SUMMER, SEASON_SPRING, SEASON_AUTUMN,
+					       SEASON_WINTER };
 	struct tree t;
 	struct tree_mesh tm;
-	struct job j = { &t, &tm };
+	struct tree_mesh_marks mk;
+	struct job j = { &t, &tm, &mk };
 	long n;
 
 	tree_init(&t);
 	tree_mesh_init(&tm);
+	tree_mesh_marks_init(&mk);
 	CHECK_INT(synth_tree(&t, 12, 2, 11), 0);
-	CHECK_INT(tree_mesh_build(&tm, &t), 0);
+	CHECK_INT(tree_mesh_build_marked(&tm, &t, &mk), 0);
+	CHECK_INT(mk.nleaves, t.nleaves + 1);
 
 	n = exhaust(op_mesh, &j);
 	printf("tree_mesh_build: %ld allocations, each failed once\n", n);
 	CHECK(n > 0);
-	n = exhaust(op_glb, &j);
-	printf("export_glb: %ld allocations, each failed once\n", n);
-	CHECK(n > 0);
-	n = exhaust(op_obj, &j);
-	printf("export_obj: %ld allocations, each failed once\n", n);
-	CHECK(n > 0);
+	for (size_t i = 0; i < sizeof(seasons) / sizeof(*seasons); i++) {
+		t.season = seasons[i];
+		n = exhaust(op_glb, &j);
+		printf("export_glb in %s: %ld allocations, each failed once\n",
+		       season_name(t.season), n);
+		CHECK(n > 0);
+		n = exhaust(op_obj, &j);
+		printf("export_obj in %s: %ld allocations, each failed once\n",
+		       season_name(t.season), n);
+		CHECK(n > 0);
+	}
+	t.season = SEASON_SUMMER;
 	n = exhaust(op_skeleton, &j);
 	printf("export_skeleton: %ld allocations, each failed once\n", n);
 	CHECK(n > 0);
 
+	tree_mesh_marks_finish(&mk);
 	tree_mesh_finish(&tm);
 	tree_finish(&t);
 	return 0;

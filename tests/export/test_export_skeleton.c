@@ -111,7 +111,7 @@ static void test_exact(void)
 	const struct vec3 leaf[] = { { 1, 2, 0 }, { 1.5, 2, 0 }, { 1, 2.5, 0.1234567 } };
 	const char *want =
 		"{\"format\":\"edaha-skeleton\",\"version\":1,\"up\":\"y\",\"units\":\"m\","
-		"\"view\":[0,0,-1],\"branches\":["
+		"\"view\":[0,0,-1],\"season\":\"summer\",\"branches\":["
 		"{\"id\":0,\"parent\":-1,\"generation\":0,\"origin\":\"sketch\",\"parent_t\":0,"
 		"\"points\":[[0,0,0],[0,0.1,0.333333]],\"radii\":[0.25,0]},"
 		"{\"id\":1,\"parent\":0,\"generation\":1,\"origin\":\"propagate\",\"parent_t\":0.7,"
@@ -150,7 +150,7 @@ static void test_empty(void)
 	check_tree(root, &t);
 	CHECK(!strcmp((const char *)out.data,
 		      "{\"format\":\"edaha-skeleton\",\"version\":1,\"up\":\"y\",\"units\":\"m\","
-		      "\"view\":[0,0,-1],\"branches\":[],\"leaves\":[]}\n"));
+		      "\"view\":[0,0,-1],\"season\":\"summer\",\"branches\":[],\"leaves\":[]}\n"));
 	json_object_put(root);
 	buf_finish(&out);
 	tree_finish(&t);

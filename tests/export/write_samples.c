@@ -2,7 +2,9 @@
 /*
  * write_samples DIR: writes sample exports for external checkers (the Khronos glTF
  * validator, assimp): DIR/empty.glb, one-branch.glb, concave-leaf.glb, synth-500.glb,
- * plus synth-500.obj/.mtl and synth-500.skeleton.json. See validate_samples.sh.
+ * plus synth-500.obj/.mtl and synth-500.skeleton.json, all in summer (summer.sha256 has
+ * what they were before seasons); and synth-500-SEASON.glb/.obj/.mtl for spring, autumn
+ * and winter. See validate_samples.sh.
  */
 #include <errno.h>
 #include <stdio.h>
@@ -37,21 +39,61 @@ static int write_file(const char *dir, const char *name, const struct buf *b)
 	return 0;
 }
 
+/* The meshes with their marks, as the app keeps them. */
+static int build(struct tree_mesh *tm, struct tree_mesh_marks *mk, const struct tree *t)
+{
+	tree_mesh_init(tm);
+	tree_mesh_marks_init(mk);
+	return tree_mesh_build_marked(tm, t, mk);
+}
+
+static void unbuild(struct tree_mesh *tm, struct tree_mesh_marks *mk)
+{
+	tree_mesh_marks_finish(mk);
+	tree_mesh_finish(tm);
+}
+
 static int write_glb(const char *dir, const char *name, const struct tree *t)
 {
 	struct tree_mesh tm;
+	struct tree_mesh_marks mk;
 	struct buf b;
 	int r;
 
-	tree_mesh_init(&tm);
 	buf_init(&b);
-	r = tree_mesh_build(&tm, t);
+	r = build(&tm, &mk, t);
 	if (r >= 0)
-		r = export_glb(&tm, &b);
+		r = export_glb(t, &tm, &mk, &b);
 	if (r >= 0)
 		r = write_file(dir, name, &b);
 	buf_finish(&b);
-	tree_mesh_finish(&tm);
+	unbuild(&tm, &mk);
+	return r;
+}
+
+/* NAME.obj and NAME.mtl */
+static int write_obj(const char *dir, const char *name, const struct tree *t)
+{
+	char obj_name[256], mtl_name[256];
+	struct tree_mesh tm;
+	struct tree_mesh_marks mk;
+	struct buf obj, mtl;
+	int r;
+
+	snprintf(obj_name, sizeof(obj_name), "%s.obj", name);
+	snprintf(mtl_name, sizeof(mtl_name), "%s.mtl", name);
+	buf_init(&obj);
+	buf_init(&mtl);
+	r = build(&tm, &mk, t);
+	if (r >= 0)
+		r = export_obj(t, &tm, &mk, mtl_name, &obj, &mtl);
+	if (r >= 0)
+		r = write_file(dir, obj_name, &obj);
+	if (r >= 0)
+		r = write_file(dir, mtl_name, &mtl);
+	buf_finish(&obj);
+	buf_finish(&mtl);
+	unbuild(&tm, &mk);
 	return r;
 }
 
@@ -76,29 +118,36 @@ static int concave_leaf(struct tree *t)
 
 static int synth_extras(const char *dir, const struct tree *t)
 {
-	struct tree_mesh tm;
-	struct buf obj, mtl, skel;
+	struct buf skel;
 	int r;
 
-	tree_mesh_init(&tm);
-	buf_init(&obj);
-	buf_init(&mtl);
 	buf_init(&skel);
-	r = tree_mesh_build(&tm, t);
-	if (r >= 0)
-		r = export_obj(&tm, "synth-500.mtl", &obj, &mtl);
+	r = write_obj(dir, "synth-500", t);
 	if (r >= 0)
 		r = export_skeleton(t, &skel);
 	if (r >= 0)
-		r = write_file(dir, "synth-500.obj", &obj);
-	if (r >= 0)
-		r = write_file(dir, "synth-500.mtl", &mtl);
-	if (r >= 0)
 		r = write_file(dir, "synth-500.skeleton.json", &skel);
-	buf_finish(&obj);
-	buf_finish(&mtl);
 	buf_finish(&skel);
-	tree_mesh_finish(&tm);
+	return r;
+}
+
+/* The same tree in the other seasons. */
+static int synth_seasons(const char *dir, struct tree *t)
+{
+	static const enum season seasons[] = { SEASON_SPRING, SEASON_AUTUMN, SEASON_WINTER };
+	int r = 0;
+
+	for (size_t i = 0; i < sizeof(seasons) / sizeof(*seasons) && r >= 0; i++) {
+		char name[64];
+
+		t->season = seasons[i];
+		snprintf(name, sizeof(name), "synth-500-%s.glb", season_name(seasons[i]));
+		r = write_glb(dir, name, t);
+		snprintf(name, sizeof(name), "synth-500-%s", season_name(seasons[i]));
+		if (r >= 0)
+			r = write_obj(dir, name, t);
+	}
+	t->season = SEASON_SUMMER;
 	return r;
 }
 
@@ -128,6 +177,8 @@ int main(int argc, char **argv)
 		r = write_glb(argv[1], "synth-500.glb", &t);
 	if (r >= 0)
 		r = synth_extras(argv[1], &t);
+	if (r >= 0)
+		r = synth_seasons(argv[1], &t);
 	tree_finish(&t);
 	if (r < 0) {
 		fprintf(stderr, "write_samples: %s\n", strerror(-r));

@@ -92,9 +92,9 @@ static void export_all(struct app *app)
 	buf_init(&b);
 	check("export_skeleton", export_skeleton(&app->tree, &a));
 	buf_reset(&a);
-	check("export_glb", export_glb(&app->mesh, &a));
+	check("export_glb", export_glb(&app->tree, &app->mesh, &app->mesh_marks, &a));
 	buf_reset(&a);
-	check("export_obj", export_obj(&app->mesh, "model.mtl", &a, &b));
+	check("export_obj", export_obj(&app->tree, &app->mesh, &app->mesh_marks, "model.mtl", &a, &b));
 	buf_reset(&a);
 	r = doc_serialize(&app->doc, &app->tree, &a);
 	check("doc_serialize", r);

@@ -6,6 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "arrange.h"
+#include "propagate.h"
+#include "test.h"
+
 #define TUBE_SIDES 10
 #define PI 3.14159265358979323846
 
@@ -234,6 +238,13 @@ static int build_stroke(struct app *app, enum event_tool tool, double x0, double
 	return 0;
 }
 
+/* The strokes of the scenes' histories, for what reads them (the side strip asks whether
+ * the tree is a generated one): never applied. */
+static struct doc_op scene_ops[5] = {
+	{ .kind = DOC_OP_STROKE }, { .kind = DOC_OP_STROKE }, { .kind = DOC_OP_STROKE },
+	{ .kind = DOC_OP_STROKE }, { .kind = DOC_OP_STROKE },
+};
+
 int scene_build(struct app *app, const char *name)
 {
 	int r;
@@ -241,6 +252,7 @@ int scene_build(struct app *app, const char *name)
 	/* all-zero is an empty mesh, stroke and history */
 	memset(app, 0, sizeof(*app));
 	app->mesh_serial = 1;
+	app->doc.ops = scene_ops;
 
 	if (!strcmp(name, "leaf")) {
 		/* drawing a new branch in leaf mode; undo possible, nothing to redo */
@@ -317,5 +329,94 @@ void scene_finish(struct app *app)
 	free(app->mesh.leaves.normals);
 	free(app->mesh.leaves.indices);
 	free(app->stroke.points);
+	memset(app, 0, sizeof(*app));
+}
+
+/* A branch from root (or from the point at pt on parent) along dir, curving to bend. */
+static int add_bent(struct tree *t, int parent, double pt, struct vec3 root, struct vec3 dir,
+		    struct vec3 bend, double len, double r0)
+{
+	struct vec3 p[8];
+	double r[8], l0;
+	int id;
+
+	if (parent >= 0)
+		root = tree_frame_at(&t->branches[parent], pt).origin;
+	for (int k = 0; k < 8; k++) {
+		double s = k / 7.0;
+
+		p[k] = vec3_add(vec3_scale(dir, s), vec3_scale(bend, s * s));
+		r[k] = r0 * (1.0 - 0.7 * s);
+	}
+	l0 = vec3_polyline_length(p, 8);
+	for (int k = 0; k < 8; k++)
+		p[k] = vec3_add(root, vec3_scale(p[k], len / l0));
+	id = tree_add_branch(t, parent, parent >= 0 ? pt : 0.0, ORIGIN_SKETCH, p, r, 8);
+	CHECK(id >= 0);
+	return id;
+}
+
+/* A lobed leaf of n points beside branch b at u, tilted out of the picture plane. */
+static void add_tree_leaf(struct tree *t, int b, double u, double size, int n, double lobe)
+{
+	struct tree_frame f = tree_frame_at(&t->branches[b], u);
+	struct vec3 p[16];
+	int id;
+
+	for (int i = 0; i < n; i++) {
+		double a = 2.0 * VEC_PI * i / n, l = i % 2 ? lobe : 1.0;
+		struct vec3 across = vec3_scale(f.normal, size * l * (1.0 + cos(a)));
+		struct vec3 along = vec3_scale(f.tangent, 0.5 * size * l * sin(a));
+		struct vec3 out = vec3_scale(f.binormal, 0.4 * size * (1.0 + cos(a)));
+
+		p[i] = vec3_add(f.origin, vec3_add(across, vec3_add(along, out)));
+	}
+	id = tree_add_leaf(t, b, ORIGIN_SKETCH, p, (size_t)n);
+	CHECK(id >= 0);
+	t->leaves[id].branch_t = u;
+	CHECK_INT(tree_leaf_attach(t, (size_t)id), 0);
+}
+
+/* scene.h says what it holds. */
+void scene_leafy(struct app *app, int width, int height, struct camera cam, bool copies)
+{
+	struct tree *t = &app->tree;
+	int trunk, s;
+
+	memset(app, 0, sizeof(*app));
+	view_init(&app->view, width, height);
+	tree_init(t);
+	tree_mesh_init(&app->mesh);
+	tree_mesh_marks_init(&app->mesh_marks);
+	trunk = add_bent(t, -1, 0, vec3(0, 0, 0), vec3(0, 1, 0), vec3(0.4, 0, 0.3), 6.0, 0.3);
+	for (int k = 0; k < 23; k++) {
+		double a = 2.4 * k, up = 0.3 + 0.03 * k;
+		int parent = k < 8 ? trunk : 1 + (k % 8);
+
+		struct vec3 dir = vec3(cos(a), up + (k < 8 ? 0.2 : 0.6), sin(a));
+
+		add_bent(t, parent, 0.35 + 0.025 * k, vec3(0, 0, 0), dir,
+			 vec3(0, 0.3, 0.1 * (k % 3)), k < 8 ? 2.2 - 0.1 * k : 0.9,
+			 k < 8 ? 0.08 : 0.03);
+	}
+	s = 3;
+	add_tree_leaf(t, s, 0.8, 0.22, 9, 0.6);
+	if (copies)
+		CHECK_INT(arrange_apply(t, s, ARRANGE_WHORL_ADD), 1);
+	add_tree_leaf(t, s, 0.5, 0.18, 7, 0.8);
+	if (copies)
+		CHECK(propagate_apply(t, s, PROPAGATE_FIXED_COUNT) > 40);
+	add_tree_leaf(t, 0, 0.55, 0.3, 8, 0.5);
+	t->lifted = true;
+	app->camera = cam;
+	CHECK_INT(tree_mesh_build_marked(&app->mesh, t, &app->mesh_marks), 0);
+	app->mesh_serial = 1;
+}
+
+void scene_leafy_finish(struct app *app)
+{
+	tree_mesh_marks_finish(&app->mesh_marks);
+	tree_mesh_finish(&app->mesh);
+	tree_finish(&app->tree);
 	memset(app, 0, sizeof(*app));
 }

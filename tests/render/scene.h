@@ -23,5 +23,15 @@ void scene_finish(struct app *app);
 uint64_t scene_time_us(const char *name);
 bool scene_japanese(const char *name);
 
+/*
+ * An app holding a 3D tree of 24 branches made as a visitor would: a leaf drawn on one
+ * branch and whorl-added, another drawn there, propagated onto every branch (fixed
+ * count), then one more leaf drawn by hand: 2 shapes with copies, one leaf of its own
+ * (without copies: 3 leaves of their own). Meshes and their marks as app.c builds them.
+ * Checks as it goes (tests/test.h).
+ */
+void scene_leafy(struct app *app, int width, int height, struct camera cam, bool copies);
+void scene_leafy_finish(struct app *app);
+
 /* Appends a tube from a to b, radii ra and rb, to the bark: for tests that build their own. */
 int scene_add_tube(struct mesh *m, struct vec3 a, struct vec3 b, double ra, double rb);

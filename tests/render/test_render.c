@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "app.h"
+#include "app_mode.h"
 #include "arrange.h"
 #include "layout.h"
 #include "egl_headless.h"
@@ -102,98 +103,6 @@ static void test_upload_only_on_serial(void)
 	scene_finish(&app);
 }
 
-/* A branch from root (or from the point at pt on parent) along dir, curving to bend. */
-static int add_bent(struct tree *t, int parent, double pt, struct vec3 root, struct vec3 dir,
-		    struct vec3 bend, double len, double r0)
-{
-	struct vec3 p[8];
-	double r[8], l0;
-	int id;
-
-	if (parent >= 0)
-		root = tree_frame_at(&t->branches[parent], pt).origin;
-	for (int k = 0; k < 8; k++) {
-		double s = k / 7.0;
-
-		p[k] = vec3_add(vec3_scale(dir, s), vec3_scale(bend, s * s));
-		r[k] = r0 * (1.0 - 0.7 * s);
-	}
-	l0 = vec3_polyline_length(p, 8);
-	for (int k = 0; k < 8; k++)
-		p[k] = vec3_add(root, vec3_scale(p[k], len / l0));
-	id = tree_add_branch(t, parent, parent >= 0 ? pt : 0.0, ORIGIN_SKETCH, p, r, 8);
-	CHECK(id >= 0);
-	return id;
-}
-
-/* A lobed leaf of n points beside branch b at u, tilted out of the picture plane. */
-static void add_leaf(struct tree *t, int b, double u, double size, int n, double lobe)
-{
-	struct tree_frame f = tree_frame_at(&t->branches[b], u);
-	struct vec3 p[16];
-	int id;
-
-	for (int i = 0; i < n; i++) {
-		double a = 2.0 * VEC_PI * i / n, l = i % 2 ? lobe : 1.0;
-		struct vec3 across = vec3_scale(f.normal, size * l * (1.0 + cos(a)));
-		struct vec3 along = vec3_scale(f.tangent, 0.5 * size * l * sin(a));
-		struct vec3 out = vec3_scale(f.binormal, 0.4 * size * (1.0 + cos(a)));
-
-		p[i] = vec3_add(f.origin, vec3_add(across, vec3_add(along, out)));
-	}
-	id = tree_add_leaf(t, b, ORIGIN_SKETCH, p, (size_t)n);
-	CHECK(id >= 0);
-	t->leaves[id].branch_t = u;
-	CHECK_INT(tree_leaf_attach(t, (size_t)id), 0);
-}
-
-/*
- * An app holding a 3D tree of 24 branches made as a visitor would: a leaf drawn on one
- * branch and whorl-added, another drawn there, propagated onto every branch (fixed
- * count), then one more leaf drawn by hand: 2 shapes with copies, one leaf of its own
- * (without copies: 3 leaves of their own). Meshes as app.c builds them.
- */
-static void leafy_app(struct app *app, int width, int height, struct camera cam, bool copies)
-{
-	struct tree *t = &app->tree;
-	int trunk, s;
-
-	memset(app, 0, sizeof(*app));
-	view_init(&app->view, width, height);
-	tree_init(t);
-	tree_mesh_init(&app->mesh);
-	trunk = add_bent(t, -1, 0, vec3(0, 0, 0), vec3(0, 1, 0), vec3(0.4, 0, 0.3), 6.0, 0.3);
-	for (int k = 0; k < 23; k++) {
-		double a = 2.4 * k, up = 0.3 + 0.03 * k;
-		int parent = k < 8 ? trunk : 1 + (k % 8);
-
-		struct vec3 dir = vec3(cos(a), up + (k < 8 ? 0.2 : 0.6), sin(a));
-
-		add_bent(t, parent, 0.35 + 0.025 * k, vec3(0, 0, 0), dir,
-			 vec3(0, 0.3, 0.1 * (k % 3)), k < 8 ? 2.2 - 0.1 * k : 0.9,
-			 k < 8 ? 0.08 : 0.03);
-	}
-	s = 3;
-	add_leaf(t, s, 0.8, 0.22, 9, 0.6);
-	if (copies)
-		CHECK_INT(arrange_apply(t, s, ARRANGE_WHORL_ADD), 1);
-	add_leaf(t, s, 0.5, 0.18, 7, 0.8);
-	if (copies)
-		CHECK(propagate_apply(t, s, PROPAGATE_FIXED_COUNT) > 40);
-	add_leaf(t, 0, 0.55, 0.3, 8, 0.5);
-	t->lifted = true;
-	app->camera = cam;
-	CHECK_INT(tree_mesh_build(&app->mesh, t), 0);
-	app->mesh_serial = 1;
-}
-
-static void leafy_finish(struct app *app)
-{
-	tree_mesh_finish(&app->mesh);
-	tree_finish(&app->tree);
-	memset(app, 0, sizeof(*app));
-}
-
 /* Pixels whose channels differ by more than max_diff. */
 static size_t differing(const uint8_t *a, const uint8_t *b, size_t size, int max_diff)
 {
@@ -231,7 +140,7 @@ static void test_instanced(void)
 	for (size_t c = 0; c < sizeof(cams) / sizeof(cams[0]); c++) {
 		size_t diff;
 
-		leafy_app(&app, 640, 400, cams[c], true);
+		scene_leafy(&app, 640, 400, cams[c], true);
 		app.mesh_serial = 10 * (c + 1); /* a new tree to the renderers */
 		leaf_instances_init(&li);
 		CHECK_INT(leaf_instances_build(&li, &app.tree), 0);
@@ -269,11 +178,11 @@ static void test_instanced(void)
 		CHECK(differing(f.a, f.b, f.size, 8) > 1000);
 		app.tree.nleaves = li.ninstances;
 		leaf_instances_finish(&li);
-		leafy_finish(&app);
+		scene_leafy_finish(&app);
 	}
 
 	/* no copies: the merged leaves mesh, drawn in one call, uploaded as it is */
-	leafy_app(&app, 640, 400, cams[1], false);
+	scene_leafy(&app, 640, 400, cams[1], false);
 	app.mesh_serial = 100;
 	draw(&f, inst, &app, f.a);
 	render_get_stats(inst, &si);
@@ -285,10 +194,120 @@ static void test_instanced(void)
 	CHECK_INT(si.tree_triangles, sm.tree_triangles);
 	CHECK_INT(inst->upload_bytes, merged->upload_bytes);
 	CHECK(memcmp(f.a, f.b, f.size) == 0);
-	leafy_finish(&app);
+	scene_leafy_finish(&app);
 
 	render_destroy(inst);
 	render_destroy(merged);
+	fixture_finish(&f);
+}
+
+/* Pixels of the canvas (left of x1, of a 640-pixel wide image) where the red channel leads
+ * the green by a margin: autumn's leaves, not summer's or the bark's. */
+static size_t reddish(const uint8_t *img, size_t size, int x1)
+{
+	size_t n = 0;
+
+	for (size_t i = 0; i < size; i += 4)
+		n += (int)(i / 4 % 640) < x1 && img[i] > img[i + 1] + 60;
+	return n;
+}
+
+/* Whether two 640-pixel wide images agree left of x1 (the bar shows the season). */
+static bool same_canvas(const uint8_t *a, const uint8_t *b, size_t size, int x1)
+{
+	for (size_t i = 0; i < size; i += 640 * 4)
+		if (memcmp(a + i, b + i, (size_t)x1 * 4) != 0)
+			return false;
+	return true;
+}
+
+/*
+ * Seasons: leaves in autumn, in a colour each, drawn instanced (a colour an instance) and
+ * merged (a colour a vertex, GLES 2's way, and expanded without 32-bit indices) give the
+ * same picture, with as many calls as summer's; in winter no leaf is drawn; back in summer
+ * the picture is summer's again, drawn with one colour.
+ */
+static void test_seasons(void)
+{
+	struct fixture f;
+	struct app app;
+	struct render *inst, *merged, *expanded;
+	struct render_stats si, sm;
+	uint8_t *summer, *bare;
+	size_t bark_triangles;
+
+	fixture_init(&f, 640, 400);
+	summer = malloc(f.size);
+	bare = malloc(f.size);
+	inst = render_create();
+	merged = render_create();
+	expanded = render_create();
+	CHECK(summer && bare && inst && merged && expanded);
+	merged->instanced = false;
+	expanded->instanced = false;
+	expanded->uint_indices = false;
+	scene_leafy(&app, 640, 400, (struct camera){ 30.0f, 20.0f }, true);
+	bark_triangles = app.mesh.bark.nindices / 3;
+
+	draw(&f, inst, &app, summer);
+	CHECK(!inst->uploaded_tinted);
+	CHECK_INT(reddish(summer, f.size, (int)layout_bar(&app.view).x), 0);
+	for (int s = 0; s < 2; s++) {
+		app.tree.season = s == 0 ? SEASON_AUTUMN : SEASON_SPRING;
+		app.mesh_serial++;
+		draw(&f, inst, &app, f.a);
+		render_get_stats(inst, &si);
+		CHECK(inst->uploaded_instanced && inst->uploaded_tinted);
+		draw(&f, merged, &app, f.b);
+		render_get_stats(merged, &sm);
+		CHECK(!merged->uploaded_instanced && merged->uploaded_tinted);
+		CHECK_INT(si.draw_calls, 3 + 1 + inst->inst.nshapes);
+		CHECK_INT(sm.draw_calls, 4);
+		CHECK_INT(si.tree_triangles, sm.tree_triangles);
+		CHECK(differing(f.a, f.b, f.size, 8) <= f.size / 4 / 1000);
+		CHECK(differing(f.a, summer, f.size, 8) > 1000);
+		if (s == 0)
+			CHECK(reddish(f.a, f.size, (int)layout_bar(&app.view).x) > 500);
+		draw(&f, expanded, &app, f.a);
+		CHECK(!expanded->leaves.indexed);
+		CHECK(memcmp(f.a, f.b, f.size) == 0);
+	}
+
+	/* winter: the branches alone, as a tree without leaves */
+	app.tree.season = SEASON_WINTER;
+	app.mesh_serial++;
+	draw(&f, inst, &app, f.a);
+	render_get_stats(inst, &si);
+	CHECK_INT(si.tree_triangles, bark_triangles);
+	CHECK_INT(si.draw_calls, 3);
+	draw(&f, merged, &app, f.b);
+	CHECK(memcmp(f.a, f.b, f.size) == 0);
+	{
+		size_t nleaves = app.tree.nleaves, nindices = app.mesh.leaves.nindices;
+
+		app.tree.season = SEASON_SUMMER;
+		app.tree.nleaves = 0;
+		app.mesh.leaves.nindices = 0;
+		app.mesh_serial++;
+		draw(&f, merged, &app, bare);
+		CHECK(same_canvas(f.a, bare, f.size, (int)layout_bar(&app.view).x));
+		CHECK(memcmp(f.a, bare, f.size) != 0); /* the season button's picture */
+		app.tree.nleaves = nleaves;
+		app.mesh.leaves.nindices = nindices;
+	}
+
+	/* summer again: one colour, summer's picture, the season alone telling (no new serial) */
+	app.tree.season = SEASON_SUMMER;
+	draw(&f, inst, &app, f.a);
+	CHECK(!inst->uploaded_tinted);
+	CHECK(memcmp(f.a, summer, f.size) == 0);
+
+	scene_leafy_finish(&app);
+	render_destroy(inst);
+	render_destroy(merged);
+	render_destroy(expanded);
+	free(summer);
+	free(bare);
 	fixture_finish(&f);
 }
 
@@ -461,6 +480,93 @@ static void test_turn(void)
 	CHECK(memcmp(f.a, f.b, f.size) != 0);
 
 	free(mid);
+	render_destroy(r);
+	fixture_finish(&f);
+	app_destroy(app);
+}
+
+static void press_button(struct app *app, uint64_t *t, enum button b)
+{
+	struct event e = { .type = EVENT_BUTTON, .button = (int)b, .pressed = true };
+
+	e.time_us = (*t += 8000);
+	app_handle_event(app, &e);
+	e.pressed = false;
+	e.time_us = (*t += 80000);
+	app_handle_event(app, &e);
+}
+
+/* Pixels of a rectangle (top-down rows) that are not the card's paper: what is drawn on it. */
+static size_t drawn_in(const uint8_t *img, int width, struct layout_rect r)
+{
+	size_t n = 0;
+
+	for (int y = (int)r.y + 4; y < (int)(r.y + r.h) - 4; y++)
+		for (int x = (int)r.x + 4; x < (int)(r.x + r.w) - 4; x++) {
+			const uint8_t *p = img + ((size_t)y * (size_t)width + (size_t)x) * 4;
+
+			n += p[0] < 230 || p[1] < 230 || p[2] < 220;
+		}
+	return n;
+}
+
+/*
+ * The New strip: every card shows its tree (the blank one its sheet), each picture's meshes
+ * uploaded once until previews_serial changes; the leaf suggestions' slots are not the
+ * templates'.
+ */
+static void test_templates(void)
+{
+	struct fixture f;
+	struct app *app = app_create(640, 400, 1);
+	struct app_side_item items[APP_SIDE_MAX];
+	struct render_stats st;
+	struct render *r;
+	uint64_t t = 1000;
+	size_t n;
+
+	CHECK(app);
+	press_button(app, &t, BUTTON_NEW);
+	CHECK_INT(app->mode, APP_MODE_NEW);
+	CHECK(app->templates_ready);
+	n = app_side_items(app, items);
+	CHECK_INT(n, 1 + GEN_PRESET_COUNT);
+	CHECK_INT(app_side_kind(&items[0]), LAYOUT_SIDE_NAMED_CARDS);
+	fixture_init(&f, 640, 400);
+	r = render_create();
+	CHECK(r);
+
+	draw(&f, r, app, f.a);
+	render_get_stats(r, &st);
+	/* the (empty) tree's two meshes, two for each template */
+	CHECK_INT(st.uploads, 2 + 2 * GEN_PRESET_COUNT);
+	CHECK_INT(st.tree_triangles, 0);
+	for (size_t i = 0; i < n; i++) {
+		struct layout_rect card = layout_side_slot(&app->view, i, LAYOUT_SIDE_NAMED_CARDS);
+		size_t drawn = drawn_in(f.a, 640, layout_card_picture(card, LAYOUT_SIDE_NAMED_CARDS));
+
+		if (drawn < 200)
+			fprintf(stderr, "card %zu: %zu pixels drawn\n", i, drawn);
+		CHECK(drawn >= 200);
+	}
+	/* nothing changed: nothing uploaded, the same picture */
+	draw(&f, r, app, f.b);
+	render_get_stats(r, &st);
+	CHECK_INT(st.uploads, 0);
+	CHECK(memcmp(f.a, f.b, f.size) == 0);
+	/* the app's pictures changed: each template again */
+	app->previews_serial++;
+	draw(&f, r, app, f.b);
+	render_get_stats(r, &st);
+	CHECK_INT(st.uploads, 2 * GEN_PRESET_COUNT);
+	CHECK(memcmp(f.a, f.b, f.size) == 0);
+	/* drawing closes the strip: no pictures, no uploads */
+	pen_line(app, &t, 320, 368, 320, 200);
+	CHECK_INT(app->mode, APP_MODE_SKETCH);
+	draw(&f, r, app, f.b);
+	render_get_stats(r, &st);
+	CHECK_INT(st.uploads, 2);
+
 	render_destroy(r);
 	fixture_finish(&f);
 	app_destroy(app);
@@ -684,9 +790,11 @@ int main(void)
 	test_status_fades();
 	test_attract();
 	test_turn();
+	test_templates();
 	test_upload_only_on_serial();
 	test_expanded_indices();
 	test_instanced();
+	test_seasons();
 	test_bad_mesh();
 	test_empty();
 	test_antialiased_stroke();

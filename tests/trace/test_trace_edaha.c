@@ -87,8 +87,8 @@ static size_t make_events(struct event *ev, size_t max)
 
 static void test_round_trip(void)
 {
-	struct event ev[64];
-	size_t n = make_events(ev, 64);
+	struct event ev[128];
+	size_t n = make_events(ev, 128);
 	struct trace t = { 0 };
 	struct error err;
 	struct buf b;
@@ -309,7 +309,7 @@ static const struct bad bad_inputs[] = {
 	  "tilt_y -91 out of range -90..90" },
 	{ "edaha-trace 1\nscreen 1280 800\n5 button 3D pressed\n", 3,
 	  "unknown button \"3D\" (valid: 3d clone leaf propagate undo redo export new fixed-count "
-	  "fixed-size view)" },
+	  "fixed-size view season tpl-blank" },
 	{ "edaha-trace 1\nscreen 1280 800\n5 button undo down\n", 3,
 	  "expected pressed or released, got \"down\"" },
 	{ "edaha-trace 1\nscreen 1280 800\n5 button undo\n", 3, "expected 4 fields for button, got 3" },
@@ -413,8 +413,8 @@ static char *temp_dir(void)
 
 static void test_writer_and_load(void)
 {
-	struct event ev[64];
-	size_t n = make_events(ev, 64);
+	struct event ev[128];
+	size_t n = make_events(ev, 128);
 	char *dir = temp_dir();
 	char path[512], missing[512], big[512];
 	struct trace_writer *w;

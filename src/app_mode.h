@@ -1,0 +1,61 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+/*
+ * A kiosk mode is a small handler behind this interface: what a finished pen stroke means
+ * in it, what its side strip (the column at the canvas's left edge) offers, and what a
+ * tap there does. app.c and app_modes.c dispatch to the active mode's handler; each mode
+ * is its own file (app_mode_*.c). Not for the app's users but the renderer, which draws
+ * the side strip from app_side_items().
+ */
+#include "app.h"
+#include "layout.h"
+
+/* One place on the side strip: a button, or a card with a picture (a thumbnail). */
+struct app_side_item {
+	bool thumbnail;
+	/* What a tap presses (GPIO and traces press the same); BUTTON_COUNT: the mode's own
+	 * use of a tap, `tap` (a leaf arrangement: its pattern). */
+	enum button button;
+	int tap;
+	/* A thumbnail's picture (NULL: an empty card, the blank canvas), seen through the
+	 * app's camera, or through APP_TEMPLATE_CAMERA when `template`. */
+	const struct tree_mesh *preview;
+	bool template;
+	bool lit; /* the choice in effect (a propagation pattern) */
+};
+#define APP_SIDE_MAX 16
+/* Templates are shown turned a little, so that they read as 3D trees. */
+#define APP_TEMPLATE_YAW_DEG 25.0
+#define APP_TEMPLATE_PITCH_DEG 10.0
+
+struct app_mode_ops {
+	enum app_mode mode;
+	/* The bar button that enters and leaves it (its LED is lit while it is on);
+	 * BUTTON_COUNT: none (sketching, the New strip). */
+	enum button button;
+	/* Entering it: 0 or a negative errno (the mode is on either way). NULL: nothing to do. */
+	int (*enter)(struct app *app, uint64_t time_us);
+	/* A finished pen stroke: *taken when it meant something in this mode (a tap, a
+	 * circle); otherwise it is drawn as in sketching. NULL: always drawn. */
+	int (*stroke)(struct app *app, double len, bool *taken);
+	/* The side strip's items, top to bottom; at most max. NULL: an empty strip. */
+	size_t (*side)(const struct app *app, struct app_side_item *out, size_t max);
+	/* A tap on an item whose button is BUTTON_COUNT. */
+	int (*side_tap)(struct app *app, const struct app_side_item *item, uint64_t time_us);
+};
+
+extern const struct app_mode_ops app_mode_sketch_ops;
+extern const struct app_mode_ops app_mode_clone_ops;
+extern const struct app_mode_ops app_mode_leaf_ops;
+extern const struct app_mode_ops app_mode_propagate_ops;
+extern const struct app_mode_ops app_mode_new_ops;
+
+const struct app_mode_ops *app_mode_ops(enum app_mode mode);
+
+/* What the side strip shows now: the active mode's items. */
+size_t app_side_items(const struct app *app, struct app_side_item out[APP_SIDE_MAX]);
+/* How the side strip lays out items of this kind (all of a strip's are of one kind). */
+enum layout_side_kind app_side_kind(const struct app_side_item *item);
+/* The side strip item under (x, y), if any. */
+bool app_side_hit(const struct app *app, double x, double y, struct app_side_item *item);

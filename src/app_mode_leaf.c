@@ -1,0 +1,94 @@
+/* SPDX-License-Identifier: MIT */
+/* The leaf mode (seed 000, 3.5): a leaf drawn on a branch suggests arrangements of leaves
+ * for it, shown as thumbnails on the side strip; a tap applies one. */
+#include <errno.h>
+
+#include "app_mode.h"
+#include "app_private.h"
+
+void app_clear_suggestions(struct app *app)
+{
+	if (app->suggestions == 0 && app->suggest_branch < 0)
+		return;
+	app->suggestions = 0;
+	app->suggest_branch = -1;
+	app->previews_serial++;
+}
+
+/* The arrangements the leaves on branch b suggest, with a small mesh for each thumbnail. */
+int app_update_suggestions(struct app *app, int b)
+{
+	app_clear_suggestions(app);
+	if (app->mode != APP_MODE_LEAF || b < 0 || (size_t)b >= app->tree.nbranches)
+		return 0;
+	app->suggest_branch = b;
+	app->suggestions = arrange_suggest(&app->tree, b);
+	for (int p = 0; p < ARRANGE_COUNT; p++) {
+		struct tree preview;
+		int ret;
+
+		if (!(app->suggestions & (1u << p)))
+			continue;
+		ret = arrange_preview(&app->tree, b, (enum arrange_pattern)p, &preview);
+		if (ret == 0)
+			ret = tree_mesh_build(&app->previews[p], &preview);
+		tree_finish(&preview);
+		if (ret == -ENOMEM) {
+			app_clear_suggestions(app);
+			return ret;
+		}
+		if (ret < 0)
+			app->suggestions &= ~(1u << p);
+	}
+	app->previews_serial++;
+	return 0;
+}
+
+size_t app_suggestions(const struct app *app, enum arrange_pattern out[ARRANGE_COUNT])
+{
+	size_t n = 0;
+
+	for (int p = 0; p < ARRANGE_COUNT; p++)
+		if (app->suggestions & (1u << p))
+			out[n++] = (enum arrange_pattern)p;
+	return n;
+}
+
+/* Leaves drawn before: the newest one's branch says what it suggests at once. */
+static int leaf_enter(struct app *app, uint64_t time_us)
+{
+	(void)time_us;
+	for (size_t i = app->tree.nleaves; i-- > 0;)
+		if (app->tree.leaves[i].origin == ORIGIN_SKETCH)
+			return app_update_suggestions(app, app->tree.leaves[i].branch);
+	return 0;
+}
+
+static size_t leaf_side(const struct app *app, struct app_side_item *out, size_t max)
+{
+	enum arrange_pattern list[ARRANGE_COUNT];
+	size_t n = app_suggestions(app, list);
+
+	n = n < max ? n : max;
+	for (size_t i = 0; i < n; i++)
+		out[i] = (struct app_side_item){ .thumbnail = true, .button = BUTTON_COUNT,
+						 .tap = (int)list[i], .preview = &app->previews[list[i]] };
+	return n;
+}
+
+/* A tap on a suggestion applies it; tapping again keeps adding. */
+static int leaf_side_tap(struct app *app, const struct app_side_item *item, uint64_t time_us)
+{
+	int b = app->suggest_branch;
+	int ret = app_push_edit(app, DOC_OP_ARRANGE, b, item->tap, time_us);
+
+	return ret < 0 ? ret : app_update_suggestions(app, b);
+}
+
+const struct app_mode_ops app_mode_leaf_ops = {
+	.mode = APP_MODE_LEAF,
+	.button = BUTTON_LEAF,
+	.enter = leaf_enter,
+	.side = leaf_side,
+	.side_tap = leaf_side_tap,
+};

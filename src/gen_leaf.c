@@ -1,0 +1,112 @@
+/* SPDX-License-Identifier: MIT */
+/* The generated trees' leaf outlines and how a leaf is hung on its branch. */
+#include <errno.h>
+#include <math.h>
+
+#include "gen_private.h"
+
+/*
+ * Half-widths along a leaf of length 1, from its base (x = 0) to its tip (x = 1): the
+ * outline is the upper edge from base to tip and the lower edge back, counter-clockwise
+ * seen from the leaf's front.
+ */
+static double half_width(enum gen_leaf type, double x, int i)
+{
+	switch (type) {
+	case GEN_LEAF_OVAL:
+		/* widest before the middle, a drawn-out tip */
+		return 0.30 * pow(sin(VEC_PI * pow(x, 0.8)), 1.2);
+	case GEN_LEAF_POINTED:
+		/* narrower and longer-pointed, every other point a tooth */
+		return (0.22 + (i % 2 ? 0.025 : 0.0)) * pow(sin(VEC_PI * pow(x, 0.7)), 1.1);
+	case GEN_LEAF_ROUND:
+		return 0.42 * sqrt(fmax(0.0, sin(VEC_PI * x)));
+	case GEN_LEAF_NEEDLE:
+		return 0.07 * sin(VEC_PI * x);
+	case GEN_LEAF_LEAFLET:
+		return 0.06 * pow(sin(VEC_PI * pow(x, 0.9)), 0.7);
+	case GEN_LEAF_COUNT:
+		break;
+	}
+	return 0.3 * sin(VEC_PI * x);
+}
+
+/* Points along each edge (between base and tip), by type: a tooth needs its points. */
+static int edge_points(enum gen_leaf type)
+{
+	switch (type) {
+	case GEN_LEAF_POINTED:
+		return 9;
+	case GEN_LEAF_NEEDLE:
+		return 1;
+	case GEN_LEAF_LEAFLET:
+		return 3;
+	case GEN_LEAF_OVAL:
+	case GEN_LEAF_ROUND:
+	case GEN_LEAF_COUNT:
+		break;
+	}
+	return 5;
+}
+
+size_t gen_leaf_outline(enum gen_leaf type, double out[][2], size_t max)
+{
+	int m = edge_points(type);
+	size_t n = 0;
+
+	if ((size_t)(2 * m + 2) > max)
+		return 0;
+	out[n][0] = 0.0;
+	out[n++][1] = 0.0;
+	for (int i = 1; i <= m; i++) {
+		double x = (double)i / (m + 1);
+
+		out[n][0] = x;
+		out[n++][1] = -half_width(type, x, i);
+	}
+	out[n][0] = 1.0;
+	out[n++][1] = 0.0;
+	for (int i = m; i >= 1; i--) {
+		double x = (double)i / (m + 1);
+
+		out[n][0] = x;
+		out[n++][1] = half_width(type, x, i);
+	}
+	return n;
+}
+
+/*
+ * The leaf's frame: its axis a (unit) and its width w, chosen so that its front (a x w)
+ * faces up as far as it can: leaves turn to the sky.
+ */
+static struct vec3 width_dir(struct vec3 a)
+{
+	struct vec3 up = vec3(0, 1, 0);
+	struct vec3 w = vec3_cross(up, a);
+
+	if (vec3_len(w) < 1e-9)
+		w = vec3_cross(vec3(0, 0, 1), a);
+	return vec3_norm_or(w, vec3(1, 0, 0));
+}
+
+void gen_leaf_points(const struct gen_ctx *g, struct vec3 base, struct vec3 axis, double size,
+		     struct vec3 *out, size_t *n)
+{
+	struct vec3 a = vec3_norm_or(axis, vec3(0, 1, 0)), w = width_dir(a);
+
+	*n = g->noutline;
+	for (size_t k = 0; k < *n; k++)
+		out[k] = vec3_add(base, vec3_add(vec3_scale(a, size * g->outline[k][0]),
+						 vec3_scale(w, size * g->outline[k][1])));
+}
+
+int gen_add_leaf(struct gen_ctx *g, int branch, double t, const struct vec3 *p, size_t n)
+{
+	int id = tree_add_leaf(g->t, branch, ORIGIN_GENERATE, p, n);
+
+	if (id < 0)
+		return id;
+	g->t->leaves[id].branch_t = t;
+	/* in the branch's frame, as a drawn leaf is: it follows when the branch moves */
+	return tree_leaf_attach(g->t, (size_t)id);
+}

@@ -1,0 +1,29 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <yaml.h>
+
+#include "error.h"
+
+/*
+ * What the YAML files read with libyaml's document loader share (the tree parameter files,
+ * gen_read.c; the kiosk's configuration, platform/config_file.c): a node's kind and text,
+ * and a parser's error told at FILE:LINE.
+ */
+
+/* "a scalar", "a list", "a mapping": for messages. */
+const char *yaml_node_kind(const yaml_node_t *n);
+/* A scalar's text; NULL if n is no scalar or holds a NUL byte. */
+const char *yaml_node_text(const yaml_node_t *n);
+/* A plain (unquoted) scalar. */
+bool yaml_node_plain(const yaml_node_t *n);
+/*
+ * The loader's failure as "NAME:LINE: ..." in err: -ENOMEM, or -EINVAL for bytes that are
+ * not YAML text or YAML that does not parse. offset is added to the line (a document that
+ * is one line of a larger file); a mark past the data's last line (libyaml's at the end of
+ * data without a last line end) is told at the last line.
+ */
+int yaml_node_parse_error(struct error *err, const char *name, unsigned long offset,
+			  const yaml_parser_t *y, const char *data, size_t len);

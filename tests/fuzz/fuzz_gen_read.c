@@ -1,0 +1,137 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * libFuzzer: the tree parameter reader (gen_read, docs/tree-params.md) on arbitrary bytes.
+ * A refusal names the file and a line of it ("fuzz:LINE: " or, for the file as a whole,
+ * "fuzz: ") and changes nothing. What is accepted is within every limit, is written by gen_write as one
+ * line that reads back to the same parameters (a drawing's generate line), and, when the
+ * tree is small, builds: every element its generator's, no more than the limits said.
+ */
+#include <errno.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "buf.h"
+#include "gen.h"
+#include "tree.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+/* Field by field: struct padding is not part of the parameters. */
+static bool same(const struct gen_params *a, const struct gen_params *b)
+{
+	bool ok = a->type == b->type && a->precision == b->precision && a->levels == b->levels &&
+		  a->children == b->children && a->leaf_amount == b->leaf_amount &&
+		  a->leaf_type == b->leaf_type && a->season == b->season && a->clip == b->clip &&
+		  a->fronds == b->fronds;
+	const double da[] = { a->trunk_start.x, a->trunk_start.y, a->trunk_start.z, a->trunk_end.x,
+			      a->trunk_end.y, a->trunk_end.z, a->angle_min, a->angle_max, a->randomness,
+			      a->ratios[0], a->ratios[1], a->ratios[2], a->spread, a->twist, a->thickness,
+			      a->thickness_ratio, a->leaf_size, a->trunk_height, a->clip_center.x,
+			      a->clip_center.y, a->clip_center.z, a->clip_radius, a->clip_size.x,
+			      a->clip_size.y, a->clip_size.z, a->clip_height, a->height, a->frond_length,
+			      a->droop };
+	const double db[] = { b->trunk_start.x, b->trunk_start.y, b->trunk_start.z, b->trunk_end.x,
+			      b->trunk_end.y, b->trunk_end.z, b->angle_min, b->angle_max, b->randomness,
+			      b->ratios[0], b->ratios[1], b->ratios[2], b->spread, b->twist, b->thickness,
+			      b->thickness_ratio, b->leaf_size, b->trunk_height, b->clip_center.x,
+			      b->clip_center.y, b->clip_center.z, b->clip_radius, b->clip_size.x,
+			      b->clip_size.y, b->clip_size.z, b->clip_height, b->height, b->frond_length,
+			      b->droop };
+
+	for (size_t i = 0; i < sizeof(da) / sizeof(da[0]); i++)
+		ok = ok && da[i] == db[i];
+	return ok;
+}
+
+static bool line_break(uint8_t c)
+{
+	return c == '\n' || c == '\r' || c == 0x85 || c == 0xa8 || c == 0xa9;
+}
+
+/* A bound on the input's lines: YAML breaks lines at \n, \r and three Unicode breaks
+ * (U+0085, U+2028, U+2029, whose UTF-8 ends in one of these bytes). */
+static unsigned long lines_of(const uint8_t *data, size_t size)
+{
+	unsigned long n = 1;
+
+	for (size_t i = 0; i < size; i++)
+		n += line_break(data[i]);
+	return n;
+}
+
+static void check_refusal(int ret, const struct error *err, const struct gen_params *p,
+			  const struct gen_params *before, unsigned long lines)
+{
+	const char *s = err->msg + strlen("fuzz:");
+	unsigned long line = 0;
+
+	if (ret != -EINVAL && ret != -ENOMEM)
+		abort();
+	if (strncmp(err->msg, "fuzz:", 5) != 0 || !memchr(err->msg, '\0', sizeof(err->msg)))
+		abort();
+	/* "fuzz: what" or "fuzz:LINE: what", LINE from 1 */
+	if (*s != ' ') {
+		if (*s < '1' || *s > '9')
+			abort();
+		while (*s >= '0' && *s <= '9' && line < lines)
+			line = line * 10 + (unsigned long)(*s++ - '0');
+		/* a line of the input */
+		if (s[0] != ':' || s[1] != ' ' || line > lines)
+			abort();
+	}
+	if (memcmp(p, before, sizeof(*p)) != 0)
+		abort();
+}
+
+/* A tree small enough to build at fuzzing speed. */
+static void build(const struct gen_params *p, uint64_t seed)
+{
+	size_t nb = gen_count_branches(p), nl = gen_count_leaves(p);
+	struct tree t;
+
+	if (nb > 200 || nl > 600)
+		return;
+	tree_init(&t);
+	if (gen_build(&t, p, seed) == 0) {
+		if (t.nbranches == 0 || t.nbranches > nb || t.nleaves > nl ||
+		    (p->type != GEN_SHRUB && t.nbranches != nb) ||
+		    (p->type != GEN_SHRUB && t.nleaves != nl) || t.sides != p->precision)
+			abort();
+		for (size_t i = 0; i < t.nbranches; i++)
+			if (t.branches[i].origin != ORIGIN_GENERATE)
+				abort();
+	}
+	tree_finish(&t);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+	struct gen_params p, before, again;
+	struct error err = { { 0 } }, why;
+	const char *key;
+	struct buf line;
+	int ret;
+
+	memset(&p, 0x5a, sizeof(p));
+	memcpy(&before, &p, sizeof(p)); /* padding too: a refusal leaves every byte */
+	ret = gen_read((const char *)data, size, "fuzz", 0, &p, &err);
+	if (ret < 0) {
+		check_refusal(ret, &err, &p, &before, lines_of(data, size));
+		return 0;
+	}
+	if (gen_params_check(&p, &key, &why) != 0)
+		abort();
+	buf_init(&line);
+	if (gen_write(&p, &line) == 0) {
+		if (memchr(line.data, '\n', line.len) || memchr(line.data, '\0', line.len))
+			abort();
+		if (gen_read((const char *)line.data, line.len, "again", 9, &again, &err) != 0)
+			abort();
+		if (!same(&p, &again))
+			abort();
+	}
+	buf_finish(&line);
+	build(&p, size);
+	return 0;
+}
