@@ -21,15 +21,10 @@
 	"attribute vec3 a_position;\n"                                                     \
 	"attribute vec3 a_normal;\n"                                                       \
 	"varying vec3 v_normal;\n"                                                         \
-	"#ifdef TINT\n"                                                                    \
-	"attribute vec3 a_tint;\n"                                                         \
-	"varying vec3 v_tint;\n"                                                           \
-	"#endif\n"                                                                         \
+	RENDER_TINT_VS_DECLS                                                               \
 	"void main() {\n"                                                                  \
 	"	v_normal = a_normal;\n"                                                   \
-	"#ifdef TINT\n"                                                                    \
-	"	v_tint = a_tint;\n"                                                       \
-	"#endif\n"                                                                         \
+	RENDER_TINT_VS_PASS                                                                \
 	"	gl_Position = u_mvp * vec4(a_position, 1.0);\n"                           \
 	"}\n"
 

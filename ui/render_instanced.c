@@ -30,14 +30,9 @@
 	"attribute vec4 a_row1;\n"                                                         \
 	"attribute vec4 a_row2;\n"                                                         \
 	"varying vec3 v_normal;\n"                                                         \
-	"#ifdef TINT\n"                                                                    \
-	"attribute vec3 a_tint;\n"                                                         \
-	"varying vec3 v_tint;\n"                                                           \
-	"#endif\n"                                                                         \
+	RENDER_TINT_VS_DECLS                                                               \
 	"void main() {\n"                                                                  \
-	"#ifdef TINT\n"                                                                    \
-	"	v_tint = a_tint;\n"                                                       \
-	"#endif\n"                                                                         \
+	RENDER_TINT_VS_PASS                                                                \
 	"	vec4 p = vec4(a_position, 1.0);\n"                                        \
 	"	vec3 world = vec3(dot(a_row0, p), dot(a_row1, p), dot(a_row2, p));\n"     \
 	"	v_normal = normalize(vec3(dot(a_row0.xyz, a_normal), dot(a_row1.xyz, a_normal),\n" \

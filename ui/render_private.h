@@ -205,3 +205,14 @@ int render_previews(struct render *r, const struct app *app, const struct camera
 		    const float light[3]);
 void render_previews_finish(struct render *r);
 
+/* What the tinted vertex shaders (TINT defined: a colour a vertex or an instance, for spring
+ * and autumn leaves) declare and pass on, the merged and the instanced alike. */
+#define RENDER_TINT_VS_DECLS                                                               \
+	"#ifdef TINT\n"                                                                    \
+	"attribute vec3 a_tint;\n"                                                         \
+	"varying vec3 v_tint;\n"                                                           \
+	"#endif\n"
+#define RENDER_TINT_VS_PASS                                                                \
+	"#ifdef TINT\n"                                                                    \
+	"	v_tint = a_tint;\n"                                                       \
+	"#endif\n"
