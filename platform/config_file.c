@@ -18,6 +18,8 @@
 struct cfg_parser {
 	const char *name;
 	struct error *err;
+	const char *data; /* the text read, for its lines */
+	size_t len;
 	FILE *warn;
 	yaml_document_t doc;
 	struct config *c;
@@ -26,9 +28,9 @@ struct cfg_parser {
 static int fail(struct cfg_parser *p, const yaml_node_t *n, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));
 
-static unsigned long line_of(const yaml_node_t *n)
+static unsigned long line_of(const struct cfg_parser *p, const yaml_node_t *n)
 {
-	return n ? (unsigned long)n->start_mark.line + 1 : 0;
+	return n ? yaml_node_line(&n->start_mark, p->data, p->len) : 0;
 }
 
 static int fail(struct cfg_parser *p, const yaml_node_t *n, const char *fmt, ...)
@@ -39,7 +41,7 @@ static int fail(struct cfg_parser *p, const yaml_node_t *n, const char *fmt, ...
 	va_start(ap, fmt);
 	vsnprintf(msg, sizeof(msg), fmt, ap);
 	va_end(ap);
-	return error_at(p->err, -EINVAL, p->name, line_of(n), "%s", msg);
+	return error_at(p->err, -EINVAL, p->name, line_of(p, n), "%s", msg);
 }
 
 static void warn_unknown(struct cfg_parser *p, const yaml_node_t *key, const char *section)
@@ -58,7 +60,7 @@ static void warn_unknown(struct cfg_parser *p, const yaml_node_t *key, const cha
 	k[n] = '\0';
 	/* a failed warning is no reason to stop the kiosk */
 	(void)fprintf(p->warn, "%s:%lu: warning: unknown key \"%s\" in %s, ignored\n", p->name,
-		      line_of(key), k, section);
+		      line_of(p, key), k, section);
 }
 
 static bool is_null(const yaml_node_t *n)
@@ -195,7 +197,7 @@ static int for_each_pair(struct cfg_parser *p, const yaml_node_t *n, const char 
 
 			if (o && strcmp(o, k) == 0)
 				return fail(p, key, "duplicate key \"%.40s\" in %s (first on line %lu)",
-					    k, what, line_of(other));
+					    k, what, line_of(p, other));
 		}
 		if ((r = fn(p, key, k, value, data)) < 0)
 			return r;
@@ -394,7 +396,7 @@ static int lines_pair(struct cfg_parser *p, const yaml_node_t *key, const char *
 
 	memset(line, 0, sizeof(*line));
 	line->offset = -1;
-	line->conf_line = line_of(key);
+	line->conf_line = line_of(p, key);
 	if (v->type != YAML_MAPPING_NODE)
 		return fail(p, v, "expected a mapping {chip, line, ...} for %s, got %s", what,
 			    yaml_node_kind(v));
@@ -581,7 +583,9 @@ static int yaml_fail(struct cfg_parser *p, const yaml_parser_t *y, const char *d
 int config_parse(const char *data, size_t len, const char *name, struct config *c, FILE *warn,
 		 struct error *err)
 {
-	struct cfg_parser p = { .name = name, .err = err, .warn = warn };
+	struct cfg_parser p = {
+		.name = name, .err = err, .data = data, .len = len, .warn = warn
+	};
 	struct config tmp;
 	yaml_parser_t y;
 	yaml_node_t *root;
@@ -610,7 +614,7 @@ int config_parse(const char *data, size_t len, const char *name, struct config *
 			goto out;
 		}
 		bool more = yaml_document_get_root_node(&second) != NULL;
-		unsigned long at = more ? line_of(yaml_document_get_root_node(&second)) : 0;
+		unsigned long at = more ? line_of(&p, yaml_document_get_root_node(&second)) : 0;
 
 		yaml_document_delete(&second);
 		if (more) {

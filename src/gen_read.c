@@ -21,13 +21,15 @@ struct reader {
 	const char *name;
 	unsigned long offset;
 	struct error *err;
+	const char *data; /* the text read, for its lines */
+	size_t len;
 	yaml_document_t doc;
 	struct gen_params *p;
 };
 
 static unsigned long line_of(const struct reader *r, const yaml_node_t *n)
 {
-	return n ? (unsigned long)n->start_mark.line + 1 + r->offset : 0;
+	return n ? yaml_node_line(&n->start_mark, r->data, r->len) + r->offset : 0;
 }
 
 static int fail(struct reader *r, const yaml_node_t *n, const char *fmt, ...)
@@ -486,7 +488,7 @@ static int prescan(struct reader *r, const char *data, size_t len)
 	yaml_parser_set_input_string(&y, (const unsigned char *)data, len);
 	while (ret == 0 && yaml_parser_parse(&y, &ev)) {
 		yaml_event_type_t type = ev.type;
-		unsigned long line = (unsigned long)ev.start_mark.line + 1 + r->offset;
+		unsigned long line = yaml_node_line(&ev.start_mark, data, len) + r->offset;
 
 		if (type == YAML_ALIAS_EVENT)
 			ret = error_at(r->err, -EINVAL, r->name, line,
@@ -509,7 +511,9 @@ static int prescan(struct reader *r, const char *data, size_t len)
 int gen_read(const char *data, size_t len, const char *name, unsigned long line_offset,
 	     struct gen_params *p, struct error *err)
 {
-	struct reader r = { .name = name, .offset = line_offset, .err = err };
+	struct reader r = {
+		.name = name, .offset = line_offset, .err = err, .data = data, .len = len
+	};
 	struct gen_params tmp;
 	yaml_parser_t y;
 	int ret;

@@ -58,10 +58,17 @@ static unsigned long lines(const char *data, size_t len)
 	return n;
 }
 
+unsigned long yaml_node_line(const yaml_mark_t *m, const char *data, size_t len)
+{
+	unsigned long line = (unsigned long)m->line + 1, last = lines(data, len);
+
+	return line > last ? last : line;
+}
+
 int yaml_node_parse_error(struct error *err, const char *name, unsigned long offset,
 			  const yaml_parser_t *y, const char *data, size_t len)
 {
-	unsigned long line, last;
+	unsigned long line;
 
 	if (y->error == YAML_MEMORY_ERROR)
 		return error_at(err, -ENOMEM, name, 0, "out of memory");
@@ -74,9 +81,7 @@ int yaml_node_parse_error(struct error *err, const char *name, unsigned long off
 		return error_at(err, -EINVAL, name, line + offset, "not YAML text: %s",
 				y->problem ? y->problem : "unreadable");
 	}
-	last = lines(data, len);
-	line = (unsigned long)y->problem_mark.line + 1;
-	line = (line > last ? last : line) + offset;
+	line = yaml_node_line(&y->problem_mark, data, len) + offset;
 	return error_at(err, -EINVAL, name, line, "YAML error: %s%s%s",
 			y->problem ? y->problem : "error", y->context ? " " : "",
 			y->context ? y->context : "");

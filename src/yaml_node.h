@@ -25,5 +25,11 @@ bool yaml_node_plain(const yaml_node_t *n);
  * is one line of a larger file); a mark past the data's last line (libyaml's at the end of
  * data without a last line end) is told at the last line.
  */
+/*
+ * The line (from 1) of a mark in data: libyaml puts the marks of the stream's end, and of
+ * an empty value there, on a line after the last when the data ends without a line end;
+ * those are told at the last line, which is where the reader sees them.
+ */
+unsigned long yaml_node_line(const yaml_mark_t *m, const char *data, size_t len);
 int yaml_node_parse_error(struct error *err, const char *name, unsigned long offset,
 			  const yaml_parser_t *y, const char *data, size_t len);

@@ -146,6 +146,9 @@ static void test_error_lines(void)
 		{ "edaha-tree: 1\nleaves: {type: maple}\n", "f:2: leaves.type: \"maple\" is none of" },
 		{ "edaha-tree: 1\nlevels: 2.5\n", "f:2: levels: expected a whole number" },
 		{ "edaha-tree: 1\n---\nedaha-tree: 1\n", "f:3: a second YAML document" },
+		/* libyaml marks an empty document at the end of unended text a line past the last */
+		{ "edaha-tree: 1\n---", "f:2: a second YAML document" },
+		{ "edaha-tree: 1\nlevels:", "f:2: levels: \"\" is not a number" },
 		{ "edaha-tree: 1\ntrunk: {start: [0, 0]}\n", "f:2: trunk.start: expected [x, y, z], three" },
 		{ "edaha-tree: 1\nseason: monsoon\n", "f:2: season: \"monsoon\" is none of" },
 	};
