@@ -67,7 +67,7 @@ static size_t grow_cap(size_t cap, size_t need)
 }
 
 /* Makes room for nv more vertices and ni more indices, so the pushes below cannot fail. */
-static int mesh_reserve(struct mesh *m, size_t nv, size_t ni)
+int mesh_reserve(struct mesh *m, size_t nv, size_t ni)
 {
 	/* Indices are 32-bit: a mesh that needs more vertices cannot be represented. */
 	if (nv > UINT32_MAX - m->nvertices || ni > SIZE_MAX / 8 - m->nindices)

@@ -18,6 +18,8 @@ struct mesh {
 void mesh_init(struct mesh *m);
 void mesh_finish(struct mesh *m);
 void mesh_clear(struct mesh *m);
+/* Room for nv more vertices and ni more indices. 0 or -ENOMEM (m unchanged). */
+int mesh_reserve(struct mesh *m, size_t nv, size_t ni);
 
 /*
  * Level of detail. The camera is orthographic at a fixed scale (the screen height always

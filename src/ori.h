@@ -135,9 +135,13 @@ struct ori_leaf {
 	int *face_from;   /* [f]: the face it is placed from (-1: the root) */
 	int *face_across; /* [f]: the crease crossed */
 	int root_face;
-	/* midrib nodes' solved fold angles (ori_open), by node */
+	/* The midrib's nodes, from O: their creases and angles (radians), for ori_open's
+	 * closure. */
 	size_t nnodes;
-	int *node_in; /* the midrib crease entering each node */
+	struct ori_node_geo {
+		int in, out, vein[2], mountain[2]; /* creases; [0] right, [1] left */
+		double phi, psi;
+	} *nodes;
 	/* The lobes' tips against the spiral's targets (fan only): for a report. */
 	size_t nlobes;
 	struct ori_lobe {
@@ -145,6 +149,8 @@ struct ori_leaf {
 		double target, tip; /* metres from O: r0 (1 - theta/theta0) and the farthest
 				     * margin point of the part */
 	} *lobes;
+	int *vertex_part; /* [v]: the part a margin vertex cuts (from 0, right to left) */
+	int tip;          /* the midrib's tip: the vertex at (0, size); O is vertex 0 */
 	double size;
 	double rest;
 };
@@ -171,3 +177,16 @@ int ori_open(const struct ori_leaf *l, double t, double (*out)[3]);
 /* A grown leaf's shape: the mirror (z -> -z) of the leaf opened to its rest: curling is
  * not the opening run backwards. */
 int ori_rest(const struct ori_leaf *l, double (*out)[3]);
+
+struct mesh;
+/*
+ * Appends the leaf's faces at positions pos (nvertices rows, metres) to m: each face its
+ * own vertices with its own normal (flat shading shows the folds), fanned into triangles
+ * counter-clockwise seen from the leaf's front (+z when flat; leaves are drawn
+ * double-sided). xf (row-major 3x4, NULL: none) moves them; it may scale uniformly. 0 or
+ * -ENOMEM (m unchanged).
+ */
+int ori_mesh_append(const struct ori_leaf *l, const double (*pos)[3], const double *xf,
+		    struct mesh *m);
+/* Triangles a leaf adds: the sum over faces of their corners minus 2. */
+size_t ori_mesh_triangles(const struct ori_leaf *l);

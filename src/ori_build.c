@@ -1,0 +1,830 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The crease pattern of an origami leaf, its folded (bud) state and its margin
+ * (procedures 1-4 of seed 003; docs/origami-leaves.md).
+ *
+ * The creases form a tree rooted at the leaf base O. Walking round it counter-clockwise
+ * (right notch edge, right parts, midrib, left parts, left notch edge) visits the faces in
+ * order: every crease that ends on the margin (a ray) separates a face from the next, and
+ * the next face's folded map is the current one composed with the reflection across that
+ * crease. Where a crease ends inside the leaf (a fork, a node of the midrib) the walk
+ * goes round its far vertex and comes back: the face it comes back in must map as the face
+ * it left, reflected across that crease; that is Kawasaki's theorem, checked at every
+ * such vertex. The margin is where each ray's folded image meets its part's cut: the
+ * geometry of a fork (how far along its vein) depends on that, so the pattern is built
+ * during the walk.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "ori.h"
+#include "vec.h"
+
+#define MAX_V 1024
+#define MAX_C 1024
+#define MAX_F 512
+#define MAX_FI 4096
+#define MAX_CUR 256
+
+/* A plane isometry x -> m x + t. */
+struct iso {
+	double m[2][2], t[2];
+};
+
+struct builder {
+	const struct ori_design *d;
+	const char *name;
+	struct error *err;
+
+	double v[MAX_V][2];
+	int part_of[MAX_V]; /* margin vertices: their part (lobes) */
+	size_t nv;
+	struct ori_crease c[MAX_C];
+	size_t nc;
+	struct ori_node_geo nodes[ORI_MAX_NODES];
+	size_t nnodes;
+
+	int fidx[MAX_FI];
+	size_t nfi, fstart[MAX_F], flen[MAX_F];
+	struct iso fmap[MAX_F];
+	int from[MAX_F], across[MAX_F];
+	size_t nf;
+	int root_face;
+
+	int cur[MAX_CUR]; /* the face being walked */
+	size_t ncur;
+	int cur_across;   /* the crease crossed into it (-1: the first) */
+	struct iso M;     /* its folded map */
+
+	int margin[MAX_V];
+	size_t nmargin;
+
+	/* the part being walked: its cut in folded coordinates, O's side of it */
+	double cut_a[2], cut_b[2];
+	double inside;
+	int part;
+	unsigned long part_line;
+	const char *part_what;
+	char what[64];
+};
+
+static int full(struct builder *b)
+{
+	return error_at(b->err, -EINVAL, b->name, b->d->line,
+			"too many creases: not a leaf this edaha can fold");
+}
+
+static void iso_apply(const struct iso *a, const double x[2], double out[2])
+{
+	double y0 = a->m[0][0] * x[0] + a->m[0][1] * x[1] + a->t[0];
+	double y1 = a->m[1][0] * x[0] + a->m[1][1] * x[1] + a->t[1];
+
+	out[0] = y0;
+	out[1] = y1;
+}
+
+static void iso_dir(const struct iso *a, const double x[2], double out[2])
+{
+	double y0 = a->m[0][0] * x[0] + a->m[0][1] * x[1];
+	double y1 = a->m[1][0] * x[0] + a->m[1][1] * x[1];
+
+	out[0] = y0;
+	out[1] = y1;
+}
+
+/* a o b: b first. */
+static struct iso iso_mul(const struct iso *a, const struct iso *b)
+{
+	struct iso r;
+
+	for (int i = 0; i < 2; i++) {
+		for (int j = 0; j < 2; j++)
+			r.m[i][j] = a->m[i][0] * b->m[0][j] + a->m[i][1] * b->m[1][j];
+		r.t[i] = a->m[i][0] * b->t[0] + a->m[i][1] * b->t[1] + a->t[i];
+	}
+	return r;
+}
+
+static struct iso iso_identity(void)
+{
+	return (struct iso){ { { 1, 0 }, { 0, 1 } }, { 0, 0 } };
+}
+
+/* The reflection across the line through p along the unit d. */
+static struct iso iso_reflect(const double p[2], const double d[2])
+{
+	struct iso r;
+
+	r.m[0][0] = d[0] * d[0] - d[1] * d[1];
+	r.m[0][1] = 2 * d[0] * d[1];
+	r.m[1][0] = r.m[0][1];
+	r.m[1][1] = -r.m[0][0];
+	r.t[0] = p[0] - (r.m[0][0] * p[0] + r.m[0][1] * p[1]);
+	r.t[1] = p[1] - (r.m[1][0] * p[0] + r.m[1][1] * p[1]);
+	return r;
+}
+
+/* The inverse of an isometry: m orthogonal. */
+static struct iso iso_inverse(const struct iso *a)
+{
+	struct iso r;
+
+	r.m[0][0] = a->m[0][0];
+	r.m[0][1] = a->m[1][0];
+	r.m[1][0] = a->m[0][1];
+	r.m[1][1] = a->m[1][1];
+	r.t[0] = -(r.m[0][0] * a->t[0] + r.m[0][1] * a->t[1]);
+	r.t[1] = -(r.m[1][0] * a->t[0] + r.m[1][1] * a->t[1]);
+	return r;
+}
+
+static double iso_diff(const struct iso *a, const struct iso *b)
+{
+	double e = 0;
+
+	for (int i = 0; i < 2; i++) {
+		for (int j = 0; j < 2; j++)
+			e = fmax(e, fabs(a->m[i][j] - b->m[i][j]));
+		e = fmax(e, fabs(a->t[i] - b->t[i]));
+	}
+	return e;
+}
+
+static void dir_at(double deg, double out[2])
+{
+	out[0] = cos(deg * VEC_PI / 180.0);
+	out[1] = sin(deg * VEC_PI / 180.0);
+}
+
+/* d turned counter-clockwise by deg. */
+static void dir_turn(const double d[2], double deg, double out[2])
+{
+	double c = cos(deg * VEC_PI / 180.0), s = sin(deg * VEC_PI / 180.0);
+	double x = c * d[0] - s * d[1], y = s * d[0] + c * d[1];
+
+	out[0] = x;
+	out[1] = y;
+}
+
+static double cross2(const double a[2], const double b[2])
+{
+	return a[0] * b[1] - a[1] * b[0];
+}
+
+static int add_vertex(struct builder *b, double x, double y)
+{
+	if (b->nv == MAX_V)
+		return -1;
+	b->v[b->nv][0] = x;
+	b->v[b->nv][1] = y;
+	b->part_of[b->nv] = b->part;
+	return (int)b->nv++;
+}
+
+static int add_crease(struct builder *b, int from, int to, enum ori_crease_type type,
+		      enum ori_rule rule, int parent, double k, int node)
+{
+	if (b->nc == MAX_C)
+		return -1;
+	b->c[b->nc] = (struct ori_crease){ .a = from, .b = to, .type = type, .rule = rule,
+					   .parent = parent, .k = k, .node = node };
+	return (int)b->nc++;
+}
+
+static int face_push(struct builder *b, int v)
+{
+	if (b->ncur == MAX_CUR)
+		return full(b);
+	b->cur[b->ncur++] = v;
+	return 0;
+}
+
+/* Ends the face being walked; the next starts across crease c (-1: none, the last). */
+static int face_close(struct builder *b)
+{
+	if (b->nf == MAX_F || b->nfi + b->ncur > MAX_FI)
+		return full(b);
+	b->fstart[b->nf] = b->nfi;
+	b->flen[b->nf] = b->ncur;
+	memcpy(b->fidx + b->nfi, b->cur, b->ncur * sizeof(*b->cur));
+	b->nfi += b->ncur;
+	b->fmap[b->nf] = b->M;
+	b->across[b->nf] = b->cur_across;
+	b->from[b->nf] = b->nf > 0 ? (int)b->nf - 1 : -1;
+	b->nf++;
+	b->ncur = 0;
+	return 0;
+}
+
+static int refuse(struct builder *b, const char *what)
+{
+	return error_at(b->err, -EINVAL, b->name, b->part_line, "%s%s%s", b->part_what,
+			b->part_what[0] ? ": " : "", what);
+}
+
+/* Which side of the part's cut a folded point is on: > 0 O's. */
+static double cut_side(const struct builder *b, const double p[2])
+{
+	double ab[2] = { b->cut_b[0] - b->cut_a[0], b->cut_b[1] - b->cut_a[1] };
+	double ap[2] = { p[0] - b->cut_a[0], p[1] - b->cut_a[1] };
+
+	return cross2(ab, ap) * b->inside;
+}
+
+/* How far along d from s (flat) the folded image of the ray meets the part's cut; < 0 if
+ * it never does. */
+static double cut_length(const struct builder *b, const double s[2], const double d[2])
+{
+	double p[2], q[2], ab[2] = { b->cut_b[0] - b->cut_a[0], b->cut_b[1] - b->cut_a[1] };
+	double den, u, ap[2];
+
+	iso_apply(&b->M, s, p);
+	iso_dir(&b->M, d, q);
+	den = cross2(q, ab);
+	if (fabs(den) < 1e-12)
+		return -1;
+	ap[0] = b->cut_a[0] - p[0];
+	ap[1] = b->cut_a[1] - p[1];
+	u = cross2(ap, ab) / den;
+	return u > 1e-9 ? u : -1;
+}
+
+/* Sets the cut of the part whose right edge (a ray from O along edge) the walk is at:
+ * through its junction on that edge and its vein's tip at r. */
+static void set_cut(struct builder *b, const double edge[2], const double vein[2], double r)
+{
+	double m = b->d->junction * b->d->size, j[2] = { m * edge[0], m * edge[1] };
+	double t[2] = { r * vein[0], r * vein[1] }, o[2] = { 0, 0 }, oo[2];
+
+	iso_apply(&b->M, j, b->cut_a);
+	iso_apply(&b->M, t, b->cut_b);
+	b->inside = 1.0;
+	iso_apply(&b->M, o, oo);
+	b->inside = cut_side(b, oo) >= 0 ? 1.0 : -1.0;
+}
+
+/* A crease from vertex s that runs to the margin. */
+static int ray(struct builder *b, int s, const double d[2], enum ori_crease_type type,
+	       enum ori_rule rule, int parent, double k, int node, int *out)
+{
+	double u = cut_length(b, b->v[s], d);
+	int e, c;
+	struct iso r;
+
+	if (u < 0)
+		return refuse(b, "a crease runs away from the cut: the leaf would have no margin there");
+	e = add_vertex(b, b->v[s][0] + u * d[0], b->v[s][1] + u * d[1]);
+	if (e < 0)
+		return full(b);
+	c = add_crease(b, s, e, type, rule, parent, k, node);
+	if (c < 0)
+		return full(b);
+	if (out)
+		*out = c;
+	b->margin[b->nmargin++] = e;
+	if (face_push(b, e) < 0 || face_close(b) < 0)
+		return -EINVAL;
+	r = iso_reflect(b->v[s], d);
+	b->M = iso_mul(&b->M, &r);
+	b->cur_across = c;
+	if (face_push(b, e) < 0 || face_push(b, s) < 0)
+		return -EINVAL;
+	return 0;
+}
+
+/* A crease from s to v inside the leaf: begins the walk round v. */
+static int inner_begin(struct builder *b, int s, double x, double y, enum ori_crease_type type,
+		       enum ori_rule rule, int parent, double k, int node, int *v, int *c,
+		       struct iso *before)
+{
+	double p[2];
+
+	*v = add_vertex(b, x, y);
+	if (*v < 0)
+		return full(b);
+	iso_apply(&b->M, b->v[*v], p);
+	if (cut_side(b, p) <= 1e-9 * b->d->size)
+		return refuse(b, "a fork or node lies on or beyond the cut");
+	*c = add_crease(b, s, *v, type, rule, parent, k, node);
+	if (*c < 0)
+		return full(b);
+	*before = b->M;
+	return face_push(b, *v);
+}
+
+/* Back along crease c to s: the face now must be the one left before, reflected. */
+static int inner_end(struct builder *b, int s, int c, const struct iso *before)
+{
+	double d[2] = { b->v[b->c[c].b][0] - b->v[s][0], b->v[b->c[c].b][1] - b->v[s][1] };
+	double l = hypot(d[0], d[1]);
+	struct iso r, want;
+
+	d[0] /= l;
+	d[1] /= l;
+	r = iso_reflect(b->v[s], d);
+	want = iso_mul(before, &r);
+	if (iso_diff(&want, &b->M) > 1e-9)
+		return refuse(b, "the creases round a fork or node do not fold flat (Kawasaki)");
+	b->M = want;
+	return face_push(b, s);
+}
+
+/* A side part's vein from s along d; depth forks made so far. mirror: a left part. */
+static int vein(struct builder *b, const struct ori_side *p, bool mirror, int s,
+		const double d[2], int depth, enum ori_rule rule, int parent, double k)
+{
+	double a = mirror ? p->fork_b : p->fork_a, bb = mirror ? p->fork_a : p->fork_b;
+	double u, kk, dc[2];
+	struct iso before;
+	int v, c, ret;
+
+	if (depth == p->forks)
+		return ray(b, s, d, ORI_VALLEY, rule, parent, k, -1, NULL);
+	u = cut_length(b, b->v[s], d);
+	if (u < 0)
+		return refuse(b, "a vein runs away from the cut");
+	u *= p->fork_at;
+	ret = inner_begin(b, s, b->v[s][0] + u * d[0], b->v[s][1] + u * d[1], ORI_VALLEY, rule,
+			  parent, k, -1, &v, &c, &before);
+	if (ret < 0)
+		return ret;
+	/* children at +a and -b, the extra mountain at a - b between them (Kawasaki) */
+	kk = cos((a + bb) * VEC_PI / 360.0) / cos((a - bb) * VEC_PI / 360.0);
+	dir_turn(d, -bb, dc);
+	if ((ret = vein(b, p, mirror, v, dc, depth + 1, ORI_RULE_FORK_CHILD, c, kk)) < 0)
+		return ret;
+	dir_turn(d, a - bb, dc);
+	if ((ret = ray(b, v, dc, ORI_MOUNTAIN, ORI_RULE_FORK_MOUNTAIN, c, 0, -1, NULL)) < 0)
+		return ret;
+	dir_turn(d, a, dc);
+	if ((ret = vein(b, p, mirror, v, dc, depth + 1, ORI_RULE_FORK_CHILD, c, kk)) < 0)
+		return ret;
+	return inner_end(b, s, c, &before);
+}
+
+/* The midrib from s (O or node i - 1), up +y; parent the crease entering s. */
+static int midrib(struct builder *b, int s, size_t i, int parent)
+{
+	const struct ori_design *d = b->d;
+	enum ori_rule rule = i == 0 ? ORI_RULE_BASE : ORI_RULE_NODE_MIDRIB;
+	int node = i == 0 ? -1 : (int)i - 1;
+	double up[2] = { 0, 1 }, dc[2];
+	struct ori_node_geo *g;
+	struct iso before;
+	int v, c, ret;
+
+	if (i == d->nnodes)
+		return ray(b, s, up, ORI_VALLEY, rule, parent, 0, node, NULL);
+	b->part_line = d->nodes[i].line ? d->nodes[i].line : d->line_middle;
+	snprintf(b->what, sizeof(b->what), "middle.nodes[%zu]", i);
+	b->part_what = b->what;
+	ret = inner_begin(b, s, 0, d->nodes[i].at * d->size, ORI_VALLEY, rule, parent, 0, node, &v,
+			  &c, &before);
+	if (ret < 0)
+		return ret;
+	g = &b->nodes[b->nnodes++];
+	g->in = c;
+	g->phi = d->nodes[i].phi[0] * VEC_PI / 180.0;
+	g->psi = d->nodes[i].psi[0] * VEC_PI / 180.0;
+	dir_turn(up, -d->nodes[i].phi[0], dc);
+	if ((ret = ray(b, v, dc, ORI_VALLEY, ORI_RULE_NODE_VEIN, c, 0, (int)i, &g->vein[0])) < 0)
+		return ret;
+	dir_turn(up, -d->nodes[i].psi[0], dc);
+	if ((ret = ray(b, v, dc, ORI_MOUNTAIN, ORI_RULE_NODE_MOUNTAIN, c, 0, (int)i,
+		       &g->mountain[0])) < 0)
+		return ret;
+	g->out = (int)b->nc; /* the next crease made is the midrib leaving v */
+	if ((ret = midrib(b, v, i + 1, c)) < 0)
+		return ret;
+	dir_turn(up, d->nodes[i].psi[1], dc);
+	if ((ret = ray(b, v, dc, ORI_MOUNTAIN, ORI_RULE_NODE_MOUNTAIN, c, 0, (int)i,
+		       &g->mountain[1])) < 0)
+		return ret;
+	dir_turn(up, d->nodes[i].phi[1], dc);
+	if ((ret = ray(b, v, dc, ORI_VALLEY, ORI_RULE_NODE_VEIN, c, 0, (int)i, &g->vein[1])) < 0)
+		return ret;
+	return inner_end(b, s, c, &before);
+}
+
+static double sides_angle(const struct ori_design *d, size_t upto)
+{
+	double a = 0;
+
+	for (size_t j = 0; j < upto; j++)
+		a += d->sides[j].angle;
+	return a;
+}
+
+/* Side part j (right or left): its cut, then its vein from O. edge: its edge on the
+ * walk's side of it (the one already walked). */
+static int side_part(struct builder *b, size_t j, bool left, const double edge[2])
+{
+	const struct ori_design *d = b->d;
+	const struct ori_side *p = &d->sides[j];
+	double theta = d->middle[left] + sides_angle(d, j) + p->angle / 2.0;
+	double r = d->size * (1.0 - theta / d->theta0), dv[2];
+
+	b->part = left ? (int)(d->nsides + 1 + j) : (int)(d->nsides - 1 - j);
+	b->part_line = p->line ? p->line : d->line;
+	snprintf(b->what, sizeof(b->what), "sides[%zu]%s", j, left ? " (on the left)" : "");
+	b->part_what = b->what;
+	if (r <= d->junction * d->size * 1.01)
+		return error_at(b->err, -EINVAL, b->name, b->part_line,
+				"sides[%zu]: its vein, %.4g degrees from the midrib, reaches %.3g of "
+				"the midrib by the spiral (theta0 %.4g), not past the junction (%.3g)",
+				j, theta, r / d->size, d->theta0, d->junction);
+	dir_at(90.0 + (left ? theta : -theta), dv);
+	set_cut(b, edge, dv, r);
+	return vein(b, p, left, 0, dv, 0, ORI_RULE_BASE, -1, 0);
+}
+
+/* A boundary mountain from O at deg: it ends at the junction, where neighbours meet. */
+static int boundary(struct builder *b, double deg)
+{
+	double d[2], m = b->d->junction * b->d->size;
+	int e, c;
+	struct iso r;
+
+	dir_at(deg, d);
+	e = add_vertex(b, m * d[0], m * d[1]);
+	if (e < 0)
+		return full(b);
+	c = add_crease(b, 0, e, ORI_MOUNTAIN, ORI_RULE_BASE, -1, 0, -1);
+	if (c < 0)
+		return full(b);
+	b->margin[b->nmargin++] = e;
+	if (face_push(b, e) < 0 || face_close(b) < 0)
+		return -EINVAL;
+	r = iso_reflect(b->v[0], d);
+	b->M = iso_mul(&b->M, &r);
+	b->cur_across = c;
+	if (face_push(b, e) < 0 || face_push(b, 0) < 0)
+		return -EINVAL;
+	return 0;
+}
+
+static int walk_fan(struct builder *b)
+{
+	const struct ori_design *d = b->d;
+	double half_r = d->middle[0] + sides_angle(d, d->nsides);
+	double half_l = d->middle[1] + sides_angle(d, d->nsides);
+	double edge[2], up[2] = { 0, 1 }, m = d->junction * d->size;
+	int ret, e;
+
+	b->M = iso_identity();
+	b->cur_across = -1;
+	if (add_vertex(b, 0, 0) != 0)
+		return full(b);
+	/* the right edge of the notch: on the margin from O to the outer part's junction */
+	dir_at(90.0 - half_r, edge);
+	b->part = 0;
+	if ((e = add_vertex(b, m * edge[0], m * edge[1])) < 0)
+		return full(b);
+	b->margin[b->nmargin++] = 0;
+	b->margin[b->nmargin++] = e;
+	if ((ret = face_push(b, e)) < 0 || (ret = face_push(b, 0)) < 0)
+		return ret;
+	for (size_t j = d->nsides; j-- > 0;) {
+		if ((ret = side_part(b, j, false, edge)) < 0)
+			return ret;
+		dir_at(90.0 - d->middle[0] - sides_angle(d, j), edge);
+		if ((ret = boundary(b, 90.0 - d->middle[0] - sides_angle(d, j))) < 0)
+			return ret;
+	}
+	/* the middle part: its tip on the midrib at r0 = size */
+	b->part = (int)d->nsides;
+	b->part_line = d->line_middle ? d->line_middle : d->line;
+	b->part_what = "middle";
+	set_cut(b, edge, up, d->size);
+	b->root_face = (int)b->nf;
+	if ((ret = midrib(b, 0, 0, -1)) < 0)
+		return ret;
+	b->part_line = d->line_middle ? d->line_middle : d->line;
+	b->part_what = "middle";
+	for (size_t j = 0; j < d->nsides; j++) {
+		double deg = 90.0 + d->middle[1] + sides_angle(d, j);
+
+		if ((ret = boundary(b, deg)) < 0)
+			return ret;
+		dir_at(deg, edge);
+		if ((ret = side_part(b, j, true, edge)) < 0)
+			return ret;
+	}
+	dir_at(90.0 + half_l, edge);
+	if ((e = add_vertex(b, m * edge[0], m * edge[1])) < 0)
+		return full(b);
+	b->part_of[e] = (int)(2 * d->nsides);
+	b->margin[b->nmargin++] = e;
+	if ((ret = face_push(b, e)) < 0)
+		return ret;
+	return face_close(b);
+}
+
+/* An entire leaf folded in two: the right half is cut on the curve, the left mirrors it. */
+static int walk_half(struct builder *b)
+{
+	const struct ori_design *d = b->d;
+	int n = ORI_CURVE_POINTS, tip, c;
+	double up[2] = { 0, 1 }, o[2] = { 0, 0 };
+	struct iso r;
+
+	b->M = iso_identity();
+	b->cur_across = -1;
+	b->part = 0;
+	add_vertex(b, 0, 0);
+	b->margin[b->nmargin++] = 0;
+	if (face_push(b, 0) < 0)
+		return -EINVAL;
+	/* the right half, from O up its curve: root face */
+	for (int i = 1; i <= n; i++) {
+		double s = (double)i / (n + 1);
+		int v = add_vertex(b, d->width * d->size * pow(sin(VEC_PI * s), d->power),
+				   s * d->size);
+
+		b->margin[b->nmargin++] = v;
+		face_push(b, v);
+	}
+	tip = add_vertex(b, 0, d->size);
+	b->margin[b->nmargin++] = tip;
+	face_push(b, tip);
+	c = add_crease(b, 0, tip, ORI_VALLEY, ORI_RULE_BASE, -1, 0, -1);
+	b->root_face = 0;
+	if (face_close(b) < 0)
+		return -EINVAL;
+	r = iso_reflect(o, up);
+	b->M = r;
+	b->cur_across = c;
+	face_push(b, tip);
+	for (int i = n; i >= 1; i--) {
+		int v = add_vertex(b, -b->v[i][0], b->v[i][1]);
+
+		b->margin[b->nmargin++] = v;
+		face_push(b, v);
+	}
+	face_push(b, 0);
+	return face_close(b);
+}
+
+/* Proper crossing of segments pq and rs (sharing no end). */
+static bool segments_cross(const double p[2], const double q[2], const double r[2],
+			   const double s[2])
+{
+	double pq[2] = { q[0] - p[0], q[1] - p[1] }, rs[2] = { s[0] - r[0], s[1] - r[1] };
+	double pr[2] = { r[0] - p[0], r[1] - p[1] }, ps[2] = { s[0] - p[0], s[1] - p[1] };
+	double rp[2] = { p[0] - r[0], p[1] - r[1] }, rq[2] = { q[0] - r[0], q[1] - r[1] };
+	double d1 = cross2(pq, pr), d2 = cross2(pq, ps), d3 = cross2(rs, rp), d4 = cross2(rs, rq);
+
+	return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) &&
+	       ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+/* Crossing creases, overlapping lobes, faces that are not convex: refused. */
+static int check_pattern(struct builder *b)
+{
+	const struct ori_design *d = b->d;
+	unsigned long line = d->line_middle ? d->line_middle : d->line;
+
+	for (size_t i = 0; i < b->nc; i++)
+		for (size_t j = i + 1; j < b->nc; j++) {
+			const struct ori_crease *x = &b->c[i], *y = &b->c[j];
+
+			if (x->a == y->a || x->a == y->b || x->b == y->a || x->b == y->b)
+				continue;
+			if (segments_cross(b->v[x->a], b->v[x->b], b->v[y->a], b->v[y->b]))
+				return error_at(b->err, -EINVAL, b->name, line,
+						"creases cross: the forks' angles send a vein or a "
+						"mountain over another");
+		}
+	for (size_t i = 0; i < b->nmargin; i++) {
+		const double *p = b->v[b->margin[i]], *q = b->v[b->margin[(i + 1) % b->nmargin]];
+
+		for (size_t j = i + 2; j < b->nmargin; j++) {
+			if ((j + 1) % b->nmargin == i)
+				continue;
+			if (segments_cross(p, q, b->v[b->margin[j]],
+					   b->v[b->margin[(j + 1) % b->nmargin]]))
+				return error_at(b->err, -EINVAL, b->name, line,
+						"the lobes overlap when the leaf lies flat: "
+						"narrow the parts or lengthen theta0");
+		}
+	}
+	for (size_t f = 0; f < b->nf; f++) {
+		size_t n = b->flen[f], s = b->fstart[f];
+		double area = 0;
+
+		for (size_t k = 0; k < n; k++) {
+			const double *p = b->v[b->fidx[s + k]], *q = b->v[b->fidx[s + (k + 1) % n]];
+
+			area += cross2(p, q);
+		}
+		if (area < 0) /* the walk goes clockwise round each face: turn it */
+			for (size_t k = 0; k < n / 2; k++) {
+				int t = b->fidx[s + k];
+
+				b->fidx[s + k] = b->fidx[s + n - 1 - k];
+				b->fidx[s + n - 1 - k] = t;
+			}
+		if (fabs(area) < 1e-12 * d->size * d->size)
+			return error_at(b->err, -EINVAL, b->name, line,
+					"a face of the pattern has no area: creases meet the cut "
+					"at one point");
+		for (size_t k = 0; k < n; k++) {
+			const double *p = b->v[b->fidx[s + k]], *q = b->v[b->fidx[s + (k + 1) % n]];
+			const double *r = b->v[b->fidx[s + (k + 2) % n]];
+			double pq[2] = { q[0] - p[0], q[1] - p[1] }, qr[2] = { r[0] - q[0], r[1] - q[1] };
+
+			if (cross2(pq, qr) < -1e-9 * d->size * d->size)
+				return error_at(b->err, -EINVAL, b->name, line,
+						"a face of the pattern is not convex: creases cross "
+						"or run out of their part");
+		}
+	}
+	return 0;
+}
+
+static int check_design(const struct ori_design *d, const char *name, struct error *err)
+{
+	double span = d->middle[0] + d->middle[1] + 2.0 * sides_angle(d, d->nsides);
+	unsigned long line = d->line_middle ? d->line_middle : d->line;
+
+	if (d->middle[0] != d->middle[1])
+		return error_at(err, -EINVAL, name, line,
+				"the middle part is not symmetric: %.4g degrees right of the midrib, "
+				"%.4g left (the pattern mirrors about the midrib)",
+				d->middle[0], d->middle[1]);
+	for (size_t i = 0; i < d->nnodes; i++) {
+		const struct ori_node *n = &d->nodes[i];
+		unsigned long at = n->line ? n->line : line;
+
+		if (n->phi[0] != n->phi[1] || n->psi[0] != n->psi[1])
+			return error_at(err, -EINVAL, name, at,
+					"middle.nodes[%zu] is not symmetric: its right and left "
+					"angles differ (the pattern mirrors about the midrib)", i);
+		if (!(n->psi[0] > 0 && n->psi[0] < n->phi[0] && n->phi[0] < 90))
+			return error_at(err, -EINVAL, name, at,
+					"middle.nodes[%zu]: the extra mountain must lie between the "
+					"midrib and the side vein, 0 < psi < phi < 90", i);
+		if (n->at <= (i ? d->nodes[i - 1].at : 0.0) || n->at >= 1)
+			return error_at(err, -EINVAL, name, at,
+					"middle.nodes[%zu]: `at` must grow from O and stay below 1", i);
+	}
+	if (span >= 360.0)
+		return error_at(err, -EINVAL, name, line,
+				"the parts span %.4g degrees round O: 360 or more cannot fold flat "
+				"(the petiole's notch must stay open)", span);
+	if (d->fold == ORI_FOLD_HALF && (d->middle[0] < 90.0 || d->nsides || d->nnodes))
+		return error_at(err, -EINVAL, name, line,
+				"a half fold is the midrib alone, 180 degrees at O: its curve "
+				"leaves O square to the midrib");
+	return 0;
+}
+
+static void lobes(struct builder *b, struct ori_leaf *l)
+{
+	const struct ori_design *d = b->d;
+	size_t np = d->fold == ORI_FOLD_HALF ? 1 : 2 * d->nsides + 1;
+
+	l->nlobes = np;
+	for (size_t p = 0; p < np; p++) {
+		struct ori_lobe *lo = &l->lobes[p];
+		double theta = 0;
+
+		if (d->fold == ORI_FOLD_FAN && p != d->nsides) {
+			size_t j = p < d->nsides ? d->nsides - 1 - p : p - d->nsides - 1;
+
+			theta = d->middle[p > d->nsides] + sides_angle(d, j) + d->sides[j].angle / 2;
+		}
+		lo->theta = theta;
+		lo->target = d->fold == ORI_FOLD_HALF ? d->size : d->size * (1.0 - theta / d->theta0);
+		lo->tip = 0;
+		for (size_t i = 0; i < b->nmargin; i++)
+			if (b->part_of[b->margin[i]] == (int)p)
+				lo->tip = fmax(lo->tip, hypot(b->v[b->margin[i]][0], b->v[b->margin[i]][1]));
+	}
+}
+
+void ori_leaf_init(struct ori_leaf *l)
+{
+	memset(l, 0, sizeof(*l));
+	l->root_face = -1;
+}
+
+void ori_leaf_finish(struct ori_leaf *l)
+{
+	free(l->flat);
+	free(l->folded);
+	free(l->creases);
+	free(l->margin);
+	free(l->face_start);
+	free(l->face_len);
+	free(l->face_index);
+	free(l->face_from);
+	free(l->face_across);
+	free(l->nodes);
+	free(l->lobes);
+	free(l->vertex_part);
+	ori_leaf_init(l);
+}
+
+static int copy_out(struct builder *b, struct ori_leaf *l)
+{
+	struct iso rebase = iso_inverse(&b->fmap[b->root_face]);
+	double scale = 1.0;
+	size_t nl = 2 * ORI_MAX_SIDES + 1;
+
+	/* the midrib's tip at exactly size from O: nodes bend the folded midrib, so the cut
+	 * through the straight one's tip lands it elsewhere (lobes report the difference) */
+	for (size_t i = 0; i < b->nmargin; i++) {
+		const double *p = b->v[b->margin[i]];
+
+		if (fabs(p[0]) < 1e-12 && p[1] > 0)
+			scale = b->d->size / p[1];
+	}
+	l->flat = calloc(b->nv, sizeof(*l->flat));
+	l->folded = calloc(b->nv, sizeof(*l->folded));
+	l->creases = calloc(b->nc, sizeof(*l->creases));
+	l->margin = calloc(b->nmargin, sizeof(*l->margin));
+	l->face_start = calloc(b->nf, sizeof(*l->face_start));
+	l->face_len = calloc(b->nf, sizeof(*l->face_len));
+	l->face_index = calloc(b->nfi, sizeof(*l->face_index));
+	l->face_from = calloc(b->nf, sizeof(*l->face_from));
+	l->face_across = calloc(b->nf, sizeof(*l->face_across));
+	l->nodes = calloc(b->nnodes + 1, sizeof(*l->nodes));
+	l->lobes = calloc(nl, sizeof(*l->lobes));
+	l->vertex_part = calloc(b->nv, sizeof(*l->vertex_part));
+	if (!l->vertex_part || !l->flat || !l->folded || !l->creases || !l->margin || !l->face_start ||
+	    !l->face_len || !l->face_index || !l->face_from || !l->face_across || !l->nodes ||
+	    !l->lobes) {
+		ori_leaf_finish(l);
+		return error_set(b->err, -ENOMEM, "out of memory");
+	}
+	for (size_t f = 0; f < b->nf; f++) {
+		struct iso m = iso_mul(&rebase, &b->fmap[f]);
+
+		for (size_t k = 0; k < b->flen[f]; k++) {
+			int v = b->fidx[b->fstart[f] + k];
+
+			iso_apply(&m, b->v[v], l->folded[v]);
+		}
+	}
+	for (size_t v = 0; v < b->nv; v++)
+		for (int i = 0; i < 2; i++) {
+			l->flat[v][i] = b->v[v][i] * scale;
+			l->folded[v][i] *= scale;
+		}
+	for (size_t v = 0; v < b->nv; v++)
+		for (int i = 0; i < 2; i++)
+			b->v[v][i] *= scale;
+	l->nvertices = b->nv;
+	memcpy(l->vertex_part, b->part_of, b->nv * sizeof(*b->part_of));
+	l->tip = -1;
+	for (size_t i = 0; i < b->nmargin; i++)
+		if (fabs(l->flat[b->margin[i]][0]) < 1e-12 && l->flat[b->margin[i]][1] > 0)
+			l->tip = b->margin[i];
+	memcpy(l->creases, b->c, b->nc * sizeof(*b->c));
+	l->ncreases = b->nc;
+	memcpy(l->margin, b->margin, b->nmargin * sizeof(*b->margin));
+	l->nmargin = b->nmargin;
+	memcpy(l->face_start, b->fstart, b->nf * sizeof(*b->fstart));
+	memcpy(l->face_len, b->flen, b->nf * sizeof(*b->flen));
+	memcpy(l->face_index, b->fidx, b->nfi * sizeof(*b->fidx));
+	memcpy(l->face_from, b->from, b->nf * sizeof(*b->from));
+	memcpy(l->face_across, b->across, b->nf * sizeof(*b->across));
+	l->nfaces = b->nf;
+	l->root_face = b->root_face;
+	memcpy(l->nodes, b->nodes, b->nnodes * sizeof(*b->nodes));
+	l->nnodes = b->nnodes;
+	l->size = b->d->size;
+	l->rest = b->d->rest;
+	lobes(b, l);
+	return 0;
+}
+
+int ori_build(const struct ori_design *d, const char *name, struct ori_leaf *l,
+	      struct error *err)
+{
+	struct builder *b;
+	int ret;
+
+	ori_leaf_init(l);
+	if ((ret = check_design(d, name, err)) < 0)
+		return ret;
+	b = calloc(1, sizeof(*b));
+	if (!b)
+		return error_set(err, -ENOMEM, "out of memory");
+	b->d = d;
+	b->name = name;
+	b->err = err;
+	b->part_what = "";
+	b->part_line = d->line;
+	ret = d->fold == ORI_FOLD_HALF ? walk_half(b) : walk_fan(b);
+	if (ret == 0)
+		ret = check_pattern(b);
+	if (ret == 0)
+		ret = copy_out(b, l);
+	free(b);
+	return ret;
+}
