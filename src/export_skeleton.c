@@ -1,9 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include "export.h"
-#include "numfmt.h"
 
 #include <errno.h>
-#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -12,19 +10,6 @@
 #define SKELETON_FORMAT "edaha-skeleton"
 #define SKELETON_VERSION 1
 
-/*
- * A coordinate or radius, rounded to micrometres and printed as short as it goes:
- * 0.1 not 0.10000000000000001, 2 not 2.000000, 0 not -0. JSON has no NaN or infinity;
- * the model never holds one, and a 0 keeps the file readable if it ever did.
- */
-static struct json_object *jnum(double v)
-{
-	char s[NUMFMT_MAX];
-
-	numfmt_micro(s, v, true);
-	return json_object_new_double_s(round(v * 1e6) / 1e6, s);
-}
-
 static struct json_object *jpoints(const struct vec3 *p, size_t n)
 {
 	struct json_object *arr = json_object_new_array();
@@ -32,9 +17,9 @@ static struct json_object *jpoints(const struct vec3 *p, size_t n)
 	for (size_t i = 0; i < n; i++) {
 		struct json_object *xyz = json_object_new_array_ext(3);
 
-		xyz = json_out_push(xyz, jnum(p[i].x));
-		xyz = json_out_push(xyz, jnum(p[i].y));
-		xyz = json_out_push(xyz, jnum(p[i].z));
+		xyz = json_out_push(xyz, json_out_num(p[i].x));
+		xyz = json_out_push(xyz, json_out_num(p[i].y));
+		xyz = json_out_push(xyz, json_out_num(p[i].z));
 		arr = json_out_push(arr, xyz);
 	}
 	return arr;
@@ -46,14 +31,14 @@ static struct json_object *jbranch(const struct branch *b)
 	struct json_object *radii = json_object_new_array();
 
 	for (size_t i = 0; i < b->npoints; i++)
-		radii = json_out_push(radii, jnum(b->radii[i]));
+		radii = json_out_push(radii, json_out_num(b->radii[i]));
 	o = json_out_set(o, "id", json_object_new_int(b->id));
 	o = json_out_set(o, "parent", json_object_new_int(b->parent));
 	o = json_out_set(o, "generation", json_object_new_int(b->generation));
 	o = json_out_set(o, "origin", json_object_new_string(origin_name(b->origin)));
 	if (b->origin == ORIGIN_GENERATE)
 		o = json_out_set(o, "level", json_object_new_int(b->level));
-	o = json_out_set(o, "parent_t", jnum(b->parent_t));
+	o = json_out_set(o, "parent_t", json_out_num(b->parent_t));
 	o = json_out_set(o, "points", jpoints(b->points, b->npoints));
 	return json_out_set(o, "radii", radii);
 }
@@ -64,7 +49,7 @@ static struct json_object *jleaf(const struct leaf *l)
 
 	o = json_out_set(o, "id", json_object_new_int(l->id));
 	o = json_out_set(o, "branch", json_object_new_int(l->branch));
-	o = json_out_set(o, "branch_t", jnum(l->branch_t));
+	o = json_out_set(o, "branch_t", json_out_num(l->branch_t));
 	o = json_out_set(o, "origin", json_object_new_string(origin_name(l->origin)));
 	return json_out_set(o, "points", jpoints(l->points, l->npoints));
 }

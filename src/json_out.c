@@ -2,7 +2,10 @@
 #include "json_out.h"
 
 #include <errno.h>
+#include <math.h>
 #include <string.h>
+
+#include "numfmt.h"
 
 struct json_object *json_out_set(struct json_object *obj, const char *key, struct json_object *val)
 {
@@ -22,6 +25,14 @@ struct json_object *json_out_push(struct json_object *arr, struct json_object *v
 		return NULL;
 	}
 	return arr;
+}
+
+struct json_object *json_out_num(double v)
+{
+	char s[NUMFMT_MAX];
+
+	numfmt_micro(s, v, true);
+	return json_object_new_double_s(round(v * 1e6) / 1e6, s);
 }
 
 int json_out_append(struct json_object *root, const char *suffix, struct buf *out)
