@@ -23,6 +23,9 @@
  * spring and autumn the leaves' colours are their vertices' COLOR_0 (export_gltf.c). */
 int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
 	       struct buf *out);
+/* The same for one mesh of leaves alone (an origami leaf, ori_mesh_append): the leaves'
+ * green, double-sided material, the node and mesh named name. */
+int export_glb_leaf(const struct mesh *m, const char *name, struct buf *out);
 /* Wavefront OBJ with its MTL; the OBJ refers to the MTL as mtl_name (e.g. "model.mtl").
  * In spring and autumn the leaves' faces are grouped by colour, one material each
  * ("leaves-autumn-3": palette entry 3), and the MTL has the materials used. */

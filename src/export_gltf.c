@@ -175,9 +175,9 @@ static struct json_object *glb_leaves_material(enum export_look how, enum season
 	return glb_material(name, white, 0.8, true);
 }
 
-/* Builds the JSON document and the list of BIN views. */
+/* Builds the JSON document and the list of BIN views; name is the node's and the mesh's. */
 static int glb_build_json(struct glb *g, const struct tree_mesh *tm, enum export_look how,
-			  enum season season, const struct export_leaves *el)
+			  enum season season, const struct export_leaves *el, const char *name)
 {
 	const struct {
 		const struct mesh *mesh;
@@ -200,7 +200,7 @@ static int glb_build_json(struct glb *g, const struct tree_mesh *tm, enum export
 	materials = json_object_new_array();
 	for (size_t i = 0; i < sizeof(prims) / sizeof(prims[0]); i++) {
 		const struct mesh *m = prims[i].mesh;
-		const char *name = prims[i].name;
+		const char *prim_name = prims[i].name;
 		bool leaves = i == 1, colored = leaves && how == EXPORT_LEAVES_COLORED;
 		size_t first = g->nviews, idx = first + (colored ? 3 : 2);
 		struct json_object *prim, *attrs, *pos;
@@ -211,16 +211,16 @@ static int glb_build_json(struct glb *g, const struct tree_mesh *tm, enum export
 
 		/* Accessors and bufferViews are numbered alike: POSITION, NORMAL, COLOR_0 (the
 		 * leaves in spring and autumn only), indices. */
-		pos = glb_accessor(name, "POSITION", first, GL_FLOAT, m->nvertices, "VEC3");
+		pos = glb_accessor(prim_name, "POSITION", first, GL_FLOAT, m->nvertices, "VEC3");
 		accessors = json_out_push(accessors, glb_bounds(pos, m));
-		accessors = json_out_push(accessors, glb_accessor(name, "NORMAL", first + 1, GL_FLOAT,
+		accessors = json_out_push(accessors, glb_accessor(prim_name, "NORMAL", first + 1, GL_FLOAT,
 							  m->nvertices, "VEC3"));
 		views = glb_add_view(g, views, m->positions, 3 * m->nvertices, GLB_FLOATS,
 				     GL_ARRAY_BUFFER);
 		views = glb_add_view(g, views, m->normals, 3 * m->nvertices, GLB_FLOATS,
 				     GL_ARRAY_BUFFER);
 		if (colored) {
-			struct json_object *col = glb_accessor(name, "COLOR_0", first + 2,
+			struct json_object *col = glb_accessor(prim_name, "COLOR_0", first + 2,
 							       GL_UNSIGNED_BYTE, m->nvertices, "VEC4");
 
 			col = json_out_set(col, "normalized", json_object_new_boolean(1));
@@ -228,7 +228,7 @@ static int glb_build_json(struct glb *g, const struct tree_mesh *tm, enum export
 			views = glb_add_view(g, views, el, m->nvertices, GLB_LEAF_RGBA,
 					     GL_ARRAY_BUFFER);
 		}
-		accessors = json_out_push(accessors, glb_accessor(name, "indices", idx,
+		accessors = json_out_push(accessors, glb_accessor(prim_name, "indices", idx,
 							  GL_UNSIGNED_INT, m->nindices, "SCALAR"));
 		views = glb_add_view(g, views, m->indices, m->nindices, GLB_U32,
 				     GL_ELEMENT_ARRAY_BUFFER);
@@ -269,10 +269,10 @@ static int glb_build_json(struct glb *g, const struct tree_mesh *tm, enum export
 
 		scene = json_out_set(scene, "nodes", json_out_push(json_object_new_array(), jint(0)));
 		root = json_out_set(root, "scenes", json_out_push(scenes, scene));
-		node = json_out_set(node, "name", jstr("tree"));
+		node = json_out_set(node, "name", jstr(name));
 		node = json_out_set(node, "mesh", jint(0));
 		root = json_out_set(root, "nodes", json_out_push(json_object_new_array(), node));
-		mesh = json_out_set(mesh, "name", jstr("tree"));
+		mesh = json_out_set(mesh, "name", jstr(name));
 		mesh = json_out_set(mesh, "primitives", primitives);
 		root = json_out_set(root, "meshes", json_out_push(json_object_new_array(), mesh));
 		root = json_out_set(root, "accessors", accessors);
@@ -392,21 +392,18 @@ static int glb_write(struct buf *out, const char *json, size_t json_len, const s
 	return append_fill(out, bin_padded - g->bin_len, 0);
 }
 
-int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
-	       struct buf *out)
+/* The GLB of tm, every primitive that has triangles, appended to out or nothing at all. */
+static int glb_export(const struct tree_mesh *tm, enum export_look how, enum season season,
+		      const struct export_leaves *el, const char *name, struct buf *out)
 {
-	enum export_look how = export_look(t->season);
-	struct export_leaves el;
 	struct glb g;
 	struct buf json;
 	size_t start = out->len;
 	int r;
 
-	if (how == EXPORT_LEAVES_COLORED)
-		export_leaves_init(&el, t, &m->leaves, mk);
 	memset(&g, 0, sizeof(g));
 	buf_init(&json);
-	r = glb_build_json(&g, m, how, t->season, how == EXPORT_LEAVES_COLORED ? &el : NULL);
+	r = glb_build_json(&g, tm, how, season, el, name);
 	if (r < 0)
 		return r;
 	r = json_out_append(g.root, NULL, &json);
@@ -417,4 +414,26 @@ int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tre
 	if (r < 0)
 		out->len = start; /* no half-written file */
 	return r;
+}
+
+int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
+	       struct buf *out)
+{
+	enum export_look how = export_look(t->season);
+	struct export_leaves el;
+
+	if (how == EXPORT_LEAVES_COLORED)
+		export_leaves_init(&el, t, &m->leaves, mk);
+	return glb_export(m, how, t->season, how == EXPORT_LEAVES_COLORED ? &el : NULL, "tree",
+			  out);
+}
+
+int export_glb_leaf(const struct mesh *m, const char *name, struct buf *out)
+{
+	struct tree_mesh tm;
+
+	/* no bark: the leaves' primitive alone, in summer's green (the mesh is only read) */
+	mesh_init(&tm.bark);
+	tm.leaves = *m;
+	return glb_export(&tm, EXPORT_LEAVES_GREEN, SEASON_SUMMER, NULL, name, out);
 }
