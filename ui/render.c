@@ -85,12 +85,12 @@ static const char flat_fs[] =
 	"}\n";
 
 /* Warm paper, like the sheet a child would draw on. */
-static const float paper[3] = { 0.975f, 0.953f, 0.898f };
+const float render_paper[3] = { 0.975f, 0.953f, 0.898f };
 static const float bark_color[3] = { 0.47f, 0.32f, 0.20f };
 /* Towards the light: from the upper left, in front of the sketch plane. */
-static const float light_dir[3] = { -0.4418339f, 0.7069342f, 0.5522924f };
+const float render_light_dir[3] = { -0.4418339f, 0.7069342f, 0.5522924f };
 
-static void drain_gl_errors(void)
+void render_drain_gl_errors(void)
 {
 	/* bounded: a lost context may report errors forever */
 	for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; i++)
@@ -108,7 +108,7 @@ struct render *render_create(void)
 	if (!r)
 		return NULL;
 	batch_init(&r->batch);
-	drain_gl_errors();
+	render_drain_gl_errors();
 
 	r->tree_program =
 		render_program("tree", tree_vs, render_tree_fs, tree_attribs, tree_locations, 2);
@@ -367,7 +367,8 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 	(void)app_camera_at(app, now_us, &cam);
 	camera_xf_init(&xf, cam, sketch_view_pivot(&app->tree));
 	/* the light turns with the camera: the side a visitor looks at is always lit */
-	l = camera_dir_from_view(&xf, vec3(light_dir[0], light_dir[1], light_dir[2]));
+	l = camera_dir_from_view(&xf, vec3(render_light_dir[0], render_light_dir[1],
+					   render_light_dir[2]));
 	light[0] = (float)l.x;
 	light[1] = (float)l.y;
 	light[2] = (float)l.z;
@@ -375,7 +376,7 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 	if (v->width <= 0 || v->height <= 0)
 		return -EINVAL;
 	/* errors left by others are not ours to report */
-	drain_gl_errors();
+	render_drain_gl_errors();
 
 	/* every piece of state we rely on is set here: the caller may have changed any */
 	glViewport(0, 0, v->width, v->height);
@@ -383,7 +384,7 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 	glDisable(GL_CULL_FACE);
 	glDepthMask(GL_TRUE);
 	glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-	glClearColor(paper[0], paper[1], paper[2], 1.0f);
+	glClearColor(render_paper[0], render_paper[1], render_paper[2], 1.0f);
 	glClearDepthf(1.0f);
 	glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 	glEnableVertexAttribArray(ATTR_POSITION);

@@ -43,6 +43,18 @@ int render_frame(struct render *r, const struct app *app);
  * either. */
 int render_frame_at(struct render *r, const struct app *app, uint64_t now_us);
 
+struct mesh;
+/*
+ * An origami leaf alone (edaha --leaf): m (metres, a normal a face: ori_mesh_append) on the
+ * paper, double-sided in the screen's leaf green, lit like the tree, seen from a fixed
+ * three-quarter view above its front (RENDER_LEAF_YAW_DEG, RENDER_LEAF_PITCH_DEG) and
+ * framed to fill most of a width x height view. Same mesh, same pixels. 0; -EIO if GL
+ * reported an error; -ENOMEM; -EINVAL for a bad mesh or size.
+ */
+#define RENDER_LEAF_YAW_DEG -30.0
+#define RENDER_LEAF_PITCH_DEG 30.0
+int render_leaf(struct render *r, const struct mesh *m, int width, int height);
+
 /* What the last render_frame() did: for benchmarks and tests. */
 struct render_stats {
 	unsigned draw_calls;   /* glDraw* calls */

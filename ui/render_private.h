@@ -129,6 +129,12 @@ struct render {
  * that of the tinted programs (a `varying vec3 v_tint` instead of u_color) */
 extern const char render_tree_fs[];
 extern const char render_tinted_fs[];
+/* render.c: the paper behind everything, and the light's direction in view space (towards
+ * it: from the upper left, in front), for the frames drawn elsewhere (render_leaf.c) */
+extern const float render_paper[3];
+extern const float render_light_dir[3];
+/* Empties GL's error flags: errors left by others are not ours to report. */
+void render_drain_gl_errors(void);
 /* Room for n floats of colours (r->tint_scratch), or NULL. */
 float *render_tint_scratch(struct render *r, size_t n);
 /* Uploads the tree's meshes if mesh_serial changed (render_frame does it first): for
