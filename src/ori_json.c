@@ -49,12 +49,12 @@ static struct json_object *jcreases(const struct ori_leaf *l)
 
 	for (size_t i = 0; i < l->ncreases; i++) {
 		const struct ori_crease *c = &l->creases[i];
+		const char *type = c->type == ORI_VALLEY ? "valley" : "mountain";
 		struct json_object *o = json_object_new_object();
 
 		o = json_out_set(o, "a", json_object_new_int(c->a));
 		o = json_out_set(o, "b", json_object_new_int(c->b));
-		o = json_out_set(o, "type", json_object_new_string(c->type == ORI_VALLEY ? "valley" :
-									      "mountain"));
+		o = json_out_set(o, "type", json_object_new_string(type));
 		arr = json_out_push(arr, o);
 	}
 	return arr;
@@ -64,8 +64,11 @@ static struct json_object *jfaces(const struct ori_leaf *l)
 {
 	struct json_object *arr = json_object_new_array_ext((int)l->nfaces);
 
-	for (size_t f = 0; f < l->nfaces; f++)
-		arr = json_out_push(arr, jindices(l->face_index + l->face_start[f], l->face_len[f]));
+	for (size_t f = 0; f < l->nfaces; f++) {
+		const int *idx = l->face_index + l->face_start[f];
+
+		arr = json_out_push(arr, jindices(idx, l->face_len[f]));
+	}
 	return arr;
 }
 
@@ -90,6 +93,7 @@ int ori_json(const struct ori_leaf *l, const char *name, double t, const double 
 	     struct buf *out)
 {
 	struct json_object *root = json_object_new_object();
+	size_t triangles = ori_mesh_triangles(l);
 	int r;
 
 	/* the fields first, in its order; ours after them */
@@ -103,7 +107,7 @@ int ori_json(const struct ori_leaf *l, const char *name, double t, const double 
 	root = json_out_set(root, "opened", jpoints3(opened, l->nvertices));
 	root = json_out_set(root, "name", json_object_new_string(name));
 	root = json_out_set(root, "opening", json_out_num(t));
-	root = json_out_set(root, "triangles", json_object_new_int64((int64_t)ori_mesh_triangles(l)));
+	root = json_out_set(root, "triangles", json_object_new_int64((int64_t)triangles));
 	root = json_out_set(root, "lobes", jlobes(l));
 	if (!root)
 		return -ENOMEM;

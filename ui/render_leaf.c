@@ -30,7 +30,8 @@ static const double leaf_light[3] = { -0.48, 0.6, 0.64 };
 static void leaf_matrix(const struct mesh *m, const struct camera_xf *xf, int width, int height,
 			float out[16])
 {
-	double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
+	double lo[3] = { INFINITY, INFINITY, INFINITY };
+	double hi[3] = { -INFINITY, -INFINITY, -INFINITY };
 	double c[3], px_per_m, s[3];
 	float cam[16], fit[16] = { 0 };
 
