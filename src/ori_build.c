@@ -581,11 +581,29 @@ static bool segments_cross(const double p[2], const double q[2], const double r[
 	       ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
 }
 
+/* Where the design says part p (counted right to left): its line and name. */
+static unsigned long part_where(const struct ori_design *d, int p, char what[64])
+{
+	size_t n = d->nsides;
+
+	if (p < 0 || (size_t)p == n || (size_t)p > 2 * n) {
+		snprintf(what, 64, "middle");
+		return d->line_middle ? d->line_middle : d->line;
+	}
+	if ((size_t)p < n) {
+		snprintf(what, 64, "sides[%zu]", n - 1 - (size_t)p);
+		return d->sides[n - 1 - (size_t)p].line ? d->sides[n - 1 - (size_t)p].line : d->line;
+	}
+	snprintf(what, 64, "sides[%zu] (on the left)", (size_t)p - n - 1);
+	return d->sides[(size_t)p - n - 1].line ? d->sides[(size_t)p - n - 1].line : d->line;
+}
+
 /* Crossing creases, overlapping lobes, faces that are not convex: refused. */
 static int check_pattern(struct builder *b)
 {
 	const struct ori_design *d = b->d;
 	unsigned long line = d->line_middle ? d->line_middle : d->line;
+	char what[64];
 
 	for (size_t i = 0; i < b->nc; i++)
 		for (size_t j = i + 1; j < b->nc; j++) {
@@ -593,10 +611,12 @@ static int check_pattern(struct builder *b)
 
 			if (x->a == y->a || x->a == y->b || x->b == y->a || x->b == y->b)
 				continue;
-			if (segments_cross(b->v[x->a], b->v[x->b], b->v[y->a], b->v[y->b]))
+			if (segments_cross(b->v[x->a], b->v[x->b], b->v[y->a], b->v[y->b])) {
+				line = part_where(d, b->part_of[y->b], what);
 				return error_at(b->err, -EINVAL, b->name, line,
-						"creases cross: the forks' angles send a vein or a "
-						"mountain over another");
+						"%s: creases cross: its forks' angles send a vein or "
+						"a mountain over another", what);
+			}
 		}
 	for (size_t i = 0; i < b->nmargin; i++) {
 		const double *p = b->v[b->margin[i]], *q = b->v[b->margin[(i + 1) % b->nmargin]];
@@ -636,10 +656,12 @@ static int check_pattern(struct builder *b)
 			const double *r = b->v[b->fidx[s + (k + 2) % n]];
 			double pq[2] = { q[0] - p[0], q[1] - p[1] }, qr[2] = { r[0] - q[0], r[1] - q[1] };
 
-			if (cross2(pq, qr) < -1e-9 * d->size * d->size)
+			if (cross2(pq, qr) < -1e-9 * d->size * d->size) {
+				line = part_where(d, b->part_of[b->fidx[s + (k + 1) % n]], what);
 				return error_at(b->err, -EINVAL, b->name, line,
-						"a face of the pattern is not convex: creases cross "
-						"or run out of their part");
+						"%s: a face of the pattern is not convex: creases "
+						"cross or run out of their part", what);
+			}
 		}
 	}
 	return 0;

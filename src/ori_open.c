@@ -104,6 +104,10 @@ static double norm9(const double r[9])
 /* Newton (Gauss-Newton on the nine residuals) from x. */
 static int node_solve(double phi, double psi, double rho_in, double x[2])
 {
+	if (rho_in == 0) { /* flat: the one solution, where Newton would crawl */
+		x[0] = x[1] = 0;
+		return 0;
+	}
 	for (int it = 0; it < 40; it++) {
 		double r[9], j[9][2], h = 1e-7, a = 0, b = 0, c = 0, g0 = 0, g1 = 0, det, dx0, dx1;
 
