@@ -6,9 +6,19 @@
 
 #include "ori_design.h"
 
+void ori_side_default(struct ori_side *s)
+{
+	memset(s, 0, sizeof(*s));
+	s->angle = 55;
+	s->forks = 0;
+	s->fork_at = 0.5;
+	s->fork_a = 30;
+	s->fork_b = 30;
+}
+
 void ori_design_default(struct ori_design *d, enum ori_fold fold)
 {
-	/* entries past nnodes and nsides stay zero: a design compares byte for byte */
+	/* entries past nnodes and nsides stay zero */
 	memset(d, 0, sizeof(*d));
 	strcpy(d->name, "leaf");
 	d->fold = fold;
@@ -18,9 +28,7 @@ void ori_design_default(struct ori_design *d, enum ori_fold fold)
 	if (fold != ORI_FOLD_HALF) {
 		d->nsides = 2;
 		for (size_t i = 0; i < d->nsides; i++)
-			d->sides[i] = (struct ori_side){
-				.angle = 55, .forks = 0, .fork_at = 0.5, .fork_a = 30, .fork_b = 30,
-			};
+			ori_side_default(&d->sides[i]);
 	}
 	d->junction = 0.4;
 	d->theta0 = 200;

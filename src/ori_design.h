@@ -12,6 +12,9 @@
  * at that value's line; the tests and the fuzzer check what was accepted with it.
  */
 
+/* A fan's default side part (line 0); a file's side part must give its angle. */
+void ori_side_default(struct ori_side *s);
+
 /* The values ori_design_check may name. */
 enum ori_value {
 	ORI_VALUE_DESIGN = 0, /* the design as a whole: its fold, its counts */

@@ -350,10 +350,9 @@ static int read_sides(struct reader *r, const yaml_node_t *v)
 	unsigned long lines[ORI_MAX_SIDES] = { 0 };
 	int ret;
 
-	/* a part the file gives keeps the defaults of what it leaves out */
-	memset(r->d->sides, 0, sizeof(r->d->sides));
+	/* a part takes the defaults of what it leaves out, but its angle: required */
 	for (size_t i = 0; i < ORI_MAX_SIDES; i++)
-		r->d->sides[i] = (struct ori_side){ .fork_at = 0.5, .fork_a = 30, .fork_b = 30 };
+		ori_side_default(&r->d->sides[i]);
 	if ((ret = read_list(r, v, "sides", "part", ORI_MAX_SIDES, &r->d->nsides, side_pair,
 			     SEEN_ANGLE, lines)) < 0)
 		return ret;
@@ -428,7 +427,8 @@ static int read_name(struct reader *r, const yaml_node_t *v)
 			return fail(r, v, "name: \"%s\" is not made of a-z, 0-9 and -", shown(w, buf));
 	if (!*w)
 		return fail(r, v, "name: empty");
-	strcpy(r->d->name, w);
+	memset(r->d->name, 0, sizeof(r->d->name));
+	memcpy(r->d->name, w, strlen(w));
 	return 0;
 }
 
