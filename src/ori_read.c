@@ -232,7 +232,9 @@ enum { SEEN_AT = 1, SEEN_PHI = 2, SEEN_PSI = 4, SEEN_ANGLE = 8 };
 static const struct {
 	unsigned bit;
 	const char *key;
-} needed[] = { { SEEN_AT, "at" }, { SEEN_PHI, "phi" }, { SEEN_PSI, "psi" }, { SEEN_ANGLE, "angle" } };
+} needed[] = {
+	{ SEEN_AT, "at" }, { SEEN_PHI, "phi" }, { SEEN_PSI, "psi" }, { SEEN_ANGLE, "angle" },
+};
 
 static int node_pair(struct reader *r, const yaml_node_t *key, const char *k, const yaml_node_t *v)
 {
