@@ -19,6 +19,7 @@ struct job {
 	struct ori_design d;
 	struct ori_leaf l;
 	double (*pos)[3];
+	double (*frames)[3];
 	struct mesh m;
 };
 
@@ -47,9 +48,8 @@ static void keyframes(void *arg)
 {
 	struct job *j = arg;
 
-	for (int k = 0; k <= KEYFRAMES; k++)
-		if (ori_open(&j->l, (double)k / KEYFRAMES, j->pos) < 0)
-			exit(1);
+	if (ori_open_frames(&j->l, KEYFRAMES + 1, j->frames) < 0)
+		exit(1);
 }
 
 static void mesh(void *arg)
@@ -70,7 +70,8 @@ static void prepare(struct job *j)
 		exit(1);
 	}
 	j->pos = calloc(j->l.nvertices, sizeof(*j->pos));
-	if (!j->pos || ori_rest(&j->l, j->pos) < 0)
+	j->frames = calloc(j->l.nvertices * (KEYFRAMES + 1), sizeof(*j->frames));
+	if (!j->pos || !j->frames || ori_rest(&j->l, j->pos) < 0)
 		exit(1);
 	mesh_init(&j->m);
 }
@@ -79,6 +80,7 @@ static void release(struct job *j)
 {
 	mesh_finish(&j->m);
 	free(j->pos);
+	free(j->frames);
 	ori_leaf_finish(&j->l);
 }
 
@@ -111,11 +113,12 @@ static void presets(void)
 /* Growth: a five-part fan whose side parts fork 0..3 times, then with midrib nodes. */
 static void growth(void)
 {
-	double ps = 0, pt = 0, po = 0, pot = 0;
+	printf("# growth: ori_build and %d+1 keyframes against the pattern's creases, side "
+	       "parts forking 0..3 times, without and with 2 midrib nodes\n", KEYFRAMES);
+	for (size_t nodes = 0; nodes <= 2; nodes += 2) {
+		double ps = 0, pt = 0, po = 0, pot = 0;
 
-	printf("# growth: ori_build and 9 keyframes against the pattern's creases\n");
-	for (int forks = 0; forks <= 3; forks++)
-		for (size_t nodes = 0; nodes <= 2; nodes += 2) {
+		for (int forks = 0; forks <= 3; forks++) {
 			struct job j;
 			char name[64];
 			double t;
@@ -144,6 +147,7 @@ static void growth(void)
 			bench_row(name, (double)j.l.ncreases, t, &po, &pot);
 			release(&j);
 		}
+	}
 }
 
 int main(void)

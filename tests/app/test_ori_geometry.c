@@ -362,7 +362,7 @@ static void test_refused(void)
 	d.sides[0].fork_at = 0.2;
 	d.sides[0].fork_a = d.sides[0].fork_b = 60;
 	d.sides[0].line = 9;
-	check_refused(&d, "bad.yaml:9: sides[0]: creases cross");
+	check_refused(&d, "bad.yaml:9: sides: part 1: creases cross");
 	d = hop();
 	d.nodes[0].psi[0] = d.nodes[0].psi[1] = 60;
 	check_refused(&d, "psi < phi");
@@ -431,6 +431,17 @@ int main(void)
 {
 	struct ori_design f = fan(), h = hop(), e = half();
 
+	size_t n;
+	const char *const *names = ori_preset_names(&n);
+
+	CHECK(n == 3);
+	for (size_t i = 0; i < n; i++) {
+		struct ori_design p;
+		struct error err;
+
+		CHECK_INT(ori_preset(names[i], &p, &err), 0);
+		printf("preset %s: %zu vertices inside\n", names[i], check_design(&p));
+	}
 	CHECK(check_design(&f) == 0); /* a plain fan: no vertex inside */
 	CHECK(check_design(&h) >= 4); /* two nodes, forks on the side parts */
 	check_design(&e);
