@@ -46,6 +46,14 @@ void options_usage(FILE *f)
 	      "  --idle SECONDS      show the screen this long after the last input, as the\n"
 	      "                      kiosk would (messages fade after 4 s, the attract\n"
 	      "                      screen comes after 90 s)\n"
+	      "  --leaf NAME|FILE    an origami leaf alone instead of a tree: a preset (entire,\n"
+	      "                      hop, maple) or a leaf design file (docs/leaf-format.md);\n"
+	      "                      writes origami.json, leaf.glb and screen.png to --out\n"
+	      "                      (docs/origami-leaves.md); only --opening and --size go\n"
+	      "                      with it\n"
+	      "  --opening T         how far the --leaf is open, from 0 (folded in the bud) to\n"
+	      "                      1 (flat); default: the design's rest opening (a grown\n"
+	      "                      leaf's, 0.9 in the presets)\n"
 	      "\n"
 	      "Kiosk test runs (no effect on a normal kiosk):\n"
 	      "  --kiosk-frames N    draw a new frame every vblank, as if the drawing changed\n"
@@ -158,6 +166,15 @@ static bool parse_frames(const char *s, unsigned long *n)
 	return true;
 }
 
+static bool parse_opening(const char *s, double *t)
+{
+	char *end;
+
+	/* the range check refuses NaN and an overflow; an underflow is a fine 0 */
+	*t = strtod(s, &end) + 0.0; /* + 0: -0 is 0 */
+	return end != s && !*end && *t >= 0.0 && *t <= 1.0;
+}
+
 static bool parse_idle(const char *s, double *seconds)
 {
 	char *end;
@@ -171,7 +188,7 @@ int options_parse(struct options *o, int argc, char **argv)
 {
 	enum { OPT_HEADLESS = 256, OPT_SIZE, OPT_SEED, OPT_OUT, OPT_LOAD, OPT_REPLAY, OPT_PRESS,
 	       OPT_VIEW, OPT_RECORD, OPT_HELP, OPT_VERSION, OPT_KIOSK_FRAMES, OPT_SCREENSHOT,
-	       OPT_CONFIG, OPT_STATS, OPT_LANG, OPT_IDLE, OPT_GENERATE };
+	       OPT_CONFIG, OPT_STATS, OPT_LANG, OPT_IDLE, OPT_GENERATE, OPT_LEAF, OPT_OPENING };
 	static const struct option longopts[] = {
 		{ "headless", no_argument, NULL, OPT_HEADLESS },
 		{ "size", required_argument, NULL, OPT_SIZE },
@@ -189,6 +206,8 @@ int options_parse(struct options *o, int argc, char **argv)
 		{ "stats", no_argument, NULL, OPT_STATS },
 		{ "lang", required_argument, NULL, OPT_LANG },
 		{ "idle", required_argument, NULL, OPT_IDLE },
+		{ "leaf", required_argument, NULL, OPT_LEAF },
+		{ "opening", required_argument, NULL, OPT_OPENING },
 		{ "help", no_argument, NULL, OPT_HELP },
 		{ "version", no_argument, NULL, OPT_VERSION },
 		{ NULL, 0, NULL, 0 },
@@ -279,6 +298,17 @@ int options_parse(struct options *o, int argc, char **argv)
 				return usage_error("bad --idle \"%s\" (expected seconds, 0..86400)", optarg);
 			o->idle_given = true;
 			break;
+		case OPT_LEAF:
+			if (!optarg[0])
+				return usage_error("%s needs a leaf preset's name or a file name", "--leaf");
+			o->leaf = optarg;
+			break;
+		case OPT_OPENING:
+			if (!parse_opening(optarg, &o->opening))
+				return usage_error("bad --opening \"%s\" (expected a number from 0, folded "
+						   "in the bud, to 1, flat)", optarg);
+			o->opening_given = true;
+			break;
 		case OPT_HELP:
 			o->help = true;
 			break;
@@ -293,16 +323,28 @@ int options_parse(struct options *o, int argc, char **argv)
 		return usage_error("unexpected argument \"%s\"", argv[optind]);
 	if (o->help || o->version)
 		return 0;
-	if (!o->headless && (o->out_dir || o->nsteps || o->view_given || o->idle_given || o->generate))
+	if (!o->headless && (o->out_dir || o->nsteps || o->view_given || o->idle_given || o->generate ||
+			     o->leaf || o->opening_given))
 		return usage_error("%s needs --headless",
 				   o->out_dir ? "--out" : o->nsteps ? "--replay/--press" :
-				   o->view_given ? "--view" : o->generate ? "--generate" : "--idle");
+				   o->view_given ? "--view" : o->generate ? "--generate" :
+				   o->leaf ? "--leaf" : o->opening_given ? "--opening" : "--idle");
 	if (o->headless && (o->kiosk_frames || o->screenshot || o->config || o->stats))
 		return usage_error("%s is for the kiosk, not --headless",
 				   o->kiosk_frames ? "--kiosk-frames" : o->screenshot ? "--screenshot" :
 				   o->config ? "--config" : "--stats");
 	if (o->headless && (!o->out_dir || !o->out_dir[0]))
 		return usage_error("%s needs --out DIR", "--headless");
+	if (o->opening_given && !o->leaf)
+		return usage_error("%s is for a --leaf", "--opening");
+	/* a leaf alone: no drawing, so nothing to load, feed, turn or record */
+	if (o->leaf && (o->load || o->generate || o->nsteps || o->view_given || o->idle_given ||
+			o->record || o->seed_given || o->lang))
+		return usage_error("%s does not go with --leaf (only --out, --opening and --size do)",
+				   o->load ? "--load" : o->generate ? "--generate" :
+				   o->nsteps ? "--replay/--press" : o->view_given ? "--view" :
+				   o->idle_given ? "--idle" : o->record ? "--record" :
+				   o->seed_given ? "--seed" : "--lang");
 	return 0;
 }
 

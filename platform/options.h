@@ -41,6 +41,9 @@ struct options {
 	const char *lang;       /* "en", "ja", or NULL: the configuration's (kiosk), en */
 	bool idle_given;        /* headless: render this long after the last input */
 	double idle_s;
+	const char *leaf;       /* headless: an origami leaf alone, a preset's name or a file */
+	bool opening_given;     /* ...opened this far, 0..1 (else the design's rest) */
+	double opening;
 };
 
 /* Parses argv. Returns 0, or 2 (usage error, message printed) as an exit status. */
