@@ -167,8 +167,8 @@ int headless_leaf_run(const struct options *o)
 		ret = opened ? ori_open(&l, t, opened) : -ENOMEM;
 		/* ori_build takes no design ori_open cannot place; said as the design's fault */
 		if (ret == -EDOM)
-			error_at(&err, ret, o->leaf, d.line, "the leaf cannot open to %g: a node "
-				 "of the midrib does not close", t);
+			ret = error_at(&err, ret, o->leaf, d.line, "the leaf cannot open to %g: a "
+				       "node of the midrib does not close", t);
 	}
 	if (ret < 0) {
 		fprintf(stderr, "edaha: %s\n", ret == -ENOMEM ? "out of memory" : err.msg);
