@@ -191,6 +191,22 @@ t_record() {
 	same_files "$T/c" "$T/d" skeleton.json model.glb screen.png drawing.edaha
 }
 
+# Issue 15: leaf-maple pressed, then a recorded leaf arrangement: the leaves it places are
+# maple leaves in skeleton.json, the drawing holds the choice, the export validates, and
+# the drawing replays to the same files.
+t_origami() {
+	local n
+	run --out "$T/o" --press leaf-maple --replay "$SRC/data/edit-leaf-whorl.edaha-trace"
+	n=$(grep -o '"kind":"maple"' "$T/o/skeleton.json" | wc -l)
+	[ "$n" -ge 2 ] || fail "only $n maple leaves in skeleton.json"
+	grep -q '"kind":"drawn"\|"kind":"hop"' "$T/o/skeleton.json" && fail "unexpected leaf kinds"
+	grep -q '^leaftype [0-9]* maple$' "$T/o/drawing.edaha" || fail "no leaftype op in the drawing"
+	"$GLTF_VALIDATE" "$T/o/model.glb" || fail "the origami export does not validate"
+	run --out "$T/o2" --load "$T/o/drawing.edaha"
+	same_files "$T/o" "$T/o2" model.glb model.obj skeleton.json drawing.edaha
+	echo "$n maple leaves placed, exported and replayed"
+}
+
 t_exports_valid() {
 	run --out "$T/demo" --replay "$DEMO"
 	run --out "$T/demo3d" --replay "$DEMO" --press 3d
