@@ -205,6 +205,18 @@ t_origami() {
 	run --out "$T/o2" --load "$T/o/drawing.edaha"
 	same_files "$T/o" "$T/o2" model.glb model.obj skeleton.json drawing.edaha
 	echo "$n maple leaves placed, exported and replayed"
+	# a propagated tree with each lobed preset: golden pictures (EDAHA_UPDATE_GOLDEN=1
+	# writes them)
+	for k in maple hop; do
+		run --out "$T/p-$k" --press leaf-$k --replay "$SRC/data/edit-propagate-count.edaha-trace"
+		grep -q "\"kind\":\"$k\"" "$T/p-$k/skeleton.json" || fail "no $k leaves propagated"
+		if [ -n "${EDAHA_UPDATE_GOLDEN:-}" ]; then
+			cp "$T/p-$k/screen.png" "$SRC/golden/origami-propagate-$k.png"
+		else
+			"$IMGCMP" "$SRC/golden/origami-propagate-$k.png" "$T/p-$k/screen.png" ||
+				fail "the propagated $k leaves differ from golden"
+		fi
+	done
 }
 
 t_exports_valid() {
