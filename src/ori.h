@@ -174,6 +174,10 @@ int ori_build(const struct ori_design *d, const char *name, struct ori_leaf *l,
  */
 int ori_open(const struct ori_leaf *l, double t, double (*out)[3]);
 
+/* n >= 2 openings evenly from 0 to 1 (keyframes), in one pass: out holds n x nvertices
+ * rows, opening k / (n - 1) from row k x nvertices. As ori_open gives each. */
+int ori_open_frames(const struct ori_leaf *l, size_t n, double (*out)[3]);
+
 /* A grown leaf's shape: the mirror (z -> -z) of the leaf opened to its rest: curling is
  * not the opening run backwards. */
 int ori_rest(const struct ori_leaf *l, double (*out)[3]);

@@ -379,7 +379,7 @@ static int midrib(struct builder *b, int s, size_t i, int parent)
 	if (i == d->nnodes)
 		return ray(b, s, up, ORI_VALLEY, rule, parent, 0, node, NULL);
 	b->part_line = d->nodes[i].line ? d->nodes[i].line : d->line_middle;
-	snprintf(b->what, sizeof(b->what), "middle.nodes[%zu]", i);
+	snprintf(b->what, sizeof(b->what), "middle.nodes: node %zu", i + 1);
 	b->part_what = b->what;
 	ret = inner_begin(b, s, 0, d->nodes[i].at * d->size, ORI_VALLEY, rule, parent, 0, node, &v,
 			  &c, &before);
@@ -429,13 +429,13 @@ static int side_part(struct builder *b, size_t j, bool left, const double edge[2
 
 	b->part = left ? (int)(d->nsides + 1 + j) : (int)(d->nsides - 1 - j);
 	b->part_line = p->line ? p->line : d->line;
-	snprintf(b->what, sizeof(b->what), "sides[%zu]%s", j, left ? " (on the left)" : "");
+	snprintf(b->what, sizeof(b->what), "sides: part %zu%s", j + 1, left ? " (on the left)" : "");
 	b->part_what = b->what;
 	if (r <= d->junction * d->size * 1.01)
 		return error_at(b->err, -EINVAL, b->name, b->part_line,
-				"sides[%zu]: its vein, %.4g degrees from the midrib, reaches %.3g of "
+				"sides: part %zu: its vein, %.4g degrees from the midrib, reaches %.3g of "
 				"the midrib by the spiral (theta0 %.4g), not past the junction (%.3g)",
-				j, theta, r / d->size, d->theta0, d->junction);
+				j + 1, theta, r / d->size, d->theta0, d->junction);
 	dir_at(90.0 + (left ? theta : -theta), dv);
 	set_cut(b, edge, dv, r);
 	return vein(b, p, left, 0, dv, 0, ORI_RULE_BASE, -1, 0);
@@ -581,11 +581,29 @@ static bool segments_cross(const double p[2], const double q[2], const double r[
 	       ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
 }
 
+/* Where the design says part p (counted right to left): its line and name. */
+static unsigned long part_where(const struct ori_design *d, int p, char what[64])
+{
+	size_t n = d->nsides;
+
+	if (p < 0 || (size_t)p == n || (size_t)p > 2 * n) {
+		snprintf(what, 64, "middle");
+		return d->line_middle ? d->line_middle : d->line;
+	}
+	if ((size_t)p < n) {
+		snprintf(what, 64, "sides: part %zu", n - (size_t)p);
+		return d->sides[n - 1 - (size_t)p].line ? d->sides[n - 1 - (size_t)p].line : d->line;
+	}
+	snprintf(what, 64, "sides: part %zu (on the left)", (size_t)p - n);
+	return d->sides[(size_t)p - n - 1].line ? d->sides[(size_t)p - n - 1].line : d->line;
+}
+
 /* Crossing creases, overlapping lobes, faces that are not convex: refused. */
 static int check_pattern(struct builder *b)
 {
 	const struct ori_design *d = b->d;
 	unsigned long line = d->line_middle ? d->line_middle : d->line;
+	char what[64];
 
 	for (size_t i = 0; i < b->nc; i++)
 		for (size_t j = i + 1; j < b->nc; j++) {
@@ -593,10 +611,12 @@ static int check_pattern(struct builder *b)
 
 			if (x->a == y->a || x->a == y->b || x->b == y->a || x->b == y->b)
 				continue;
-			if (segments_cross(b->v[x->a], b->v[x->b], b->v[y->a], b->v[y->b]))
+			if (segments_cross(b->v[x->a], b->v[x->b], b->v[y->a], b->v[y->b])) {
+				line = part_where(d, b->part_of[y->b], what);
 				return error_at(b->err, -EINVAL, b->name, line,
-						"creases cross: the forks' angles send a vein or a "
-						"mountain over another");
+						"%s: creases cross: its forks' angles send a vein or "
+						"a mountain over another", what);
+			}
 		}
 	for (size_t i = 0; i < b->nmargin; i++) {
 		const double *p = b->v[b->margin[i]], *q = b->v[b->margin[(i + 1) % b->nmargin]];
@@ -636,10 +656,12 @@ static int check_pattern(struct builder *b)
 			const double *r = b->v[b->fidx[s + (k + 2) % n]];
 			double pq[2] = { q[0] - p[0], q[1] - p[1] }, qr[2] = { r[0] - q[0], r[1] - q[1] };
 
-			if (cross2(pq, qr) < -1e-9 * d->size * d->size)
+			if (cross2(pq, qr) < -1e-9 * d->size * d->size) {
+				line = part_where(d, b->part_of[b->fidx[s + (k + 1) % n]], what);
 				return error_at(b->err, -EINVAL, b->name, line,
-						"a face of the pattern is not convex: creases cross "
-						"or run out of their part");
+						"%s: a face of the pattern is not convex: creases "
+						"cross or run out of their part", what);
+			}
 		}
 	}
 	return 0;
@@ -661,15 +683,17 @@ static int check_design(const struct ori_design *d, const char *name, struct err
 
 		if (n->phi[0] != n->phi[1] || n->psi[0] != n->psi[1])
 			return error_at(err, -EINVAL, name, at,
-					"middle.nodes[%zu] is not symmetric: its right and left "
-					"angles differ (the pattern mirrors about the midrib)", i);
+					"middle.nodes: node %zu is not symmetric: its right and "
+					"left angles differ (the pattern mirrors about the midrib)",
+					i + 1);
 		if (!(n->psi[0] > 0 && n->psi[0] < n->phi[0] && n->phi[0] < 90))
 			return error_at(err, -EINVAL, name, at,
-					"middle.nodes[%zu]: the extra mountain must lie between the "
-					"midrib and the side vein, 0 < psi < phi < 90", i);
+					"middle.nodes: node %zu: the extra mountain must lie between "
+					"the midrib and the side vein, 0 < psi < phi < 90", i + 1);
 		if (n->at <= (i ? d->nodes[i - 1].at : 0.0) || n->at >= 1)
 			return error_at(err, -EINVAL, name, at,
-					"middle.nodes[%zu]: `at` must grow from O and stay below 1", i);
+					"middle.nodes: node %zu: `at` must grow from O and stay below "
+					"1", i + 1);
 	}
 	if (span >= 360.0)
 		return error_at(err, -EINVAL, name, line,

@@ -71,6 +71,17 @@ static struct rigid rigid_about(const double p[2], const double u[2], double th)
 	return r;
 }
 
+/* The rotation by th about crease c (flat). */
+static struct rigid rigid_crease(const struct ori_leaf *l, const struct ori_crease *c, double th)
+{
+	const double *a = l->flat[c->a], *b = l->flat[c->b];
+	double u[2] = { b[0] - a[0], b[1] - a[1] }, n = hypot(u[0], u[1]);
+
+	u[0] /= n;
+	u[1] /= n;
+	return rigid_about(a, u, th);
+}
+
 /* The node's closure: the rotations about its creases, counter-clockwise from the midrib
  * leaving it, minus the identity. x = {rho_mountain, rho_out}. */
 static void node_residual(double phi, double psi, double rho_in, const double x[2],
@@ -104,6 +115,10 @@ static double norm9(const double r[9])
 /* Newton (Gauss-Newton on the nine residuals) from x. */
 static int node_solve(double phi, double psi, double rho_in, double x[2])
 {
+	if (rho_in == 0) { /* flat: the one solution, where Newton would crawl */
+		x[0] = x[1] = 0;
+		return 0;
+	}
 	for (int it = 0; it < 40; it++) {
 		double r[9], j[9][2], h = 1e-7, a = 0, b = 0, c = 0, g0 = 0, g1 = 0, det, dx0, dx1;
 
@@ -185,16 +200,15 @@ static int fold_angles(const struct ori_leaf *l, double t, double *rho, double (
 	return 0;
 }
 
-/* Fold angles continued from t = 0 to t: the nodes' solutions followed in small steps. */
-static int fold_angles_at(const struct ori_leaf *l, double t, double *rho)
+/* Fold angles continued from t0 (its node solutions in x) to t1, in steps of about 0.01:
+ * the nodes' solutions followed from the bud. */
+static int fold_angles_to(const struct ori_leaf *l, double t0, double t1, double *rho,
+			  double (*x)[2])
 {
-	double x[ORI_MAX_NODES][2];
-	int steps = l->nnodes ? 8 + (int)ceil(t * 96) : 1;
+	int steps = l->nnodes ? 1 + (int)ceil(fabs(t1 - t0) * 96) : 1;
 
-	for (size_t i = 0; i < ORI_MAX_NODES; i++)
-		x[i][0] = x[i][1] = VEC_PI;
 	for (int s = 1; s <= steps; s++) {
-		int ret = fold_angles(l, t * s / steps, rho, x);
+		int ret = fold_angles(l, t0 + (t1 - t0) * s / steps, rho, x);
 
 		if (ret < 0)
 			return ret;
@@ -202,54 +216,35 @@ static int fold_angles_at(const struct ori_leaf *l, double t, double *rho)
 	return 0;
 }
 
-int ori_open(const struct ori_leaf *l, double t, double (*out)[3])
+/* The faces placed at fold angles rho (the midrib's base fold is pi (1 - t)). */
+static int place(const struct ori_leaf *l, double t, const double *rho, double (*out)[3])
 {
-	double rho[1024], signed_rho;
+	static const double o[2] = { 0, 0 }, up[2] = { 0, 1 };
 	struct rigid tf[512], g;
 	bool set[1024];
-	int ret;
 
-	if (l->ncreases > 1024 || l->nfaces > 512 || l->nvertices > 1024 || l->root_face < 0)
-		return -EINVAL;
-	t = t < 0 ? 0 : t > 1 ? 1 : t;
-	if ((ret = fold_angles_at(l, t, rho)) < 0)
-		return ret;
 	memset(&tf[l->root_face], 0, sizeof(tf[0]));
 	for (int i = 0; i < 3; i++)
 		tf[l->root_face].r[i][i] = 1;
 	/* the walk crossed each ray from the face on its right to the one on its left */
 	for (size_t f = (size_t)l->root_face + 1; f < l->nfaces; f++) {
 		const struct ori_crease *c = &l->creases[l->face_across[f]];
-		const double *a = l->flat[c->a], *b = l->flat[c->b];
-		double u[2] = { b[0] - a[0], b[1] - a[1] }, n = hypot(u[0], u[1]);
-		struct rigid r;
+		double r = c->type == ORI_VALLEY ? rho[l->face_across[f]] : -rho[l->face_across[f]];
+		struct rigid m = rigid_crease(l, c, r);
 
-		u[0] /= n;
-		u[1] /= n;
-		signed_rho = c->type == ORI_VALLEY ? rho[l->face_across[f]] : -rho[l->face_across[f]];
-		r = rigid_about(a, u, signed_rho);
-		tf[f] = rigid_mul(&tf[f - 1], &r);
+		tf[f] = rigid_mul(&tf[f - 1], &m);
 	}
 	for (size_t f = (size_t)l->root_face; f-- > 0;) {
 		const struct ori_crease *c = &l->creases[l->face_across[f + 1]];
-		const double *a = l->flat[c->a], *b = l->flat[c->b];
-		double u[2] = { b[0] - a[0], b[1] - a[1] }, n = hypot(u[0], u[1]);
-		struct rigid r;
+		double r = c->type == ORI_VALLEY ? rho[l->face_across[f + 1]] :
+						   -rho[l->face_across[f + 1]];
+		struct rigid m = rigid_crease(l, c, -r);
 
-		u[0] /= n;
-		u[1] /= n;
-		signed_rho = c->type == ORI_VALLEY ? rho[l->face_across[f + 1]] :
-						     -rho[l->face_across[f + 1]];
-		r = rigid_about(a, u, -signed_rho);
-		tf[f] = rigid_mul(&tf[f + 1], &r);
+		tf[f] = rigid_mul(&tf[f + 1], &m);
 	}
 	/* symmetric about x = 0: the root face (right of the midrib) turned back by half the
 	 * midrib's fold, so both halves rise alike */
-	{
-		double o[2] = { 0, 0 }, up[2] = { 0, 1 };
-
-		g = rigid_about(o, up, -VEC_PI * (1 - t) / 2);
-	}
+	g = rigid_about(o, up, -VEC_PI * (1 - t) / 2);
 	memset(set, 0, sizeof(set));
 	for (size_t f = 0; f < l->nfaces; f++) {
 		struct rigid m = rigid_mul(&g, &tf[f]);
@@ -264,6 +259,50 @@ int ori_open(const struct ori_leaf *l, double t, double (*out)[3])
 				out[v][i] = m.r[i][0] * p[0] + m.r[i][1] * p[1] + m.t[i];
 			set[v] = true;
 		}
+	}
+	return 0;
+}
+
+static bool fits(const struct ori_leaf *l)
+{
+	return l->ncreases <= 1024 && l->nfaces <= 512 && l->nvertices <= 1024 && l->root_face >= 0;
+}
+
+static void start(double (*x)[2])
+{
+	for (size_t i = 0; i < ORI_MAX_NODES; i++)
+		x[i][0] = x[i][1] = VEC_PI;
+}
+
+int ori_open(const struct ori_leaf *l, double t, double (*out)[3])
+{
+	double rho[1024], x[ORI_MAX_NODES][2];
+	int ret;
+
+	if (!fits(l))
+		return -EINVAL;
+	t = t < 0 ? 0 : t > 1 ? 1 : t;
+	start(x);
+	if ((ret = fold_angles_to(l, 0, t, rho, x)) < 0)
+		return ret;
+	return place(l, t, rho, out);
+}
+
+int ori_open_frames(const struct ori_leaf *l, size_t n, double (*out)[3])
+{
+	double rho[1024], x[ORI_MAX_NODES][2], t0 = 0;
+	int ret;
+
+	if (!fits(l) || n < 2)
+		return -EINVAL;
+	start(x);
+	for (size_t k = 0; k < n; k++) {
+		double t = (double)k / (double)(n - 1);
+
+		if ((ret = fold_angles_to(l, t0, t, rho, x)) < 0 ||
+		    (ret = place(l, t, rho, out + k * l->nvertices)) < 0)
+			return ret;
+		t0 = t;
 	}
 	return 0;
 }
