@@ -216,7 +216,7 @@ static void session(void)
 	struct app *app = bench_draw_edited(&pen, 500, 2000, 2), *loaded;
 	struct walk undo, redo;
 	char name[64];
-	size_t kinds[DOC_OP_SEASON + 1] = { 0 };
+	size_t kinds[DOC_OP_LEAFTYPE + 1] = { 0 };
 
 	for (size_t i = 0; i < app->doc.nops; i++)
 		kinds[app->doc.ops[i].kind]++;

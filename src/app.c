@@ -10,6 +10,7 @@
 #include "clone.h"
 #include "gen.h"
 #include "lift.h"
+#include "ori_kinds.h"
 #include "propagate.h"
 #include "sketch.h"
 #include "tree_index.h"
@@ -109,6 +110,11 @@ int app_apply_op(struct app *app, const struct doc_op *op)
 		/* the leaves' colours: no element changes */
 		if ((unsigned)op->pattern < SEASON_COUNT)
 			app->tree.season = (enum season)op->pattern;
+		return SKETCH_GREW;
+	case DOC_OP_LEAFTYPE:
+		/* what arrangement and propagation place next: no element changes */
+		if (op->pattern >= -1 && op->pattern < ORI_KIND_COUNT)
+			app->tree.leaf_kind = op->pattern;
 		return SKETCH_GREW;
 	}
 	return SKETCH_CHANGED;
@@ -337,6 +343,17 @@ int app_press_button(struct app *app, enum button button, uint64_t time_us)
 	case BUTTON_GEN_LEAFIER:
 	case BUTTON_GEN_BARER:
 		return app_press_functional(app, button, time_us);
+	case BUTTON_LEAF_DRAWN:
+	case BUTTON_LEAF_ENTIRE:
+	case BUTTON_LEAF_HOP:
+	case BUTTON_LEAF_MAPLE: {
+		/* the order of enum button is ori_kinds.h's, the drawn leaf first */
+		int kind = (int)(button - BUTTON_LEAF_DRAWN) - 1;
+
+		if (kind == app->tree.leaf_kind)
+			return 0; /* the choice in effect: nothing to undo */
+		return app_push_edit(app, DOC_OP_LEAFTYPE, 0, kind, time_us);
+	}
 	case BUTTON_COUNT:
 		break;
 	}

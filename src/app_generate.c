@@ -14,11 +14,11 @@
 
 const struct doc_op *app_generated(const struct app *app)
 {
-	/* a season changes no branch: the tree is still as generated */
+	/* a season or a leaf type changes no branch: the tree is still as generated */
 	for (size_t i = app->doc.cursor; i-- > 0;) {
 		const struct doc_op *op = &app->doc.ops[i];
 
-		if (op->kind == DOC_OP_SEASON)
+		if (op->kind == DOC_OP_SEASON || op->kind == DOC_OP_LEAFTYPE)
 			continue;
 		return op->kind == DOC_OP_GENERATE && op->params ? op : NULL;
 	}

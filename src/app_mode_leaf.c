@@ -64,16 +64,27 @@ static int leaf_enter(struct app *app, uint64_t time_us)
 	return 0;
 }
 
+/*
+ * The arrangements suggested, as pictures on cards; then the leaves to place (issue 15):
+ * the visitor's drawn one and the origami presets, cards pressing leaf-drawn ..
+ * leaf-maple with their icons, the choice in effect lit. The suggestions keep their
+ * places (recorded taps land on them as before); the leaves' cards are named when no
+ * suggestion shows (a strip's cards are all of one kind: its first's).
+ */
 static size_t leaf_side(const struct app *app, struct app_side_item *out, size_t max)
 {
 	enum arrange_pattern list[ARRANGE_COUNT];
-	size_t n = app_suggestions(app, list);
+	size_t n = app_suggestions(app, list), at = 0;
 
-	n = n < max ? n : max;
-	for (size_t i = 0; i < n; i++)
-		out[i] = (struct app_side_item){ .thumbnail = true, .button = BUTTON_COUNT,
-						 .tap = (int)list[i], .preview = &app->previews[list[i]] };
-	return n;
+	for (size_t i = 0; i < n && at < max; i++)
+		out[at++] = (struct app_side_item){ .thumbnail = true, .button = BUTTON_COUNT,
+						    .tap = (int)list[i],
+						    .preview = &app->previews[list[i]] };
+	for (int b = BUTTON_LEAF_DRAWN; b <= BUTTON_LEAF_MAPLE && at < max; b++)
+		out[at++] = (struct app_side_item){
+			.thumbnail = true, .button = (enum button)b, .tap = 0,
+			.lit = (int)(b - BUTTON_LEAF_DRAWN) - 1 == app->tree.leaf_kind };
+	return at;
 }
 
 /* A tap on a suggestion applies it; tapping again keeps adding. */

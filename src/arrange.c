@@ -79,6 +79,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ori_place.h"
+
 #define ON_AXIS_M 1e-9
 #define MIN_LENGTH_M 1e-9
 
@@ -508,8 +510,10 @@ static int add_copy(struct tree *t, int b, const struct job *j)
 		return -ENOMEM;
 	for (size_t k = 0; k < l->npoints; k++)
 		l->local[k] = turn(src->local[k], c, s);
+	l->kind = src->kind;
 	place(t, l);
-	return 0;
+	/* the leaf the visitor chose, in the frame of the copy it replaces */
+	return ori_place_leaf(t, (size_t)id, t->leaf_kind);
 }
 
 static int apply_plan(struct tree *t, int b, const struct plan *pl)
@@ -591,6 +595,7 @@ int arrange_preview(const struct tree *t, int b, enum arrange_pattern p, struct 
 	out->lifted = t->lifted;
 	out->sides = t->sides;
 	out->season = t->season;
+	out->leaf_kind = t->leaf_kind;
 	for (size_t i = 0; i < t->nleaves; i++) {
 		const struct leaf *l = &t->leaves[i];
 		struct leaf *c;
@@ -602,6 +607,7 @@ int arrange_preview(const struct tree *t, int b, enum arrange_pattern p, struct 
 			goto fail;
 		c = &out->leaves[ret];
 		c->branch_t = l->branch_t;
+		c->kind = l->kind;
 		if (l->local) {
 			c->local = malloc((l->npoints ? l->npoints : 1) * sizeof(*c->local));
 			if (!c->local) {

@@ -33,6 +33,9 @@ enum doc_op_kind {
 	 * the parameter buttons on it. */
 	DOC_OP_GENERATE,
 	DOC_OP_SEASON,       /* the season button: `pattern` is the season (enum season) */
+	/* The leaf mode's leaf buttons (version 6, issue 15): `pattern` is the leaf kind
+	 * arrangement and propagation place from then on (ori_kinds.h; -1 the drawn one). */
+	DOC_OP_LEAFTYPE,
 };
 
 /* Stored as float so that what is written is exactly what is replayed. */
@@ -51,7 +54,8 @@ struct doc_op {
 	struct camera camera; /* strokes: the camera they were drawn in (the front view
 			       * before version 3) */
 	int branch;           /* editing ops: the branch they work on */
-	int pattern;          /* arrange, propagate: which pattern; season: the season */
+	int pattern;          /* arrange, propagate: which pattern; season: the season;
+			       * leaftype: the kind */
 	struct gen_params *params; /* generate: the tree's parameters (owned) */
 	uint64_t seed;        /* generate: the generator's seed */
 };
@@ -66,8 +70,8 @@ struct doc {
 
 /* 2 added the lift op, 3 the camera (of strokes drawn on a turned 3D tree, and the
  * view when saved), 4 the editing ops (clone, arrange, propagate), 5 the generated trees
- * and the season; older files read as before. */
-#define DOC_FORMAT_VERSION 5
+ * and the season, 6 the leaf type (origami leaves); older files read as before. */
+#define DOC_FORMAT_VERSION 6
 
 /*
  * Limits on a drawing, far beyond what a visitor draws in a day, so that a damaged or

@@ -11,6 +11,7 @@
 #include "arrange.h"
 #include "doc.h"
 #include "gen.h"
+#include "ori_kinds.h"
 #include "propagate.h"
 #include "tree.h"
 
@@ -80,6 +81,10 @@ int doc_serialize(const struct doc *d, const struct tree *t, struct buf *out)
 		case DOC_OP_SEASON:
 			buf_printf(out, "season %llu %s\n", (unsigned long long)op->time_us,
 				   season_name((enum season)op->pattern));
+			break;
+		case DOC_OP_LEAFTYPE:
+			buf_printf(out, "leaftype %llu %s\n", (unsigned long long)op->time_us,
+				   ori_kind_name(op->pattern) ? ori_kind_name(op->pattern) : "drawn");
 			break;
 		case DOC_OP_CLONE_ADD:
 		case DOC_OP_CLONE_REMOVE:
@@ -321,7 +326,8 @@ static int parse_edit(struct reader *r, struct doc_op *op)
 	return 0;
 }
 
-/* generate T GENERATOR SEED {PARAMETERS}, season T NAME (version 5) */
+/* generate T GENERATOR SEED {PARAMETERS}, season T NAME (version 5), leaftype T NAME
+ * (version 6) */
 static int parse_functional(struct reader *r, struct doc_op *op)
 {
 	uint64_t v;
@@ -338,6 +344,16 @@ static int parse_functional(struct reader *r, struct doc_op *op)
 					"unknown season \"%s\" (spring, summer, autumn, winter)",
 					r->fields[2]);
 		op->pattern = (int)season;
+		return 0;
+	}
+	if (op->kind == DOC_OP_LEAFTYPE) {
+		if ((ret = expect_fields(r, 3, "leaftype")) < 0 ||
+		    (ret = parse_u64(r, r->fields[1], UINT64_MAX, &op->time_us, "time")) < 0)
+			return ret;
+		if (!ori_kind_from_name(r->fields[2], &op->pattern))
+			return error_at(r->err, -EINVAL, r->name, r->line,
+					"unknown leaf type \"%s\" (drawn, entire, hop, maple)",
+					r->fields[2]);
 		return 0;
 	}
 	if ((ret = expect_fields(r, 5, "generate (time, generator, seed, parameters)")) < 0 ||
@@ -364,6 +380,8 @@ static bool functional_keyword(const char *kw, uint64_t version, enum doc_op_kin
 		*kind = DOC_OP_GENERATE;
 	else if (!strcmp(kw, "season"))
 		*kind = DOC_OP_SEASON;
+	else if (version >= 6 && !strcmp(kw, "leaftype"))
+		*kind = DOC_OP_LEAFTYPE;
 	else
 		return false;
 	return true;

@@ -51,6 +51,10 @@ static const char *const button_names[BUTTON_COUNT] = {
 	[BUTTON_GEN_SHORTER] = "gen-shorter",
 	[BUTTON_GEN_LEAFIER] = "gen-leafier",
 	[BUTTON_GEN_BARER] = "gen-barer",
+	[BUTTON_LEAF_DRAWN] = "leaf-drawn",
+	[BUTTON_LEAF_ENTIRE] = "leaf-entire",
+	[BUTTON_LEAF_HOP] = "leaf-hop",
+	[BUTTON_LEAF_MAPLE] = "leaf-maple",
 };
 
 #define N(a) (sizeof(a) / sizeof((a)[0]))

@@ -59,6 +59,12 @@ enum button {
 	BUTTON_GEN_SHORTER,
 	BUTTON_GEN_LEAFIER,
 	BUTTON_GEN_BARER,
+	/* The leaf mode's leaves (issue 15): the visitor's own drawn leaf, or an origami
+	 * preset (ori_kinds.h), in that order */
+	BUTTON_LEAF_DRAWN,
+	BUTTON_LEAF_ENTIRE,
+	BUTTON_LEAF_HOP,
+	BUTTON_LEAF_MAPLE,
 	BUTTON_COUNT
 };
 

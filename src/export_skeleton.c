@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "json_out.h"
+#include "ori_kinds.h"
 
 #define SKELETON_FORMAT "edaha-skeleton"
 #define SKELETON_VERSION 1
@@ -51,6 +52,9 @@ static struct json_object *jleaf(const struct leaf *l)
 	o = json_out_set(o, "branch", json_object_new_int(l->branch));
 	o = json_out_set(o, "branch_t", json_out_num(l->branch_t));
 	o = json_out_set(o, "origin", json_object_new_string(origin_name(l->origin)));
+	/* origami leaves only, so a drawn leaf's bytes are what they were */
+	if (ori_kind_name(l->kind) && l->kind >= 0)
+		o = json_out_set(o, "kind", json_object_new_string(ori_kind_name(l->kind)));
 	return json_out_set(o, "points", jpoints(l->points, l->npoints));
 }
 

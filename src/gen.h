@@ -56,6 +56,11 @@ enum gen_leaf {
 	GEN_LEAF_ROUND,    /* box, privet: small and roundish */
 	GEN_LEAF_NEEDLE,   /* yew, conifer topiary: a short narrow blade */
 	GEN_LEAF_LEAFLET,  /* a palm frond's leaflet: long and narrow */
+	/* Origami leaves (seed 003, ori_kinds.h), each placed in the frame of the oval
+	 * leaf it replaces (ori_place.h) */
+	GEN_LEAF_ENTIRE,
+	GEN_LEAF_HOP,
+	GEN_LEAF_MAPLE,
 	GEN_LEAF_COUNT
 };
 
@@ -98,6 +103,8 @@ struct gen_params {
 const char *gen_type_name(enum gen_type t);
 const char *gen_clip_name(enum gen_clip c);
 const char *gen_leaf_name(enum gen_leaf l);
+/* The origami kind (ori_kinds.h) a leaf type is, or -1 (ORI_KIND_DRAWN): an outline. */
+int gen_leaf_kind(enum gen_leaf l);
 bool gen_leaf_from_name(const char *name, enum gen_leaf *l);
 
 /* The documented defaults of a type (docs/tree-params.md): what missing keys take. */

@@ -92,5 +92,7 @@ int gen_build(struct tree *t, const struct gen_params *p, uint64_t seed)
 	t->lifted = true;
 	t->sides = p->precision;
 	t->season = p->season;
+	/* its leaves are what the leaf mode offers next (tree.h) */
+	t->leaf_kind = gen_leaf_kind(p->leaf_type);
 	return 0;
 }

@@ -4,6 +4,21 @@
 #include <math.h>
 
 #include "gen_private.h"
+#include "ori_place.h"
+
+int gen_leaf_kind(enum gen_leaf type)
+{
+	switch (type) {
+	case GEN_LEAF_ENTIRE:
+		return ORI_KIND_ENTIRE;
+	case GEN_LEAF_HOP:
+		return ORI_KIND_HOP;
+	case GEN_LEAF_MAPLE:
+		return ORI_KIND_MAPLE;
+	default:
+		return ORI_KIND_DRAWN;
+	}
+}
 
 /*
  * Half-widths along a leaf of length 1, from its base (x = 0) to its tip (x = 1): the
@@ -25,6 +40,11 @@ static double half_width(enum gen_leaf type, double x, int i)
 		return 0.07 * sin(VEC_PI * x);
 	case GEN_LEAF_LEAFLET:
 		return 0.06 * pow(sin(VEC_PI * pow(x, 0.9)), 0.7);
+	case GEN_LEAF_ENTIRE:
+	case GEN_LEAF_HOP:
+	case GEN_LEAF_MAPLE:
+		/* an origami leaf takes the oval's place (gen_add_leaf) */
+		return half_width(GEN_LEAF_OVAL, x, i);
 	case GEN_LEAF_COUNT:
 		break;
 	}
@@ -43,6 +63,9 @@ static int edge_points(enum gen_leaf type)
 		return 3;
 	case GEN_LEAF_OVAL:
 	case GEN_LEAF_ROUND:
+	case GEN_LEAF_ENTIRE:
+	case GEN_LEAF_HOP:
+	case GEN_LEAF_MAPLE:
 	case GEN_LEAF_COUNT:
 		break;
 	}
@@ -102,11 +125,14 @@ void gen_leaf_points(const struct gen_ctx *g, struct vec3 base, struct vec3 axis
 
 int gen_add_leaf(struct gen_ctx *g, int branch, double t, const struct vec3 *p, size_t n)
 {
-	int id = tree_add_leaf(g->t, branch, ORIGIN_GENERATE, p, n);
+	int id = tree_add_leaf(g->t, branch, ORIGIN_GENERATE, p, n), ret;
 
 	if (id < 0)
 		return id;
 	g->t->leaves[id].branch_t = t;
 	/* in the branch's frame, as a drawn leaf is: it follows when the branch moves */
-	return tree_leaf_attach(g->t, (size_t)id);
+	if ((ret = tree_leaf_attach(g->t, (size_t)id)) < 0)
+		return ret;
+	/* an origami leaf in the frame of the outline it replaces, as propagation places */
+	return ori_place_leaf(g->t, (size_t)id, gen_leaf_kind(g->p->leaf_type));
 }

@@ -26,6 +26,9 @@ static const char *const leaf_names[GEN_LEAF_COUNT] = {
 	[GEN_LEAF_ROUND] = "round",
 	[GEN_LEAF_NEEDLE] = "needle",
 	[GEN_LEAF_LEAFLET] = "leaflet",
+	[GEN_LEAF_ENTIRE] = "entire",
+	[GEN_LEAF_HOP] = "hop",
+	[GEN_LEAF_MAPLE] = "maple",
 };
 
 const char *gen_type_name(enum gen_type t)

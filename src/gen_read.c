@@ -248,7 +248,7 @@ static int leaves_pair(struct reader *r, const yaml_node_t *key, const char *k, 
 			return ret;
 		if (!gen_leaf_from_name(w, &r->p->leaf_type))
 			return fail(r, v, "leaves.type: \"%s\" is none of oval, pointed, round, needle, "
-				    "leaflet", shown(w, buf));
+				    "leaflet, entire, hop, maple", shown(w, buf));
 		return 0;
 	}
 	return unknown(r, key, k, "leaves");

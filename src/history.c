@@ -72,6 +72,7 @@ static void record_mark(struct history *h, size_t k, const struct tree *t, const
 		.lifted = t->lifted,
 		.sides = t->sides,
 		.season = t->season,
+		.leaf_kind = t->leaf_kind,
 		.last_sketched = t->last_sketched,
 		.last_sketched_end_us = t->last_sketched_end_us,
 		.has_profile = t->has_profile,
@@ -199,6 +200,7 @@ void history_mark_restore(const struct history_mark *m, struct tree *t, struct r
 	t->lifted = m->lifted;
 	t->sides = m->sides;
 	t->season = m->season;
+	t->leaf_kind = m->leaf_kind;
 	t->last_sketched = m->last_sketched;
 	t->last_sketched_end_us = m->last_sketched_end_us;
 	t->has_profile = m->has_profile;

@@ -43,6 +43,7 @@ struct history_mark {
 	bool lifted;
 	int sides;
 	enum season season;
+	int leaf_kind;
 	int last_sketched;
 	uint64_t last_sketched_end_us;
 	bool has_profile;

@@ -287,7 +287,8 @@ static int group_leaf(struct leaf_instances *li, const struct tree *t, size_t i)
 		     s = li->shapes[s].next_same_key) {
 			struct leaf_shape *sh = &li->shapes[s];
 
-			if (sh->npoints == l->npoints &&
+			/* an outline's triangles are not an origami leaf's faces */
+			if (sh->npoints == l->npoints && t->leaves[sh->base].kind == l->kind &&
 			    fit(sh, &t->leaves[sh->base], l, &f, inst->xf)) {
 				inst->shape = s;
 				sh->count++;
@@ -373,6 +374,7 @@ static int shape_mesh(struct leaf_shape *s, const struct tree *t)
 	for (size_t k = 0; k < s->npoints; k++)
 		local[k] = vec3_sub(base->points[k], s->centroid);
 	memset(&one, 0, sizeof(one));
+	one.kind = base->kind; /* an origami leaf's faces, moved about the centroid too */
 	one.points = local;
 	one.npoints = s->npoints;
 	memset(&tr, 0, sizeof(tr));

@@ -40,7 +40,9 @@
  * An instanced shape's mesh is its base outline about the centroid (b_k - c)
  * triangulated by mesh.c (tree_mesh_append on a one-leaf tree): the triangles a merged
  * mesh has for each of its leaves, the same vertices moved by the leaf's matrix, the
- * normals turned by it. Deterministic: same tree, same groups, same bytes.
+ * normals turned by it. Only leaves of one kind (struct leaf's) match: an origami leaf's
+ * shape is its faces about the centroid (mesh.c meshes a one-leaf tree of that kind so),
+ * never its outline triangulated. Deterministic: same tree, same groups, same bytes.
  */
 #define LEAF_INSTANCES_TOLERANCE 1e-6
 #define LEAF_INSTANCES_KEY_STEPS 4096.0

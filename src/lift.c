@@ -639,6 +639,7 @@ static int copy_tree(struct tree *dst, const struct tree *src)
 		if (id < 0)
 			return -ENOMEM;
 		dst->leaves[id].branch_t = l->branch_t;
+		dst->leaves[id].kind = l->kind;
 		if (l->local && tree_leaf_attach(dst, (size_t)id) < 0)
 			return -ENOMEM;
 	}
@@ -722,6 +723,7 @@ static int merge_turned(struct tree *a, const struct tree *b)
 		tree_locate(&b->branches[l->branch], l->branch_t, &at.segment, &at.seg_t);
 		a->leaves[id].branch_t = anchor_param(&a->branches[map[l->branch]], at);
 		a->leaves[id].local = NULL;
+		a->leaves[id].kind = l->kind;
 		if (l->local) {
 			a->leaves[id].local = malloc(l->npoints * sizeof(*l->local));
 			if (!a->leaves[id].local) {
@@ -782,6 +784,7 @@ int lift_tree_with(struct tree *t, struct rng *rng, bool merge, enum lift_pick p
 	a.lifted = true;
 	a.sides = t->sides;
 	a.season = t->season;
+	a.leaf_kind = t->leaf_kind;
 	a.has_profile = t->has_profile;
 	memcpy(a.profile, t->profile, sizeof(a.profile));
 	tree_finish(t);

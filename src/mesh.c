@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ori_kinds.h"
 #include "view.h"
 
 /* Tubes never get thinner than this, so no ring collapses into a point (no zero-area faces). */
@@ -946,6 +947,29 @@ static void leaf_clip(struct mesh *m, struct scratch *s, size_t n, uint32_t base
 }
 
 /*
+ * An origami leaf: its kind's faces at rest (ori_mesh_append), flat-shaded so the folds
+ * show, in the frame its points give back. 1 when it is not one (its points do not fit
+ * its kind: an outline, meshed as one), 0 or -ENOMEM.
+ */
+static int origami_build(struct mesh *m, const struct leaf *l)
+{
+	const struct ori_kind *k;
+	double xf[12];
+
+	if (l->kind < 0 || l->kind >= ORI_KIND_COUNT)
+		return 1;
+	k = ori_kind_get(l->kind);
+	if (!k)
+		return -ENOMEM; /* built on first use: only memory can be missing */
+	for (size_t i = 0; i < l->npoints; i++)
+		if (!vec3_finite(l->points[i]))
+			return 0; /* corrupt leaf: left out, as an outline would be */
+	if (!ori_kind_frame(k, l->points, l->npoints, xf))
+		return 1;
+	return ori_mesh_append(&k->leaf, (const double (*)[3])k->rest, xf, m);
+}
+
+/*
  * A leaf: the polygon projected onto its best-fit plane (Newell normal), ear-clipped there,
  * the 3D points kept as they are. One-sided, facing along the Newell normal.
  */
@@ -957,6 +981,9 @@ static int leaf_build(struct mesh *m, const struct leaf *l, struct scratch *s)
 	uint32_t base;
 	int r;
 
+	r = origami_build(m, l);
+	if (r <= 0)
+		return r;
 	r = scratch_reserve(s, l->npoints);
 	if (r < 0)
 		return r;

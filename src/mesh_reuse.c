@@ -173,7 +173,7 @@ static int match_leaves(const struct tree *t, const struct tree *old, int *map)
 
 		map[i] = -1;
 		for (int o = tb.first[at]; o >= 0 && tb.key[at] == k; o = tb.next[o])
-			if (old->leaves[o].npoints == l->npoints &&
+			if (old->leaves[o].npoints == l->npoints && old->leaves[o].kind == l->kind &&
 			    same_points(old->leaves[o].points, l->points, l->npoints)) {
 				map[i] = o;
 				break;

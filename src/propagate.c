@@ -45,12 +45,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ori_place.h"
+
 /* One leaf of the example: on S (child < 0) or on child branch `child`. */
 struct ex_leaf {
 	int child;
 	double u;      /* branch_t on S or on the child */
 	size_t first;  /* its local outline in example.pool */
 	size_t npoints;
+	int kind;      /* struct leaf's */
 };
 
 /* One child branch of S: its polyline relative to its root in S's frame at u. */
@@ -164,6 +167,7 @@ static int example_build(struct example *ex, const struct tree *t, int src)
 		e = &ex->leaves[ex->nleaves++];
 		e->child = l->branch == src ? -1 : child_of[l->branch];
 		e->u = l->branch_t;
+		e->kind = l->kind;
 		e->first = ex->npool;
 		e->npoints = l->npoints;
 		if (l->local) {
@@ -244,7 +248,7 @@ static int copy_onto(struct tree *t, struct example *ex, int target,
 		struct tree_frame f;
 		struct vec3 *local;
 		struct leaf *l;
-		int on, id;
+		int on, id, ret;
 		double v;
 
 		if (e->child < 0) {
@@ -274,6 +278,10 @@ static int copy_onto(struct tree *t, struct example *ex, int target,
 		l = &t->leaves[id];
 		l->branch_t = v;
 		l->local = local;
+		l->kind = e->kind;
+		/* the leaf the visitor chose, in the frame of the copy it replaces */
+		if ((ret = ori_place_leaf(t, (size_t)id, t->leaf_kind)) < 0)
+			return ret;
 		added++;
 	}
 	return added;

@@ -30,6 +30,7 @@ void tree_init(struct tree *t)
 {
 	memset(t, 0, sizeof(*t));
 	t->last_sketched = -1;
+	t->leaf_kind = -1;
 }
 
 void tree_clear(struct tree *t)
@@ -53,6 +54,7 @@ void tree_clear(struct tree *t)
 	t->lifted = false;
 	t->sides = 0;
 	t->season = SEASON_SUMMER;
+	t->leaf_kind = -1;
 }
 
 void tree_finish(struct tree *t)
@@ -131,6 +133,7 @@ int tree_add_leaf(struct tree *t, int branch, enum origin origin, const struct v
 	l->branch = branch;
 	l->origin = origin;
 	l->npoints = npoints;
+	l->kind = -1;
 	t->nleaves++;
 	return l->id;
 }
@@ -187,6 +190,7 @@ int tree_copy(struct tree *dst, const struct tree *src)
 	dst->lifted = src->lifted;
 	dst->sides = src->sides;
 	dst->season = src->season;
+	dst->leaf_kind = src->leaf_kind;
 	dst->last_sketched = src->last_sketched;
 	dst->last_sketched_end_us = src->last_sketched_end_us;
 	dst->has_profile = src->has_profile;

@@ -43,6 +43,9 @@ struct leaf {
 	 * follows when the branch moves (tree_leaves_follow); NULL until attached. */
 	struct vec3 *local;
 	size_t npoints;
+	/* An origami leaf's kind (ori_kinds.h: its points are the design's margin at rest in
+	 * the leaf's frame), or ORI_KIND_DRAWN (-1) for an outline. */
+	int kind;
 };
 
 #define TREE_PROFILE_N 16
@@ -70,6 +73,9 @@ struct tree {
 	 * level of detail picks them, mesh.h), and the season (season.h). */
 	int sides;
 	enum season season;
+	/* The leaf kind the leaf mode chose (DOC_OP_LEAFTYPE, a generated tree's leaves.type):
+	 * what arrangement and propagation place; -1 the drawn leaves. */
+	int leaf_kind;
 	/* What sketching carries from stroke to stroke; rebuilt with the tree. */
 	int last_sketched;             /* the branch the latest stroke drew, or -1 */
 	uint64_t last_sketched_end_us; /* when that stroke ended */

@@ -440,6 +440,40 @@ static void icon_maple(const struct icon *ic)
 	disc(ic, cx, cy, 0.26, ic->ink);
 }
 
+/* The origami hop leaf: three broad lobes, the side ones toothed. */
+static void icon_hop(const struct icon *ic)
+{
+	static const struct {
+		double deg, len, width;
+	} lobes[5] = {
+		{ -90.0, 0.95, 0.42 }, { -160.0, 0.8, 0.36 }, { -20.0, 0.8, 0.36 },
+		{ -130.0, 0.85, 0.2 }, { -50.0, 0.85, 0.2 },
+	};
+	const double cx = 0.0, cy = 0.2;
+
+	segment(ic, cx, cy, 0.0, 0.95, LINE * 0.8, ic->ink);
+	for (size_t k = 0; k < NPTS(lobes); k++) {
+		double a = lobes[k].deg * VEC_PI / 180.0, dx = cos(a), dy = sin(a);
+		double l = lobes[k].len, w = lobes[k].width, at = 0.45 * l;
+		const struct pt kite[4] = {
+			{ cx - dx * 0.1, cy - dy * 0.1 },
+			{ cx + dx * at - dy * w, cy + dy * at + dx * w },
+			{ cx + dx * l, cy + dy * l },
+			{ cx + dx * at + dy * w, cy + dy * at - dx * w },
+		};
+
+		fill(ic, kite, NPTS(kite), ic->ink);
+	}
+	disc(ic, cx, cy, 0.3, ic->ink);
+}
+
+/* The origami entire leaf: a plain upright blade on its stalk. */
+static void icon_entire(const struct icon *ic)
+{
+	leaf_shape(ic, 0.0, 0.55, 0.0, -0.95, 0.55);
+	segment(ic, 0.0, 0.95, 0.0, 0.55, LINE, ic->ink);
+}
+
 /* Winter: a snowflake, six arms with twigs. */
 static void icon_snowflake(const struct icon *ic)
 {
@@ -520,6 +554,18 @@ void icon_draw(struct batch *b, enum button button, struct pt centre, double siz
 		break;
 	case BUTTON_SEASON:
 		icon_sun(&ic); /* summer's; icon_draw_season shows the tree's */
+		break;
+	case BUTTON_LEAF_DRAWN:
+		icon_leaf(&ic); /* the leaf mode's own: the visitor's leaf */
+		break;
+	case BUTTON_LEAF_ENTIRE:
+		icon_entire(&ic);
+		break;
+	case BUTTON_LEAF_HOP:
+		icon_hop(&ic);
+		break;
+	case BUTTON_LEAF_MAPLE:
+		icon_maple(&ic);
 		break;
 	case BUTTON_TPL_BLANK:
 		icon_blank(&ic);

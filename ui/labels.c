@@ -42,6 +42,10 @@ static const char *const button_words[BUTTON_COUNT][NLANGS] = {
 	[BUTTON_GEN_SHORTER] = { "Shorter", "ひくく" },
 	[BUTTON_GEN_LEAFIER] = { "Leafier", "はっぱ+" },
 	[BUTTON_GEN_BARER] = { "Barer", "はっぱ\u2212" },
+	[BUTTON_LEAF_DRAWN] = { "Mine", "じぶんの" },
+	[BUTTON_LEAF_ENTIRE] = { "Plain", "まるい" },
+	[BUTTON_LEAF_HOP] = { "Hop", "ほっぷ" },
+	[BUTTON_LEAF_MAPLE] = { "Maple", "もみじ" },
 };
 
 /*

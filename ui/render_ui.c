@@ -72,6 +72,10 @@ static struct rgba accent(enum button button)
 		return (struct rgba){ 0.62f, 0.30f, 0.66f, 1.0f };
 	case BUTTON_GEN_LEAFIER:
 	case BUTTON_GEN_BARER:
+	case BUTTON_LEAF_DRAWN: /* the leaf cards: the leaf mode's green */
+	case BUTTON_LEAF_ENTIRE:
+	case BUTTON_LEAF_HOP:
+	case BUTTON_LEAF_MAPLE:
 		return (struct rgba){ 0.24f, 0.58f, 0.22f, 1.0f };
 	case BUTTON_TPL_BLANK: /* the cards: the tree's greens */
 	case BUTTON_TPL_CHERRY:

@@ -5,6 +5,7 @@
 
 #include "arrange.h"
 #include "doc.h"
+#include "ori_kinds.h"
 #include "propagate.h"
 #include "test.h"
 #include "tree.h"
@@ -103,7 +104,7 @@ static void test_errors(void)
 {
 	expect_error("", "bad.edaha: empty file");
 	expect_error("hello\n", "bad.edaha:1: not an edaha drawing");
-	expect_error("# c\nedaha-drawing 6\n", "bad.edaha:2: drawing format version 6");
+	expect_error("# c\nedaha-drawing 7\n", "bad.edaha:2: drawing format version 7");
 	/* the editing ops came with version 4 */
 	expect_error("edaha-drawing 3\nseed 1\nhistory 1 1\nclone-add 5 0\n", "bad.edaha:4: unknown line");
 	expect_error("edaha-drawing 4\nseed 1\nhistory 1 1\nclone-add 5\n",
@@ -173,7 +174,7 @@ static void test_versions(void)
 	CHECK_INT(doc_serialize(&d, NULL, &b), 0);
 	/* read as version 2, written as the newest: a front-view drawing needs no camera */
 	CHECK(b.len > 0 && strstr((const char *)b.data, "\nlift 9\n") &&
-	      strncmp((const char *)b.data, "edaha-drawing 5\n", 16) == 0 &&
+	      strncmp((const char *)b.data, "edaha-drawing 6\n", 16) == 0 &&
 	      !strstr((const char *)b.data, "view"));
 	buf_finish(&b);
 	doc_finish(&d);
@@ -206,6 +207,43 @@ static void test_edit_ops(void)
 					   "fixed-size\nend\n"));
 	buf_finish(&b);
 	doc_finish(&d);
+}
+
+/* Version 6: the leaf type (issue 15) reads, writes back the same, and is refused in
+ * version 5 and with a name it does not know. */
+static void test_leaftype(void)
+{
+	static const char v6[] = "edaha-drawing 6\nseed 4\nhistory 4 3\nleaftype 2 maple\n"
+				 "leaftype 3 hop\nleaftype 4 drawn\nleaftype 5 entire\nend\n";
+	static const char v5[] = "edaha-drawing 5\nseed 4\nhistory 1 1\nleaftype 2 maple\nend\n";
+	static const char bad[] = "edaha-drawing 6\nseed 4\nhistory 1 1\nleaftype 2 ginkgo\nend\n";
+	struct error err = { { 0 } };
+	struct doc d, e;
+	struct buf b;
+
+	CHECK_INT(doc_parse(v6, sizeof(v6) - 1, "v6", &d, &err), 0);
+	CHECK_INT(d.nops, 4);
+	CHECK_INT(d.cursor, 3);
+	CHECK(d.ops[0].kind == DOC_OP_LEAFTYPE && d.ops[0].time_us == 2 &&
+	      d.ops[0].pattern == ORI_KIND_MAPLE);
+	CHECK_INT(d.ops[1].pattern, ORI_KIND_HOP);
+	CHECK_INT(d.ops[2].pattern, ORI_KIND_DRAWN);
+	CHECK_INT(d.ops[3].pattern, ORI_KIND_ENTIRE);
+	buf_init(&b);
+	CHECK_INT(doc_serialize(&d, NULL, &b), 0);
+	CHECK(strstr((const char *)b.data, "history 4 3\nleaftype 2 maple\nleaftype 3 hop\n"
+					   "leaftype 4 drawn\nleaftype 5 entire\nend\n"));
+	CHECK_INT(doc_parse((const char *)b.data, b.len, "again", &e, &err), 0);
+	CHECK_INT(e.nops, d.nops);
+	for (size_t i = 0; i < d.nops; i++)
+		CHECK(e.ops[i].kind == d.ops[i].kind && e.ops[i].pattern == d.ops[i].pattern &&
+		      e.ops[i].time_us == d.ops[i].time_us);
+	buf_finish(&b);
+	doc_finish(&e);
+	doc_finish(&d);
+	CHECK_INT(doc_parse(v5, sizeof(v5) - 1, "v5", &d, &err), -EINVAL);
+	CHECK_INT(doc_parse(bad, sizeof(bad) - 1, "bad", &d, &err), -EINVAL);
+	CHECK(strstr(err.msg, "bad:4: unknown leaf type \"ginkgo\""));
 }
 
 /* Version 3: a stroke drawn on a turned tree keeps its camera, the file the view. */
@@ -247,6 +285,7 @@ int main(void)
 	test_versions();
 	test_camera();
 	test_edit_ops();
+	test_leaftype();
 	test_history();
 	test_roundtrip();
 	test_errors();

@@ -143,7 +143,7 @@ static void test_error_lines(void)
 		{ "type: palm\n", "f:1: not a tree parameter file" },
 		{ "edaha-tree: 1\nthickness: 0x10\n", "f:2: thickness: \"0x10\" is not a number" },
 		{ "edaha-tree: 1\nthickness: .nan\n", "f:2: thickness: \".nan\" is not a number" },
-		{ "edaha-tree: 1\nleaves: {type: maple}\n", "f:2: leaves.type: \"maple\" is none of" },
+		{ "edaha-tree: 1\nleaves: {type: ginkgo}\n", "f:2: leaves.type: \"ginkgo\" is none of" },
 		{ "edaha-tree: 1\nlevels: 2.5\n", "f:2: levels: expected a whole number" },
 		{ "edaha-tree: 1\n---\nedaha-tree: 1\n", "f:3: a second YAML document" },
 		/* libyaml marks an empty document at the end of unended text a line past the last */

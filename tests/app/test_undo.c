@@ -80,6 +80,7 @@ static void same_tree(const struct tree *a, const struct tree *b)
 	CHECK_INT(a->lifted, b->lifted);
 	CHECK_INT(a->sides, b->sides);
 	CHECK_INT(a->season, b->season);
+	CHECK_INT(a->leaf_kind, b->leaf_kind);
 	CHECK_INT(a->last_sketched, b->last_sketched);
 	CHECK_INT(a->last_sketched_end_us, b->last_sketched_end_us);
 	CHECK_INT(a->has_profile, b->has_profile);
@@ -103,6 +104,7 @@ static void same_tree(const struct tree *a, const struct tree *b)
 		CHECK_INT(x->id, y->id);
 		CHECK_INT(x->branch, y->branch);
 		SAME(x->branch_t, y->branch_t);
+		CHECK_INT(x->kind, y->kind);
 		CHECK_INT(x->origin, y->origin);
 		CHECK_INT(x->npoints, y->npoints);
 		CHECK(memcmp(x->points, y->points, x->npoints * sizeof(*x->points)) == 0);
@@ -317,8 +319,10 @@ static bool act(struct app *app, struct rng *r, int *propagations, bool gentle)
 				press(app, BUTTON_PROPAGATE);
 		}
 	} else if (what < 74) {
-		/* leaf mode: a leaf, then its first suggestion */
+		/* leaf mode: now and then a leaf card (issue 15), a leaf, its first suggestion */
 		press(app, BUTTON_LEAF);
+		if (app->mode == APP_MODE_LEAF && rng_next(r) % 2)
+			press(app, (enum button)(BUTTON_LEAF_DRAWN + rng_next(r) % 4));
 		if (app->mode == APP_MODE_LEAF && pick(app, r, false, &x, &y)) {
 			struct layout_rect s = layout_side_slot(&app->view, 0, LAYOUT_SIDE_CARDS);
 

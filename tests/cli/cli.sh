@@ -191,6 +191,34 @@ t_record() {
 	same_files "$T/c" "$T/d" skeleton.json model.glb screen.png drawing.edaha
 }
 
+# Issue 15: leaf-maple pressed, then a recorded leaf arrangement: the leaves it places are
+# maple leaves in skeleton.json, the drawing holds the choice, the export validates, and
+# the drawing replays to the same files.
+t_origami() {
+	local n
+	run --out "$T/o" --press leaf-maple --replay "$SRC/data/edit-leaf-whorl.edaha-trace"
+	n=$(grep -o '"kind":"maple"' "$T/o/skeleton.json" | wc -l)
+	[ "$n" -ge 2 ] || fail "only $n maple leaves in skeleton.json"
+	grep -q '"kind":"drawn"\|"kind":"hop"' "$T/o/skeleton.json" && fail "unexpected leaf kinds"
+	grep -q '^leaftype [0-9]* maple$' "$T/o/drawing.edaha" || fail "no leaftype op in the drawing"
+	"$GLTF_VALIDATE" "$T/o/model.glb" || fail "the origami export does not validate"
+	run --out "$T/o2" --load "$T/o/drawing.edaha"
+	same_files "$T/o" "$T/o2" model.glb model.obj skeleton.json drawing.edaha
+	echo "$n maple leaves placed, exported and replayed"
+	# a propagated tree with each lobed preset: golden pictures (EDAHA_UPDATE_GOLDEN=1
+	# writes them)
+	for k in maple hop; do
+		run --out "$T/p-$k" --press leaf-$k --replay "$SRC/data/edit-propagate-count.edaha-trace"
+		grep -q "\"kind\":\"$k\"" "$T/p-$k/skeleton.json" || fail "no $k leaves propagated"
+		if [ -n "${EDAHA_UPDATE_GOLDEN:-}" ]; then
+			cp "$T/p-$k/screen.png" "$SRC/golden/origami-propagate-$k.png"
+		else
+			"$IMGCMP" "$SRC/golden/origami-propagate-$k.png" "$T/p-$k/screen.png" ||
+				fail "the propagated $k leaves differ from golden"
+		fi
+	done
+}
+
 t_exports_valid() {
 	run --out "$T/demo" --replay "$DEMO"
 	run --out "$T/demo3d" --replay "$DEMO" --press 3d
