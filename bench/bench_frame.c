@@ -14,7 +14,8 @@
  * upload alone (what follows an edit: grouping the leaves included) and the bytes it
  * sends to the GPU. Then the main thread's CPU time a frame by leaf count, and on the
  * smallest tree what the labels cost: frames with and without them, interleaved. Last, the
- * functional trees' presets in summer and in autumn.
+ * functional trees' presets in summer and in autumn; and 20,000 origami leaves of each
+ * preset, at rest and unfolding.
  */
 #include <GLES2/gl2.h>
 #include <errno.h>
@@ -29,6 +30,8 @@
 #include "font_file.h"
 #include "gen.h"
 #include "mesh.h"
+#include "ori_kinds.h"
+#include "ori_place.h"
 #include "propagate.h"
 #include "render.h"
 #include "render_private.h"
@@ -56,12 +59,13 @@ struct bench {
 	uint8_t *rgba;
 	int failed;
 	const char *font; /* the labels' font file */
+	uint64_t now_us;  /* the frames' time (UINT64_MAX: settled) */
 	size_t font_len;
 };
 
 static void frame(struct bench *b)
 {
-	int r = render_frame(b->render, &b->app);
+	int r = render_frame_at(b->render, &b->app, b->now_us);
 
 	if (r < 0 && !b->failed) {
 		fprintf(stderr, "bench_frame: render_frame: %s\n", strerror(-r));
@@ -427,9 +431,65 @@ static int presets(struct bench *b)
 	return 0;
 }
 
+/*
+ * Issue 15: a tree of 20,000 origami leaves (1,000 synthetic branches x 20 leaves, each
+ * made a preset in place of its outline), per preset: the frame with its upload, steady,
+ * its main-thread CPU, triangles and draw calls; then the same with every leaf unfolding
+ * (keyframe meshes, as just after a propagation).
+ */
+static int origami(struct bench *b)
+{
+	printf("20,000 origami leaves (1,000 branches x 20), median of %d frames: upload frame, "
+	       "steady frame, its main-thread CPU; triangles; draw calls\n", FRAMES);
+	for (int k = 0; k < ORI_KIND_COUNT; k++) {
+		struct render_stats st;
+		struct tree t;
+		int r;
+
+		tree_init(&t);
+		r = synth_tree(&t, 1000, 20, SEED);
+		for (size_t i = 0; r == 0 && i < t.nleaves; i++)
+			r = ori_place_leaf(&t, i, k);
+		if (r == 0)
+			r = set_tree(b, &t);
+		tree_finish(&t);
+		if (r < 0) {
+			fprintf(stderr, "bench_frame: origami %s: %s\n", ori_kind_name(k), strerror(-r));
+			return r;
+		}
+		for (int unfolding = 0; unfolding < 2; unfolding++) {
+			double up, steady, cpu[FRAMES];
+
+			/* every leaf half way through its second, as after a propagation */
+			b->app.nunfold = (size_t)unfolding;
+			b->app.unfold[0] = (struct app_unfold){ .first = 0, .start_us = 0 };
+			b->now_us = unfolding ? APP_UNFOLD_US / 2 : UINT64_MAX;
+			up = bench_run(upload_frame, b, FRAMES);
+			steady = bench_run(steady_frame, b, FRAMES);
+			for (int f = 0; f < FRAMES; f++) {
+				double t0 = thread_cpu_s();
+
+				frame(b);
+				cpu[f] = thread_cpu_s() - t0;
+			}
+			render_get_stats(b->render, &st);
+			printf("  %-7s %-9s %8zu triangles: %7.3f ms, %7.3f ms, CPU %6.3f ms; %u draw "
+			       "calls\n", ori_kind_name(k), unfolding ? "unfolding" : "at rest",
+			       st.tree_triangles, 1e3 * up, 1e3 * steady, 1e3 * bench_median(cpu, FRAMES),
+			       st.draw_calls);
+		}
+		b->app.nunfold = 0;
+		b->now_us = UINT64_MAX;
+		if (b->failed)
+			return b->failed;
+	}
+	tree_clear(&b->app.tree);
+	return 0;
+}
+
 int main(void)
 {
-	struct bench b = { 0 };
+	struct bench b = { .now_us = UINT64_MAX };
 	struct result res[NSIZES];
 	struct error err;
 	double t0, first_s, prev_size, prev_s;
@@ -505,6 +565,8 @@ int main(void)
 	if (frame_cpu(&b) < 0)
 		goto out;
 	if (presets(&b) < 0)
+		goto out;
+	if (origami(&b) < 0)
 		goto out;
 	status = 0;
 out:

@@ -196,13 +196,15 @@ static bool look_equal(const struct kiosk_look *a, const struct kiosk_look *b)
 	       side_equal(a, b);
 }
 
-/* Whether frames must keep coming at now_us without any input: the turn into 3D, a
- * message fading out. */
+/* Whether frames must keep coming at now_us without any input: the turn into 3D, new
+ * leaves unfolding, a message fading out. */
 static bool animating_at(const struct app *app, uint64_t now_us, bool turning)
 {
 	uint64_t until;
 
-	if (turning)
+	struct app_unfold_span span;
+
+	if (turning || app_unfold_at(app, now_us, &span, 1) > 0)
 		return true;
 	return app_status_at(app, now_us, &until) != APP_STATUS_NONE &&
 	       now_us + APP_STATUS_FADE_US >= until;

@@ -126,6 +126,7 @@ int app_load_doc(struct app *app, struct doc *doc)
 	history_clear(&app->history);
 	app->doc = *doc;
 	doc_init(doc, doc->seed);
+	app_unfold_clear(app);
 	app->camera = app->doc.view; /* kept if the drawing is a 3D tree */
 	return app_rebuild(app);
 }
@@ -164,6 +165,9 @@ int app_push_op(struct app *app, struct doc_op *op)
 	}
 	app_camera_follow_tree(app);
 	app->mesh_serial++;
+	/* a generated tree replaces every leaf: all of them unfold */
+	app_unfold_note(app, op->kind == DOC_OP_GENERATE || app->tree.nleaves < nl ? 0 : nl,
+			op->time_us);
 	if (ret == SKETCH_GREW && app->tree.nbranches >= nb && app->tree.nleaves >= nl)
 		return tree_mesh_append_marked(&app->mesh, &app->tree, nb, nl, &app->mesh_marks);
 	return tree_mesh_build_marked(&app->mesh, &app->tree, &app->mesh_marks);
@@ -299,11 +303,13 @@ int app_press_button(struct app *app, enum button button, uint64_t time_us)
 	case BUTTON_UNDO:
 		if (!doc_undo(&app->doc))
 			return 0;
+		app_unfold_clear(app);
 		ret = app_undo(app);
 		return ret < 0 ? ret : app_refresh_mode_state(app);
 	case BUTTON_REDO:
 		if (!doc_redo(&app->doc))
 			return 0;
+		app_unfold_clear(app);
 		ret = app_redo(app);
 		return ret < 0 ? ret : app_refresh_mode_state(app);
 	case BUTTON_EXPORT:

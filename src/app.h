@@ -111,6 +111,16 @@ struct app_pen {
 	bool stylus, stylus2;
 };
 
+/* A new origami leaf unfolds from the bud over this long (docs/origami-leaves.md). */
+#define APP_UNFOLD_US 1000000u
+#define APP_UNFOLD_MAX 8
+
+/* Leaves [first, end) unfolding, at keyframe `frame` of ORI_UNFOLD_FRAMES. */
+struct app_unfold_span {
+	size_t first, end;
+	unsigned frame;
+};
+
 struct app {
 	struct view view;
 	struct doc doc;       /* strokes, history, seed: what drawing.edaha holds */
@@ -135,6 +145,13 @@ struct app {
 	double orbit_x, orbit_y;   /* where the pen was, screen pixels */
 	uint64_t turn_start_us;    /* the animated turn after lifting, when turning */
 	bool turning;
+	/* Leaves an edit made from [first, ...) unfolding since start_us, oldest first; each
+	 * runs to the next one's first or the tree's last leaf. */
+	struct app_unfold {
+		size_t first;
+		uint64_t start_us;
+	} unfold[APP_UNFOLD_MAX];
+	size_t nunfold;
 	/* Example-based editing. */
 	int selected;              /* clone mode: the branch that gets children, or -1 */
 	int suggest_branch;        /* leaf mode: the branch whose leaves suggest... */
@@ -167,6 +184,10 @@ uint32_t app_take_requests(struct app *app);
  * (UINT64_MAX: the settled one). Returns true while the turn runs, so that the kiosk
  * keeps drawing frames. */
 bool app_camera_at(const struct app *app, uint64_t now_us, struct camera *out);
+/* The origami leaves still unfolding at now_us (UINT64_MAX: none, all settled), their
+ * keyframes: at most max spans into out, in leaf order. */
+size_t app_unfold_at(const struct app *app, uint64_t now_us, struct app_unfold_span *out,
+		     size_t max);
 /* Turns a 3D tree's camera (as orbiting would). False, and nothing changes, for a sketch. */
 bool app_set_camera(struct app *app, struct camera c);
 /* The suggestion thumbnails shown, in order: how many, and their patterns. */

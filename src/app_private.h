@@ -27,6 +27,10 @@ int app_press_button(struct app *app, enum button button, uint64_t time_us);
 int app_apply_recorded(struct app *app, size_t k);
 /* After doc_undo / doc_redo: the tree, generator and meshes of the cursor's state. 0 or
  * -ENOMEM. */
+/* New origami leaves unfolding (app_unfold.c): an edit added leaves [first, ...) at
+ * time_us; clear: the tree changed otherwise (undo, redo, load). */
+void app_unfold_note(struct app *app, size_t first, uint64_t time_us);
+void app_unfold_clear(struct app *app);
 int app_undo(struct app *app);
 int app_redo(struct app *app);
 

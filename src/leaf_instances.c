@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Leaves grouped by shape for instanced drawing: how and why in leaf_instances.h. */
 #include "leaf_instances.h"
+#include "ori_kinds.h"
 
 #include <errno.h>
 #include <math.h>
@@ -16,10 +17,22 @@ void leaf_instances_init(struct leaf_instances *li)
 	mesh_init(&li->loose);
 }
 
+static void free_frames(struct leaf_shape *s)
+{
+	if (!s->frames)
+		return;
+	for (size_t j = 0; j < ORI_UNFOLD_FRAMES; j++)
+		mesh_finish(&s->frames[j]);
+	free(s->frames);
+	s->frames = NULL;
+}
+
 static void clear_shapes(struct leaf_instances *li)
 {
-	for (size_t i = 0; i < li->nshapes; i++)
+	for (size_t i = 0; i < li->nshapes; i++) {
 		mesh_finish(&li->shapes[i].mesh);
+		free_frames(&li->shapes[i]);
+	}
 	li->nshapes = 0;
 	li->ninstances = 0;
 	li->ninstanced = 0;
@@ -359,6 +372,45 @@ static int choose_instanced(struct leaf_instances *li)
 	return 0;
 }
 
+/* An origami shape's keyframes, in the frame its mesh has: the base's points about the
+ * centroid give it back. A shape whose leaves are not origami (or do not fit their kind:
+ * meshed as outlines) has none. */
+static int shape_frames(struct leaf_shape *s, const struct tree *t)
+{
+	const struct leaf *base = &t->leaves[s->base];
+	const struct ori_kind *k = ori_kind_get(base->kind);
+	struct vec3 *local;
+	double xf[12];
+	bool fits;
+
+	free_frames(s);
+	if (base->kind < 0 || !k)
+		return base->kind < 0 || base->kind >= ORI_KIND_COUNT ? 0 : -ENOMEM;
+	local = malloc(s->npoints * sizeof(*local));
+	if (!local)
+		return -ENOMEM;
+	for (size_t i = 0; i < s->npoints; i++)
+		local[i] = vec3_sub(base->points[i], s->centroid);
+	fits = ori_kind_frame(k, local, s->npoints, xf);
+	free(local);
+	if (!fits)
+		return 0;
+	s->frames = calloc(ORI_UNFOLD_FRAMES, sizeof(*s->frames));
+	if (!s->frames)
+		return -ENOMEM;
+	for (size_t j = 0; j < ORI_UNFOLD_FRAMES; j++) {
+		int r = ori_mesh_append(&k->leaf,
+					(const double (*)[3])(k->frames + j * k->leaf.nvertices), xf,
+					&s->frames[j]);
+
+		if (r < 0) {
+			free_frames(s);
+			return r;
+		}
+	}
+	return 0;
+}
+
 /* Instanced shape s's outline about its centroid, triangulated by mesh.c. */
 static int shape_mesh(struct leaf_shape *s, const struct tree *t)
 {
@@ -390,7 +442,7 @@ static int shape_mesh(struct leaf_shape *s, const struct tree *t)
 	}
 	mesh_finish(&s->mesh);
 	s->mesh = tm.leaves;
-	return 0;
+	return shape_frames(s, t);
 }
 
 /* The leaves of shapes not instanced, merged by mesh.c in leaf order. */

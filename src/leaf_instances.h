@@ -56,6 +56,9 @@ struct leaf_shape {
 	size_t first, count;  /* its instances: instances[first .. first + count) */
 	bool instanced;       /* drawn instanced (mesh + matrices); else its leaves are in loose */
 	struct mesh mesh;     /* instanced only: b_k - c triangulated as mesh.c does a leaf */
+	/* An instanced origami shape's unfolding (ori_unfold_frames): ORI_UNFOLD_FRAMES
+	 * meshes in the same frame as `mesh`, for the leaves still opening; else NULL. */
+	struct mesh *frames;
 
 	/* How leaves are matched against it (leaf_instances.c). */
 	uint64_t key;

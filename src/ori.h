@@ -178,6 +178,16 @@ int ori_open(const struct ori_leaf *l, double t, double (*out)[3]);
  * rows, opening k / (n - 1) from row k x nvertices. As ori_open gives each. */
 int ori_open_frames(const struct ori_leaf *l, size_t n, double (*out)[3]);
 
+/*
+ * A new leaf unfolding from the bud to its rest, as n keyframes (out: n x nvertices rows):
+ * keyframe j is the path at s = j / n, where s in [0, ORI_UNFOLD_OPEN] opens the leaf from
+ * 0 to flat and the rest of the way curls it to its rest (the mirror of the leaf opened
+ * back to `rest`, as ori_rest): s = 1 would be the leaf at rest, which is not a keyframe.
+ */
+#define ORI_UNFOLD_FRAMES 10
+#define ORI_UNFOLD_OPEN 0.8
+int ori_unfold_frames(const struct ori_leaf *l, size_t n, double (*out)[3]);
+
 /* A grown leaf's shape: the mirror (z -> -z) of the leaf opened to its rest: curling is
  * not the opening run backwards. */
 int ori_rest(const struct ori_leaf *l, double (*out)[3]);

@@ -103,14 +103,19 @@ static bool build(int i)
 	    ori_build(&d, kind_names[i], &k->leaf, &err) < 0)
 		goto fail;
 	k->rest = malloc((k->leaf.nvertices ? k->leaf.nvertices : 1) * sizeof(*k->rest));
+	k->frames = calloc(ORI_UNFOLD_FRAMES * (k->leaf.nvertices ? k->leaf.nvertices : 1),
+			   sizeof(*k->frames));
 	if (!k->rest || ori_rest(&k->leaf, k->rest) < 0 || k->leaf.nmargin < 3 ||
-	    !anchors(k))
+	    !anchors(k) || !k->frames ||
+	    ori_unfold_frames(&k->leaf, ORI_UNFOLD_FRAMES, k->frames) < 0)
 		goto fail;
 	k->ntriangles = ori_mesh_triangles(&k->leaf);
 	return true;
 fail:
 	free(k->rest);
 	k->rest = NULL;
+	free(k->frames);
+	k->frames = NULL;
 	ori_leaf_finish(&k->leaf);
 	return false;
 }
@@ -131,6 +136,8 @@ void ori_kinds_release(void)
 			continue;
 		free(kinds[i].rest);
 		kinds[i].rest = NULL;
+		free(kinds[i].frames);
+		kinds[i].frames = NULL;
 		ori_leaf_finish(&kinds[i].leaf);
 		built[i] = false;
 	}

@@ -26,6 +26,8 @@ enum {
 struct ori_kind {
 	struct ori_leaf leaf;
 	double (*rest)[3];  /* ori_rest: nvertices rows, the design's coordinates */
+	/* ori_unfold_frames: ORI_UNFOLD_FRAMES x nvertices rows, a new leaf unfolding */
+	double (*frames)[3];
 	size_t ntriangles;  /* ori_mesh_triangles */
 	/* margin indices whose rest positions (offsets from O's) give the frame back */
 	size_t anchor_a, anchor_b;

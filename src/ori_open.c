@@ -307,6 +307,24 @@ int ori_open_frames(const struct ori_leaf *l, size_t n, double (*out)[3])
 	return 0;
 }
 
+int ori_unfold_frames(const struct ori_leaf *l, size_t n, double (*out)[3])
+{
+	for (size_t j = 0; j < n; j++) {
+		double s = (double)j / (double)n;
+		bool curl = s > ORI_UNFOLD_OPEN;
+		double t = curl ? 1 - (s - ORI_UNFOLD_OPEN) / (1 - ORI_UNFOLD_OPEN) * (1 - l->rest) :
+				  s / ORI_UNFOLD_OPEN;
+		int ret = ori_open(l, t, out + j * l->nvertices);
+
+		if (ret < 0)
+			return ret;
+		if (curl)
+			for (size_t v = 0; v < l->nvertices; v++)
+				out[j * l->nvertices + v][2] = -out[j * l->nvertices + v][2];
+	}
+	return 0;
+}
+
 int ori_rest(const struct ori_leaf *l, double (*out)[3])
 {
 	int ret = ori_open(l, l->rest, out);

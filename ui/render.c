@@ -302,7 +302,7 @@ static void draw_leaves(struct render *r, const struct app *app, const float mvp
 		if (r->uploaded_instanced) {
 			/* the leaves that are no shape's copies, merged; then a call a shape */
 			render_mesh_draw(r, &r->inst.loose);
-			render_instanced_draw(r, mvp, light, colour);
+			render_instanced_draw(r, mvp, light, colour, r->unfold, r->nunfold);
 		} else {
 			render_mesh_draw(r, &r->leaves);
 		}
@@ -314,7 +314,7 @@ static void draw_leaves(struct render *r, const struct app *app, const float mvp
 	glUniform1i(r->tinted.two_sided, 1);
 	if (r->uploaded_instanced) {
 		render_mesh_draw_tinted(r, &r->inst.loose);
-		render_instanced_draw(r, mvp, light, NULL);
+		render_instanced_draw(r, mvp, light, NULL, r->unfold, r->nunfold);
 	} else {
 		render_mesh_draw_tinted(r, &r->leaves);
 	}
@@ -365,6 +365,7 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 	int ret, r2;
 
 	(void)app_camera_at(app, now_us, &cam);
+	r->nunfold = app_unfold_at(app, now_us, r->unfold, APP_UNFOLD_MAX);
 	camera_xf_init(&xf, cam, sketch_view_pivot(&app->tree));
 	/* the light turns with the camera: the side a visitor looks at is always lit */
 	l = camera_dir_from_view(&xf, vec3(render_light_dir[0], render_light_dir[1],

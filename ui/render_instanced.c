@@ -67,8 +67,12 @@ void render_instanced_clear(struct render *r)
 {
 	struct render_instanced *in = &r->inst;
 
-	for (size_t k = 0; k < LEAF_INSTANCES_MAX_SHAPES; k++)
+	for (size_t k = 0; k < LEAF_INSTANCES_MAX_SHAPES; k++) {
 		render_mesh_finish(&in->shapes[k]);
+		for (size_t j = 0; j < ORI_UNFOLD_FRAMES; j++)
+			render_mesh_finish(&in->frames[k][j]);
+		in->has_frames[k] = false;
+	}
 	render_mesh_finish(&in->loose);
 	glDeleteBuffers(1, &in->matrices);
 	glDeleteBuffers(1, &in->tints);
@@ -102,6 +106,17 @@ static int upload(struct render *r, const struct leaf_instances *li, const struc
 		in->first[k] = sh->first;
 		in->count[k] = sh->count;
 		r->upload_bytes += in->shapes[k].bytes;
+		in->has_frames[k] = sh->frames != NULL;
+		for (size_t j = 0; j < ORI_UNFOLD_FRAMES; j++) {
+			if (!sh->frames) {
+				render_mesh_finish(&in->frames[k][j]);
+				continue;
+			}
+			if (ret == 0)
+				ret = render_mesh_upload(&in->frames[k][j], &sh->frames[j],
+							 r->uint_indices);
+			r->upload_bytes += in->frames[k][j].bytes;
+		}
 		k++;
 	}
 	/* nothing instanced: every leaf is loose, and the merged mesh is all of them */
@@ -111,8 +126,12 @@ static int upload(struct render *r, const struct leaf_instances *li, const struc
 		return ret;
 	r->upload_bytes += in->loose.bytes;
 	/* shapes gone since the last upload give their memory back */
-	for (size_t j = k; j < LEAF_INSTANCES_MAX_SHAPES; j++)
+	for (size_t j = k; j < LEAF_INSTANCES_MAX_SHAPES; j++) {
 		render_mesh_finish(&in->shapes[j]);
+		for (size_t f = 0; f < ORI_UNFOLD_FRAMES; f++)
+			render_mesh_finish(&in->frames[j][f]);
+		in->has_frames[j] = false;
+	}
 	if (li->ninstanced > (size_t)INT32_MAX / MATRIX_BYTES)
 		return -ENOMEM;
 	if (!in->matrices)
@@ -182,8 +201,77 @@ int render_instanced_upload(struct render *r, const struct tree *t, const struct
 	return ret;
 }
 
+/* Instances [start, start + n) of the shapes' matrices (and tints) drawn with mesh rm. */
+static void draw_range(struct render *r, const struct render_mesh *rm, size_t start, size_t n,
+		       bool tinted)
+{
+	struct render_instanced *in = &r->inst;
+	const char *at = (const char *)(uintptr_t)(start * MATRIX_BYTES);
+
+	if (rm->count == 0 || n == 0)
+		return;
+	glBindBuffer(GL_ARRAY_BUFFER, rm->positions);
+	glVertexAttribPointer(ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 0, NULL);
+	glBindBuffer(GL_ARRAY_BUFFER, rm->normals);
+	glVertexAttribPointer(ATTR_NORMAL, 3, GL_FLOAT, GL_FALSE, 0, NULL);
+	glBindBuffer(GL_ARRAY_BUFFER, in->matrices);
+	for (GLuint i = 0; i < 3; i++)
+		glVertexAttribPointer(ATTR_ROW0 + i, 4, GL_FLOAT, GL_FALSE, MATRIX_BYTES,
+				      at + 4 * sizeof(float) * i);
+	if (tinted) {
+		glBindBuffer(GL_ARRAY_BUFFER, in->tints);
+		glVertexAttribPointer(ATTR_TINT, 3, GL_FLOAT, GL_FALSE, 0,
+				      (const char *)(uintptr_t)(start * 3 * sizeof(float)));
+	}
+	if (rm->indexed) {
+		glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, rm->indices);
+		glDrawElementsInstanced(GL_TRIANGLES, rm->count, GL_UNSIGNED_INT, NULL, (GLsizei)n);
+		glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+	} else {
+		glDrawArraysInstanced(GL_TRIANGLES, 0, rm->count, (GLsizei)n);
+	}
+	r->stats.draw_calls++;
+	r->stats.triangles += rm->ntriangles * n;
+	r->stats.tree_triangles += rm->ntriangles * n;
+}
+
+/* The first of instances [from, to) whose leaf is at least `leaf` (they are in leaf order). */
+static size_t first_from(const struct leaf_instances *li, size_t from, size_t to, size_t leaf)
+{
+	while (from < to) {
+		size_t mid = from + (to - from) / 2;
+
+		if (li->instances[mid].leaf < leaf)
+			from = mid + 1;
+		else
+			to = mid;
+	}
+	return from;
+}
+
+/* Shape k's instances: at rest with its mesh, those of unfolding leaves with the
+ * keyframe their span is at (a shape without keyframes draws them all at rest). */
+static void draw_shape(struct render *r, size_t k, const struct app_unfold_span *spans,
+		       size_t nspans, bool tinted)
+{
+	struct render_instanced *in = &r->inst;
+	size_t at = in->first[k], end = in->first[k] + in->count[k];
+
+	for (size_t s = 0; s < nspans && in->has_frames[k]; s++) {
+		size_t lo = first_from(&in->li, at, end, spans[s].first);
+		size_t hi = first_from(&in->li, lo, end, spans[s].end);
+		unsigned f = spans[s].frame < ORI_UNFOLD_FRAMES ? spans[s].frame : 0;
+
+		draw_range(r, &in->shapes[k], at, lo - at, tinted);
+		draw_range(r, &in->frames[k][f], lo, hi - lo, tinted);
+		at = hi;
+	}
+	draw_range(r, &in->shapes[k], at, end - at, tinted);
+}
+
 void render_instanced_draw(struct render *r, const float mvp[16], const float light[3],
-			   const float color[3])
+			   const float color[3], const struct app_unfold_span *spans,
+			   size_t nspans)
 {
 	struct render_instanced *in = &r->inst;
 	const struct render_program_tree *p = color ? &in->plain : &in->tinted;
@@ -205,37 +293,8 @@ void render_instanced_draw(struct render *r, const float mvp[16], const float li
 		glEnableVertexAttribArray(ATTR_TINT);
 		glVertexAttribDivisor(ATTR_TINT, 1);
 	}
-	for (size_t k = 0; k < in->nshapes; k++) {
-		const struct render_mesh *rm = &in->shapes[k];
-		const char *at = (const char *)(uintptr_t)(in->first[k] * MATRIX_BYTES);
-
-		if (rm->count == 0 || in->count[k] == 0)
-			continue;
-		glBindBuffer(GL_ARRAY_BUFFER, rm->positions);
-		glVertexAttribPointer(ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 0, NULL);
-		glBindBuffer(GL_ARRAY_BUFFER, rm->normals);
-		glVertexAttribPointer(ATTR_NORMAL, 3, GL_FLOAT, GL_FALSE, 0, NULL);
-		glBindBuffer(GL_ARRAY_BUFFER, in->matrices);
-		for (GLuint i = 0; i < 3; i++)
-			glVertexAttribPointer(ATTR_ROW0 + i, 4, GL_FLOAT, GL_FALSE, MATRIX_BYTES,
-					      at + 4 * sizeof(float) * i);
-		if (!color) {
-			glBindBuffer(GL_ARRAY_BUFFER, in->tints);
-			glVertexAttribPointer(ATTR_TINT, 3, GL_FLOAT, GL_FALSE, 0,
-					      (const char *)(uintptr_t)(in->first[k] * 3 * sizeof(float)));
-		}
-		if (rm->indexed) {
-			glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, rm->indices);
-			glDrawElementsInstanced(GL_TRIANGLES, rm->count, GL_UNSIGNED_INT, NULL,
-						(GLsizei)in->count[k]);
-			glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
-		} else {
-			glDrawArraysInstanced(GL_TRIANGLES, 0, rm->count, (GLsizei)in->count[k]);
-		}
-		r->stats.draw_calls++;
-		r->stats.triangles += rm->ntriangles * in->count[k];
-		r->stats.tree_triangles += rm->ntriangles * in->count[k];
-	}
+	for (size_t k = 0; k < in->nshapes; k++)
+		draw_shape(r, k, spans, nspans, !color);
 	glBindBuffer(GL_ARRAY_BUFFER, 0);
 	/* the other programs read attributes 0 and 1 only, per vertex */
 	for (GLuint i = 0; i < 3; i++) {

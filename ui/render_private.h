@@ -7,12 +7,14 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "app.h"
 #include "arrange.h"
 #include "atlas.h"
 #include "batch.h"
 #include "camera.h"
 #include "gen.h"
 #include "leaf_instances.h"
+#include "ori.h"
 #include "render.h"
 
 struct app;
@@ -65,6 +67,9 @@ struct render_instanced {
 	GLuint tints;
 	struct render_mesh shapes[LEAF_INSTANCES_MAX_SHAPES];
 	size_t first[LEAF_INSTANCES_MAX_SHAPES], count[LEAF_INSTANCES_MAX_SHAPES];
+	/* an origami shape's unfolding keyframes (leaf_shape.frames); none uploaded: 0 */
+	struct render_mesh frames[LEAF_INSTANCES_MAX_SHAPES][ORI_UNFOLD_FRAMES];
+	bool has_frames[LEAF_INSTANCES_MAX_SHAPES];
 	size_t nshapes;
 	GLuint matrices; /* 12 floats an instance, shape by shape */
 	struct render_mesh loose;
@@ -85,6 +90,9 @@ struct render_picture {
 #define RENDER_PICTURES (ARRANGE_COUNT + GEN_PRESET_COUNT)
 
 struct render {
+	/* this frame's unfolding leaves (app_unfold_at) */
+	struct app_unfold_span unfold[APP_UNFOLD_MAX];
+	size_t nunfold;
 	/* lit tree meshes: world positions and normals */
 	GLuint tree_program;
 	GLint tree_mvp, tree_color, tree_light, tree_two_sided;
@@ -171,8 +179,10 @@ void render_mesh_finish(struct render_mesh *rm);
 int render_instanced_create(struct render *r);
 int render_instanced_upload(struct render *r, const struct tree *t, const struct mesh *merged,
 			    const struct tree_mesh_marks *mk, bool tinted);
+/* The instanced leaves; those in spans (leaf order) at their unfolding keyframes. */
 void render_instanced_draw(struct render *r, const float mvp[16], const float light[3],
-			   const float color[3]);
+			   const float color[3], const struct app_unfold_span *spans,
+			   size_t nspans);
 /* Frees the GPU copies (the program stays until finish). */
 void render_instanced_clear(struct render *r);
 void render_instanced_finish(struct render *r);

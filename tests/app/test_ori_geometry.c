@@ -308,6 +308,46 @@ static void check_opening(const struct ori_leaf *l)
 	free(q);
 }
 
+/* The unfolding's keyframes: rigid, from the bud, opening to flat, then curling towards
+ * the rest (the mirror of the leaf opened back to `rest`), never the opening reversed. */
+static void check_unfold(const struct ori_leaf *l)
+{
+	size_t n = ORI_UNFOLD_FRAMES, nv = l->nvertices;
+	double (*f)[3] = calloc(n * nv, sizeof(*f)), (*p)[3] = calloc(nv, sizeof(*p));
+	double zmax_prev = INFINITY;
+
+	CHECK(f && p);
+	CHECK_INT(ori_unfold_frames(l, n, f), 0);
+	CHECK_INT(ori_open(l, 0, p), 0);
+	CHECK(memcmp(p, f, nv * sizeof(*p)) == 0);
+	for (size_t j = 0; j < n; j++) {
+		double s = (double)j / (double)n, zmax = 0, zsum = 0;
+
+		check_rigid(l, f + j * nv);
+		for (size_t v = 0; v < nv; v++) {
+			zmax = fmax(zmax, fabs(f[j * nv + v][2]));
+			zsum += f[j * nv + v][2];
+		}
+		if (s <= ORI_UNFOLD_OPEN) { /* opening: flatter every frame */
+			CHECK(zmax <= zmax_prev + 1e-12);
+			CHECK_INT(ori_open(l, s / ORI_UNFOLD_OPEN, p), 0);
+		} else { /* curling: a partly open leaf mirrored, nearer the rest each frame */
+			double t = 1 - (s - ORI_UNFOLD_OPEN) / (1 - ORI_UNFOLD_OPEN) * (1 - l->rest);
+
+			CHECK(t >= l->rest && t < 1);
+			CHECK_INT(ori_open(l, t, p), 0);
+			for (size_t v = 0; v < nv; v++)
+				p[v][2] = -p[v][2];
+		}
+		for (size_t v = 0; v < nv; v++)
+			CHECK(dist3(p[v], f[j * nv + v]) < 1e-12);
+		(void)zsum;
+		zmax_prev = zmax;
+	}
+	free(f);
+	free(p);
+}
+
 static size_t check_design(const struct ori_design *d)
 {
 	struct ori_leaf l;
@@ -325,6 +365,7 @@ static size_t check_design(const struct ori_design *d)
 	check_cut(&l, d);
 	check_mirror(&l);
 	check_opening(&l);
+	check_unfold(&l);
 	ori_leaf_finish(&l);
 	return inner;
 }

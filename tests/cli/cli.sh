@@ -217,6 +217,18 @@ t_origami() {
 				fail "the propagated $k leaves differ from golden"
 		fi
 	done
+	# the propagated leaves unfold over a second after the last event, by its time: in
+	# the bud just after, the same picture for the same moment, at rest once it is over
+	for s in 0.05 0.05b 0.5 1.5; do
+		run --out "$T/u-$s" --press leaf-maple --idle "${s%b}" \
+			--replay "$SRC/data/edit-propagate-count.edaha-trace"
+	done
+	cmp -s "$T/u-0.05/screen.png" "$T/u-0.05b/screen.png" || fail "unfolding is not repeatable"
+	cmp -s "$T/u-0.05/screen.png" "$T/u-0.5/screen.png" && fail "the leaves do not unfold"
+	cmp -s "$T/u-0.5/screen.png" "$T/u-1.5/screen.png" && fail "the leaves still unfold at 1.5 s"
+	"$IMGCMP" "$T/u-1.5/screen.png" "$T/p-maple/screen.png" ||
+		fail "the leaves are not at rest 1.5 s after"
+	same_files "$T/u-0.05" "$T/p-maple" skeleton.json model.glb
 }
 
 t_exports_valid() {
