@@ -290,6 +290,32 @@ static void check_opening(const struct ori_leaf *l)
 		memcpy(q, p, l->nvertices * sizeof(*p));
 	}
 	(void)last;
+	/* with nodes, the folded midrib is a polyline (bent at its nodes) that straightens as
+	 * the leaf opens: its nodes' distance from the line O-tip shrinks to 0 */
+	if (l->nnodes) {
+		double prev = INFINITY;
+
+		for (int i = 1; i <= 4; i++) {
+			double bend = 0, *o, *tip;
+
+			CHECK_INT(ori_open(l, 0.2 * i, p), 0);
+			o = p[0];
+			tip = p[l->tip];
+			for (size_t k = 0; k < l->nnodes; k++) {
+				const double *n = p[l->creases[l->nodes[k].in].b];
+				double u[3] = { tip[0] - o[0], tip[1] - o[1], tip[2] - o[2] };
+				double w[3] = { n[0] - o[0], n[1] - o[1], n[2] - o[2] };
+				double c[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+						u[0] * w[1] - u[1] * w[0] };
+
+				CHECK_NEAR(n[0], 0, 1e-9); /* in the plane of symmetry */
+				bend = fmax(bend, sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) /
+							  sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
+			}
+			CHECK(bend > 1e-6 * l->size && bend < prev);
+			prev = bend;
+		}
+	}
 	/* ends flat, as the pattern lies */
 	CHECK_INT(ori_open(l, 1, p), 0);
 	for (size_t v = 0; v < l->nvertices; v++) {

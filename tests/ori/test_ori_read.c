@@ -302,7 +302,13 @@ static void test_presets(void)
 	CHECK(d.middle[0] + d.middle[1] + 2 * (d.sides[0].angle + d.sides[1].angle) == 250);
 
 	CHECK_INT(ori_preset("hop", &d, &err), 0);
-	check_hop(&d);
+	/* one node on the midrib, each side part's vein forked once: 32 triangles a leaf */
+	CHECK(strcmp(d.name, "hop") == 0 && d.fold == ORI_FOLD_FAN && d.size == 0.09);
+	CHECK_INT(d.nnodes, 1);
+	CHECK(d.nodes[0].at == 0.35 && d.nodes[0].phi[0] == 55 && d.nodes[0].psi[0] == 28);
+	CHECK_INT(d.nsides, 2);
+	CHECK(d.sides[0].forks == 1 && d.sides[1].forks == 1);
+	CHECK(d.junction == 0.45 && d.theta0 == 360);
 	CHECK(d.middle[0] + d.middle[1] + 2 * (d.sides[0].angle + d.sides[1].angle) == 310);
 
 	memset(&d, 0x5a, sizeof(d));
