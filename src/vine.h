@@ -57,3 +57,47 @@ int vine_read(const char *data, size_t len, const char *name, struct vine_params
 
 /* Within every limit (docs/vine-format.md): 0, or -EINVAL with err naming the key. */
 int vine_params_check(const struct vine_params *p, const char **key, struct error *err);
+
+struct vine_support;
+
+/* A shoot: the main axis (parent -1) or a lateral grown from one of its nodes. */
+struct vine_shoot {
+	int parent;         /* -1: the main axis; else the shoot it grew from */
+	int node;           /* the parent's node it grew from (point node x d); 0 for the main */
+	struct vec3 *axis;  /* the raw points, from the root */
+	uint8_t *contact;   /* per point: it touched the support */
+	size_t n, cap;
+	size_t free_until;  /* points before this grew straight up (the non-twining part) */
+	size_t pivot;       /* the free rod's pivot: the rod is axis[pivot .. n - 1] */
+	double azimuth;     /* the rod's, radians, about +y: increasing counter-clockwise seen
+			     * from above */
+	size_t since_touch; /* points added since the rod last touched the support */
+	int leaves_lost;    /* a leaf less at node `node` of the parent: this shoot's bud */
+	bool stopped;
+};
+
+/* A vine grown from a planting point around a support (vine_grow.c). */
+struct vine {
+	struct vine_params p;
+	struct vec3 plant;
+	struct vine_shoot *shoots;
+	size_t nshoots, cap;
+	int active;       /* the growing shoot; -1 when growth has ended */
+	int next_bud;     /* the main axis's next node to sprout a lateral: U + 1, U + 2, ... */
+	size_t points;    /* axis points grown, every shoot's, the roots not counted */
+	uint64_t steps;   /* whole steps of step_time simulated */
+};
+
+/* A vine about to grow from plant (its root point). */
+void vine_init(struct vine *v, const struct vine_params *p, struct vec3 plant);
+void vine_finish(struct vine *v);
+/*
+ * Grows v to simulated time `until` (units of step_time): every whole step not yet taken,
+ * in order, so growing to 3.5 steps then to 7 gives what growing to 7 at once does. s may
+ * be NULL (nothing to climb). 0 or -ENOMEM (v as it was after the last whole step).
+ */
+int vine_grow(struct vine *v, const struct vine_support *s, double until);
+/* Whether growth has ended: the budget spent, or no apex nor bud left. */
+bool vine_done(const struct vine *v);
+/* The number of nodes on a shoot (points node x d, from 1). */
+size_t vine_shoot_nodes(const struct vine *v, size_t shoot);
