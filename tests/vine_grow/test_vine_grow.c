@@ -1,0 +1,268 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * A twining vine's growth (issue 16, docs/vines.md) on supports made here: a pole (the
+ * helix: its radius, handedness, pitch, segment lengths and lean, clearance), a pole
+ * shorter than the growth (the apex stops above it, the buds take over in order), a
+ * planting out of reach (the apex stops after circling two internodes), a cross (past the
+ * junction up the upper arm), a T (stops above the bar); growth in small time steps gives
+ * what growth at once does.
+ */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "test.h"
+#include "vine.h"
+#include "vine_support.h"
+
+#define DEG (180.0 / VEC_PI)
+
+/* Cylinders (capped) gathered into one mesh. */
+struct mesh_build {
+	float *p;
+	uint32_t *t;
+	size_t np, nt;
+};
+
+/* A cylinder of radius R along +y (axis 1) or +x (axis 0) from (x0, y0, z0), length h. */
+static void cylinder(struct mesh_build *m, double R, double h, int sides, struct vec3 o, int axis)
+{
+	size_t b = m->np;
+
+	m->p = realloc(m->p, (m->np + 2 * (size_t)sides + 2) * 3 * sizeof(*m->p));
+	m->t = realloc(m->t, (m->nt + 4 * (size_t)sides) * 3 * sizeof(*m->t));
+	CHECK(m->p && m->t);
+	for (int i = 0; i < sides; i++) {
+		double a = 2 * VEC_PI * i / sides, u = R * cos(a), w = R * sin(a);
+
+		for (int e = 0; e < 2; e++) {
+			float *q = m->p + 3 * m->np++;
+			struct vec3 v = axis == 1 ? vec3(o.x + u, o.y + e * h, o.z + w) :
+						    vec3(o.x + e * h, o.y + u, o.z + w);
+
+			q[0] = (float)v.x;
+			q[1] = (float)v.y;
+			q[2] = (float)v.z;
+		}
+	}
+	for (int e = 0; e < 2; e++) {
+		float *q = m->p + 3 * m->np++;
+		struct vec3 v = axis == 1 ? vec3(o.x, o.y + e * h, o.z) : vec3(o.x + e * h, o.y, o.z);
+
+		q[0] = (float)v.x;
+		q[1] = (float)v.y;
+		q[2] = (float)v.z;
+	}
+	for (int i = 0; i < sides; i++) {
+		uint32_t j = (uint32_t)((i + 1) % sides), a0 = (uint32_t)(b + 2 * (size_t)i);
+		uint32_t a1 = a0 + 1, b0 = (uint32_t)b + 2 * j, b1 = b0 + 1;
+		uint32_t c0 = (uint32_t)(b + 2 * (size_t)sides), c1 = c0 + 1;
+		uint32_t tri[4][3] = { { a0, b0, a1 }, { a1, b0, b1 }, { c0, b0, a0 }, { c1, a1, b1 } };
+
+		memcpy(m->t + 3 * m->nt, tri, sizeof(tri));
+		m->nt += 4;
+	}
+}
+
+static struct vine_support *support_of(struct mesh_build *m)
+{
+	struct vine_support *s;
+
+	CHECK_INT(vine_support_create(m->p, m->np, m->t, m->nt, &s), 0);
+	free(m->p);
+	free(m->t);
+	memset(m, 0, sizeof(*m));
+	return s;
+}
+
+static struct vine_params params(double angle, enum vine_twining tw, int internodes)
+{
+	struct vine_params p;
+
+	vine_params_default(&p);
+	p.angle = angle;
+	p.twining = tw;
+	p.internodes = internodes;
+	return p;
+}
+
+static double azimuth(struct vec3 p)
+{
+	return atan2(-p.z, p.x); /* counter-clockwise seen from above */
+}
+
+/* On a pole of radius R (64 sides) 1 m tall, planted r + 13 mm from its side. */
+static void test_pole(double angle, enum vine_twining tw)
+{
+	const double R = 0.02, H = 1.0;
+	struct mesh_build m = { 0 };
+	struct vine_support *s;
+	struct vine_params p = params(angle, tw, 300);
+	struct vine v;
+	const struct vine_shoot *sh;
+	size_t d = (size_t)p.points_per_internode, first = 0, last = 0, u = (size_t)p.free_nodes * d;
+	double turned = 0, l = p.internode / (double)d;
+
+	cylinder(&m, R, H, 64, vec3(0, 0, 0), 1);
+	s = support_of(&m);
+	vine_init(&v, &p, vec3(R + 0.015, 0, 0));
+	CHECK_INT(vine_grow(&v, s, 1e9), 0);
+	sh = &v.shoots[0];
+	/* every segment l/d; from U d on each leans theta_p (none slides on a plain pole) */
+	for (size_t i = 1; i < sh->n; i++) {
+		struct vec3 e = vec3_sub(sh->axis[i], sh->axis[i - 1]);
+
+		CHECK_NEAR(vec3_len(e), l, 1e-9);
+		if (i > u)
+			CHECK_NEAR(acos(e.y / vec3_len(e)) * DEG, angle, 1e-6);
+		else
+			CHECK_NEAR(e.y, l, 1e-12);
+	}
+	/* the twined part: points touching, below the top's rim */
+	for (size_t i = 0; i < sh->n; i++) {
+		if (!sh->contact[i] || sh->axis[i].y > H - 0.05)
+			continue;
+		if (!first)
+			first = i;
+		last = i;
+	}
+	CHECK(first > 0 && last > first + 8 * d);
+	for (size_t i = first; i <= last; i++) {
+		double da = azimuth(sh->axis[i]) - (i > first ? azimuth(sh->axis[i - 1]) : azimuth(sh->axis[i]));
+
+		CHECK_NEAR(hypot(sh->axis[i].x, sh->axis[i].z), R + p.radius, 0.1 * p.radius);
+		while (da > VEC_PI)
+			da -= 2 * VEC_PI;
+		while (da < -VEC_PI)
+			da += 2 * VEC_PI;
+		turned += da;
+	}
+	/* right: counter-clockwise seen from above, a right-handed helix; left the mirror */
+	CHECK(tw == VINE_RIGHT ? turned > 2 * VEC_PI : turned < -2 * VEC_PI);
+	{
+		double pitch = (sh->axis[last].y - sh->axis[first].y) / (fabs(turned) / (2 * VEC_PI));
+		double want = 2 * VEC_PI * (R + p.radius) / tan(angle / DEG);
+
+		printf("pole, %g degrees, %s: pitch %.4f m, 2 pi (R + r) / tan theta_p = %.4f m\n",
+		       angle, tw == VINE_RIGHT ? "right" : "left", pitch, want);
+		CHECK(fabs(pitch - want) <= 0.05 * want);
+	}
+	/* nothing closer than 0.95 r */
+	for (size_t k = 0; k < v.nshoots; k++)
+		for (size_t i = 0; i < v.shoots[k].n; i++)
+			CHECK(vine_support_distance(s, v.shoots[k].axis[i], 1, NULL, NULL) >=
+			      0.95 * p.radius);
+	/* the pole is 1 m and the budget longer: the apex stops above its top, and the buds
+	 * at nodes U + 1, U + 2, ... take over in that order */
+	CHECK(sh->stopped);
+	CHECK(sh->axis[sh->n - 1].y > H);
+	CHECK(v.nshoots >= 3);
+	for (size_t k = 1; k < v.nshoots; k++) {
+		CHECK_INT(v.shoots[k].parent, 0);
+		CHECK_INT(v.shoots[k].node, p.free_nodes + (int)k);
+	}
+	vine_finish(&v);
+	vine_support_destroy(s);
+}
+
+/* Planted out of reach: nothing touches, the apex stops at (U + 2) d. */
+static void test_out_of_reach(void)
+{
+	struct mesh_build m = { 0 };
+	struct vine_support *s;
+	struct vine_params p = params(18, VINE_LEFT, 40);
+	struct vine v;
+
+	cylinder(&m, 0.02, 1, 32, vec3(0, 0, 0), 1);
+	s = support_of(&m);
+	vine_init(&v, &p, vec3(0.5, 0, 0));
+	CHECK_INT(vine_grow(&v, s, 1e9), 0);
+	CHECK(v.shoots[0].stopped);
+	CHECK_INT(v.shoots[0].n - 1, (p.free_nodes + 2) * p.points_per_internode);
+	for (size_t k = 0; k < v.nshoots; k++)
+		for (size_t i = 0; i < v.shoots[k].n; i++)
+			CHECK(!v.shoots[k].contact[i]);
+	CHECK(vine_done(&v));
+	vine_finish(&v);
+	vine_support_destroy(s);
+}
+
+/* A cross (a bar through the pole at 0.5 m) and a T (the bar on top at 0.6 m). */
+static void test_cross_and_t(void)
+{
+	struct mesh_build m = { 0 };
+	struct vine_support *s;
+	struct vine_params p = params(18, VINE_RIGHT, 60);
+	struct vine v;
+	double top = 0;
+
+	cylinder(&m, 0.02, 1.2, 32, vec3(0, 0, 0), 1);
+	cylinder(&m, 0.015, 0.6, 32, vec3(-0.3, 0.5, 0), 0);
+	s = support_of(&m);
+	vine_init(&v, &p, vec3(0.035, 0, 0));
+	CHECK_INT(vine_grow(&v, s, 1e9), 0);
+	for (size_t i = 0; i < v.shoots[0].n; i++)
+		top = fmax(top, v.shoots[0].axis[i].y);
+	printf("cross: the main axis reaches %.3f m (the junction at 0.5 m, the pole's top 1.2 m)\n",
+	       top);
+	CHECK(top > 1.0); /* twined past the junction, up the upper arm */
+	vine_finish(&v);
+	vine_support_destroy(s);
+
+	cylinder(&m, 0.02, 0.6, 32, vec3(0, 0, 0), 1);
+	cylinder(&m, 0.015, 0.6, 32, vec3(-0.3, 0.615, 0), 0);
+	s = support_of(&m);
+	vine_init(&v, &p, vec3(0.035, 0, 0));
+	CHECK_INT(vine_grow(&v, s, 1e9), 0);
+	top = 0;
+	for (size_t i = 0; i < v.shoots[0].n; i++)
+		top = fmax(top, v.shoots[0].axis[i].y);
+	printf("T: the main axis stops at %.3f m (the bar's top at 0.63 m)\n", top);
+	CHECK(v.shoots[0].stopped);
+	CHECK(top > 0.63 && top < 0.63 + 3 * p.internode);
+	vine_finish(&v);
+	vine_support_destroy(s);
+}
+
+/* Growing by frames (30 or 60 a second of some clock) gives what growing at once does. */
+static void test_steps(void)
+{
+	struct mesh_build m = { 0 };
+	struct vine_support *s;
+	struct vine_params p = params(25, VINE_RIGHT, 50);
+	struct vine a, b;
+	double end = 600 * p.step_time;
+
+	cylinder(&m, 0.03, 0.8, 48, vec3(0, 0, 0), 1);
+	s = support_of(&m);
+	vine_init(&a, &p, vec3(0.05, 0, 0.01));
+	CHECK_INT(vine_grow(&a, s, end), 0);
+	for (int fps = 30; fps <= 60; fps += 30) {
+		vine_init(&b, &p, vec3(0.05, 0, 0.01));
+		/* a step of growth every 0.05 s of the clock: frames fall anywhere in it */
+		for (double t = 0; t <= end + 1e-9; t += p.step_time * 20.0 / fps)
+			CHECK_INT(vine_grow(&b, s, t), 0);
+		CHECK_INT(vine_grow(&b, s, end), 0);
+		CHECK_INT(a.nshoots, b.nshoots);
+		for (size_t k = 0; k < a.nshoots; k++) {
+			CHECK_INT(a.shoots[k].n, b.shoots[k].n);
+			CHECK(memcmp(a.shoots[k].axis, b.shoots[k].axis,
+				     a.shoots[k].n * sizeof(*a.shoots[k].axis)) == 0);
+		}
+		vine_finish(&b);
+	}
+	vine_finish(&a);
+	vine_support_destroy(s);
+}
+
+int main(void)
+{
+	test_pole(18, VINE_RIGHT);
+	test_pole(18, VINE_LEFT);
+	test_pole(30, VINE_RIGHT);
+	test_out_of_reach();
+	test_cross_and_t();
+	test_steps();
+	printf("ok\n");
+	return 0;
+}
