@@ -101,3 +101,29 @@ int vine_grow(struct vine *v, const struct vine_support *s, double until);
 bool vine_done(const struct vine *v);
 /* The number of nodes on a shoot (points node x d, from 1). */
 size_t vine_shoot_nodes(const struct vine *v, size_t shoot);
+
+/*
+ * The shapes drawn from the raw axis (3.3; vine_shape.c): a shoot's smoothed axis (a
+ * cubic spline where the direction's azimuth jumps by 45 degrees or more, over +-d/2
+ * points; the free parts bent by seeded cubic Bezier offsets within +-5 l/d,
+ * horizontally: the cotyledon node, the non-twining internodes, a stopped apex's last 2d
+ * points), as many points as the raw axis. *out allocated (the caller frees). 0 or
+ * -ENOMEM. The raw axis never depends on the seed; only these do.
+ */
+int vine_smooth(const struct vine *v, size_t shoot, struct vec3 **out);
+
+/* A leaf (or cotyledon): a square of half-diagonal leaf_size, a corner at its node. */
+struct vine_leaf {
+	size_t shoot;
+	size_t node;    /* points node x d of its shoot */
+	bool cotyledon;
+	struct vec3 p[4]; /* counter-clockwise seen from its front */
+};
+/* Every leaf of v in shoot and node order. *out allocated (the caller frees), *n. 0 or
+ * -ENOMEM. */
+int vine_leaves(const struct vine *v, struct vine_leaf **out, size_t *n);
+
+struct mesh;
+/* The stems (rings of ring_sides along the smoothed axes, closed tips) appended to stem,
+ * the leaves (double-sided quads) to leaves. 0 or -ENOMEM. */
+int vine_mesh_append(const struct vine *v, struct mesh *stem, struct mesh *leaves);
