@@ -20,137 +20,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "ori.h"
+#include "ori_private.h"
 #include "vec.h"
 
-#define MAX_V 1024
-#define MAX_C 1024
-#define MAX_F 512
-#define MAX_FI 4096
-#define MAX_CUR 256
-
-/* A plane isometry x -> m x + t. */
-struct iso {
-	double m[2][2], t[2];
-};
-
-struct builder {
-	const struct ori_design *d;
-	const char *name;
-	struct error *err;
-
-	double v[MAX_V][2];
-	int part_of[MAX_V]; /* margin vertices: their part (lobes) */
-	size_t nv;
-	struct ori_crease c[MAX_C];
-	size_t nc;
-	struct ori_node_geo nodes[ORI_MAX_NODES];
-	size_t nnodes;
-
-	int fidx[MAX_FI];
-	size_t nfi, fstart[MAX_F], flen[MAX_F];
-	struct iso fmap[MAX_F];
-	int from[MAX_F], across[MAX_F];
-	size_t nf;
-	int root_face;
-
-	int cur[MAX_CUR]; /* the face being walked */
-	size_t ncur;
-	int cur_across;   /* the crease crossed into it (-1: the first) */
-	struct iso M;     /* its folded map */
-
-	int margin[MAX_V];
-	size_t nmargin;
-
-	/* the part being walked: its cut in folded coordinates, O's side of it */
-	double cut_a[2], cut_b[2];
-	double inside;
-	int part;
-	unsigned long part_line;
-	const char *part_what;
-	char what[64];
-};
-
-static int full(struct builder *b)
+static int full(struct ori_builder *b)
 {
 	return error_at(b->err, -EINVAL, b->name, b->d->line,
 			"too many creases: not a leaf this edaha can fold");
-}
-
-static void iso_apply(const struct iso *a, const double x[2], double out[2])
-{
-	double y0 = a->m[0][0] * x[0] + a->m[0][1] * x[1] + a->t[0];
-	double y1 = a->m[1][0] * x[0] + a->m[1][1] * x[1] + a->t[1];
-
-	out[0] = y0;
-	out[1] = y1;
-}
-
-static void iso_dir(const struct iso *a, const double x[2], double out[2])
-{
-	double y0 = a->m[0][0] * x[0] + a->m[0][1] * x[1];
-	double y1 = a->m[1][0] * x[0] + a->m[1][1] * x[1];
-
-	out[0] = y0;
-	out[1] = y1;
-}
-
-/* a o b: b first. */
-static struct iso iso_mul(const struct iso *a, const struct iso *b)
-{
-	struct iso r;
-
-	for (int i = 0; i < 2; i++) {
-		for (int j = 0; j < 2; j++)
-			r.m[i][j] = a->m[i][0] * b->m[0][j] + a->m[i][1] * b->m[1][j];
-		r.t[i] = a->m[i][0] * b->t[0] + a->m[i][1] * b->t[1] + a->t[i];
-	}
-	return r;
-}
-
-static struct iso iso_identity(void)
-{
-	return (struct iso){ { { 1, 0 }, { 0, 1 } }, { 0, 0 } };
-}
-
-/* The reflection across the line through p along the unit d. */
-static struct iso iso_reflect(const double p[2], const double d[2])
-{
-	struct iso r;
-
-	r.m[0][0] = d[0] * d[0] - d[1] * d[1];
-	r.m[0][1] = 2 * d[0] * d[1];
-	r.m[1][0] = r.m[0][1];
-	r.m[1][1] = -r.m[0][0];
-	r.t[0] = p[0] - (r.m[0][0] * p[0] + r.m[0][1] * p[1]);
-	r.t[1] = p[1] - (r.m[1][0] * p[0] + r.m[1][1] * p[1]);
-	return r;
-}
-
-/* The inverse of an isometry: m orthogonal. */
-static struct iso iso_inverse(const struct iso *a)
-{
-	struct iso r;
-
-	r.m[0][0] = a->m[0][0];
-	r.m[0][1] = a->m[1][0];
-	r.m[1][0] = a->m[0][1];
-	r.m[1][1] = a->m[1][1];
-	r.t[0] = -(r.m[0][0] * a->t[0] + r.m[0][1] * a->t[1]);
-	r.t[1] = -(r.m[1][0] * a->t[0] + r.m[1][1] * a->t[1]);
-	return r;
-}
-
-static double iso_diff(const struct iso *a, const struct iso *b)
-{
-	double e = 0;
-
-	for (int i = 0; i < 2; i++) {
-		for (int j = 0; j < 2; j++)
-			e = fmax(e, fabs(a->m[i][j] - b->m[i][j]));
-		e = fmax(e, fabs(a->t[i] - b->t[i]));
-	}
-	return e;
 }
 
 static void dir_at(double deg, double out[2])
@@ -169,14 +45,9 @@ static void dir_turn(const double d[2], double deg, double out[2])
 	out[1] = y;
 }
 
-static double cross2(const double a[2], const double b[2])
+static int add_vertex(struct ori_builder *b, double x, double y)
 {
-	return a[0] * b[1] - a[1] * b[0];
-}
-
-static int add_vertex(struct builder *b, double x, double y)
-{
-	if (b->nv == MAX_V)
+	if (b->nv == ORI_MAX_V)
 		return -1;
 	b->v[b->nv][0] = x;
 	b->v[b->nv][1] = y;
@@ -184,28 +55,28 @@ static int add_vertex(struct builder *b, double x, double y)
 	return (int)b->nv++;
 }
 
-static int add_crease(struct builder *b, int from, int to, enum ori_crease_type type,
+static int add_crease(struct ori_builder *b, int from, int to, enum ori_crease_type type,
 		      enum ori_rule rule, int parent, double k, int node)
 {
-	if (b->nc == MAX_C)
+	if (b->nc == ORI_MAX_C)
 		return -1;
 	b->c[b->nc] = (struct ori_crease){ .a = from, .b = to, .type = type, .rule = rule,
 					   .parent = parent, .k = k, .node = node };
 	return (int)b->nc++;
 }
 
-static int face_push(struct builder *b, int v)
+static int face_push(struct ori_builder *b, int v)
 {
-	if (b->ncur == MAX_CUR)
+	if (b->ncur == ORI_MAX_CUR)
 		return full(b);
 	b->cur[b->ncur++] = v;
 	return 0;
 }
 
 /* Ends the face being walked; the next starts across crease c (-1: none, the last). */
-static int face_close(struct builder *b)
+static int face_close(struct ori_builder *b)
 {
-	if (b->nf == MAX_F || b->nfi + b->ncur > MAX_FI)
+	if (b->nf == ORI_MAX_F || b->nfi + b->ncur > ORI_MAX_FI)
 		return full(b);
 	b->fstart[b->nf] = b->nfi;
 	b->flen[b->nf] = b->ncur;
@@ -219,14 +90,14 @@ static int face_close(struct builder *b)
 	return 0;
 }
 
-static int refuse(struct builder *b, const char *what)
+static int refuse(struct ori_builder *b, const char *what)
 {
 	return error_at(b->err, -EINVAL, b->name, b->part_line, "%s%s%s", b->part_what,
 			b->part_what[0] ? ": " : "", what);
 }
 
 /* Which side of the part's cut a folded point is on: > 0 O's. */
-static double cut_side(const struct builder *b, const double p[2])
+static double cut_side(const struct ori_builder *b, const double p[2])
 {
 	double ab[2] = { b->cut_b[0] - b->cut_a[0], b->cut_b[1] - b->cut_a[1] };
 	double ap[2] = { p[0] - b->cut_a[0], p[1] - b->cut_a[1] };
@@ -236,7 +107,7 @@ static double cut_side(const struct builder *b, const double p[2])
 
 /* How far along d from s (flat) the folded image of the ray meets the part's cut; < 0 if
  * it never does. */
-static double cut_length(const struct builder *b, const double s[2], const double d[2])
+static double cut_length(const struct ori_builder *b, const double s[2], const double d[2])
 {
 	double p[2], q[2], ab[2] = { b->cut_b[0] - b->cut_a[0], b->cut_b[1] - b->cut_a[1] };
 	double den, u, ap[2];
@@ -254,7 +125,7 @@ static double cut_length(const struct builder *b, const double s[2], const doubl
 
 /* Sets the cut of the part whose right edge (a ray from O along edge) the walk is at:
  * through its junction on that edge and its vein's tip at r. */
-static void set_cut(struct builder *b, const double edge[2], const double vein[2], double r)
+static void set_cut(struct ori_builder *b, const double edge[2], const double vein[2], double r)
 {
 	double m = b->d->junction * b->d->size, j[2] = { m * edge[0], m * edge[1] };
 	double t[2] = { r * vein[0], r * vein[1] }, o[2] = { 0, 0 }, oo[2];
@@ -267,7 +138,7 @@ static void set_cut(struct builder *b, const double edge[2], const double vein[2
 }
 
 /* A crease from vertex s that runs to the margin. */
-static int ray(struct builder *b, int s, const double d[2], enum ori_crease_type type,
+static int ray(struct ori_builder *b, int s, const double d[2], enum ori_crease_type type,
 	       enum ori_rule rule, int parent, double k, int node, int *out)
 {
 	double u = cut_length(b, b->v[s], d);
@@ -296,7 +167,7 @@ static int ray(struct builder *b, int s, const double d[2], enum ori_crease_type
 }
 
 /* A crease from s to v inside the leaf: begins the walk round v. */
-static int inner_begin(struct builder *b, int s, double x, double y, enum ori_crease_type type,
+static int inner_begin(struct ori_builder *b, int s, double x, double y, enum ori_crease_type type,
 		       enum ori_rule rule, int parent, double k, int node, int *v, int *c,
 		       struct iso *before)
 {
@@ -316,7 +187,7 @@ static int inner_begin(struct builder *b, int s, double x, double y, enum ori_cr
 }
 
 /* Back along crease c to s: the face now must be the one left before, reflected. */
-static int inner_end(struct builder *b, int s, int c, const struct iso *before)
+static int inner_end(struct ori_builder *b, int s, int c, const struct iso *before)
 {
 	double d[2] = { b->v[b->c[c].b][0] - b->v[s][0], b->v[b->c[c].b][1] - b->v[s][1] };
 	double l = hypot(d[0], d[1]);
@@ -333,7 +204,7 @@ static int inner_end(struct builder *b, int s, int c, const struct iso *before)
 }
 
 /* A side part's vein from s along d; depth forks made so far. mirror: a left part. */
-static int vein(struct builder *b, const struct ori_side *p, bool mirror, int s,
+static int vein(struct ori_builder *b, const struct ori_side *p, bool mirror, int s,
 		const double d[2], int depth, enum ori_rule rule, int parent, double k)
 {
 	double a = mirror ? p->fork_b : p->fork_a, bb = mirror ? p->fork_a : p->fork_b;
@@ -366,7 +237,7 @@ static int vein(struct builder *b, const struct ori_side *p, bool mirror, int s,
 }
 
 /* The midrib from s (O or node i - 1), up +y; parent the crease entering s. */
-static int midrib(struct builder *b, int s, size_t i, int parent)
+static int midrib(struct ori_builder *b, int s, size_t i, int parent)
 {
 	const struct ori_design *d = b->d;
 	enum ori_rule rule = i == 0 ? ORI_RULE_BASE : ORI_RULE_NODE_MIDRIB;
@@ -409,22 +280,13 @@ static int midrib(struct builder *b, int s, size_t i, int parent)
 	return inner_end(b, s, c, &before);
 }
 
-static double sides_angle(const struct ori_design *d, size_t upto)
-{
-	double a = 0;
-
-	for (size_t j = 0; j < upto; j++)
-		a += d->sides[j].angle;
-	return a;
-}
-
 /* Side part j (right or left): its cut, then its vein from O. edge: its edge on the
  * walk's side of it (the one already walked). */
-static int side_part(struct builder *b, size_t j, bool left, const double edge[2])
+static int side_part(struct ori_builder *b, size_t j, bool left, const double edge[2])
 {
 	const struct ori_design *d = b->d;
 	const struct ori_side *p = &d->sides[j];
-	double theta = d->middle[left] + sides_angle(d, j) + p->angle / 2.0;
+	double theta = d->middle[left] + ori_sides_angle(d, j) + p->angle / 2.0;
 	double r = d->size * (1.0 - theta / d->theta0), dv[2];
 
 	b->part = left ? (int)(d->nsides + 1 + j) : (int)(d->nsides - 1 - j);
@@ -442,7 +304,7 @@ static int side_part(struct builder *b, size_t j, bool left, const double edge[2
 }
 
 /* A boundary mountain from O at deg: it ends at the junction, where neighbours meet. */
-static int boundary(struct builder *b, double deg)
+static int boundary(struct ori_builder *b, double deg)
 {
 	double d[2], m = b->d->junction * b->d->size;
 	int e, c;
@@ -466,11 +328,11 @@ static int boundary(struct builder *b, double deg)
 	return 0;
 }
 
-static int walk_fan(struct builder *b)
+static int walk_fan(struct ori_builder *b)
 {
 	const struct ori_design *d = b->d;
-	double half_r = d->middle[0] + sides_angle(d, d->nsides);
-	double half_l = d->middle[1] + sides_angle(d, d->nsides);
+	double half_r = d->middle[0] + ori_sides_angle(d, d->nsides);
+	double half_l = d->middle[1] + ori_sides_angle(d, d->nsides);
 	double edge[2], up[2] = { 0, 1 }, m = d->junction * d->size;
 	int ret, e;
 
@@ -490,8 +352,8 @@ static int walk_fan(struct builder *b)
 	for (size_t j = d->nsides; j-- > 0;) {
 		if ((ret = side_part(b, j, false, edge)) < 0)
 			return ret;
-		dir_at(90.0 - d->middle[0] - sides_angle(d, j), edge);
-		if ((ret = boundary(b, 90.0 - d->middle[0] - sides_angle(d, j))) < 0)
+		dir_at(90.0 - d->middle[0] - ori_sides_angle(d, j), edge);
+		if ((ret = boundary(b, 90.0 - d->middle[0] - ori_sides_angle(d, j))) < 0)
 			return ret;
 	}
 	/* the middle part: its tip on the midrib at r0 = size */
@@ -505,7 +367,7 @@ static int walk_fan(struct builder *b)
 	b->part_line = d->line_middle ? d->line_middle : d->line;
 	b->part_what = "middle";
 	for (size_t j = 0; j < d->nsides; j++) {
-		double deg = 90.0 + d->middle[1] + sides_angle(d, j);
+		double deg = 90.0 + d->middle[1] + ori_sides_angle(d, j);
 
 		if ((ret = boundary(b, deg)) < 0)
 			return ret;
@@ -524,7 +386,7 @@ static int walk_fan(struct builder *b)
 }
 
 /* An entire leaf folded in two: the right half is cut on the curve, the left mirrors it. */
-static int walk_half(struct builder *b)
+static int walk_half(struct ori_builder *b)
 {
 	const struct ori_design *d = b->d;
 	int n = ORI_CURVE_POINTS, tip, c;
@@ -568,145 +430,7 @@ static int walk_half(struct builder *b)
 	return face_close(b);
 }
 
-/* Proper crossing of segments pq and rs (sharing no end). */
-static bool segments_cross(const double p[2], const double q[2], const double r[2],
-			   const double s[2])
-{
-	double pq[2] = { q[0] - p[0], q[1] - p[1] }, rs[2] = { s[0] - r[0], s[1] - r[1] };
-	double pr[2] = { r[0] - p[0], r[1] - p[1] }, ps[2] = { s[0] - p[0], s[1] - p[1] };
-	double rp[2] = { p[0] - r[0], p[1] - r[1] }, rq[2] = { q[0] - r[0], q[1] - r[1] };
-	double d1 = cross2(pq, pr), d2 = cross2(pq, ps), d3 = cross2(rs, rp), d4 = cross2(rs, rq);
-
-	return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) &&
-	       ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
-}
-
-/* Where the design says part p (counted right to left): its line and name. */
-static unsigned long part_where(const struct ori_design *d, int p, char what[64])
-{
-	size_t n = d->nsides;
-
-	if (p < 0 || (size_t)p == n || (size_t)p > 2 * n) {
-		snprintf(what, 64, "middle");
-		return d->line_middle ? d->line_middle : d->line;
-	}
-	if ((size_t)p < n) {
-		snprintf(what, 64, "sides: part %zu", n - (size_t)p);
-		return d->sides[n - 1 - (size_t)p].line ? d->sides[n - 1 - (size_t)p].line : d->line;
-	}
-	snprintf(what, 64, "sides: part %zu (on the left)", (size_t)p - n);
-	return d->sides[(size_t)p - n - 1].line ? d->sides[(size_t)p - n - 1].line : d->line;
-}
-
-/* Crossing creases, overlapping lobes, faces that are not convex: refused. */
-static int check_pattern(struct builder *b)
-{
-	const struct ori_design *d = b->d;
-	unsigned long line = d->line_middle ? d->line_middle : d->line;
-	char what[64];
-
-	for (size_t i = 0; i < b->nc; i++)
-		for (size_t j = i + 1; j < b->nc; j++) {
-			const struct ori_crease *x = &b->c[i], *y = &b->c[j];
-
-			if (x->a == y->a || x->a == y->b || x->b == y->a || x->b == y->b)
-				continue;
-			if (segments_cross(b->v[x->a], b->v[x->b], b->v[y->a], b->v[y->b])) {
-				line = part_where(d, b->part_of[y->b], what);
-				return error_at(b->err, -EINVAL, b->name, line,
-						"%s: creases cross: its forks' angles send a vein or "
-						"a mountain over another", what);
-			}
-		}
-	for (size_t i = 0; i < b->nmargin; i++) {
-		const double *p = b->v[b->margin[i]], *q = b->v[b->margin[(i + 1) % b->nmargin]];
-
-		for (size_t j = i + 2; j < b->nmargin; j++) {
-			if ((j + 1) % b->nmargin == i)
-				continue;
-			if (segments_cross(p, q, b->v[b->margin[j]],
-					   b->v[b->margin[(j + 1) % b->nmargin]]))
-				return error_at(b->err, -EINVAL, b->name, line,
-						"the lobes overlap when the leaf lies flat: "
-						"narrow the parts or lengthen theta0");
-		}
-	}
-	for (size_t f = 0; f < b->nf; f++) {
-		size_t n = b->flen[f], s = b->fstart[f];
-		double area = 0;
-
-		for (size_t k = 0; k < n; k++) {
-			const double *p = b->v[b->fidx[s + k]], *q = b->v[b->fidx[s + (k + 1) % n]];
-
-			area += cross2(p, q);
-		}
-		if (area < 0) /* the walk goes clockwise round each face: turn it */
-			for (size_t k = 0; k < n / 2; k++) {
-				int t = b->fidx[s + k];
-
-				b->fidx[s + k] = b->fidx[s + n - 1 - k];
-				b->fidx[s + n - 1 - k] = t;
-			}
-		if (fabs(area) < 1e-12 * d->size * d->size)
-			return error_at(b->err, -EINVAL, b->name, line,
-					"a face of the pattern has no area: creases meet the cut "
-					"at one point");
-		for (size_t k = 0; k < n; k++) {
-			const double *p = b->v[b->fidx[s + k]], *q = b->v[b->fidx[s + (k + 1) % n]];
-			const double *r = b->v[b->fidx[s + (k + 2) % n]];
-			double pq[2] = { q[0] - p[0], q[1] - p[1] }, qr[2] = { r[0] - q[0], r[1] - q[1] };
-
-			if (cross2(pq, qr) < -1e-9 * d->size * d->size) {
-				line = part_where(d, b->part_of[b->fidx[s + (k + 1) % n]], what);
-				return error_at(b->err, -EINVAL, b->name, line,
-						"%s: a face of the pattern is not convex: creases "
-						"cross or run out of their part", what);
-			}
-		}
-	}
-	return 0;
-}
-
-static int check_design(const struct ori_design *d, const char *name, struct error *err)
-{
-	double span = d->middle[0] + d->middle[1] + 2.0 * sides_angle(d, d->nsides);
-	unsigned long line = d->line_middle ? d->line_middle : d->line;
-
-	if (d->middle[0] != d->middle[1])
-		return error_at(err, -EINVAL, name, line,
-				"the middle part is not symmetric: %.4g degrees right of the midrib, "
-				"%.4g left (the pattern mirrors about the midrib)",
-				d->middle[0], d->middle[1]);
-	for (size_t i = 0; i < d->nnodes; i++) {
-		const struct ori_node *n = &d->nodes[i];
-		unsigned long at = n->line ? n->line : line;
-
-		if (n->phi[0] != n->phi[1] || n->psi[0] != n->psi[1])
-			return error_at(err, -EINVAL, name, at,
-					"middle.nodes: node %zu is not symmetric: its right and "
-					"left angles differ (the pattern mirrors about the midrib)",
-					i + 1);
-		if (!(n->psi[0] > 0 && n->psi[0] < n->phi[0] && n->phi[0] < 90))
-			return error_at(err, -EINVAL, name, at,
-					"middle.nodes: node %zu: the extra mountain must lie between "
-					"the midrib and the side vein, 0 < psi < phi < 90", i + 1);
-		if (n->at <= (i ? d->nodes[i - 1].at : 0.0) || n->at >= 1)
-			return error_at(err, -EINVAL, name, at,
-					"middle.nodes: node %zu: `at` must grow from O and stay below "
-					"1", i + 1);
-	}
-	if (span >= 360.0)
-		return error_at(err, -EINVAL, name, line,
-				"the parts span %.4g degrees round O: 360 or more cannot fold flat "
-				"(the petiole's notch must stay open)", span);
-	if (d->fold == ORI_FOLD_HALF && (d->middle[0] < 90.0 || d->nsides || d->nnodes))
-		return error_at(err, -EINVAL, name, line,
-				"a half fold is the midrib alone, 180 degrees at O: its curve "
-				"leaves O square to the midrib");
-	return 0;
-}
-
-static void lobes(struct builder *b, struct ori_leaf *l)
+static void lobes(struct ori_builder *b, struct ori_leaf *l)
 {
 	const struct ori_design *d = b->d;
 	size_t np = d->fold == ORI_FOLD_HALF ? 1 : 2 * d->nsides + 1;
@@ -719,7 +443,7 @@ static void lobes(struct builder *b, struct ori_leaf *l)
 		if (d->fold == ORI_FOLD_FAN && p != d->nsides) {
 			size_t j = p < d->nsides ? d->nsides - 1 - p : p - d->nsides - 1;
 
-			theta = d->middle[p > d->nsides] + sides_angle(d, j) + d->sides[j].angle / 2;
+			theta = d->middle[p > d->nsides] + ori_sides_angle(d, j) + d->sides[j].angle / 2;
 		}
 		lo->theta = theta;
 		lo->target = d->fold == ORI_FOLD_HALF ? d->size : d->size * (1.0 - theta / d->theta0);
@@ -753,7 +477,7 @@ void ori_leaf_finish(struct ori_leaf *l)
 	ori_leaf_init(l);
 }
 
-static int copy_out(struct builder *b, struct ori_leaf *l)
+static int copy_out(struct ori_builder *b, struct ori_leaf *l)
 {
 	struct iso rebase = iso_inverse(&b->fmap[b->root_face]);
 	double scale = 1.0;
@@ -830,11 +554,11 @@ static int copy_out(struct builder *b, struct ori_leaf *l)
 int ori_build(const struct ori_design *d, const char *name, struct ori_leaf *l,
 	      struct error *err)
 {
-	struct builder *b;
+	struct ori_builder *b;
 	int ret;
 
 	ori_leaf_init(l);
-	if ((ret = check_design(d, name, err)) < 0)
+	if ((ret = ori_check_design(d, name, err)) < 0)
 		return ret;
 	b = calloc(1, sizeof(*b));
 	if (!b)
@@ -846,7 +570,7 @@ int ori_build(const struct ori_design *d, const char *name, struct ori_leaf *l,
 	b->part_line = d->line;
 	ret = d->fold == ORI_FOLD_HALF ? walk_half(b) : walk_fan(b);
 	if (ret == 0)
-		ret = check_pattern(b);
+		ret = ori_check_pattern(b);
 	if (ret == 0)
 		ret = copy_out(b, l);
 	free(b);
