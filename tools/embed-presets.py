@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-# Writes a C file holding preset files (presets/*.yaml, presets/leaves/*.yaml) as strings,
-# so the kiosk's templates need no file at run time: gen_preset() reads them with
-# gen_read(), ori_preset() with ori_read().
+# Writes a C file holding preset files (presets/*.yaml, presets/leaves/*.yaml,
+# presets/vines/*.yaml) as strings, so the kiosk's templates need no file at run time:
+# gen_preset() reads them with gen_read(), ori_preset() with ori_read(), vine_preset() with
+# vine_read().
 # Usage: embed-presets.py [--prefix P --header H] OUT.c FILE.yaml...
 #   --prefix  the symbols' prefix: struct P_text, P_texts[], P_ntexts (gen_preset)
 #   --header  the header declaring them (gen_presets.h)
