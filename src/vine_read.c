@@ -77,48 +77,28 @@ static int fail(struct reader *r, const yaml_node_t *n, const char *fmt, ...)
 	return error_at(r->err, -EINVAL, r->name, line_of(r, n), "%s", msg);
 }
 
-/* The user's text in a message: cut short, anything unprintable as '?'. */
-static const char *shown(const char *s, char out[24])
-{
-	size_t i = 0;
-
-	for (; s[i] && i < 20; i++)
-		out[i] = (unsigned char)s[i] >= 0x20 && (unsigned char)s[i] < 0x7f ? s[i] : '?';
-	if (s[i]) {
-		out[i++] = '.';
-		out[i++] = '.';
-	}
-	out[i] = '\0';
-	return out;
-}
-
 /* What a value that is not the plain scalar asked for is, in a message. */
 static const char *got(const yaml_node_t *n)
 {
 	return n->type == YAML_SCALAR_NODE ? "a quoted string" : yaml_node_kind(n);
 }
 
+/* The user's text in a message (yaml_node_shown). */
+static const char *shown(const char *s, char out[24])
+{
+	return yaml_node_shown(s, out);
+}
+
 /* A decimal number: digits with an optional sign, point and exponent; finite. */
 static int get_number(struct reader *r, const yaml_node_t *n, const char *what, double *v)
 {
 	const char *s = yaml_node_text(n);
-	char buf[24], *end;
+	char buf[24];
 	double x;
 
 	if (!s || !yaml_node_plain(n))
 		return fail(r, n, "%s: expected a number, got %s", what, got(n));
-	{
-		const char *q = s + (*s == '-' || *s == '+');
-
-		if (!((*q >= '0' && *q <= '9') || (*q == '.' && q[1] >= '0' && q[1] <= '9')))
-			return fail(r, n, "%s: \"%s\" is not a number", what, shown(s, buf));
-		for (; *q; q++)
-			if (!strchr("0123456789.eE+-", *q))
-				return fail(r, n, "%s: \"%s\" is not a number", what, shown(s, buf));
-	}
-	errno = 0;
-	x = strtod(s, &end);
-	if (*end || !isfinite(x) || errno == ERANGE)
+	if (!yaml_node_number(s, &x))
 		return fail(r, n, "%s: \"%s\" is not a number", what, shown(s, buf));
 	*v = x;
 	return 0;
@@ -349,33 +329,8 @@ static int read_root(struct reader *r, yaml_parser_t *y, const char *data, size_
  */
 static int prescan(struct reader *r, const char *data, size_t len)
 {
-	yaml_parser_t y;
-	yaml_event_t ev;
-	int ret = 0, depth = 0;
-
-	if (!yaml_parser_initialize(&y))
-		return error_at(r->err, -ENOMEM, r->name, 0, "out of memory");
-	yaml_parser_set_input_string(&y, (const unsigned char *)data, len);
-	while (ret == 0 && yaml_parser_parse(&y, &ev)) {
-		yaml_event_type_t type = ev.type;
-		unsigned long line = yaml_node_line(&ev.start_mark, data, len);
-
-		if (type == YAML_ALIAS_EVENT)
-			ret = error_at(r->err, -EINVAL, r->name, line,
-				       "an alias (*name): vine parameter files do not use them");
-		else if ((type == YAML_MAPPING_START_EVENT || type == YAML_SEQUENCE_START_EVENT) &&
-			 ++depth > VINE_READ_MAX_DEPTH)
-			ret = error_at(r->err, -EINVAL, r->name, line,
-				       "nested more than %d deep: not a vine parameter file",
-				       VINE_READ_MAX_DEPTH);
-		else if (type == YAML_MAPPING_END_EVENT || type == YAML_SEQUENCE_END_EVENT)
-			depth--;
-		yaml_event_delete(&ev);
-		if (type == YAML_STREAM_END_EVENT)
-			break;
-	}
-	yaml_parser_delete(&y);
-	return ret;
+	return yaml_node_prescan(data, len, r->name, 0, VINE_READ_MAX_DEPTH, "vine parameter file",
+				 r->err);
 }
 
 int vine_read(const char *data, size_t len, const char *name, struct vine_params *p,

@@ -2,6 +2,8 @@
 #include "yaml_node.h"
 
 #include <errno.h>
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 const char *yaml_node_kind(const yaml_node_t *n)
@@ -85,4 +87,68 @@ int yaml_node_parse_error(struct error *err, const char *name, unsigned long off
 	return error_at(err, -EINVAL, name, line, "YAML error: %s%s%s",
 			y->problem ? y->problem : "error", y->context ? " " : "",
 			y->context ? y->context : "");
+}
+
+bool yaml_node_number(const char *s, double *out)
+{
+	const char *q = s + (*s == '-' || *s == '+');
+	char *end;
+	double x;
+
+	if (!((*q >= '0' && *q <= '9') || (*q == '.' && q[1] >= '0' && q[1] <= '9')))
+		return false;
+	for (; *q; q++)
+		if (!strchr("0123456789.eE+-", *q))
+			return false;
+	errno = 0;
+	x = strtod(s, &end);
+	if (*end || !isfinite(x) || errno == ERANGE)
+		return false;
+	*out = x;
+	return true;
+}
+
+const char *yaml_node_shown(const char *s, char out[24])
+{
+	size_t i = 0;
+
+	for (; s[i] && i < 20; i++)
+		out[i] = (unsigned char)s[i] >= 0x20 && (unsigned char)s[i] < 0x7f ? s[i] : '?';
+	if (s[i]) {
+		out[i++] = '.';
+		out[i++] = '.';
+	}
+	out[i] = '\0';
+	return out;
+}
+
+int yaml_node_prescan(const char *data, size_t len, const char *name, unsigned long offset,
+		      int max_depth, const char *what, struct error *err)
+{
+	yaml_parser_t y;
+	yaml_event_t ev;
+	int ret = 0, depth = 0;
+
+	if (!yaml_parser_initialize(&y))
+		return error_at(err, -ENOMEM, name, 0, "out of memory");
+	yaml_parser_set_input_string(&y, (const unsigned char *)data, len);
+	while (ret == 0 && yaml_parser_parse(&y, &ev)) {
+		yaml_event_type_t type = ev.type;
+		unsigned long line = yaml_node_line(&ev.start_mark, data, len) + offset;
+
+		if (type == YAML_ALIAS_EVENT)
+			ret = error_at(err, -EINVAL, name, line,
+				       "an alias (*name): %ss do not use them", what);
+		else if ((type == YAML_MAPPING_START_EVENT || type == YAML_SEQUENCE_START_EVENT) &&
+			 ++depth > max_depth)
+			ret = error_at(err, -EINVAL, name, line, "nested more than %d deep: not a %s",
+				       max_depth, what);
+		else if (type == YAML_MAPPING_END_EVENT || type == YAML_SEQUENCE_END_EVENT)
+			depth--;
+		yaml_event_delete(&ev);
+		if (type == YAML_STREAM_END_EVENT)
+			break;
+	}
+	yaml_parser_delete(&y);
+	return ret;
 }

@@ -13,6 +13,22 @@
  * and a parser's error told at FILE:LINE.
  */
 
+/* A plain scalar's text as a number, strictly: decimal digits with an optional sign,
+ * point and exponent (no hex, nan, inf, "1,5", nor leading point without a digit), finite
+ * and in range. false for anything else. */
+bool yaml_node_number(const char *s, double *out);
+/* The user's text for a message: its first 20 characters, ".." after, anything
+ * unprintable as '?'. Returns out. */
+const char *yaml_node_shown(const char *s, char out[24]);
+/*
+ * What no edaha file uses and what would cost the loader dearly, refused before it reads
+ * the data: aliases (an alias bomb) and nesting deeper than max_depth. `what` names the
+ * kind of file ("tree parameter file"). 0, or -EINVAL/-ENOMEM with err "NAME:LINE: ...",
+ * offset added to the line.
+ */
+int yaml_node_prescan(const char *data, size_t len, const char *name, unsigned long offset,
+		      int max_depth, const char *what, struct error *err);
+
 /* "a scalar", "a list", "a mapping": for messages. */
 const char *yaml_node_kind(const yaml_node_t *n);
 /* A scalar's text; NULL if n is no scalar or holds a NUL byte. */
