@@ -226,8 +226,8 @@ static void shape(const char *name, void (*make)(struct mesh *, size_t), struct 
 
 		make(&j.m, sizes[k]);
 		snprintf(row, sizeof(row), "%s build, triangles", name);
-		bench_row(row, (double)j.m.nt, bench_run(build, &j, sizes[k] > 10000 ? 11 : 31), &pb,
-			  &ptb);
+		bench_row(row, (double)j.m.nt, bench_run(build, &j, sizes[k] > 10000 ? 11 : 31),
+			  &pb, &ptb);
 		if (vine_support_create(j.m.pos, j.m.nv, j.m.idx, j.m.nt, &j.s) < 0)
 			exit(1);
 		for (int o = 0; o < 3; o++) {

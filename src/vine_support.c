@@ -211,7 +211,8 @@ static size_t sah_split(struct prim *p, size_t n, int axis, const struct box *cb
 		box_grow(&acc, bin[b].lo, bin[b].hi);
 		if (nleft == 0 || nleft == n)
 			continue;
-		cost = box_area(&acc) * (double)nleft + box_area(&right[b + 1]) * (double)nright[b + 1];
+		cost = box_area(&acc) * (double)nleft +
+		       box_area(&right[b + 1]) * (double)nright[b + 1];
 		if (cost < best) {
 			best = cost;
 			split = b;

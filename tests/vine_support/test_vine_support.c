@@ -247,7 +247,8 @@ static void random_mesh(struct mesh *m, struct rng *r, size_t n)
 			continue;
 		} else if (kind < 0.23) { /* a sliver */
 			a = vec3_add(c, vec3_scale(rnd_dir(r), size));
-			b = vec3_add(vec3_lerp(c, a, rng_uniform(r)), vec3_scale(rnd_dir(r), size * 1e-6));
+			b = vec3_add(vec3_lerp(c, a, rng_uniform(r)),
+				     vec3_scale(rnd_dir(r), size * 1e-6));
 			mesh_vertex(m, c);
 			mesh_vertex(m, a);
 			mesh_vertex(m, b);
@@ -329,8 +330,8 @@ static void test_random(size_t n, int meshes, int queries, uint64_t seed)
 
 				CHECK(vine_support_distance(s, p, d, NULL, NULL) >= d);
 				if (d > 0)
-					CHECK(vine_support_distance(s, p, nextafter(d, INFINITY), NULL,
-								    NULL) == d);
+					CHECK(vine_support_distance(s, p, nextafter(d, INFINITY),
+								    NULL, NULL) == d);
 			}
 			/* the same mesh built again answers the same, to the bit */
 			d1 = vine_support_distance(s, p, max, &q1, &t1);
@@ -359,7 +360,8 @@ static void cylinder(struct mesh *m, int sides, double radius, double h)
 	mesh_vertex(m, vec3(0, 0, 0));
 	mesh_vertex(m, vec3(0, h, 0));
 	for (int i = 0; i < sides; i++) {
-		size_t b0 = 2 * (size_t)i, t0 = b0 + 1, b1 = 2 * (size_t)((i + 1) % sides), t1 = b1 + 1;
+		size_t b0 = 2 * (size_t)i, t0 = b0 + 1;
+		size_t b1 = 2 * (size_t)((i + 1) % sides), t1 = b1 + 1;
 		size_t cb = 2 * (size_t)sides, ct = cb + 1;
 
 		mesh_triangle(m, b0, b1, t1);
@@ -417,7 +419,8 @@ static void test_pole(void)
 	/* a vine's path: a helix 0.5 to 40 mm off the pole, a few stem radii of max */
 	rng_seed(&rg, 16);
 	for (int i = 0; i < 2000; i++) {
-		double a = 0.05 * i, off = rng_range(&rg, 0.0005, 0.04), y = rng_range(&rg, -0.1, 1.1);
+		double a = 0.05 * i, off = rng_range(&rg, 0.0005, 0.04);
+		double y = rng_range(&rg, -0.1, 1.1);
 		struct vec3 p = vec3((r + off) * cos(a), y, (r + off) * sin(a));
 
 		check_query(s, &m, p, 0.008);
@@ -509,7 +512,8 @@ static void test_deep(void)
 	for (int i = 0; i < 2000; i++) {
 		size_t t = (size_t)(rng_uniform(&r) * (double)m.nt);
 		double x = vtx(&m, t, 0).x;
-		struct vec3 p = vec3_add(on_triangle(&m, &r, t), vec3_scale(rnd_dir(&r), x * rng_uniform(&r)));
+		struct vec3 p = vec3_add(on_triangle(&m, &r, t),
+					 vec3_scale(rnd_dir(&r), x * rng_uniform(&r)));
 
 		check_query(s, &m, p, i % 2 ? INFINITY : 0.5 * x);
 	}
