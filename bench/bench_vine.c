@@ -1,0 +1,146 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Twining vines (seed 004): the time to grow a vine of 100 and 1,000 internodes (d = 8,
+ * contact bisected to 0.01 r) around a pole tessellated into about 1k and 100k triangles,
+ * the support's index built in the time, then the smoothing, leaves and meshes. Prints
+ * medians and how each grows with the internodes and with the triangles.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench_util.h"
+#include "mesh.h"
+#include "vine.h"
+#include "vine_support.h"
+
+/* A pole of radius R, height h, `sides` around and `rows` along, capped. */
+struct pole {
+	float *p;
+	uint32_t *t;
+	size_t np, nt;
+};
+
+static void pole_make(struct pole *m, double R, double h, int sides, int rows)
+{
+	size_t nv = (size_t)sides * (size_t)(rows + 1) + 2, nt = 2 * (size_t)sides * (size_t)rows
+								 + 2 * (size_t)sides;
+
+	m->p = malloc(3 * nv * sizeof(*m->p));
+	m->t = malloc(3 * nt * sizeof(*m->t));
+	if (!m->p || !m->t)
+		exit(1);
+	m->np = m->nt = 0;
+	for (int j = 0; j <= rows; j++)
+		for (int i = 0; i < sides; i++) {
+			double a = 2 * VEC_PI * i / sides;
+			float *q = m->p + 3 * m->np++;
+
+			q[0] = (float)(R * cos(a));
+			q[1] = (float)(h * j / rows);
+			q[2] = (float)(R * sin(a));
+		}
+	for (int e = 0; e < 2; e++) {
+		float *q = m->p + 3 * m->np++;
+
+		q[0] = 0;
+		q[1] = (float)(e * h);
+		q[2] = 0;
+	}
+	for (int j = 0; j < rows; j++)
+		for (int i = 0; i < sides; i++) {
+			uint32_t a0 = (uint32_t)(j * sides + i), b0 = (uint32_t)(j * sides + (i + 1) % sides);
+			uint32_t a1 = a0 + (uint32_t)sides, b1 = b0 + (uint32_t)sides;
+			uint32_t tri[6] = { a0, b0, a1, a1, b0, b1 };
+
+			memcpy(m->t + 3 * m->nt, tri, sizeof(tri));
+			m->nt += 2;
+		}
+	for (int i = 0; i < sides; i++) {
+		uint32_t a = (uint32_t)i, b = (uint32_t)((i + 1) % sides);
+		uint32_t top = (uint32_t)(rows * sides), c0 = (uint32_t)(m->np - 2), c1 = c0 + 1;
+		uint32_t tri[6] = { c0, b, a, c1, top + a, top + b };
+
+		memcpy(m->t + 3 * m->nt, tri, sizeof(tri));
+		m->nt += 2;
+	}
+}
+
+struct job {
+	struct pole pole;
+	struct vine_params p;
+	struct mesh stem, leaves;
+};
+
+static void grow(void *arg)
+{
+	struct job *j = arg;
+	struct vine_support *s;
+	struct vine v;
+
+	if (vine_support_create(j->pole.p, j->pole.np, j->pole.t, j->pole.nt, &s) < 0)
+		exit(1);
+	vine_init(&v, &j->p, vec3(0.035, 0, 0));
+	if (vine_grow(&v, s, 1e12) < 0)
+		exit(1);
+	vine_finish(&v);
+	vine_support_destroy(s);
+}
+
+static void shape(void *arg)
+{
+	struct job *j = arg;
+	struct vine_support *s;
+	struct vine v;
+
+	if (vine_support_create(j->pole.p, j->pole.np, j->pole.t, j->pole.nt, &s) < 0)
+		exit(1);
+	vine_init(&v, &j->p, vec3(0.035, 0, 0));
+	if (vine_grow(&v, s, 1e12) < 0)
+		exit(1);
+	mesh_clear(&j->stem);
+	mesh_clear(&j->leaves);
+	if (vine_mesh_append(&v, &j->stem, &j->leaves) < 0)
+		exit(1);
+	vine_finish(&v);
+	vine_support_destroy(s);
+}
+
+int main(void)
+{
+	static const int internodes[] = { 100, 1000 };
+	/* 1k and 100k triangles: 16 x 31 and 200 x 250 quads, the pole tall enough for 1,000
+	 * internodes of climbing */
+	static const int tess[][2] = { { 16, 31 }, { 200, 250 } };
+
+	printf("bench_vine: a vine planted 15 mm from a pole (R = 20 mm, 70 m), d = 8, median "
+	       "ms; the support's index built each time\n");
+	for (size_t k = 0; k < 2; k++) {
+		double pn = 0, pt = 0;
+
+		for (size_t i = 0; i < 2; i++) {
+			struct job j;
+			char name[64];
+			double t;
+			int reps = internodes[i] > 100 || k ? 5 : 21;
+
+			memset(&j, 0, sizeof(j));
+			pole_make(&j.pole, 0.02, 70, tess[k][0], tess[k][1]);
+			vine_params_default(&j.p);
+			j.p.internodes = internodes[i];
+			mesh_init(&j.stem);
+			mesh_init(&j.leaves);
+			t = bench_run(grow, &j, reps);
+			snprintf(name, sizeof(name), "grow, %zu triangles, internodes", j.pole.nt);
+			bench_row(name, internodes[i], t, &pn, &pt);
+			t = bench_run(shape, &j, reps);
+			printf("  + smoothing, leaves and meshes: %.3f ms (%zu + %zu triangles)\n", 1e3 * t,
+			       j.stem.nindices / 3, j.leaves.nindices / 3);
+			mesh_finish(&j.stem);
+			mesh_finish(&j.leaves);
+			free(j.pole.p);
+			free(j.pole.t);
+		}
+	}
+	return 0;
+}
