@@ -1,0 +1,223 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * A twining vine's shapes (seed 004, Kasakura 3.3; docs/vines.md): the smoothed axes, the
+ * leaves and the meshes, all drawn from the raw axes vine_grow.c made, which they never
+ * change.
+ *
+ * Smoothing (3.3.1): where the azimuth of consecutive directions jumps by 45 degrees or
+ * more (the rod re-pivoting, a turn to clear the support), the points within d/2 of the
+ * jump become a cubic Hermite spline between the span's ends, the raw directions there as
+ * tangents. The free parts (the main axis's first, non-twining internodes with the
+ * cotyledon node; a stopped apex's last 2d points), straight and vertical or circling in
+ * the air, are bent by horizontal cubic Bezier offsets within +-5 l/d, drawn from the seed.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mesh.h"
+#include "rng.h"
+#include "vine.h"
+
+/* The azimuth jump that is smoothed over. */
+#define VINE_SMOOTH_JUMP_DEG 45.0
+/* A direction this close to vertical (horizontal length over length) has no azimuth. */
+#define VINE_VERTICAL_EPS 1e-9
+/* The Bezier offsets' reach, in segments (l/d). */
+#define VINE_BEND_SEGMENTS 5.0
+/* The tip's cone is this many radii long. */
+#define VINE_TIP_LENGTH 1.0
+
+static size_t points_per_internode(const struct vine *v)
+{
+	return v->p.points_per_internode > 0 ? (size_t)v->p.points_per_internode : 1;
+}
+
+/* The azimuth of e, about +y counter-clockwise seen from above; false when e is vertical. */
+static bool azimuth(struct vec3 e, double *az)
+{
+	double h = hypot(e.x, e.z);
+
+	if (!(h > VINE_VERTICAL_EPS * vec3_len(e)))
+		return false;
+	*az = atan2(-e.z, e.x);
+	return true;
+}
+
+/* Does the azimuth jump at point i (between directions i - 1 and i)? */
+static bool jumps(const struct vec3 *a, size_t i)
+{
+	double a0, a1, da;
+
+	if (!azimuth(vec3_sub(a[i], a[i - 1]), &a0) || !azimuth(vec3_sub(a[i + 1], a[i]), &a1))
+		return false; /* straight up or down: no azimuth to jump from or to */
+	da = remainder(a1 - a0, 2.0 * VEC_PI); /* wrapped: 350 -> 10 degrees is 20 */
+	return fabs(da) >= VINE_SMOOTH_JUMP_DEG * VEC_PI / 180.0 - 1e-12;
+}
+
+/* The raw span [lo, hi] as a cubic Hermite spline between its ends, written to out. */
+static void hermite(const struct vec3 *a, struct vec3 *out, size_t lo, size_t hi)
+{
+	double len = 0;
+	struct vec3 m0, m1;
+
+	for (size_t j = lo; j < hi; j++)
+		len += vec3_dist(a[j], a[j + 1]);
+	/* tangents as long as the span, so the curve runs at about the points' pace */
+	m0 = vec3_scale(vec3_norm_or(vec3_sub(a[lo + 1], a[lo]), vec3(0, 1, 0)), len);
+	m1 = vec3_scale(vec3_norm_or(vec3_sub(a[hi], a[hi - 1]), vec3(0, 1, 0)), len);
+	for (size_t j = lo + 1; j < hi; j++) {
+		double u = (double)(j - lo) / (double)(hi - lo), u2 = u * u, u3 = u2 * u;
+		double h00 = 2 * u3 - 3 * u2 + 1, h10 = u3 - 2 * u2 + u;
+		double h01 = -2 * u3 + 3 * u2, h11 = u3 - u2;
+
+		out[j] = vec3_add(vec3_add(vec3_scale(a[lo], h00), vec3_scale(m0, h10)),
+				  vec3_add(vec3_scale(a[hi], h01), vec3_scale(m1, h11)));
+	}
+}
+
+/*
+ * Every jump's span [i - d/2, i + d/2] (clamped to the shoot) smoothed; spans that
+ * overlap are merged into one, so the result does not depend on the order they are met in.
+ */
+static void smooth_jumps(const struct vine *v, const struct vine_shoot *sh, struct vec3 *out)
+{
+	size_t half = points_per_internode(v) / 2, lo = 0, hi = 0;
+	bool open = false;
+
+	if (half == 0 || sh->n < 3)
+		return;
+	for (size_t i = 1; i + 1 < sh->n; i++) {
+		size_t a, b;
+
+		if (!jumps(sh->axis, i))
+			continue;
+		a = i > half ? i - half : 0;
+		b = i + half < sh->n - 1 ? i + half : sh->n - 1;
+		if (open && a < hi) {
+			hi = b;
+			continue;
+		}
+		if (open && hi - lo >= 2)
+			hermite(sh->axis, out, lo, hi);
+		lo = a;
+		hi = b;
+		open = true;
+	}
+	if (open && hi - lo >= 2)
+		hermite(sh->axis, out, lo, hi);
+}
+
+/*
+ * Part `part` of shoot `shoot`, points [lo, hi], bent by the horizontal cubic Bezier offset
+ * with control offsets (0, c1, c2, c3), u = (i - lo) / (hi - lo); c3 is 0 unless the part
+ * ends free (a stopped apex's tip). The controls come from the seed and the indices alone.
+ */
+static void bend(const struct vine *v, size_t shoot, uint64_t part, size_t lo, size_t hi,
+		 bool free_end, struct vec3 *out)
+{
+	double reach = VINE_BEND_SEGMENTS * v->p.internode / (double)points_per_internode(v);
+	struct vec3 c[3];
+	struct rng r;
+
+	if (hi <= lo)
+		return;
+	rng_seed(&r, v->p.seed ^ ((uint64_t)shoot * 0x9E3779B97F4A7C15ULL) ^ part);
+	/* always six draws, so c1 and c2 are the same whether or not c3 is used */
+	for (int k = 0; k < 3; k++) {
+		double x = rng_range(&r, -reach, reach), z = rng_range(&r, -reach, reach);
+
+		c[k] = vec3(x, 0, z);
+	}
+	if (!free_end)
+		c[2] = vec3(0, 0, 0);
+	for (size_t i = lo + 1; i <= hi; i++) {
+		double u = (double)(i - lo) / (double)(hi - lo), t = 1 - u;
+		double b1 = 3 * t * t * u, b2 = 3 * t * u * u, b3 = u * u * u;
+
+		/* y untouched: the offset is horizontal, the height the growth gave stays */
+		out[i].x += b1 * c[0].x + b2 * c[1].x + b3 * c[2].x;
+		out[i].z += b1 * c[0].z + b2 * c[1].z + b3 * c[2].z;
+	}
+}
+
+/* The free parts bent: [0, free_until] (the cotyledon node and the non-twining internodes,
+ * as one part: both start at the root), and a stopped apex's last 2d points. */
+static void bend_free(const struct vine *v, size_t shoot, struct vec3 *out)
+{
+	const struct vine_shoot *sh = &v->shoots[shoot];
+	size_t d = points_per_internode(v), last = sh->n - 1;
+	size_t fe = sh->free_until < last ? sh->free_until : last, tip;
+
+	/* the non-twining part ends where twining starts (kept in place), or at the tip */
+	bend(v, shoot, 0, 0, fe, sh->stopped && fe == last, out);
+	if (!sh->stopped)
+		return;
+	tip = last > 2 * d ? last - 2 * d : 0;
+	if (tip < fe)
+		tip = fe; /* the two parts never overlap */
+	bend(v, shoot, 1, tip, last, true, out);
+}
+
+/*
+ * A shoot's smoothed axis into out (sh->n points). parent: the parent's smoothed axis, or
+ * NULL: a lateral's root moves with its parent's node point (the parent's bend or spline
+ * may have moved it), the move fading out over its first internode, so the lateral still
+ * starts on its parent.
+ */
+static void smooth_shoot(const struct vine *v, size_t shoot, const struct vec3 *parent,
+			 struct vec3 *out)
+{
+	const struct vine_shoot *sh = &v->shoots[shoot];
+	size_t d = points_per_internode(v);
+
+	memcpy(out, sh->axis, sh->n * sizeof(*out));
+	if (sh->n >= 2) {
+		smooth_jumps(v, sh, out);
+		bend_free(v, shoot, out);
+	}
+	if (parent && sh->n > 0 && sh->node >= 0) {
+		size_t at = (size_t)sh->node * d;
+		const struct vine_shoot *ps = &v->shoots[sh->parent];
+		struct vec3 moved;
+
+		if (at >= ps->n)
+			return;
+		moved = vec3_sub(parent[at], ps->axis[at]);
+		/* the root exactly on the parent's point (it is the raw one, never moved itself) */
+		out[0] = vec3_add(parent[at], vec3_sub(out[0], ps->axis[at]));
+		for (size_t i = 1; i < sh->n && i < d; i++)
+			out[i] = vec3_add(out[i], vec3_scale(moved, 1.0 - (double)i / (double)d));
+	}
+}
+
+/* Has shoot a parent smoothed before it? (vine_grow.c's laterals: always shoot 0.) */
+static bool has_parent(const struct vine *v, size_t shoot)
+{
+	int p = v->shoots[shoot].parent;
+
+	return p >= 0 && (size_t)p < shoot;
+}
+
+int vine_smooth(const struct vine *v, size_t shoot, struct vec3 **out)
+{
+	const struct vine_shoot *sh = &v->shoots[shoot];
+	struct vec3 *a, *pa = NULL;
+
+	a = malloc((sh->n ? sh->n : 1) * sizeof(*a));
+	if (!a)
+		return -ENOMEM;
+	if (has_parent(v, shoot)) {
+		int ret = vine_smooth(v, (size_t)sh->parent, &pa);
+
+		if (ret < 0) {
+			free(a);
+			return ret;
+		}
+	}
+	smooth_shoot(v, shoot, pa, a);
+	free(pa);
+	*out = a;
+	return 0;
+}

@@ -1,0 +1,264 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * A twining vine's shapes (issue 16, docs/vines.md "Shapes"): the smoothing on axes made
+ * here (a 90-degree turn smoothed over +-d/2, a 350 -> 10 degree wrap and a 30-degree turn
+ * left alone), the seeded Bezier bends of the free parts (horizontal, within 5 l/d, the
+ * same for the same seed, the raw axis never changed), a lateral's root on its parent.
+ */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fail_alloc.h"
+#include "mesh.h"
+#include "test.h"
+#include "vine.h"
+#include "vine_support.h"
+
+#define DEG (VEC_PI / 180.0)
+
+/* A vine made by hand: the default parameters, no shoot yet. */
+static void vine_blank(struct vine *v)
+{
+	memset(v, 0, sizeof(*v));
+	vine_params_default(&v->p);
+	v->active = -1;
+}
+
+/* A shoot of n points appended to v (its arrays the vine's, freed by vine_finish). */
+static struct vine_shoot *add(struct vine *v, int parent, int node, const struct vec3 *pts,
+			      size_t n, size_t free_until, bool stopped)
+{
+	struct vine_shoot *sh;
+
+	v->shoots = realloc(v->shoots, (v->nshoots + 1) * sizeof(*v->shoots));
+	CHECK(v->shoots);
+	sh = &v->shoots[v->nshoots++];
+	v->cap = v->nshoots;
+	memset(sh, 0, sizeof(*sh));
+	sh->parent = parent;
+	sh->node = node;
+	sh->axis = malloc(n * sizeof(*sh->axis));
+	sh->contact = calloc(n, 1);
+	CHECK(sh->axis && sh->contact);
+	memcpy(sh->axis, pts, n * sizeof(*pts));
+	sh->n = sh->cap = n;
+	sh->free_until = free_until;
+	sh->stopped = stopped;
+	return sh;
+}
+
+/* A segment of length s leaning `lean` from the vertical at azimuth az (radians). */
+static struct vec3 dir(double s, double lean, double az)
+{
+	return vec3(s * sin(lean) * cos(az), s * cos(lean), -s * sin(lean) * sin(az));
+}
+
+/* n0 segments at azimuth az0 from the origin, then n1 at az1 (degrees), leaning 70. */
+static size_t turn_axis(struct vec3 *p, double s, size_t n0, double az0, size_t n1, double az1)
+{
+	size_t n = 0;
+
+	p[n++] = vec3(0.1, 0, 0.2);
+	for (size_t i = 0; i < n0 + n1; i++, n++)
+		p[n] = vec3_add(p[n - 1], dir(s, 70 * DEG, (i < n0 ? az0 : az1) * DEG));
+	return n;
+}
+
+static bool same(struct vec3 a, struct vec3 b)
+{
+	return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+
+/* Smoothing: a 90-degree turn at point 10 changes points 7..13 (d = 8), nothing else; a
+ * 350 -> 10 (or 170 -> -170) wrap is 20 degrees and a 30-degree turn too little. */
+static void test_smooth_turns(void)
+{
+	struct vec3 p[64], *out;
+	struct vine v;
+	size_t d, n, changed = 0;
+	double s;
+
+	vine_blank(&v);
+	d = (size_t)v.p.points_per_internode;
+	s = v.p.internode / (double)d;
+	n = turn_axis(p, s, 10, 0, 10, 90);
+	add(&v, -1, 0, p, n, 0, false);
+	CHECK_INT(vine_smooth(&v, 0, &out), 0);
+	for (size_t i = 0; i < n; i++) {
+		CHECK(same(v.shoots[0].axis[i], p[i])); /* the raw axis as it was */
+		if (i > 10 - d / 2 && i < 10 + d / 2) {
+			CHECK(!same(out[i], p[i]));
+			CHECK(vec3_dist(out[i], p[i]) < 2 * s);
+			changed++;
+		} else {
+			CHECK(same(out[i], p[i])); /* the span's ends and everything beyond */
+		}
+	}
+	CHECK_INT(changed, d - 1);
+	/* the spline turns gradually: no azimuth jump of 45 degrees is left in the span */
+	for (size_t i = 10 - d / 2 + 1; i < 10 + d / 2; i++) {
+		struct vec3 a = vec3_sub(out[i], out[i - 1]), b = vec3_sub(out[i + 1], out[i]);
+		double da = remainder(atan2(-b.z, b.x) - atan2(-a.z, a.x), 2 * VEC_PI);
+
+		CHECK(fabs(da) < 45 * DEG);
+	}
+	free(out);
+	vine_finish(&v);
+
+	/* at the ends of the shoot: the span clamped to it */
+	vine_blank(&v);
+	n = turn_axis(p, s, 2, 0, 2, -90);
+	add(&v, -1, 0, p, n, 0, false);
+	CHECK_INT(vine_smooth(&v, 0, &out), 0);
+	CHECK(same(out[0], p[0]) && same(out[n - 1], p[n - 1]));
+	for (size_t i = 1; i + 1 < n; i++)
+		CHECK(!same(out[i], p[i]));
+	free(out);
+	vine_finish(&v);
+
+	/* no smoothing: a wrap through 180 or 0 degrees that is a small turn, a 30-degree turn;
+	 * a 50-degree one is smoothed, either way round */
+	{
+		const double turns[][2] = { { 350, 10 }, { 10, 350 }, { 170, -170 }, { -170, 170 },
+					    { 0, 30 }, { 100, 70 }, { 0, 50 }, { 355, -55 } };
+
+		for (size_t t = 0; t < sizeof(turns) / sizeof(turns[0]); t++) {
+			bool smoothed = t >= 6;
+
+			vine_blank(&v);
+			n = turn_axis(p, s, 10, turns[t][0], 10, turns[t][1]);
+			add(&v, -1, 0, p, n, 0, false);
+			CHECK_INT(vine_smooth(&v, 0, &out), 0);
+			CHECK(smoothed == (memcmp(out, p, n * sizeof(*p)) != 0));
+			free(out);
+			vine_finish(&v);
+		}
+	}
+}
+
+/* A shoot straight up for 2d points, then circling 5 degrees a point (no jumps). */
+static size_t free_axis(struct vec3 *p, double s, size_t up, size_t around)
+{
+	size_t n = 0;
+
+	p[n++] = vec3(0.3, 0.01, -0.1);
+	for (size_t i = 0; i < up; i++, n++)
+		p[n] = vec3_add(p[n - 1], vec3(0, s, 0));
+	for (size_t i = 0; i < around; i++, n++)
+		p[n] = vec3_add(p[n - 1], dir(s, 18 * DEG, (double)i * 5 * DEG));
+	return n;
+}
+
+/* Point i of out moved from raw only horizontally, by at most 5 l/d each way. */
+static bool bent(struct vec3 o, struct vec3 r, double reach)
+{
+	CHECK(o.y == r.y);
+	CHECK(fabs(o.x - r.x) <= reach && fabs(o.z - r.z) <= reach);
+	return o.x != r.x || o.z != r.z;
+}
+
+/* The free parts' bends: horizontal, within 5 l/d, fixed where twining starts, the same
+ * for the same seed (bit for bit), other bends for another, the raw axis never changed. */
+static void test_bends(void)
+{
+	struct vec3 p[64], raw[64], *a, *b, *c, *e;
+	struct vine v;
+	size_t d, n, fu, moved = 0;
+	double s, reach;
+
+	vine_blank(&v);
+	d = (size_t)v.p.points_per_internode;
+	s = v.p.internode / (double)d;
+	reach = 5 * s;
+	fu = 2 * d;
+	n = free_axis(p, s, fu, 24);
+	memcpy(raw, p, n * sizeof(*p));
+	add(&v, -1, 0, p, n, fu, false);
+	CHECK_INT(vine_smooth(&v, 0, &a), 0);
+	CHECK(same(a[0], p[0]) && same(a[fu], p[fu]));
+	for (size_t i = 1; i < fu; i++)
+		moved += bent(a[i], p[i], reach);
+	CHECK_INT(moved, fu - 1);
+	for (size_t i = fu; i < n; i++)
+		CHECK(same(a[i], p[i])); /* the twining points untouched */
+	CHECK_INT(vine_smooth(&v, 0, &b), 0);
+	CHECK(memcmp(a, b, n * sizeof(*a)) == 0);
+	v.p.seed = 2;
+	CHECK_INT(vine_smooth(&v, 0, &c), 0);
+	CHECK(memcmp(v.shoots[0].axis, raw, n * sizeof(*raw)) == 0);
+	moved = 0;
+	for (size_t i = 1; i < fu; i++) {
+		bent(c[i], p[i], reach);
+		moved += !same(c[i], a[i]);
+	}
+	CHECK_INT(moved, fu - 1);
+	for (size_t i = fu; i < n; i++)
+		CHECK(same(c[i], p[i]));
+	free(b);
+	free(c);
+
+	/* stopped: the last 2d points bent too, the tip free; the first part as it was */
+	v.p.seed = 1;
+	v.shoots[0].stopped = true;
+	CHECK_INT(vine_smooth(&v, 0, &e), 0);
+	CHECK(memcmp(e, a, (fu + 1) * sizeof(*a)) == 0);
+	for (size_t i = fu; i < n - 1 - 2 * d; i++)
+		CHECK(same(e[i], p[i]));
+	moved = 0;
+	CHECK(same(e[n - 1 - 2 * d], p[n - 1 - 2 * d]));
+	for (size_t i = n - 2 * d; i < n; i++)
+		moved += bent(e[i], p[i], reach);
+	CHECK_INT(moved, 2 * d);
+	CHECK(!same(e[n - 1], p[n - 1]));
+	free(a);
+	free(e);
+
+	/* a stopped shoot that never twined: one part, root to the tip */
+	vine_finish(&v);
+	vine_blank(&v);
+	n = free_axis(p, s, 12, 0);
+	add(&v, -1, 0, p, n, 20, true);
+	CHECK_INT(vine_smooth(&v, 0, &a), 0);
+	CHECK(same(a[0], p[0]));
+	for (size_t i = 1; i < n; i++)
+		CHECK(bent(a[i], p[i], reach));
+	free(a);
+	vine_finish(&v);
+}
+
+/* A lateral starts on its parent's smoothed node point, however that moved. */
+static void test_lateral_root(void)
+{
+	struct vec3 p[64], q[16], *pa, *la;
+	struct vine v;
+	size_t d, n;
+	double s;
+
+	vine_blank(&v);
+	d = (size_t)v.p.points_per_internode;
+	s = v.p.internode / (double)d;
+	n = free_axis(p, s, 24, 0);
+	add(&v, -1, 0, p, n, 0, true); /* node 2 in the stopped tip's bend */
+	q[0] = p[2 * d];
+	for (size_t i = 1; i <= d; i++)
+		q[i] = vec3_add(q[i - 1], vec3(s, 0, 0));
+	add(&v, 0, 2, q, d + 1, 0, false);
+	CHECK_INT(vine_smooth(&v, 0, &pa), 0);
+	CHECK_INT(vine_smooth(&v, 1, &la), 0);
+	CHECK(!same(pa[2 * d], p[2 * d]));
+	CHECK(same(la[0], pa[2 * d]));
+	CHECK(same(la[d], q[d])); /* the move fades out over the first internode */
+	free(pa);
+	free(la);
+	vine_finish(&v);
+}
+
+int main(void)
+{
+	test_smooth_turns();
+	test_bends();
+	test_lateral_root();
+	printf("ok\n");
+	return 0;
+}
