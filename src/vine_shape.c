@@ -221,3 +221,170 @@ int vine_smooth(const struct vine *v, size_t shoot, struct vec3 **out)
 	*out = a;
 	return 0;
 }
+
+/* Every shoot's smoothed axis, in order (a parent before its laterals). 0 or -ENOMEM. */
+static int smooth_all(const struct vine *v, struct vec3 ***out)
+{
+	struct vec3 **axes = calloc(v->nshoots ? v->nshoots : 1, sizeof(*axes));
+
+	if (!axes)
+		return -ENOMEM;
+	for (size_t k = 0; k < v->nshoots; k++) {
+		const struct vine_shoot *sh = &v->shoots[k];
+
+		axes[k] = malloc((sh->n ? sh->n : 1) * sizeof(**axes));
+		if (!axes[k]) {
+			for (size_t j = 0; j < k; j++)
+				free(axes[j]);
+			free(axes);
+			return -ENOMEM;
+		}
+		smooth_shoot(v, k, has_parent(v, k) ? axes[sh->parent] : NULL, axes[k]);
+	}
+	*out = axes;
+	return 0;
+}
+
+static void free_all(const struct vine *v, struct vec3 **axes)
+{
+	if (!axes)
+		return;
+	for (size_t k = 0; k < v->nshoots; k++)
+		free(axes[k]);
+	free(axes);
+}
+
+/* The unit tangent of a polyline at point i: the mean of the directions in and out. */
+static struct vec3 tangent(const struct vec3 *p, size_t n, size_t i)
+{
+	struct vec3 in = i > 0 ? vec3_sub(p[i], p[i - 1]) : vec3_sub(p[1], p[0]);
+	struct vec3 out = i + 1 < n ? vec3_sub(p[i + 1], p[i]) : in;
+	struct vec3 din = vec3_norm_or(in, vec3(0, 1, 0)), dout = vec3_norm_or(out, din);
+
+	/* a hairpin averages to nothing: the way out then */
+	return vec3_norm_or(vec3_add(din, dout), dout);
+}
+
+/* u turned by angle a about unit t (u perpendicular to t). */
+static struct vec3 turn(struct vec3 u, struct vec3 t, double a)
+{
+	return vec3_add(vec3_scale(u, cos(a)), vec3_scale(vec3_cross(t, u), sin(a)));
+}
+
+/* Leaves carried at node k of shoot s, before the buds take theirs; *cot when cotyledons. */
+static int node_leaves(const struct vine *v, size_t s, size_t k, bool *cot)
+{
+	*cot = v->shoots[s].parent < 0 && k == 1 && v->p.cotyledons > 0;
+	if (*cot)
+		return v->p.cotyledons;
+	return v->p.leaves_per_node > 0 ? v->p.leaves_per_node : 0;
+}
+
+/*
+ * The phyllotaxis angle of leaf j of node k (about the stem, from T x up): alternate,
+ * each node's leaf half a turn from the last; opposite pairs a quarter turn from the last
+ * pair (decussate); the cotyledons a pair, or one.
+ */
+static double leaf_angle(const struct vine *v, size_t k, int j, bool cot)
+{
+	if (cot)
+		return VEC_PI * j;
+	if (v->p.leaves_per_node >= 2)
+		return 0.5 * VEC_PI * (double)(k % 4) + VEC_PI * j;
+	return VEC_PI * (double)(k % 2);
+}
+
+/* The reference direction at a node: T x up, or x when T is vertical. */
+static struct vec3 leaf_ref(struct vec3 t)
+{
+	return vec3_norm_or(vec3_cross(t, vec3(0, 1, 0)), vec3(1, 0, 0));
+}
+
+/*
+ * The leaves of node k of shoot s, on its smoothed axis a, appended to out (room for
+ * them made already). A bud takes the leaf nearest the way its lateral starts out.
+ */
+static size_t node_build(const struct vine *v, size_t s, size_t k, const struct vec3 *a,
+			 struct vine_leaf *out)
+{
+	const struct vine_shoot *sh = &v->shoots[s];
+	size_t d = points_per_internode(v), at = k * d, made = 0;
+	double g = v->p.leaf_size;
+	bool cot, gone[64] = { false };
+	int count = node_leaves(v, s, k, &cot);
+	struct vec3 t = tangent(a, sh->n, at), ref = leaf_ref(t), o[64];
+
+	if (count > 64)
+		count = 64; /* vine_params_check keeps it to 2 */
+	for (int j = 0; j < count; j++)
+		o[j] = turn(ref, t, leaf_angle(v, k, j, cot));
+	if (!cot) {
+		for (size_t j = 0; j < v->nshoots; j++) {
+			const struct vine_shoot *ls = &v->shoots[j];
+			struct vec3 go;
+			int best = -1;
+
+			if (ls->parent != (int)s || ls->node < 0 || (size_t)ls->node != k)
+				continue;
+			go = ls->n > 1 ? vec3_sub(ls->axis[1], ls->axis[0]) : ref;
+			for (int i = 0; i < count; i++)
+				if (!gone[i] && (best < 0 || vec3_dot(o[i], go) > vec3_dot(o[best], go)))
+					best = i;
+			if (best >= 0)
+				gone[best] = true;
+		}
+	}
+	for (int j = 0; j < count; j++) {
+		struct vine_leaf *l;
+		struct vec3 p = a[at], w;
+
+		if (gone[j])
+			continue;
+		l = &out[made++];
+		w = vec3_norm_or(vec3_cross(t, o[j]), ref);
+		l->shoot = s;
+		l->node = k;
+		l->cotyledon = cot;
+		l->p[0] = p;
+		l->p[1] = vec3_add(p, vec3_scale(vec3_add(o[j], w), g));
+		l->p[2] = vec3_add(p, vec3_scale(o[j], 2 * g));
+		l->p[3] = vec3_add(p, vec3_scale(vec3_sub(o[j], w), g));
+	}
+	return made;
+}
+
+/* Every leaf on the smoothed axes; *out allocated. 0 or -ENOMEM. */
+static int leaves_on(const struct vine *v, struct vec3 *const *axes, struct vine_leaf **out,
+		     size_t *n)
+{
+	size_t total = 0, made = 0;
+	struct vine_leaf *l;
+
+	for (size_t s = 0; s < v->nshoots; s++)
+		for (size_t k = 1; k <= vine_shoot_nodes(v, s); k++) {
+			bool cot;
+
+			total += (size_t)node_leaves(v, s, k, &cot);
+		}
+	l = malloc((total ? total : 1) * sizeof(*l));
+	if (!l)
+		return -ENOMEM;
+	for (size_t s = 0; s < v->nshoots; s++)
+		for (size_t k = 1; k <= vine_shoot_nodes(v, s); k++)
+			made += node_build(v, s, k, axes[s], l + made);
+	*out = l;
+	*n = made;
+	return 0;
+}
+
+int vine_leaves(const struct vine *v, struct vine_leaf **out, size_t *n)
+{
+	struct vec3 **axes;
+	int ret = smooth_all(v, &axes);
+
+	if (ret < 0)
+		return ret;
+	ret = leaves_on(v, axes, out, n);
+	free_all(v, axes);
+	return ret;
+}

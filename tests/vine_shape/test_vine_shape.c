@@ -3,7 +3,8 @@
  * A twining vine's shapes (issue 16, docs/vines.md "Shapes"): the smoothing on axes made
  * here (a 90-degree turn smoothed over +-d/2, a 350 -> 10 degree wrap and a 30-degree turn
  * left alone), the seeded Bezier bends of the free parts (horizontal, within 5 l/d, the
- * same for the same seed, the raw axis never changed), a lateral's root on its parent.
+ * same for the same seed, the raw axis never changed), a lateral's root on its parent, the
+ * leaves (counts per node, buds, alternate and decussate, squares).
  */
 #include <errno.h>
 #include <stdlib.h>
@@ -254,11 +255,125 @@ static void test_lateral_root(void)
 	vine_finish(&v);
 }
 
+/* Leaves a node should carry: cotyledons at the main axis's node 1, else leaves_per_node
+ * less the laterals grown from it. */
+static int expected_leaves(const struct vine *v, size_t s, size_t k)
+{
+	int buds = 0, n;
+
+	if (v->shoots[s].parent < 0 && k == 1 && v->p.cotyledons > 0)
+		return v->p.cotyledons;
+	for (size_t j = 0; j < v->nshoots; j++)
+		buds += v->shoots[j].parent == (int)s && v->shoots[j].node == (int)k;
+	n = v->p.leaves_per_node - buds;
+	return n > 0 ? n : 0;
+}
+
+/* A leaf is a square of half-diagonal g, its first corner at the node, across the stem. */
+static struct vec3 check_square(const struct vine_leaf *l, struct vec3 node, struct vec3 t,
+				double g)
+{
+	struct vec3 d0 = vec3_sub(l->p[2], l->p[0]), d1 = vec3_sub(l->p[3], l->p[1]);
+	struct vec3 f = vec3_cross(vec3_sub(l->p[1], l->p[0]), vec3_sub(l->p[2], l->p[0]));
+
+	CHECK(same(l->p[0], node));
+	CHECK_NEAR(vec3_len(d0), 2 * g, 1e-12);
+	CHECK_NEAR(vec3_len(d1), 2 * g, 1e-12);
+	CHECK_NEAR(vec3_dot(d0, d1), 0, 1e-15);
+	CHECK(vec3_dist(vec3_lerp(l->p[0], l->p[2], 0.5), vec3_lerp(l->p[1], l->p[3], 0.5)) < 1e-12);
+	for (int i = 0; i < 4; i++)
+		CHECK_NEAR(vec3_dist(l->p[i], l->p[(i + 1) % 4]), sqrt(2) * g, 1e-12);
+	CHECK_NEAR(vec3_dot(d0, t), 0, 1e-12);
+	CHECK_NEAR(vec3_dot(d1, t), 0, 1e-12);
+	/* counter-clockwise seen from the front, both triangles */
+	CHECK(vec3_dot(f, vec3_cross(d0, d1)) > 0);
+	return vec3_scale(d0, 1 / (2 * g));
+}
+
+/* A main axis straight up 4 internodes, a lateral from node 3 going +z. */
+static void leaf_vine(struct vine *v, int per_node, int cotyledons)
+{
+	struct vec3 p[64], q[16];
+	size_t d, n;
+	double s;
+
+	vine_blank(v);
+	v->p.leaves_per_node = per_node;
+	v->p.cotyledons = cotyledons;
+	d = (size_t)v->p.points_per_internode;
+	s = v->p.internode / (double)d;
+	n = free_axis(p, s, 4 * d, 0);
+	add(v, -1, 0, p, n, 0, false);
+	q[0] = p[3 * d];
+	for (size_t i = 1; i <= d; i++)
+		q[i] = vec3_add(q[i - 1], dir(s, 60 * DEG, -90 * DEG));
+	add(v, 0, 3, q, d + 1, 0, false);
+}
+
+static void test_leaves(void)
+{
+	for (int per = 0; per <= 2; per++)
+		for (int cot = 0; cot <= 2; cot++) {
+			struct vine v;
+			struct vine_leaf *l;
+			struct vec3 o[8][2];
+			size_t nl, i = 0, total = 0, d;
+			double g;
+
+			leaf_vine(&v, per, cot);
+			d = (size_t)v.p.points_per_internode;
+			g = v.p.leaf_size;
+			CHECK_INT(vine_leaves(&v, &l, &nl), 0);
+			for (size_t s = 0; s < v.nshoots; s++)
+				for (size_t k = 1; k <= vine_shoot_nodes(&v, s); k++) {
+					int want = expected_leaves(&v, s, k), j = 0;
+					struct vec3 t = vec3_norm_or(vec3_sub(v.shoots[s].axis[1],
+									      v.shoots[s].axis[0]),
+								     vec3(0, 1, 0));
+
+					total += (size_t)want;
+					for (; i < nl && l[i].shoot == s && l[i].node == k; i++, j++) {
+						struct vec3 out;
+
+						CHECK(l[i].cotyledon == (s == 0 && k == 1 && cot > 0));
+						out = check_square(&l[i], v.shoots[s].axis[k * d], t, g);
+						if (s == 0)
+							o[k][j % 2] = out;
+					}
+					CHECK_INT(j, want);
+					if (s == 0 && want == 2) /* a pair: opposite */
+						CHECK_NEAR(vec3_dot(o[k][0], o[k][1]), -1, 1e-12);
+				}
+			CHECK_INT(i, nl);
+			CHECK_INT(nl, total);
+			/* 1 and 2 cotyledons, 1 or 2 leaves a node, one less at node 3 (its bud) */
+			CHECK_INT(nl, (cot ? cot : per) + per + (per ? per - 1 : 0) + per + per);
+			if (per == 1) {
+				/* alternate: each node's leaf half a turn from the last */
+				if (cot == 0)
+					CHECK_NEAR(vec3_dot(o[1][0], o[2][0]), -1, 1e-12);
+				CHECK_NEAR(vec3_dot(o[2][0], o[4][0]), 1, 1e-12);
+			}
+			if (per == 2) {
+				/* decussate: each pair a quarter turn from the last; the bud took
+				 * the leaf on the lateral's side (+z) */
+				CHECK_NEAR(vec3_dot(o[2][0], o[4][0]), -1, 1e-12);
+				CHECK_NEAR(vec3_dot(o[3][0], o[2][0]), 0, 1e-12);
+				CHECK_NEAR(vec3_dot(o[3][0], vec3(0, 0, 1)), -1, 1e-12);
+				if (cot == 0)
+					CHECK_NEAR(vec3_dot(o[1][0], o[2][0]), 0, 1e-12);
+			}
+			free(l);
+			vine_finish(&v);
+		}
+}
+
 int main(void)
 {
 	test_smooth_turns();
 	test_bends();
 	test_lateral_root();
+	test_leaves();
 	printf("ok\n");
 	return 0;
 }
