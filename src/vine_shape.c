@@ -388,3 +388,183 @@ int vine_leaves(const struct vine *v, struct vine_leaf **out, size_t *n)
 	free_all(v, axes);
 	return ret;
 }
+
+static void push_vertex(struct mesh *m, struct vec3 p, struct vec3 n)
+{
+	float *pos = &m->positions[3 * m->nvertices], *nor = &m->normals[3 * m->nvertices];
+
+	pos[0] = (float)p.x;
+	pos[1] = (float)p.y;
+	pos[2] = (float)p.z;
+	nor[0] = (float)n.x;
+	nor[1] = (float)n.y;
+	nor[2] = (float)n.z;
+	m->nvertices++;
+}
+
+static void push_tri(struct mesh *m, size_t a, size_t b, size_t c)
+{
+	uint32_t *idx = &m->indices[m->nindices];
+
+	idx[0] = (uint32_t)a;
+	idx[1] = (uint32_t)b;
+	idx[2] = (uint32_t)c;
+	m->nindices += 3;
+}
+
+/* A unit vector perpendicular to unit t, a fixed function of t: the first frame's normal. */
+static struct vec3 perpendicular(struct vec3 t)
+{
+	struct vec3 ref = fabs(t.z) < 0.9 ? vec3(0, 0, 1) : vec3(1, 0, 0);
+
+	return vec3_norm_or(vec3_sub(ref, vec3_scale(t, vec3_dot(ref, t))), vec3(0, 1, 0));
+}
+
+/* Reflects u in the plane through the origin with normal a (|a|^2 = aa). */
+static struct vec3 reflect(struct vec3 u, struct vec3 a, double aa)
+{
+	return vec3_sub(u, vec3_scale(a, 2.0 * vec3_dot(u, a) / aa));
+}
+
+/*
+ * Tangents and rotation-minimising normals along p (as mesh.c's tubes: the double
+ * reflection method, Wang, Juettler, Zheng, Liu 2008), so the rings do not twist.
+ */
+static void frames(const struct vec3 *p, size_t n, struct vec3 *t, struct vec3 *nr)
+{
+	for (size_t i = 0; i < n; i++)
+		t[i] = tangent(p, n, i);
+	nr[0] = perpendicular(t[0]);
+	for (size_t i = 0; i + 1 < n; i++) {
+		struct vec3 v1 = vec3_sub(p[i + 1], p[i]), r;
+		double c1 = vec3_dot(v1, v1);
+
+		if (c1 > 1e-30) {
+			struct vec3 rl = reflect(nr[i], v1, c1), tl = reflect(t[i], v1, c1);
+			struct vec3 v2 = vec3_sub(t[i + 1], tl);
+			double c2 = vec3_dot(v2, v2);
+
+			r = c2 > 1e-20 ? reflect(rl, v2, c2) : rl;
+		} else {
+			r = nr[i]; /* the same point twice: carry the frame over */
+		}
+		/* back to perpendicular, so rounding cannot build up */
+		r = vec3_sub(r, vec3_scale(t[i + 1], vec3_dot(r, t[i + 1])));
+		nr[i + 1] = vec3_norm_or(r, perpendicular(t[i + 1]));
+	}
+}
+
+static int ring_sides(const struct vine *v)
+{
+	return v->p.ring_sides >= 3 ? v->p.ring_sides : 3;
+}
+
+/*
+ * A shoot's tube: a ring of M sides at every point of its smoothed axis a (counter-clockwise
+ * about the tangent, so the sides wind counter-clockwise seen from outside), open at the
+ * root (on the ground, or inside its parent), closed by a cone VINE_TIP_LENGTH radii long.
+ * M (n + 1) + 1 vertices, 2 M (n - 1) + M triangles; room made already.
+ */
+static void tube(const struct vine *v, const struct vec3 *a, size_t n, struct vec3 *t,
+		 struct vec3 *nr, struct mesh *m)
+{
+	size_t sides = (size_t)ring_sides(v), base = m->nvertices, cone, apex;
+	double r = v->p.radius, h = VINE_TIP_LENGTH * r;
+
+	frames(a, n, t, nr);
+	for (size_t i = 0; i < n; i++) {
+		struct vec3 b = vec3_cross(t[i], nr[i]);
+
+		for (size_t j = 0; j < sides; j++) {
+			double th = 2.0 * VEC_PI * (double)j / (double)sides;
+			struct vec3 rad = vec3_add(vec3_scale(nr[i], cos(th)), vec3_scale(b, sin(th)));
+
+			push_vertex(m, vec3_add(a[i], vec3_scale(rad, r)), rad);
+		}
+	}
+	for (size_t i = 0; i + 1 < n; i++) {
+		size_t r0 = base + i * sides, r1 = r0 + sides;
+
+		for (size_t j = 0; j < sides; j++) {
+			size_t j1 = j + 1 == sides ? 0 : j + 1;
+
+			push_tri(m, r0 + j, r1 + j1, r1 + j);
+			push_tri(m, r0 + j, r0 + j1, r1 + j1);
+		}
+	}
+	/* the tip: the last ring again with the cone's normals, and its apex */
+	cone = m->nvertices;
+	{
+		struct vec3 tt = t[n - 1], b = vec3_cross(tt, nr[n - 1]);
+
+		for (size_t j = 0; j < sides; j++) {
+			double th = 2.0 * VEC_PI * (double)j / (double)sides;
+			struct vec3 rad = vec3_add(vec3_scale(nr[n - 1], cos(th)), vec3_scale(b, sin(th)));
+			struct vec3 nor = vec3_norm_or(vec3_add(vec3_scale(rad, h), vec3_scale(tt, r)), tt);
+
+			push_vertex(m, vec3_add(a[n - 1], vec3_scale(rad, r)), nor);
+		}
+		apex = m->nvertices;
+		push_vertex(m, vec3_add(a[n - 1], vec3_scale(tt, h)), tt);
+	}
+	for (size_t j = 0; j < sides; j++)
+		push_tri(m, cone + j, cone + (j + 1 == sides ? 0 : j + 1), apex);
+}
+
+/* A leaf as a quad (two triangles) facing its front; room made already. */
+static void leaf_quad(const struct vine_leaf *l, struct mesh *m)
+{
+	size_t base = m->nvertices;
+	/* the diagonals' cross product: the front, from which the corners run counter-clockwise */
+	struct vec3 nor = vec3_norm_or(vec3_cross(vec3_sub(l->p[2], l->p[0]), vec3_sub(l->p[3], l->p[1])),
+				       vec3(0, 1, 0));
+
+	for (int i = 0; i < 4; i++)
+		push_vertex(m, l->p[i], nor);
+	push_tri(m, base, base + 1, base + 2);
+	push_tri(m, base, base + 2, base + 3);
+}
+
+int vine_mesh_append(const struct vine *v, struct mesh *stem, struct mesh *leaves)
+{
+	size_t sides = (size_t)ring_sides(v), nv = 0, ni = 0, longest = 0, nl = 0;
+	struct vec3 **axes, *t = NULL, *nr = NULL;
+	struct vine_leaf *l = NULL;
+	int ret = smooth_all(v, &axes);
+
+	if (ret < 0)
+		return ret;
+	for (size_t s = 0; s < v->nshoots; s++) {
+		size_t n = v->shoots[s].n;
+
+		if (n < 2)
+			continue; /* a bud that never grew: nothing to sweep */
+		nv += sides * (n + 1) + 1;
+		ni += 3 * (2 * sides * (n - 1) + sides);
+		longest = n > longest ? n : longest;
+	}
+	ret = leaves_on(v, axes, &l, &nl);
+	if (ret == 0) {
+		t = malloc((longest ? longest : 1) * sizeof(*t));
+		nr = malloc((longest ? longest : 1) * sizeof(*nr));
+		if (!t || !nr)
+			ret = -ENOMEM;
+	}
+	/* room for everything first: either mesh comes out whole or as it was */
+	if (ret == 0)
+		ret = mesh_reserve(stem, nv, ni);
+	if (ret == 0)
+		ret = mesh_reserve(leaves, 4 * nl, 6 * nl);
+	if (ret == 0) {
+		for (size_t s = 0; s < v->nshoots; s++)
+			if (v->shoots[s].n >= 2)
+				tube(v, axes[s], v->shoots[s].n, t, nr, stem);
+		for (size_t i = 0; i < nl; i++)
+			leaf_quad(&l[i], leaves);
+	}
+	free(t);
+	free(nr);
+	free(l);
+	free_all(v, axes);
+	return ret;
+}

@@ -3,8 +3,10 @@
  * A twining vine's shapes (issue 16, docs/vines.md "Shapes"): the smoothing on axes made
  * here (a 90-degree turn smoothed over +-d/2, a 350 -> 10 degree wrap and a 30-degree turn
  * left alone), the seeded Bezier bends of the free parts (horizontal, within 5 l/d, the
- * same for the same seed, the raw axis never changed), a lateral's root on its parent, the
- * leaves (counts per node, buds, alternate and decussate, squares).
+ * same for the same seed, the raw axis never changed), the leaves (counts per node, buds,
+ * alternate and decussate, squares), the meshes (counts, unit normals, the tube r from
+ * the smoothed axis, outward winding, appending, out of memory), and all of it on vines
+ * grown on a pole.
  */
 #include <errno.h>
 #include <stdlib.h>
@@ -368,12 +370,359 @@ static void test_leaves(void)
 		}
 }
 
+/* Whether the mesh has no NaN, unit normals and triangles wound with their normals. */
+static void check_mesh(const struct mesh *m)
+{
+	for (size_t i = 0; i < 3 * m->nvertices; i++)
+		CHECK(isfinite(m->positions[i]) && isfinite(m->normals[i]));
+	for (size_t i = 0; i < m->nvertices; i++) {
+		const float *n = &m->normals[3 * i];
+
+		CHECK_NEAR(sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), 1, 1e-6);
+	}
+	for (size_t i = 0; i < m->nindices; i += 3) {
+		struct vec3 p[3], nsum = vec3(0, 0, 0);
+
+		for (int k = 0; k < 3; k++) {
+			const float *q, *n;
+
+			CHECK(m->indices[i + (size_t)k] < m->nvertices);
+			q = &m->positions[3 * (size_t)m->indices[i + (size_t)k]];
+			n = &m->normals[3 * (size_t)m->indices[i + (size_t)k]];
+			p[k] = vec3(q[0], q[1], q[2]);
+			nsum = vec3_add(nsum, vec3(n[0], n[1], n[2]));
+		}
+		/* counter-clockwise seen from where the normals point: outside */
+		CHECK(vec3_dot(vec3_cross(vec3_sub(p[1], p[0]), vec3_sub(p[2], p[0])), nsum) > 0);
+	}
+}
+
+static struct vec3 vertex(const struct mesh *m, size_t i)
+{
+	const float *q = &m->positions[3 * i];
+
+	return vec3(q[0], q[1], q[2]);
+}
+
+/*
+ * v's meshes appended to stem and leaves: every shoot of n >= 2 points a tube of
+ * M (n + 1) + 1 vertices and 2 M (n - 1) + M triangles, its rings r from its smoothed
+ * points, the cone's apex r beyond the tip; every leaf 4 vertices and 2 triangles, at its
+ * corners.
+ */
+static void check_vine_mesh(const struct vine *v)
+{
+	struct mesh stem, leaves;
+	size_t at = 0, M = (size_t)v->p.ring_sides, nl;
+	struct vine_leaf *l;
+
+	mesh_init(&stem);
+	mesh_init(&leaves);
+	CHECK_INT(vine_mesh_append(v, &stem, &leaves), 0);
+	check_mesh(&stem);
+	check_mesh(&leaves);
+	for (size_t s = 0; s < v->nshoots; s++) {
+		size_t n = v->shoots[s].n;
+		struct vec3 *a;
+
+		if (n < 2)
+			continue;
+		CHECK_INT(vine_smooth(v, s, &a), 0);
+		for (size_t i = 0; i <= n; i++)
+			for (size_t j = 0; j < M; j++)
+				CHECK_NEAR(vec3_dist(vertex(&stem, at + i * M + j), a[i < n ? i : n - 1]),
+					   v->p.radius, 1e-6);
+		CHECK_NEAR(vec3_dist(vertex(&stem, at + (n + 1) * M), a[n - 1]), v->p.radius, 1e-6);
+		at += M * (n + 1) + 1;
+		free(a);
+	}
+	CHECK_INT(stem.nvertices, at);
+	{
+		size_t tri = 0;
+
+		for (size_t s = 0; s < v->nshoots; s++)
+			if (v->shoots[s].n >= 2)
+				tri += 2 * M * (v->shoots[s].n - 1) + M;
+		CHECK_INT(stem.nindices, 3 * tri);
+	}
+	CHECK_INT(vine_leaves(v, &l, &nl), 0);
+	CHECK_INT(leaves.nvertices, 4 * nl);
+	CHECK_INT(leaves.nindices, 6 * nl);
+	for (size_t i = 0; i < nl; i++)
+		for (int k = 0; k < 4; k++)
+			CHECK(vec3_dist(vertex(&leaves, 4 * i + (size_t)k), l[i].p[k]) < 1e-6);
+	free(l);
+
+	/* appended to what is there: the same again, its indices moved along */
+	{
+		size_t nv = stem.nvertices, ni = stem.nindices, lv = leaves.nvertices;
+
+		CHECK_INT(vine_mesh_append(v, &stem, &leaves), 0);
+		CHECK_INT(stem.nvertices, 2 * nv);
+		CHECK_INT(stem.nindices, 2 * ni);
+		CHECK(memcmp(stem.positions, stem.positions + 3 * nv, 3 * nv * sizeof(float)) == 0);
+		CHECK(memcmp(stem.normals, stem.normals + 3 * nv, 3 * nv * sizeof(float)) == 0);
+		for (size_t i = 0; i < ni; i++)
+			CHECK_INT(stem.indices[ni + i], stem.indices[i] + nv);
+		CHECK_INT(leaves.nvertices, 2 * lv);
+	}
+	mesh_finish(&stem);
+	mesh_finish(&leaves);
+}
+
+/* Out of memory at every allocation in turn: -ENOMEM and both meshes as they were. */
+static void check_oom(const struct vine *v)
+{
+	struct mesh stem, leaves;
+
+	if (!FAIL_ALLOC_HOOK || !fail_alloc_hooked())
+		return;
+	for (long at = 0;; at++) {
+		size_t nv, ni, lv, li;
+		int r;
+
+		mesh_init(&stem);
+		mesh_init(&leaves);
+		/* something there already */
+		CHECK_INT(mesh_reserve(&stem, 1, 3), 0);
+		stem.nvertices = 1;
+		memset(stem.positions, 0, 3 * sizeof(float));
+		memset(stem.normals, 0, 3 * sizeof(float));
+		nv = stem.nvertices;
+		ni = stem.nindices;
+		lv = leaves.nvertices;
+		li = leaves.nindices;
+		fail_alloc_at(at);
+		r = vine_mesh_append(v, &stem, &leaves);
+		fail_alloc_off();
+		if (fail_alloc_calls() <= at) {
+			CHECK_INT(r, 0);
+			mesh_finish(&stem);
+			mesh_finish(&leaves);
+			break;
+		}
+		CHECK_INT(r, -ENOMEM);
+		CHECK(stem.nvertices == nv && stem.nindices == ni);
+		CHECK(stem.positions[0] == 0 && stem.positions[2] == 0 && stem.normals[1] == 0);
+		CHECK(leaves.nvertices == lv && leaves.nindices == li);
+		mesh_finish(&stem);
+		mesh_finish(&leaves);
+	}
+	{
+		struct vec3 *a;
+		struct vine_leaf *l;
+		size_t nl;
+		long live = fail_alloc_live();
+
+		for (long at = 0;; at++) {
+			int r;
+
+			fail_alloc_at(at);
+			r = vine_smooth(v, v->nshoots - 1, &a);
+			fail_alloc_off();
+			if (r == 0) {
+				free(a);
+				break;
+			}
+			CHECK_INT(r, -ENOMEM);
+		}
+		for (long at = 0;; at++) {
+			int r;
+
+			fail_alloc_at(at);
+			r = vine_leaves(v, &l, &nl);
+			fail_alloc_off();
+			if (r == 0) {
+				free(l);
+				break;
+			}
+			CHECK_INT(r, -ENOMEM);
+		}
+		CHECK_INT(fail_alloc_live(), live); /* nothing lost on the way */
+	}
+}
+
+/* The meshes of vines made here: a turn, bends, a stopped tip, a lateral, leaves. */
+static void test_mesh(void)
+{
+	struct vine v;
+
+	leaf_vine(&v, 2, 2);
+	v.shoots[0].free_until = 12;
+	v.shoots[0].stopped = true;
+	check_vine_mesh(&v);
+	check_oom(&v);
+	vine_finish(&v);
+
+	{
+		struct vec3 p[64];
+		double s;
+
+		vine_blank(&v);
+		v.p.ring_sides = 5;
+		s = v.p.internode / v.p.points_per_internode;
+		add(&v, -1, 0, p, turn_axis(p, s, 10, 0, 14, 120), 0, false);
+		check_vine_mesh(&v);
+		vine_finish(&v);
+	}
+}
+
+/* Cylinders along +y gathered into one support (test_vine_grow.c's, standing only). */
+struct mesh_build {
+	float *p;
+	uint32_t *t;
+	size_t np, nt;
+};
+
+static void cylinder(struct mesh_build *m, double R, double h, int sides, struct vec3 o)
+{
+	size_t b = m->np;
+
+	m->p = realloc(m->p, (m->np + 2 * (size_t)sides + 2) * 3 * sizeof(*m->p));
+	m->t = realloc(m->t, (m->nt + 4 * (size_t)sides) * 3 * sizeof(*m->t));
+	CHECK(m->p && m->t);
+	for (int i = 0; i < sides; i++) {
+		double a = 2 * VEC_PI * i / sides;
+
+		for (int e = 0; e < 2; e++) {
+			float *q = m->p + 3 * m->np++;
+
+			q[0] = (float)(o.x + R * cos(a));
+			q[1] = (float)(o.y + e * h);
+			q[2] = (float)(o.z + R * sin(a));
+		}
+	}
+	for (int e = 0; e < 2; e++) {
+		float *q = m->p + 3 * m->np++;
+
+		q[0] = (float)o.x;
+		q[1] = (float)(o.y + e * h);
+		q[2] = (float)o.z;
+	}
+	for (int i = 0; i < sides; i++) {
+		uint32_t j = (uint32_t)((i + 1) % sides), a0 = (uint32_t)(b + 2 * (size_t)i);
+		uint32_t a1 = a0 + 1, b0 = (uint32_t)b + 2 * j, b1 = b0 + 1;
+		uint32_t c0 = (uint32_t)(b + 2 * (size_t)sides), c1 = c0 + 1;
+		uint32_t tri[4][3] = { { a0, b0, a1 }, { a1, b0, b1 }, { c0, b0, a0 }, { c1, a1, b1 } };
+
+		memcpy(m->t + 3 * m->nt, tri, sizeof(tri));
+		m->nt += 4;
+	}
+}
+
+/*
+ * Vines grown on a pole shorter than their budget (the apex stops above it, buds take
+ * over): every shape check on them; the raw axes the same for another seed, the free
+ * parts bent otherwise; the same seed the same meshes, bit for bit.
+ */
+static void test_grown(enum vine_twining tw, int per_node)
+{
+	struct mesh_build mb = { 0 };
+	struct vine_support *s;
+	struct vine_params p;
+	struct vine v, w;
+	struct vine_leaf *l;
+	size_t nl, i = 0, d, changed = 0;
+
+	cylinder(&mb, 0.02, 0.4, 32, vec3(0, 0, 0));
+	CHECK_INT(vine_support_create(mb.p, mb.np, mb.t, mb.nt, &s), 0);
+	free(mb.p);
+	free(mb.t);
+	vine_params_default(&p);
+	p.twining = tw;
+	p.internodes = 24;
+	p.leaves_per_node = per_node;
+	d = (size_t)p.points_per_internode;
+	vine_init(&v, &p, vec3(0.035, 0, 0));
+	CHECK_INT(vine_grow(&v, s, 1e9), 0);
+	CHECK(v.nshoots >= 2);
+	check_vine_mesh(&v);
+
+	/* laterals start on their parent's smoothed node point */
+	for (size_t k = 1; k < v.nshoots; k++) {
+		struct vec3 *pa, *la;
+
+		CHECK_INT(vine_smooth(&v, (size_t)v.shoots[k].parent, &pa), 0);
+		CHECK_INT(vine_smooth(&v, k, &la), 0);
+		CHECK(same(la[0], pa[(size_t)v.shoots[k].node * d]));
+		free(pa);
+		free(la);
+	}
+	/* the leaves: per node as they should be, on the smoothed axes */
+	CHECK_INT(vine_leaves(&v, &l, &nl), 0);
+	for (size_t sh = 0; sh < v.nshoots; sh++) {
+		struct vec3 *a;
+
+		CHECK_INT(vine_smooth(&v, sh, &a), 0);
+		for (size_t k = 1; k <= vine_shoot_nodes(&v, sh); k++) {
+			int j = 0;
+
+			for (; i < nl && l[i].shoot == sh && l[i].node == k; i++, j++)
+				CHECK(same(l[i].p[0], a[k * d]));
+			CHECK_INT(j, expected_leaves(&v, sh, k));
+		}
+		for (size_t k = 0; k < v.shoots[sh].n; k++)
+			changed += !same(a[k], v.shoots[sh].axis[k]);
+		free(a);
+	}
+	CHECK_INT(i, nl);
+	free(l);
+	printf("grown %s, %d a node: %zu shoots, %zu leaves, %zu points of %zu smoothed or bent\n",
+	       tw == VINE_RIGHT ? "right" : "left", per_node, v.nshoots, nl, changed, v.points);
+
+	/* another seed: the same raw axes, other bends; the same seed: the same meshes */
+	p.seed = 77;
+	vine_init(&w, &p, vec3(0.035, 0, 0));
+	CHECK_INT(vine_grow(&w, s, 1e9), 0);
+	CHECK_INT(w.nshoots, v.nshoots);
+	for (size_t k = 0; k < v.nshoots; k++) {
+		CHECK_INT(w.shoots[k].n, v.shoots[k].n);
+		CHECK(memcmp(w.shoots[k].axis, v.shoots[k].axis,
+			     v.shoots[k].n * sizeof(*v.shoots[k].axis)) == 0);
+	}
+	{
+		struct vec3 *a, *b;
+
+		CHECK_INT(vine_smooth(&v, 0, &a), 0);
+		CHECK_INT(vine_smooth(&w, 0, &b), 0);
+		CHECK(memcmp(a, b, v.shoots[0].n * sizeof(*a)) != 0);
+		free(a);
+		free(b);
+	}
+	vine_finish(&w);
+	p.seed = v.p.seed;
+	vine_init(&w, &p, vec3(0.035, 0, 0));
+	CHECK_INT(vine_grow(&w, s, 1e9), 0);
+	{
+		struct mesh ms[2], ml[2];
+
+		for (int k = 0; k < 2; k++) {
+			mesh_init(&ms[k]);
+			mesh_init(&ml[k]);
+			CHECK_INT(vine_mesh_append(k ? &w : &v, &ms[k], &ml[k]), 0);
+		}
+		CHECK(ms[0].nvertices == ms[1].nvertices && ml[0].nvertices == ml[1].nvertices);
+		CHECK(memcmp(ms[0].positions, ms[1].positions, 3 * ms[0].nvertices * sizeof(float)) == 0);
+		CHECK(memcmp(ml[0].positions, ml[1].positions, 3 * ml[0].nvertices * sizeof(float)) == 0);
+		for (int k = 0; k < 2; k++) {
+			mesh_finish(&ms[k]);
+			mesh_finish(&ml[k]);
+		}
+	}
+	vine_finish(&w);
+	vine_finish(&v);
+	vine_support_destroy(s);
+}
+
 int main(void)
 {
 	test_smooth_turns();
 	test_bends();
 	test_lateral_root();
 	test_leaves();
+	test_mesh();
+	test_grown(VINE_LEFT, 1);
+	test_grown(VINE_RIGHT, 2);
 	printf("ok\n");
 	return 0;
 }
