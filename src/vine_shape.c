@@ -1,0 +1,570 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * A twining vine's shapes (seed 004, Kasakura 3.3; docs/vines.md): the smoothed axes, the
+ * leaves and the meshes, all drawn from the raw axes vine_grow.c made, which they never
+ * change.
+ *
+ * Smoothing (3.3.1): where the azimuth of consecutive directions jumps by 45 degrees or
+ * more (the rod re-pivoting, a turn to clear the support), the points within d/2 of the
+ * jump become a cubic Hermite spline between the span's ends, the raw directions there as
+ * tangents. The free parts (the main axis's first, non-twining internodes with the
+ * cotyledon node; a stopped apex's last 2d points), straight and vertical or circling in
+ * the air, are bent by horizontal cubic Bezier offsets within +-5 l/d, drawn from the seed.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mesh.h"
+#include "rng.h"
+#include "vine.h"
+
+/* The azimuth jump that is smoothed over. */
+#define VINE_SMOOTH_JUMP_DEG 45.0
+/* A direction this close to vertical (horizontal length over length) has no azimuth. */
+#define VINE_VERTICAL_EPS 1e-9
+/* The Bezier offsets' reach, in segments (l/d). */
+#define VINE_BEND_SEGMENTS 5.0
+/* The tip's cone is this many radii long. */
+#define VINE_TIP_LENGTH 1.0
+
+static size_t points_per_internode(const struct vine *v)
+{
+	return v->p.points_per_internode > 0 ? (size_t)v->p.points_per_internode : 1;
+}
+
+/* The azimuth of e, about +y counter-clockwise seen from above; false when e is vertical. */
+static bool azimuth(struct vec3 e, double *az)
+{
+	double h = hypot(e.x, e.z);
+
+	if (!(h > VINE_VERTICAL_EPS * vec3_len(e)))
+		return false;
+	*az = atan2(-e.z, e.x);
+	return true;
+}
+
+/* Does the azimuth jump at point i (between directions i - 1 and i)? */
+static bool jumps(const struct vec3 *a, size_t i)
+{
+	double a0, a1, da;
+
+	if (!azimuth(vec3_sub(a[i], a[i - 1]), &a0) || !azimuth(vec3_sub(a[i + 1], a[i]), &a1))
+		return false; /* straight up or down: no azimuth to jump from or to */
+	da = remainder(a1 - a0, 2.0 * VEC_PI); /* wrapped: 350 -> 10 degrees is 20 */
+	return fabs(da) >= VINE_SMOOTH_JUMP_DEG * VEC_PI / 180.0 - 1e-12;
+}
+
+/* The raw span [lo, hi] as a cubic Hermite spline between its ends, written to out. */
+static void hermite(const struct vec3 *a, struct vec3 *out, size_t lo, size_t hi)
+{
+	double len = 0;
+	struct vec3 m0, m1;
+
+	for (size_t j = lo; j < hi; j++)
+		len += vec3_dist(a[j], a[j + 1]);
+	/* tangents as long as the span, so the curve runs at about the points' pace */
+	m0 = vec3_scale(vec3_norm_or(vec3_sub(a[lo + 1], a[lo]), vec3(0, 1, 0)), len);
+	m1 = vec3_scale(vec3_norm_or(vec3_sub(a[hi], a[hi - 1]), vec3(0, 1, 0)), len);
+	for (size_t j = lo + 1; j < hi; j++) {
+		double u = (double)(j - lo) / (double)(hi - lo), u2 = u * u, u3 = u2 * u;
+		double h00 = 2 * u3 - 3 * u2 + 1, h10 = u3 - 2 * u2 + u;
+		double h01 = -2 * u3 + 3 * u2, h11 = u3 - u2;
+
+		out[j] = vec3_add(vec3_add(vec3_scale(a[lo], h00), vec3_scale(m0, h10)),
+				  vec3_add(vec3_scale(a[hi], h01), vec3_scale(m1, h11)));
+	}
+}
+
+/*
+ * Every jump's span [i - d/2, i + d/2] (clamped to the shoot) smoothed; spans that
+ * overlap are merged into one, so the result does not depend on the order they are met in.
+ */
+static void smooth_jumps(const struct vine *v, const struct vine_shoot *sh, struct vec3 *out)
+{
+	size_t half = points_per_internode(v) / 2, lo = 0, hi = 0;
+	bool open = false;
+
+	if (half == 0 || sh->n < 3)
+		return;
+	for (size_t i = 1; i + 1 < sh->n; i++) {
+		size_t a, b;
+
+		if (!jumps(sh->axis, i))
+			continue;
+		a = i > half ? i - half : 0;
+		b = i + half < sh->n - 1 ? i + half : sh->n - 1;
+		if (open && a < hi) {
+			hi = b;
+			continue;
+		}
+		if (open && hi - lo >= 2)
+			hermite(sh->axis, out, lo, hi);
+		lo = a;
+		hi = b;
+		open = true;
+	}
+	if (open && hi - lo >= 2)
+		hermite(sh->axis, out, lo, hi);
+}
+
+/*
+ * Part `part` of shoot `shoot`, points [lo, hi], bent by the horizontal cubic Bezier offset
+ * with control offsets (0, c1, c2, c3), u = (i - lo) / (hi - lo); c3 is 0 unless the part
+ * ends free (a stopped apex's tip). The controls come from the seed and the indices alone.
+ */
+static void bend(const struct vine *v, size_t shoot, uint64_t part, size_t lo, size_t hi,
+		 bool free_end, struct vec3 *out)
+{
+	double reach = VINE_BEND_SEGMENTS * v->p.internode / (double)points_per_internode(v);
+	struct vec3 c[3];
+	struct rng r;
+
+	if (hi <= lo)
+		return;
+	rng_seed(&r, v->p.seed ^ ((uint64_t)shoot * 0x9E3779B97F4A7C15ULL) ^ part);
+	/* always six draws, so c1 and c2 are the same whether or not c3 is used */
+	for (int k = 0; k < 3; k++) {
+		double x = rng_range(&r, -reach, reach), z = rng_range(&r, -reach, reach);
+
+		c[k] = vec3(x, 0, z);
+	}
+	if (!free_end)
+		c[2] = vec3(0, 0, 0);
+	for (size_t i = lo + 1; i <= hi; i++) {
+		double u = (double)(i - lo) / (double)(hi - lo), t = 1 - u;
+		double b1 = 3 * t * t * u, b2 = 3 * t * u * u, b3 = u * u * u;
+
+		/* y untouched: the offset is horizontal, the height the growth gave stays */
+		out[i].x += b1 * c[0].x + b2 * c[1].x + b3 * c[2].x;
+		out[i].z += b1 * c[0].z + b2 * c[1].z + b3 * c[2].z;
+	}
+}
+
+/* The free parts bent: [0, free_until] (the cotyledon node and the non-twining internodes,
+ * as one part: both start at the root), and a stopped apex's last 2d points. */
+static void bend_free(const struct vine *v, size_t shoot, struct vec3 *out)
+{
+	const struct vine_shoot *sh = &v->shoots[shoot];
+	size_t d = points_per_internode(v), last = sh->n - 1;
+	size_t fe = sh->free_until < last ? sh->free_until : last, tip;
+
+	/* the non-twining part ends where twining starts (kept in place), or at the tip */
+	bend(v, shoot, 0, 0, fe, sh->stopped && fe == last, out);
+	if (!sh->stopped)
+		return;
+	tip = last > 2 * d ? last - 2 * d : 0;
+	if (tip < fe)
+		tip = fe; /* the two parts never overlap */
+	bend(v, shoot, 1, tip, last, true, out);
+}
+
+/*
+ * A shoot's smoothed axis into out (sh->n points). parent: the parent's smoothed axis, or
+ * NULL: a lateral's root moves with its parent's node point (the parent's bend or spline
+ * may have moved it), the move fading out over its first internode, so the lateral still
+ * starts on its parent.
+ */
+static void smooth_shoot(const struct vine *v, size_t shoot, const struct vec3 *parent,
+			 struct vec3 *out)
+{
+	const struct vine_shoot *sh = &v->shoots[shoot];
+	size_t d = points_per_internode(v);
+
+	memcpy(out, sh->axis, sh->n * sizeof(*out));
+	if (sh->n >= 2) {
+		smooth_jumps(v, sh, out);
+		bend_free(v, shoot, out);
+	}
+	if (parent && sh->n > 0 && sh->node >= 0) {
+		size_t at = (size_t)sh->node * d;
+		const struct vine_shoot *ps = &v->shoots[sh->parent];
+		struct vec3 moved;
+
+		if (at >= ps->n)
+			return;
+		moved = vec3_sub(parent[at], ps->axis[at]);
+		/* the root exactly on the parent's point (it is the raw one, never moved itself) */
+		out[0] = vec3_add(parent[at], vec3_sub(out[0], ps->axis[at]));
+		for (size_t i = 1; i < sh->n && i < d; i++)
+			out[i] = vec3_add(out[i], vec3_scale(moved, 1.0 - (double)i / (double)d));
+	}
+}
+
+/* Has shoot a parent smoothed before it? (vine_grow.c's laterals: always shoot 0.) */
+static bool has_parent(const struct vine *v, size_t shoot)
+{
+	int p = v->shoots[shoot].parent;
+
+	return p >= 0 && (size_t)p < shoot;
+}
+
+int vine_smooth(const struct vine *v, size_t shoot, struct vec3 **out)
+{
+	const struct vine_shoot *sh = &v->shoots[shoot];
+	struct vec3 *a, *pa = NULL;
+
+	a = malloc((sh->n ? sh->n : 1) * sizeof(*a));
+	if (!a)
+		return -ENOMEM;
+	if (has_parent(v, shoot)) {
+		int ret = vine_smooth(v, (size_t)sh->parent, &pa);
+
+		if (ret < 0) {
+			free(a);
+			return ret;
+		}
+	}
+	smooth_shoot(v, shoot, pa, a);
+	free(pa);
+	*out = a;
+	return 0;
+}
+
+/* Every shoot's smoothed axis, in order (a parent before its laterals). 0 or -ENOMEM. */
+static int smooth_all(const struct vine *v, struct vec3 ***out)
+{
+	struct vec3 **axes = calloc(v->nshoots ? v->nshoots : 1, sizeof(*axes));
+
+	if (!axes)
+		return -ENOMEM;
+	for (size_t k = 0; k < v->nshoots; k++) {
+		const struct vine_shoot *sh = &v->shoots[k];
+
+		axes[k] = malloc((sh->n ? sh->n : 1) * sizeof(**axes));
+		if (!axes[k]) {
+			for (size_t j = 0; j < k; j++)
+				free(axes[j]);
+			free(axes);
+			return -ENOMEM;
+		}
+		smooth_shoot(v, k, has_parent(v, k) ? axes[sh->parent] : NULL, axes[k]);
+	}
+	*out = axes;
+	return 0;
+}
+
+static void free_all(const struct vine *v, struct vec3 **axes)
+{
+	if (!axes)
+		return;
+	for (size_t k = 0; k < v->nshoots; k++)
+		free(axes[k]);
+	free(axes);
+}
+
+/* The unit tangent of a polyline at point i: the mean of the directions in and out. */
+static struct vec3 tangent(const struct vec3 *p, size_t n, size_t i)
+{
+	struct vec3 in = i > 0 ? vec3_sub(p[i], p[i - 1]) : vec3_sub(p[1], p[0]);
+	struct vec3 out = i + 1 < n ? vec3_sub(p[i + 1], p[i]) : in;
+	struct vec3 din = vec3_norm_or(in, vec3(0, 1, 0)), dout = vec3_norm_or(out, din);
+
+	/* a hairpin averages to nothing: the way out then */
+	return vec3_norm_or(vec3_add(din, dout), dout);
+}
+
+/* u turned by angle a about unit t (u perpendicular to t). */
+static struct vec3 turn(struct vec3 u, struct vec3 t, double a)
+{
+	return vec3_add(vec3_scale(u, cos(a)), vec3_scale(vec3_cross(t, u), sin(a)));
+}
+
+/* Leaves carried at node k of shoot s, before the buds take theirs; *cot when cotyledons. */
+static int node_leaves(const struct vine *v, size_t s, size_t k, bool *cot)
+{
+	*cot = v->shoots[s].parent < 0 && k == 1 && v->p.cotyledons > 0;
+	if (*cot)
+		return v->p.cotyledons;
+	return v->p.leaves_per_node > 0 ? v->p.leaves_per_node : 0;
+}
+
+/*
+ * The phyllotaxis angle of leaf j of node k (about the stem, from T x up): alternate,
+ * each node's leaf half a turn from the last; opposite pairs a quarter turn from the last
+ * pair (decussate); the cotyledons a pair, or one.
+ */
+static double leaf_angle(const struct vine *v, size_t k, int j, bool cot)
+{
+	if (cot)
+		return VEC_PI * j;
+	if (v->p.leaves_per_node >= 2)
+		return 0.5 * VEC_PI * (double)(k % 4) + VEC_PI * j;
+	return VEC_PI * (double)(k % 2);
+}
+
+/* The reference direction at a node: T x up, or x when T is vertical. */
+static struct vec3 leaf_ref(struct vec3 t)
+{
+	return vec3_norm_or(vec3_cross(t, vec3(0, 1, 0)), vec3(1, 0, 0));
+}
+
+/*
+ * The leaves of node k of shoot s, on its smoothed axis a, appended to out (room for
+ * them made already). A bud takes the leaf nearest the way its lateral starts out.
+ */
+static size_t node_build(const struct vine *v, size_t s, size_t k, const struct vec3 *a,
+			 struct vine_leaf *out)
+{
+	const struct vine_shoot *sh = &v->shoots[s];
+	size_t d = points_per_internode(v), at = k * d, made = 0;
+	double g = v->p.leaf_size;
+	bool cot, gone[64] = { false };
+	int count = node_leaves(v, s, k, &cot);
+	struct vec3 t = tangent(a, sh->n, at), ref = leaf_ref(t), o[64];
+
+	if (count > 64)
+		count = 64; /* vine_params_check keeps it to 2 */
+	for (int j = 0; j < count; j++)
+		o[j] = turn(ref, t, leaf_angle(v, k, j, cot));
+	if (!cot) {
+		for (size_t j = 0; j < v->nshoots; j++) {
+			const struct vine_shoot *ls = &v->shoots[j];
+			struct vec3 go;
+			int best = -1;
+
+			if (ls->parent != (int)s || ls->node < 0 || (size_t)ls->node != k)
+				continue;
+			go = ls->n > 1 ? vec3_sub(ls->axis[1], ls->axis[0]) : ref;
+			for (int i = 0; i < count; i++)
+				if (!gone[i] && (best < 0 || vec3_dot(o[i], go) > vec3_dot(o[best], go)))
+					best = i;
+			if (best >= 0)
+				gone[best] = true;
+		}
+	}
+	for (int j = 0; j < count; j++) {
+		struct vine_leaf *l;
+		struct vec3 p = a[at], w;
+
+		if (gone[j])
+			continue;
+		l = &out[made++];
+		w = vec3_norm_or(vec3_cross(t, o[j]), ref);
+		l->shoot = s;
+		l->node = k;
+		l->cotyledon = cot;
+		l->p[0] = p;
+		l->p[1] = vec3_add(p, vec3_scale(vec3_add(o[j], w), g));
+		l->p[2] = vec3_add(p, vec3_scale(o[j], 2 * g));
+		l->p[3] = vec3_add(p, vec3_scale(vec3_sub(o[j], w), g));
+	}
+	return made;
+}
+
+/* Every leaf on the smoothed axes; *out allocated. 0 or -ENOMEM. */
+static int leaves_on(const struct vine *v, struct vec3 *const *axes, struct vine_leaf **out,
+		     size_t *n)
+{
+	size_t total = 0, made = 0;
+	struct vine_leaf *l;
+
+	for (size_t s = 0; s < v->nshoots; s++)
+		for (size_t k = 1; k <= vine_shoot_nodes(v, s); k++) {
+			bool cot;
+
+			total += (size_t)node_leaves(v, s, k, &cot);
+		}
+	l = malloc((total ? total : 1) * sizeof(*l));
+	if (!l)
+		return -ENOMEM;
+	for (size_t s = 0; s < v->nshoots; s++)
+		for (size_t k = 1; k <= vine_shoot_nodes(v, s); k++)
+			made += node_build(v, s, k, axes[s], l + made);
+	*out = l;
+	*n = made;
+	return 0;
+}
+
+int vine_leaves(const struct vine *v, struct vine_leaf **out, size_t *n)
+{
+	struct vec3 **axes;
+	int ret = smooth_all(v, &axes);
+
+	if (ret < 0)
+		return ret;
+	ret = leaves_on(v, axes, out, n);
+	free_all(v, axes);
+	return ret;
+}
+
+static void push_vertex(struct mesh *m, struct vec3 p, struct vec3 n)
+{
+	float *pos = &m->positions[3 * m->nvertices], *nor = &m->normals[3 * m->nvertices];
+
+	pos[0] = (float)p.x;
+	pos[1] = (float)p.y;
+	pos[2] = (float)p.z;
+	nor[0] = (float)n.x;
+	nor[1] = (float)n.y;
+	nor[2] = (float)n.z;
+	m->nvertices++;
+}
+
+static void push_tri(struct mesh *m, size_t a, size_t b, size_t c)
+{
+	uint32_t *idx = &m->indices[m->nindices];
+
+	idx[0] = (uint32_t)a;
+	idx[1] = (uint32_t)b;
+	idx[2] = (uint32_t)c;
+	m->nindices += 3;
+}
+
+/* A unit vector perpendicular to unit t, a fixed function of t: the first frame's normal. */
+static struct vec3 perpendicular(struct vec3 t)
+{
+	struct vec3 ref = fabs(t.z) < 0.9 ? vec3(0, 0, 1) : vec3(1, 0, 0);
+
+	return vec3_norm_or(vec3_sub(ref, vec3_scale(t, vec3_dot(ref, t))), vec3(0, 1, 0));
+}
+
+/* Reflects u in the plane through the origin with normal a (|a|^2 = aa). */
+static struct vec3 reflect(struct vec3 u, struct vec3 a, double aa)
+{
+	return vec3_sub(u, vec3_scale(a, 2.0 * vec3_dot(u, a) / aa));
+}
+
+/*
+ * Tangents and rotation-minimising normals along p (as mesh.c's tubes: the double
+ * reflection method, Wang, Juettler, Zheng, Liu 2008), so the rings do not twist.
+ */
+static void frames(const struct vec3 *p, size_t n, struct vec3 *t, struct vec3 *nr)
+{
+	for (size_t i = 0; i < n; i++)
+		t[i] = tangent(p, n, i);
+	nr[0] = perpendicular(t[0]);
+	for (size_t i = 0; i + 1 < n; i++) {
+		struct vec3 v1 = vec3_sub(p[i + 1], p[i]), r;
+		double c1 = vec3_dot(v1, v1);
+
+		if (c1 > 1e-30) {
+			struct vec3 rl = reflect(nr[i], v1, c1), tl = reflect(t[i], v1, c1);
+			struct vec3 v2 = vec3_sub(t[i + 1], tl);
+			double c2 = vec3_dot(v2, v2);
+
+			r = c2 > 1e-20 ? reflect(rl, v2, c2) : rl;
+		} else {
+			r = nr[i]; /* the same point twice: carry the frame over */
+		}
+		/* back to perpendicular, so rounding cannot build up */
+		r = vec3_sub(r, vec3_scale(t[i + 1], vec3_dot(r, t[i + 1])));
+		nr[i + 1] = vec3_norm_or(r, perpendicular(t[i + 1]));
+	}
+}
+
+static int ring_sides(const struct vine *v)
+{
+	return v->p.ring_sides >= 3 ? v->p.ring_sides : 3;
+}
+
+/*
+ * A shoot's tube: a ring of M sides at every point of its smoothed axis a (counter-clockwise
+ * about the tangent, so the sides wind counter-clockwise seen from outside), open at the
+ * root (on the ground, or inside its parent), closed by a cone VINE_TIP_LENGTH radii long.
+ * M (n + 1) + 1 vertices, 2 M (n - 1) + M triangles; room made already.
+ */
+static void tube(const struct vine *v, const struct vec3 *a, size_t n, struct vec3 *t,
+		 struct vec3 *nr, struct mesh *m)
+{
+	size_t sides = (size_t)ring_sides(v), base = m->nvertices, cone, apex;
+	double r = v->p.radius, h = VINE_TIP_LENGTH * r;
+
+	frames(a, n, t, nr);
+	for (size_t i = 0; i < n; i++) {
+		struct vec3 b = vec3_cross(t[i], nr[i]);
+
+		for (size_t j = 0; j < sides; j++) {
+			double th = 2.0 * VEC_PI * (double)j / (double)sides;
+			struct vec3 rad = vec3_add(vec3_scale(nr[i], cos(th)), vec3_scale(b, sin(th)));
+
+			push_vertex(m, vec3_add(a[i], vec3_scale(rad, r)), rad);
+		}
+	}
+	for (size_t i = 0; i + 1 < n; i++) {
+		size_t r0 = base + i * sides, r1 = r0 + sides;
+
+		for (size_t j = 0; j < sides; j++) {
+			size_t j1 = j + 1 == sides ? 0 : j + 1;
+
+			push_tri(m, r0 + j, r1 + j1, r1 + j);
+			push_tri(m, r0 + j, r0 + j1, r1 + j1);
+		}
+	}
+	/* the tip: the last ring again with the cone's normals, and its apex */
+	cone = m->nvertices;
+	{
+		struct vec3 tt = t[n - 1], b = vec3_cross(tt, nr[n - 1]);
+
+		for (size_t j = 0; j < sides; j++) {
+			double th = 2.0 * VEC_PI * (double)j / (double)sides;
+			struct vec3 rad = vec3_add(vec3_scale(nr[n - 1], cos(th)), vec3_scale(b, sin(th)));
+			struct vec3 nor = vec3_norm_or(vec3_add(vec3_scale(rad, h), vec3_scale(tt, r)), tt);
+
+			push_vertex(m, vec3_add(a[n - 1], vec3_scale(rad, r)), nor);
+		}
+		apex = m->nvertices;
+		push_vertex(m, vec3_add(a[n - 1], vec3_scale(tt, h)), tt);
+	}
+	for (size_t j = 0; j < sides; j++)
+		push_tri(m, cone + j, cone + (j + 1 == sides ? 0 : j + 1), apex);
+}
+
+/* A leaf as a quad (two triangles) facing its front; room made already. */
+static void leaf_quad(const struct vine_leaf *l, struct mesh *m)
+{
+	size_t base = m->nvertices;
+	/* the diagonals' cross product: the front, from which the corners run counter-clockwise */
+	struct vec3 nor = vec3_norm_or(vec3_cross(vec3_sub(l->p[2], l->p[0]), vec3_sub(l->p[3], l->p[1])),
+				       vec3(0, 1, 0));
+
+	for (int i = 0; i < 4; i++)
+		push_vertex(m, l->p[i], nor);
+	push_tri(m, base, base + 1, base + 2);
+	push_tri(m, base, base + 2, base + 3);
+}
+
+int vine_mesh_append(const struct vine *v, struct mesh *stem, struct mesh *leaves)
+{
+	size_t sides = (size_t)ring_sides(v), nv = 0, ni = 0, longest = 0, nl = 0;
+	struct vec3 **axes, *t = NULL, *nr = NULL;
+	struct vine_leaf *l = NULL;
+	int ret = smooth_all(v, &axes);
+
+	if (ret < 0)
+		return ret;
+	for (size_t s = 0; s < v->nshoots; s++) {
+		size_t n = v->shoots[s].n;
+
+		if (n < 2)
+			continue; /* a bud that never grew: nothing to sweep */
+		nv += sides * (n + 1) + 1;
+		ni += 3 * (2 * sides * (n - 1) + sides);
+		longest = n > longest ? n : longest;
+	}
+	ret = leaves_on(v, axes, &l, &nl);
+	if (ret == 0) {
+		t = malloc((longest ? longest : 1) * sizeof(*t));
+		nr = malloc((longest ? longest : 1) * sizeof(*nr));
+		if (!t || !nr)
+			ret = -ENOMEM;
+	}
+	/* room for everything first: either mesh comes out whole or as it was */
+	if (ret == 0)
+		ret = mesh_reserve(stem, nv, ni);
+	if (ret == 0)
+		ret = mesh_reserve(leaves, 4 * nl, 6 * nl);
+	if (ret == 0) {
+		for (size_t s = 0; s < v->nshoots; s++)
+			if (v->shoots[s].n >= 2)
+				tube(v, axes[s], v->shoots[s].n, t, nr, stem);
+		for (size_t i = 0; i < nl; i++)
+			leaf_quad(&l[i], leaves);
+	}
+	free(t);
+	free(nr);
+	free(l);
+	free_all(v, axes);
+	return ret;
+}
