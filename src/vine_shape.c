@@ -341,7 +341,7 @@ static size_t node_build(const struct vine *v, size_t s, size_t k, const struct 
 		if (gone[j])
 			continue;
 		l = &out[made++];
-		w = vec3_norm_or(vec3_cross(t, o[j]), ref);
+		w = vec3_norm_or(vec3_cross(o[j], t), ref); /* the front faces up the stem */
 		l->shoot = s;
 		l->node = k;
 		l->cotyledon = cot;
