@@ -87,6 +87,16 @@ static void grow(void *arg)
 	vine_support_destroy(s);
 }
 
+static void index_only(void *arg)
+{
+	struct job *j = arg;
+	struct vine_support *s;
+
+	if (vine_support_create(j->pole.p, j->pole.np, j->pole.t, j->pole.nt, &s) < 0)
+		exit(1);
+	vine_support_destroy(s);
+}
+
 static void shape(void *arg)
 {
 	struct job *j = arg;
@@ -130,12 +140,15 @@ int main(void)
 			j.p.internodes = internodes[i];
 			mesh_init(&j.stem);
 			mesh_init(&j.leaves);
+			if (i == 0)
+				printf("  the index of %zu triangles alone: %.3f ms\n", j.pole.nt,
+				       1e3 * bench_run(index_only, &j, reps));
 			t = bench_run(grow, &j, reps);
 			snprintf(name, sizeof(name), "grow, %zu triangles, internodes", j.pole.nt);
 			bench_row(name, internodes[i], t, &pn, &pt);
 			t = bench_run(shape, &j, reps);
-			printf("  + smoothing, leaves and meshes: %.3f ms (%zu + %zu triangles)\n", 1e3 * t,
-			       j.stem.nindices / 3, j.leaves.nindices / 3);
+			printf("  the same and its smoothing, leaves and meshes: %.3f ms (stems %zu, leaves "
+			       "%zu triangles)\n", 1e3 * t, j.stem.nindices / 3, j.leaves.nindices / 3);
 			mesh_finish(&j.stem);
 			mesh_finish(&j.leaves);
 			free(j.pole.p);
