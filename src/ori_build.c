@@ -282,25 +282,143 @@ static int midrib(struct ori_builder *b, int s, size_t i, int parent)
 
 /* Side part j (right or left): its cut, then its vein from O. edge: its edge on the
  * walk's side of it (the one already walked). */
+/* What a side part's walk may undo: the builder's lengths and the face being walked. */
+struct ori_mark {
+	size_t nv, nc, nf, nfi, nmargin, ncur, nnodes;
+	int cur[ORI_MAX_CUR];
+	struct iso M;
+	int cur_across;
+};
+
+static void mark(const struct ori_builder *b, struct ori_mark *m)
+{
+	m->nv = b->nv;
+	m->nc = b->nc;
+	m->nf = b->nf;
+	m->nfi = b->nfi;
+	m->nmargin = b->nmargin;
+	m->ncur = b->ncur;
+	m->nnodes = b->nnodes;
+	memcpy(m->cur, b->cur, b->ncur * sizeof(*b->cur));
+	m->M = b->M;
+	m->cur_across = b->cur_across;
+}
+
+static void undo_to(struct ori_builder *b, const struct ori_mark *m)
+{
+	b->nv = m->nv;
+	b->nc = m->nc;
+	b->nf = m->nf;
+	b->nfi = m->nfi;
+	b->nmargin = m->nmargin;
+	b->ncur = m->ncur;
+	b->nnodes = m->nnodes;
+	memcpy(b->cur, m->cur, m->ncur * sizeof(*b->cur));
+	b->M = m->M;
+	b->cur_across = m->cur_across;
+}
+
+/* The part's vein from O with its cut's tip at r; its farthest margin point in *tip. */
+static int walk_side(struct ori_builder *b, const struct ori_side *p, bool left,
+		     const double edge[2], const double dv[2], double r, double *tip)
+{
+	size_t from = b->nmargin;
+	int ret;
+
+	set_cut(b, edge, dv, r);
+	ret = vein(b, p, left, 0, dv, 0, ORI_RULE_BASE, -1, 0);
+	*tip = 0;
+	for (size_t i = from; ret == 0 && i < b->nmargin; i++)
+		*tip = fmax(*tip, hypot(b->v[b->margin[i]][0], b->v[b->margin[i]][1]));
+	return ret;
+}
+
+/*
+ * The cut's tip r at which a part's walk puts its tip at target: secant steps from r =
+ * target (trials undone; a trial that fails is no fault of the design while a better r
+ * remains, so its message goes nowhere). far: where the cut crosses the part's edge (the
+ * junction), below which r cannot go. What it cannot meet, the lobes report.
+ */
+#define ORI_FIT_STEPS 12
+typedef int (*ori_trial)(struct ori_builder *b, const void *arg, double r, double *tip);
+
+static double fit(struct ori_builder *b, double target, double far, const void *arg,
+		  ori_trial trial)
+{
+	double r0 = target, t0 = 0, r1, t1, size = b->d->size;
+	struct error scratch, *keep = b->err;
+	struct ori_mark at;
+	bool ok;
+
+	mark(b, &at);
+	b->err = &scratch;
+	ok = trial(b, arg, r0, &t0) == 0 && t0 > far;
+	undo_to(b, &at);
+	/* first guess: the part scaled about its junction */
+	r1 = ok ? far + (r0 - far) * (target - far) / (t0 - far) : r0;
+	for (int i = 0; ok && i < ORI_FIT_STEPS && fabs(t0 - target) > 1e-9 * size; i++) {
+		double r;
+
+		ok = r1 > far * 1.01 && trial(b, arg, r1, &t1) == 0;
+		undo_to(b, &at);
+		if (!ok || fabs(t1 - t0) < 1e-15)
+			break;
+		r = r1;
+		r1 = r1 + (target - t1) * (r1 - r0) / (t1 - t0);
+		r0 = r;
+		t0 = t1;
+	}
+	b->err = keep;
+	return ok ? r0 : target;
+}
+
+struct side_walk {
+	const struct ori_side *p;
+	bool left;
+	const double *edge, *dv;
+};
+
+static int side_trial(struct ori_builder *b, const void *arg, double r, double *tip)
+{
+	const struct side_walk *w = arg;
+
+	return walk_side(b, w->p, w->left, w->edge, w->dv, r, tip);
+}
+
+/*
+ * Side part j (right or left): its cut, then its vein from O. edge: its edge on the walk's
+ * side of it (the one already walked). The spiral of section 2.1 is the target for the
+ * lobe's tip: an unforked vein ends on the cut at r, so r is the target; a forked part's
+ * farthest tooth lies beyond, so its r is fitted (secant steps on the right part, the
+ * same r on the left) until that tooth meets the target; what it cannot meet, the lobes
+ * report.
+ */
 static int side_part(struct ori_builder *b, size_t j, bool left, const double edge[2])
 {
 	const struct ori_design *d = b->d;
 	const struct ori_side *p = &d->sides[j];
 	double theta = d->middle[left] + ori_sides_angle(d, j) + p->angle / 2.0;
-	double r = d->size * (1.0 - theta / d->theta0), dv[2];
+	double target = d->size * (1.0 - theta / d->theta0), m = d->junction * d->size;
+	double r = target, dv[2], tip;
 
 	b->part = left ? (int)(d->nsides + 1 + j) : (int)(d->nsides - 1 - j);
 	b->part_line = p->line ? p->line : d->line;
 	snprintf(b->what, sizeof(b->what), "sides: part %zu%s", j + 1, left ? " (on the left)" : "");
 	b->part_what = b->what;
-	if (r <= d->junction * d->size * 1.01)
+	if (target <= m * 1.01)
 		return error_at(b->err, -EINVAL, b->name, b->part_line,
 				"sides: part %zu: its vein, %.4g degrees from the midrib, reaches %.3g of "
 				"the midrib by the spiral (theta0 %.4g), not past the junction (%.3g)",
-				j + 1, theta, r / d->size, d->theta0, d->junction);
+				j + 1, theta, target / d->size, d->theta0, d->junction);
 	dir_at(90.0 + (left ? theta : -theta), dv);
-	set_cut(b, edge, dv, r);
-	return vein(b, p, left, 0, dv, 0, ORI_RULE_BASE, -1, 0);
+	if (p->forks == 0)
+		return walk_side(b, p, left, edge, dv, r, &tip);
+	if (left && b->fitted[j])
+		return walk_side(b, p, left, edge, dv, b->fitted_r[j], &tip);
+	r = fit(b, target, m, &(struct side_walk){ p, left, edge, dv }, side_trial);
+	b->fitted[j] = true;
+	b->fitted_r[j] = r;
+	return walk_side(b, p, left, edge, dv, r, &tip);
 }
 
 /* A boundary mountain from O at deg: it ends at the junction, where neighbours meet. */
@@ -328,12 +446,45 @@ static int boundary(struct ori_builder *b, double deg)
 	return 0;
 }
 
+/*
+ * The middle part. Its cut runs through its junction and the midrib's tip at (0, size) as
+ * the tip lies folded: the nodes' side veins and mountains turn the folded midrib, but
+ * their reflections do not depend on the cut, so the tip's folded place is known before
+ * the walk (the face right of the last midrib segment maps it: the root face's map and
+ * each node's right vein and mountain, in the walk's order).
+ */
+static int walk_middle(struct ori_builder *b, const double edge[2])
+{
+	const struct ori_design *d = b->d;
+	double m = d->junction * d->size, j[2] = { m * edge[0], m * edge[1] };
+	double tip[2] = { 0, d->size }, o[2] = { 0, 0 }, oo[2];
+	struct iso M = b->M;
+
+	for (size_t i = 0; i < d->nnodes; i++) {
+		double n[2] = { 0, d->nodes[i].at * d->size }, up[2] = { 0, 1 }, dv[2], dm[2];
+		struct iso rv, rm;
+
+		dir_turn(up, -d->nodes[i].phi[0], dv);
+		dir_turn(up, -d->nodes[i].psi[0], dm);
+		rv = iso_reflect(n, dv);
+		rm = iso_reflect(n, dm);
+		M = iso_mul(&M, &rv);
+		M = iso_mul(&M, &rm);
+	}
+	iso_apply(&b->M, j, b->cut_a);
+	iso_apply(&M, tip, b->cut_b);
+	b->inside = 1.0;
+	iso_apply(&b->M, o, oo);
+	b->inside = cut_side(b, oo) >= 0 ? 1.0 : -1.0;
+	return midrib(b, 0, 0, -1);
+}
+
 static int walk_fan(struct ori_builder *b)
 {
 	const struct ori_design *d = b->d;
 	double half_r = d->middle[0] + ori_sides_angle(d, d->nsides);
 	double half_l = d->middle[1] + ori_sides_angle(d, d->nsides);
-	double edge[2], up[2] = { 0, 1 }, m = d->junction * d->size;
+	double edge[2], m = d->junction * d->size;
 	int ret, e;
 
 	b->M = iso_identity();
@@ -360,9 +511,8 @@ static int walk_fan(struct ori_builder *b)
 	b->part = (int)d->nsides;
 	b->part_line = d->line_middle ? d->line_middle : d->line;
 	b->part_what = "middle";
-	set_cut(b, edge, up, d->size);
 	b->root_face = (int)b->nf;
-	if ((ret = midrib(b, 0, 0, -1)) < 0)
+	if ((ret = walk_middle(b, edge)) < 0)
 		return ret;
 	b->part_line = d->line_middle ? d->line_middle : d->line;
 	b->part_what = "middle";

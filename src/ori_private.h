@@ -132,6 +132,10 @@ struct ori_builder {
 	/* the part being walked: its cut in folded coordinates, O's side of it */
 	double cut_a[2], cut_b[2];
 	double inside;
+	/* a forked side part's cut tip, fitted on the right so its farthest tooth meets the
+	 * spiral, and used again on the left (a mirror must not depend on rounding) */
+	double fitted_r[ORI_MAX_SIDES];
+	bool fitted[ORI_MAX_SIDES];
 	int part;
 	unsigned long part_line;
 	const char *part_what;

@@ -45,8 +45,8 @@ static struct ori_design hop(void)
 	d.size = 0.09;
 	d.middle[0] = d.middle[1] = 35;
 	d.nnodes = 2;
-	d.nodes[0] = (struct ori_node){ .at = 0.35, .phi = { 55, 55 }, .psi = { 28, 28 } };
-	d.nodes[1] = (struct ori_node){ .at = 0.6, .phi = { 50, 50 }, .psi = { 25, 25 } };
+	d.nodes[0] = (struct ori_node){ .at = 0.3, .phi = { 45, 45 }, .psi = { 32, 32 } };
+	d.nodes[1] = (struct ori_node){ .at = 0.55, .phi = { 40, 40 }, .psi = { 30, 30 } };
 	d.sides[0] = (struct ori_side){ .angle = 60, .forks = 2, .fork_at = 0.45, .fork_a = 28,
 					.fork_b = 28 };
 	d.sides[1] = (struct ori_side){ .angle = 55, .forks = 1, .fork_at = 0.5, .fork_a = 30,
@@ -506,8 +506,16 @@ int main(void)
 		struct ori_design p;
 		struct error err;
 
+		struct ori_leaf l;
+
 		CHECK_INT(ori_preset(names[i], &p, &err), 0);
 		printf("preset %s: %zu vertices inside\n", names[i], check_design(&p));
+		/* the lobes' tips meet the spiral r0 (1 - theta / theta0) (section 2.1): forked
+		 * parts by the fitted cut, the midrib through its folded tip */
+		CHECK_INT(ori_build(&p, names[i], &l, &err), 0);
+		for (size_t k = 0; k < l.nlobes; k++)
+			CHECK_NEAR(l.lobes[k].tip, l.lobes[k].target, 1e-6 * p.size);
+		ori_leaf_finish(&l);
 	}
 	CHECK(check_design(&f) == 0); /* a plain fan: no vertex inside */
 	CHECK(check_design(&h) >= 4); /* two nodes, forks on the side parts */
