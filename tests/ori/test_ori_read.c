@@ -171,11 +171,11 @@ static const char hop_block[] = "edaha-leaf: 1\n"
 				"middle:\n"
 				"  angle: 80\n"
 				"  nodes:\n"
-				"    - {at: 0.35, phi: 55, psi: 28}\n"
+				"    - {at: 0.3, phi: 45, psi: 32}\n"
 				"    -\n"
-				"      at: 0.6\n"
-				"      phi: 50\n"
-				"      psi: 25\n"
+				"      at: 0.55\n"
+				"      phi: 40\n"
+				"      psi: 30\n"
 				"sides:\n"
 				"  - angle: 60\n"
 				"    forks: 2\n"
@@ -190,8 +190,8 @@ static const char hop_pairs[] = "edaha-leaf: 1\n"
 				"middle:\n"
 				"  angle: [40, 40]\n"
 				"  nodes:\n"
-				"    - {at: 0.35, phi: [55, 55], psi: [28, 28]}\n"
-				"    - {at: 0.6, phi: [50, 50], psi: 25}\n"
+				"    - {at: 0.3, phi: [45, 45], psi: [32, 32]}\n"
+				"    - {at: 0.55, phi: [40, 40], psi: 30}\n"
 				"sides:\n"
 				"  - {angle: 60, forks: 2, fork: {at: 0.45, a: 28, b: 28}}\n"
 				"  - {angle: 55, forks: 1}\n"
@@ -204,10 +204,10 @@ static void check_hop(const struct ori_design *d)
 	CHECK(d->size == 0.09 && d->rest == 0.9);
 	CHECK(d->middle[0] == 40 && d->middle[1] == 40);
 	CHECK_INT(d->nnodes, 2);
-	CHECK(d->nodes[0].at == 0.35 && d->nodes[0].phi[0] == 55 && d->nodes[0].phi[1] == 55);
-	CHECK(d->nodes[0].psi[0] == 28 && d->nodes[0].psi[1] == 28);
-	CHECK(d->nodes[1].at == 0.6 && d->nodes[1].phi[0] == 50 && d->nodes[1].phi[1] == 50);
-	CHECK(d->nodes[1].psi[0] == 25 && d->nodes[1].psi[1] == 25);
+	CHECK(d->nodes[0].at == 0.3 && d->nodes[0].phi[0] == 45 && d->nodes[0].phi[1] == 45);
+	CHECK(d->nodes[0].psi[0] == 32 && d->nodes[0].psi[1] == 32);
+	CHECK(d->nodes[1].at == 0.55 && d->nodes[1].phi[0] == 40 && d->nodes[1].phi[1] == 40);
+	CHECK(d->nodes[1].psi[0] == 30 && d->nodes[1].psi[1] == 30);
 	CHECK_INT(d->nsides, 2);
 	CHECK(d->sides[0].angle == 60 && d->sides[0].forks == 2 && d->sides[0].fork_at == 0.45);
 	CHECK(d->sides[0].fork_a == 28 && d->sides[0].fork_b == 28);
