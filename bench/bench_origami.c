@@ -135,9 +135,9 @@ static void growth(void)
 			j.d.theta0 = 360;
 			j.d.nnodes = nodes;
 			for (size_t k = 0; k < nodes; k++)
-				j.d.nodes[k] = (struct ori_node){ .at = 0.35 + 0.25 * (double)k,
-								  .phi = { 55, 55 },
-								  .psi = { 28, 28 } };
+				j.d.nodes[k] = (struct ori_node){ .at = 0.3 + 0.25 * (double)k,
+								  .phi = { 45, 45 },
+								  .psi = { 32, 32 } };
 			prepare(&j);
 			snprintf(name, sizeof(name), "forks %d, nodes %zu, creases", forks, nodes);
 			t = bench_run(build, &j, 1001);
