@@ -10,3 +10,8 @@ int headless_run(const struct options *o);
 /* Runs --headless --leaf: an origami leaf alone, built, opened, drawn and written to --out
  * (origami.json, leaf.glb, screen.png), or nothing written. Returns the exit status. */
 int headless_leaf_run(const struct options *o);
+
+/* Runs --headless --support: a twining vine grown to its end on an OBJ support alone,
+ * drawn and written to --out (skeleton.json, model.glb, model.obj, model.mtl, screen.png),
+ * or nothing written. Returns the exit status. */
+int headless_vine_run(const struct options *o);

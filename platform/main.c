@@ -123,6 +123,8 @@ int main(int argc, char **argv)
 			options_usage(stdout);
 		else if (o.version)
 			printf("edaha %s\nkiosk: %s\n", EDAHA_VERSION, KIOSK_AVAILABLE ? "yes" : "no");
+		else if (o.headless && o.support)
+			status = headless_vine_run(&o);
 		else if (o.headless && o.leaf)
 			status = headless_leaf_run(&o);
 		else if (o.headless)

@@ -54,6 +54,14 @@ void options_usage(FILE *f)
 	      "  --opening T         how far the --leaf is open, from 0 (folded in the bud) to\n"
 	      "                      1 (flat); default: the design's rest opening (a grown\n"
 	      "                      leaf's, 0.9 in the presets)\n"
+	      "  --support FILE.obj  a twining vine alone instead of a tree, grown to its end\n"
+	      "                      on this support (a Wavefront OBJ, metres, y up); writes\n"
+	      "                      skeleton.json (its \"vines\"), model.glb, model.obj,\n"
+	      "                      model.mtl and screen.png to --out (docs/vines.md); needs\n"
+	      "                      --vine and --plant; only --size goes with them\n"
+	      "  --vine NAME|FILE    the vine: a preset (default, morning-glory) or a vine\n"
+	      "                      file (docs/vine-format.md)\n"
+	      "  --plant X,Y,Z       where the vine is planted, metres\n"
 	      "\n"
 	      "Kiosk test runs (no effect on a normal kiosk):\n"
 	      "  --kiosk-frames N    draw a new frame every vblank, as if the drawing changed\n"
@@ -175,6 +183,20 @@ static bool parse_opening(const char *s, double *t)
 	return end != s && !*end && *t >= 0.0 && *t <= 1.0;
 }
 
+static bool parse_plant(const char *s, double p[3])
+{
+	char *end;
+
+	for (int k = 0; k < 3; k++) {
+		errno = 0;
+		p[k] = strtod(s, &end) + 0.0; /* + 0: -0 is 0 */
+		if (errno || end == s || !isfinite(p[k]) || *end != (k < 2 ? ',' : '\0'))
+			return false;
+		s = end + 1;
+	}
+	return true;
+}
+
 static bool parse_idle(const char *s, double *seconds)
 {
 	char *end;
@@ -188,7 +210,8 @@ int options_parse(struct options *o, int argc, char **argv)
 {
 	enum { OPT_HEADLESS = 256, OPT_SIZE, OPT_SEED, OPT_OUT, OPT_LOAD, OPT_REPLAY, OPT_PRESS,
 	       OPT_VIEW, OPT_RECORD, OPT_HELP, OPT_VERSION, OPT_KIOSK_FRAMES, OPT_SCREENSHOT,
-	       OPT_CONFIG, OPT_STATS, OPT_LANG, OPT_IDLE, OPT_GENERATE, OPT_LEAF, OPT_OPENING };
+	       OPT_CONFIG, OPT_STATS, OPT_LANG, OPT_IDLE, OPT_GENERATE, OPT_LEAF, OPT_OPENING,
+	       OPT_SUPPORT, OPT_VINE, OPT_PLANT };
 	static const struct option longopts[] = {
 		{ "headless", no_argument, NULL, OPT_HEADLESS },
 		{ "size", required_argument, NULL, OPT_SIZE },
@@ -208,6 +231,9 @@ int options_parse(struct options *o, int argc, char **argv)
 		{ "idle", required_argument, NULL, OPT_IDLE },
 		{ "leaf", required_argument, NULL, OPT_LEAF },
 		{ "opening", required_argument, NULL, OPT_OPENING },
+		{ "support", required_argument, NULL, OPT_SUPPORT },
+		{ "vine", required_argument, NULL, OPT_VINE },
+		{ "plant", required_argument, NULL, OPT_PLANT },
 		{ "help", no_argument, NULL, OPT_HELP },
 		{ "version", no_argument, NULL, OPT_VERSION },
 		{ NULL, 0, NULL, 0 },
@@ -309,6 +335,22 @@ int options_parse(struct options *o, int argc, char **argv)
 						   "in the bud, to 1, flat)", optarg);
 			o->opening_given = true;
 			break;
+		case OPT_SUPPORT:
+			if (!optarg[0])
+				return usage_error("%s needs a file name", "--support");
+			o->support = optarg;
+			break;
+		case OPT_VINE:
+			if (!optarg[0])
+				return usage_error("%s needs a vine preset's name or a file name", "--vine");
+			o->vine = optarg;
+			break;
+		case OPT_PLANT:
+			if (!parse_plant(optarg, o->plant))
+				return usage_error("bad --plant \"%s\" (expected X,Y,Z: three numbers, "
+						   "metres)", optarg);
+			o->plant_given = true;
+			break;
 		case OPT_HELP:
 			o->help = true;
 			break;
@@ -324,11 +366,13 @@ int options_parse(struct options *o, int argc, char **argv)
 	if (o->help || o->version)
 		return 0;
 	if (!o->headless && (o->out_dir || o->nsteps || o->view_given || o->idle_given || o->generate ||
-			     o->leaf || o->opening_given))
+			     o->leaf || o->opening_given || o->support || o->vine || o->plant_given))
 		return usage_error("%s needs --headless",
 				   o->out_dir ? "--out" : o->nsteps ? "--replay/--press" :
 				   o->view_given ? "--view" : o->generate ? "--generate" :
-				   o->leaf ? "--leaf" : o->opening_given ? "--opening" : "--idle");
+				   o->leaf ? "--leaf" : o->opening_given ? "--opening" :
+				   o->support ? "--support" : o->vine ? "--vine" :
+				   o->plant_given ? "--plant" : "--idle");
 	if (o->headless && (o->kiosk_frames || o->screenshot || o->config || o->stats))
 		return usage_error("%s is for the kiosk, not --headless",
 				   o->kiosk_frames ? "--kiosk-frames" : o->screenshot ? "--screenshot" :
@@ -341,6 +385,20 @@ int options_parse(struct options *o, int argc, char **argv)
 	if (o->leaf && (o->load || o->generate || o->nsteps || o->view_given || o->idle_given ||
 			o->record || o->seed_given || o->lang))
 		return usage_error("%s does not go with --leaf (only --out, --opening and --size do)",
+				   o->load ? "--load" : o->generate ? "--generate" :
+				   o->nsteps ? "--replay/--press" : o->view_given ? "--view" :
+				   o->idle_given ? "--idle" : o->record ? "--record" :
+				   o->seed_given ? "--seed" : "--lang");
+	if ((o->vine || o->plant_given) && !o->support)
+		return usage_error("%s is for a --support", o->vine ? "--vine" : "--plant");
+	if (o->support && (!o->vine || !o->plant_given))
+		return usage_error("%s needs --vine NAME|FILE and --plant X,Y,Z", "--support");
+	/* a vine alone: no drawing, no leaf */
+	if (o->support && (o->leaf || o->opening_given || o->load || o->generate || o->nsteps ||
+			   o->view_given || o->idle_given || o->record || o->seed_given || o->lang))
+		return usage_error("%s does not go with --support (only --out, --vine, --plant and "
+				   "--size do)",
+				   o->leaf ? "--leaf" : o->opening_given ? "--opening" :
 				   o->load ? "--load" : o->generate ? "--generate" :
 				   o->nsteps ? "--replay/--press" : o->view_given ? "--view" :
 				   o->idle_given ? "--idle" : o->record ? "--record" :

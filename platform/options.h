@@ -44,6 +44,10 @@ struct options {
 	const char *leaf;       /* headless: an origami leaf alone, a preset's name or a file */
 	bool opening_given;     /* ...opened this far, 0..1 (else the design's rest) */
 	double opening;
+	const char *support;    /* headless: a vine on this OBJ support alone... */
+	const char *vine;       /* ...a vine preset's name or a vine file... */
+	bool plant_given;       /* ...planted here, metres */
+	double plant[3];
 };
 
 /* Parses argv. Returns 0, or 2 (usage error, message printed) as an exit status. */

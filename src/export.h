@@ -37,3 +37,7 @@ int export_obj(const struct tree *t, const struct tree_mesh *m, const struct tre
 int export_obj_mtllib(struct buf *obj, const char *mtl_name);
 /* skeleton.json, see docs/skeleton-format.md. */
 int export_skeleton(const struct tree *t, struct buf *out);
+struct json_object;
+/* The same as a json-c object, for writers that add a section (vine_json.c); NULL without
+ * memory. */
+struct json_object *export_skeleton_object(const struct tree *t);

@@ -58,13 +58,12 @@ static struct json_object *jleaf(const struct leaf *l)
 	return json_out_set(o, "points", jpoints(l->points, l->npoints));
 }
 
-int export_skeleton(const struct tree *t, struct buf *out)
+struct json_object *export_skeleton_object(const struct tree *t)
 {
 	struct json_object *root = json_object_new_object();
 	struct json_object *view = json_object_new_array_ext(3);
 	struct json_object *branches = json_object_new_array();
 	struct json_object *leaves = json_object_new_array();
-	int r;
 
 	/* The front view looks along -z (src/view.h). */
 	view = json_out_push(view, json_object_new_int(0));
@@ -82,7 +81,14 @@ int export_skeleton(const struct tree *t, struct buf *out)
 	root = json_out_set(root, "view", view);
 	root = json_out_set(root, "season", json_object_new_string(season_name(t->season)));
 	root = json_out_set(root, "branches", branches);
-	root = json_out_set(root, "leaves", leaves);
+	return json_out_set(root, "leaves", leaves);
+}
+
+int export_skeleton(const struct tree *t, struct buf *out)
+{
+	struct json_object *root = export_skeleton_object(t);
+	int r;
+
 	if (!root)
 		return -ENOMEM;
 

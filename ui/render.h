@@ -54,6 +54,17 @@ struct mesh;
 #define RENDER_LEAF_YAW_DEG -30.0
 #define RENDER_LEAF_PITCH_DEG 30.0
 int render_leaf(struct render *r, const struct mesh *m, int width, int height);
+/*
+ * A twining vine alone on its support (edaha --support): support in the bark's colour,
+ * stems a stem green, leaves double-sided in the leaf green, lit as the leaf alone, seen
+ * from a fixed three-quarter view (RENDER_VINE_YAW_DEG, RENDER_VINE_PITCH_DEG) and framed
+ * to fit all three in a width x height view. Same meshes, same pixels. 0; -EIO if GL
+ * reported an error; -ENOMEM; -EINVAL for a bad mesh or size.
+ */
+#define RENDER_VINE_YAW_DEG -30.0
+#define RENDER_VINE_PITCH_DEG 20.0
+int render_vine(struct render *r, const struct mesh *support, const struct mesh *stems,
+		const struct mesh *leaves, int width, int height);
 
 /* What the last render_frame() did: for benchmarks and tests. */
 struct render_stats {

@@ -23,26 +23,32 @@ static const double leaf_light[3] = { -0.48, 0.6, 0.64 };
 #define LEAF_FIT_MARGIN 1.12
 
 /*
- * World -> clip: the camera about the origin (the leaf's base), then the leaf's view-space
- * box centred and scaled, square pixels, to fill the view; its depth fills the depth
- * range, so near faces of an 8 cm leaf still part cleanly from far ones.
+ * World -> clip: the camera about the origin (the leaf's base), then the meshes' view-space
+ * box centred and scaled, square pixels, to fill the view but for margin (a fraction of
+ * their size); their depth fills the depth range, so near faces of an 8 cm leaf still part
+ * cleanly from far ones.
  */
-static void leaf_matrix(const struct mesh *m, const struct camera_xf *xf, int width, int height,
-			float out[16])
+void render_fit_matrix(const struct mesh *const *meshes, size_t nmeshes,
+		       const struct camera_xf *xf, int width, int height, double margin,
+		       float out[16])
 {
 	double lo[3] = { INFINITY, INFINITY, INFINITY };
 	double hi[3] = { -INFINITY, -INFINITY, -INFINITY };
 	double c[3], px_per_m, s[3];
 	float cam[16], fit[16] = { 0 };
 
-	for (size_t i = 0; i < m->nvertices; i++) {
-		const float *p = m->positions + 3 * i;
-		struct vec3 v = camera_to_view(xf, vec3(p[0], p[1], p[2]));
-		const double q[3] = { v.x, v.y, v.z };
+	for (size_t j = 0; j < nmeshes; j++) {
+		const struct mesh *m = meshes[j];
 
-		for (int k = 0; k < 3; k++) {
-			lo[k] = fmin(lo[k], q[k]);
-			hi[k] = fmax(hi[k], q[k]);
+		for (size_t i = 0; i < m->nvertices; i++) {
+			const float *p = m->positions + 3 * i;
+			struct vec3 v = camera_to_view(xf, vec3(p[0], p[1], p[2]));
+			const double q[3] = { v.x, v.y, v.z };
+
+			for (int k = 0; k < 3; k++) {
+				lo[k] = fmin(lo[k], q[k]);
+				hi[k] = fmax(hi[k], q[k]);
+			}
 		}
 	}
 	for (int k = 0; k < 3; k++) {
@@ -52,11 +58,11 @@ static void leaf_matrix(const struct mesh *m, const struct camera_xf *xf, int wi
 		c[k] = 0.5 * (lo[k] + hi[k]);
 	}
 	px_per_m = fmin(width / fmax(hi[0] - lo[0], 1e-6), height / fmax(hi[1] - lo[1], 1e-6)) /
-		   LEAF_FIT_MARGIN;
+		   margin;
 	s[0] = 2.0 * px_per_m / width;
 	s[1] = 2.0 * px_per_m / height;
 	/* nearer the viewer (larger view z) is smaller depth */
-	s[2] = -2.0 / (fmax(hi[2] - lo[2], 1e-6) * LEAF_FIT_MARGIN);
+	s[2] = -2.0 / (fmax(hi[2] - lo[2], 1e-6) * margin);
 	camera_matrix(xf, cam);
 	for (int k = 0; k < 3; k++) {
 		fit[5 * k] = (float)s[k];
@@ -88,7 +94,7 @@ int render_leaf(struct render *r, const struct mesh *m, int width, int height)
 	light[0] = (float)l.x;
 	light[1] = (float)l.y;
 	light[2] = (float)l.z;
-	leaf_matrix(m, &xf, width, height, mvp);
+	render_fit_matrix(&m, 1, &xf, width, height, LEAF_FIT_MARGIN, mvp);
 	render_drain_gl_errors();
 	memset(&rm, 0, sizeof(rm));
 	ret = render_mesh_upload(&rm, m, r->uint_indices);

@@ -141,6 +141,12 @@ extern const char render_tinted_fs[];
  * it: from the upper left, in front), for the frames drawn elsewhere (render_leaf.c) */
 extern const float render_paper[3];
 extern const float render_light_dir[3];
+/* render_leaf.c: world -> clip for a frame of its own (a leaf, a vine): the camera xf,
+ * then the meshes' view-space box centred and scaled to fill width x height but for margin
+ * (1.12: an eighth of their size), their depth filling the depth range. */
+void render_fit_matrix(const struct mesh *const *meshes, size_t nmeshes,
+		       const struct camera_xf *xf, int width, int height, double margin,
+		       float out[16]);
 /* Empties GL's error flags: errors left by others are not ours to report. */
 void render_drain_gl_errors(void);
 /* Room for n floats of colours (r->tint_scratch), or NULL. */

@@ -1,0 +1,86 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * A twining vine alone on its support (edaha --headless --support): the support in the
+ * bark's colour, the stems a stem green, the leaves the screen's leaf green, drawn by the
+ * tree program from a fixed three-quarter view and framed as a leaf alone is
+ * (render_fit_matrix), so the picture is the same for the same vine.
+ */
+#include <errno.h>
+#include <math.h>
+#include <string.h>
+
+#include "leaf_tint.h"
+#include "mesh.h"
+#include "render_private.h"
+
+/* The light, in world space (towards it): from the upper left and in front, as the leaf's,
+ * fixed to the scene so that the picture does not depend on the camera's code. */
+static const double vine_light[3] = { -0.48, 0.6, 0.64 };
+
+/* The screen's bark, and a young stem's green: darker and yellower than the leaves, so
+ * that a stem reads against its own leaves. */
+static const float vine_bark[3] = { 0.47f, 0.32f, 0.20f };
+static const float vine_stem[3] = { 0.30f, 0.45f, 0.16f };
+
+#define VINE_FIT_MARGIN 1.08
+
+int render_vine(struct render *r, const struct mesh *support, const struct mesh *stems,
+		const struct mesh *leaves, int width, int height)
+{
+	const float leaf[3] = { LEAF_TINT_SUMMER_RGB };
+	const struct mesh *meshes[3] = { support, stems, leaves };
+	const float *colors[3] = { vine_bark, vine_stem, leaf };
+	struct render_mesh rm[3];
+	struct camera_xf xf;
+	struct vec3 l = vec3_norm_or(vec3(vine_light[0], vine_light[1], vine_light[2]),
+				     vec3(0.0, 0.0, 1.0));
+	float mvp[16], light[3];
+	int ret = 0;
+
+	memset(&r->stats, 0, sizeof(r->stats));
+	if (width <= 0 || height <= 0)
+		return -EINVAL;
+	camera_xf_init(&xf, camera_normalize(RENDER_VINE_YAW_DEG, RENDER_VINE_PITCH_DEG),
+		       vec3(0.0, 0.0, 0.0));
+	light[0] = (float)l.x;
+	light[1] = (float)l.y;
+	light[2] = (float)l.z;
+	render_fit_matrix(meshes, 3, &xf, width, height, VINE_FIT_MARGIN, mvp);
+	render_drain_gl_errors();
+	memset(rm, 0, sizeof(rm));
+	for (int i = 0; i < 3 && ret == 0; i++)
+		ret = render_mesh_upload(&rm[i], meshes[i], r->uint_indices);
+
+	glViewport(0, 0, width, height);
+	glDisable(GL_SCISSOR_TEST);
+	glDisable(GL_BLEND);
+	glDisable(GL_CULL_FACE);
+	glDepthMask(GL_TRUE);
+	glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+	glClearColor(render_paper[0], render_paper[1], render_paper[2], 1.0f);
+	glClearDepthf(1.0f);
+	glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	if (ret == 0) {
+		glEnable(GL_DEPTH_TEST);
+		glDepthFunc(GL_LESS);
+		glUseProgram(r->tree_program);
+		glUniformMatrix4fv(r->tree_mvp, 1, GL_FALSE, mvp);
+		glUniform3fv(r->tree_light, 1, light);
+		glEnableVertexAttribArray(ATTR_POSITION);
+		glEnableVertexAttribArray(ATTR_NORMAL);
+		for (int i = 0; i < 3; i++) {
+			/* a leaf shows both sides; the support and the stems are closed */
+			glUniform1i(r->tree_two_sided, i == 2);
+			glUniform3fv(r->tree_color, 1, colors[i]);
+			render_mesh_draw(r, &rm[i]);
+		}
+		glDisableVertexAttribArray(ATTR_NORMAL);
+		glDisable(GL_DEPTH_TEST);
+		glUseProgram(0);
+	}
+	for (int i = 0; i < 3; i++)
+		render_mesh_finish(&rm[i]);
+	if (glGetError() != GL_NO_ERROR)
+		return -EIO;
+	return ret;
+}
