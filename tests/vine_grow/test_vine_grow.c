@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mesh.h"
 #include "test.h"
 #include "vine.h"
 #include "vine_support.h"
@@ -152,6 +153,24 @@ static void test_pole(double angle, enum vine_twining tw)
 		for (size_t i = 0; i < v.shoots[k].n; i++)
 			CHECK(vine_support_distance(s, v.shoots[k].axis[i], 1, NULL, NULL) >=
 			      0.95 * p.radius);
+	/* the stems' meshes: no vertex more than 0.05 r inside the pole (below its top, where
+	 * the pole is a cylinder of radius R: 64 sides, their faces R cos(pi / 64) out) */
+	{
+		struct mesh stem, leaves;
+
+		mesh_init(&stem);
+		mesh_init(&leaves);
+		CHECK_INT(vine_mesh_append(&v, &stem, &leaves), 0);
+		CHECK(stem.nvertices > 0 && leaves.nvertices > 0);
+		for (size_t i = 0; i < stem.nvertices; i++) {
+			const float *q = stem.positions + 3 * i;
+
+			if (q[1] > 0.0 && q[1] < H - 0.01)
+				CHECK(hypot(q[0], q[2]) >= R * cos(VEC_PI / 64) - 0.05 * p.radius);
+		}
+		mesh_finish(&stem);
+		mesh_finish(&leaves);
+	}
 	/* the pole is 1 m and the budget longer: the apex stops above its top, and the buds
 	 * at nodes U + 1, U + 2, ... take over in that order */
 	CHECK(sh->stopped);
