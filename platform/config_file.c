@@ -182,7 +182,7 @@ static int for_each_pair(struct cfg_parser *p, const yaml_node_t *n, const char 
 	top = n->data.mapping.pairs.top;
 	for (yaml_node_pair_t *pair = start; pair < top; pair++) {
 		const yaml_node_t *key = yaml_document_get_node(&p->doc, pair->key);
-		const yaml_node_t *value = yaml_document_get_node(&p->doc, pair->value);
+		const yaml_node_t *value = yaml_document_get_node(&p->doc, pair->value), *other;
 		const char *k;
 		int r;
 
@@ -191,14 +191,10 @@ static int for_each_pair(struct cfg_parser *p, const yaml_node_t *n, const char 
 		k = yaml_node_text(key);
 		if (!k)
 			return fail(p, key, "expected a plain key in %s, got %s", what, yaml_node_kind(key));
-		for (yaml_node_pair_t *q = start; q < pair; q++) {
-			const yaml_node_t *other = yaml_document_get_node(&p->doc, q->key);
-			const char *o = other ? yaml_node_text(other) : NULL;
-
-			if (o && strcmp(o, k) == 0)
-				return fail(p, key, "duplicate key \"%.40s\" in %s (first on line %lu)",
-					    k, what, line_of(p, other));
-		}
+		other = yaml_node_earlier_key(&p->doc, n, pair, k);
+		if (other)
+			return fail(p, key, "duplicate key \"%.40s\" in %s (first on line %lu)", k,
+				    what, line_of(p, other));
 		if ((r = fn(p, key, k, value, data)) < 0)
 			return r;
 	}

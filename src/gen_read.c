@@ -127,8 +127,9 @@ static int for_each_pair(struct reader *r, const yaml_node_t *n, const char *wha
 	top = n->data.mapping.pairs.top;
 	for (yaml_node_pair_t *pair = start; pair < top; pair++) {
 		const yaml_node_t *key = yaml_document_get_node(&r->doc, pair->key);
-		const yaml_node_t *value = yaml_document_get_node(&r->doc, pair->value);
+		const yaml_node_t *value = yaml_document_get_node(&r->doc, pair->value), *other;
 		const char *k;
+		char buf[24];
 		int ret;
 
 		if (!key || !value)
@@ -136,15 +137,10 @@ static int for_each_pair(struct reader *r, const yaml_node_t *n, const char *wha
 		k = yaml_node_text(key);
 		if (!k || !yaml_node_plain(key))
 			return fail(r, key, "%s: expected a plain key, got %s", what, yaml_node_kind(key));
-		for (yaml_node_pair_t *q = start; q < pair; q++) {
-			const yaml_node_t *other = yaml_document_get_node(&r->doc, q->key);
-			const char *o = other ? yaml_node_text(other) : NULL;
-			char buf[24];
-
-			if (o && !strcmp(o, k))
-				return fail(r, key, "duplicate key \"%s\" (first on line %lu)", shown(k, buf),
-					    line_of(r, other));
-		}
+		other = yaml_node_earlier_key(&r->doc, n, pair, k);
+		if (other)
+			return fail(r, key, "duplicate key \"%s\" (first on line %lu)", shown(k, buf),
+				    line_of(r, other));
 		if ((ret = fn(r, key, k, value)) < 0)
 			return ret;
 	}
@@ -155,20 +151,7 @@ static int for_each_pair(struct reader *r, const yaml_node_t *n, const char *wha
 static const yaml_node_t *lookup(struct reader *r, const yaml_node_t *n, const char *k,
 				 const yaml_node_t **key)
 {
-	if (n->type != YAML_MAPPING_NODE)
-		return NULL;
-	for (yaml_node_pair_t *pair = n->data.mapping.pairs.start; pair < n->data.mapping.pairs.top;
-	     pair++) {
-		const yaml_node_t *kn = yaml_document_get_node(&r->doc, pair->key);
-		const char *s = kn ? yaml_node_text(kn) : NULL;
-
-		if (s && !strcmp(s, k)) {
-			if (key)
-				*key = kn;
-			return yaml_document_get_node(&r->doc, pair->value);
-		}
-	}
-	return NULL;
+	return yaml_node_lookup(&r->doc, n, k, key);
 }
 
 static int unknown(struct reader *r, const yaml_node_t *key, const char *k, const char *in)

@@ -177,20 +177,7 @@ static int get_twining(struct reader *r, const yaml_node_t *n, enum vine_twining
 static const yaml_node_t *lookup(struct reader *r, const yaml_node_t *n, const char *k,
 				 const yaml_node_t **key)
 {
-	if (n->type != YAML_MAPPING_NODE)
-		return NULL;
-	for (yaml_node_pair_t *pair = n->data.mapping.pairs.start; pair < n->data.mapping.pairs.top;
-	     pair++) {
-		const yaml_node_t *kn = yaml_document_get_node(&r->doc, pair->key);
-		const char *s = kn ? yaml_node_text(kn) : NULL;
-
-		if (s && !strcmp(s, k)) {
-			if (key)
-				*key = kn;
-			return yaml_document_get_node(&r->doc, pair->value);
-		}
-	}
-	return NULL;
+	return yaml_node_lookup(&r->doc, n, k, key);
 }
 
 static int read_value(struct reader *r, size_t i, const yaml_node_t *v)
@@ -217,7 +204,7 @@ static int read_pairs(struct reader *r, const yaml_node_t *root)
 
 	for (yaml_node_pair_t *pair = start; pair < top; pair++) {
 		const yaml_node_t *key = yaml_document_get_node(&r->doc, pair->key);
-		const yaml_node_t *value = yaml_document_get_node(&r->doc, pair->value);
+		const yaml_node_t *value = yaml_document_get_node(&r->doc, pair->value), *other;
 		const char *k;
 		char buf[24];
 		size_t i;
@@ -229,14 +216,10 @@ static int read_pairs(struct reader *r, const yaml_node_t *root)
 		if (!k || !yaml_node_plain(key))
 			return fail(r, key, "the top level: expected a plain key, got %s", got(key));
 		/* the pairs before are known keys, each once: a short look back */
-		for (yaml_node_pair_t *q = start; q < pair; q++) {
-			const yaml_node_t *other = yaml_document_get_node(&r->doc, q->key);
-			const char *o = other ? yaml_node_text(other) : NULL;
-
-			if (o && !strcmp(o, k))
-				return fail(r, key, "duplicate key \"%s\" (first on line %lu)", shown(k, buf),
-					    line_of(r, other));
-		}
+		other = yaml_node_earlier_key(&r->doc, root, pair, k);
+		if (other)
+			return fail(r, key, "duplicate key \"%s\" (first on line %lu)", shown(k, buf),
+				    line_of(r, other));
 		if (!strcmp(k, "edaha-vine"))
 			continue; /* read first */
 		for (i = 0; i < NKEYS && strcmp(keys[i].key, k); i++)

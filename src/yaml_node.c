@@ -152,3 +152,35 @@ int yaml_node_prescan(const char *data, size_t len, const char *name, unsigned l
 	yaml_parser_delete(&y);
 	return ret;
 }
+
+const yaml_node_t *yaml_node_lookup(yaml_document_t *doc, const yaml_node_t *n, const char *k,
+				    const yaml_node_t **key)
+{
+	if (n->type != YAML_MAPPING_NODE)
+		return NULL;
+	for (yaml_node_pair_t *pair = n->data.mapping.pairs.start; pair < n->data.mapping.pairs.top;
+	     pair++) {
+		const yaml_node_t *kn = yaml_document_get_node(doc, pair->key);
+		const char *s = kn ? yaml_node_text(kn) : NULL;
+
+		if (s && !strcmp(s, k)) {
+			if (key)
+				*key = kn;
+			return yaml_document_get_node(doc, pair->value);
+		}
+	}
+	return NULL;
+}
+
+const yaml_node_t *yaml_node_earlier_key(yaml_document_t *doc, const yaml_node_t *n,
+					 const yaml_node_pair_t *pair, const char *k)
+{
+	for (const yaml_node_pair_t *q = n->data.mapping.pairs.start; q < pair; q++) {
+		const yaml_node_t *other = yaml_document_get_node(doc, q->key);
+		const char *o = other ? yaml_node_text(other) : NULL;
+
+		if (o && !strcmp(o, k))
+			return other;
+	}
+	return NULL;
+}

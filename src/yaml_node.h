@@ -29,6 +29,13 @@ const char *yaml_node_shown(const char *s, char out[24]);
 int yaml_node_prescan(const char *data, size_t len, const char *name, unsigned long offset,
 		      int max_depth, const char *what, struct error *err);
 
+/* The value of key k in mapping n of doc (and its key node in *key, may be NULL), or NULL. */
+const yaml_node_t *yaml_node_lookup(yaml_document_t *doc, const yaml_node_t *n, const char *k,
+				    const yaml_node_t **key);
+/* An earlier key of mapping n, before `pair`, with the text k (a duplicate), or NULL. */
+const yaml_node_t *yaml_node_earlier_key(yaml_document_t *doc, const yaml_node_t *n,
+					 const yaml_node_pair_t *pair, const char *k);
+
 /* "a scalar", "a list", "a mapping": for messages. */
 const char *yaml_node_kind(const yaml_node_t *n);
 /* A scalar's text; NULL if n is no scalar or holds a NUL byte. */
