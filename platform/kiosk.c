@@ -717,6 +717,8 @@ static enum button mode_button(const struct app *app)
 		return BUTTON_LEAF;
 	case APP_MODE_PROPAGATE:
 		return BUTTON_PROPAGATE;
+	case APP_MODE_VINE:
+		return BUTTON_VINE;
 	case APP_MODE_NEW:
 	case APP_MODE_SKETCH:
 		break;

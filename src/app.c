@@ -111,6 +111,8 @@ int app_apply_op(struct app *app, const struct doc_op *op)
 		if ((unsigned)op->pattern < SEASON_COUNT)
 			app->tree.season = (enum season)op->pattern;
 		return SKETCH_GREW;
+	case DOC_OP_VINE:
+		return app_vine_apply(&app->tree, op);
 	case DOC_OP_LEAFTYPE:
 		/* what arrangement and propagation place next: no element changes */
 		if (op->pattern >= -1 && op->pattern < ORI_KIND_COUNT)
@@ -294,6 +296,8 @@ int app_press_button(struct app *app, enum button button, uint64_t time_us)
 		return app_set_mode(app, APP_MODE_LEAF, time_us);
 	case BUTTON_PROPAGATE:
 		return app_set_mode(app, APP_MODE_PROPAGATE, time_us);
+	case BUTTON_VINE:
+		return app_set_mode(app, APP_MODE_VINE, time_us);
 	case BUTTON_FIXED_COUNT:
 		app->pattern = APP_PATTERN_FIXED_COUNT;
 		return 0;

@@ -29,6 +29,7 @@ enum app_mode {
 	APP_MODE_LEAF,
 	APP_MODE_PROPAGATE,
 	APP_MODE_NEW, /* the New strip: templates to start from (app_mode_new.c) */
+	APP_MODE_VINE, /* a tap at the tree's foot plants a twining vine (app_mode_vine.c) */
 };
 
 /* Propagation pattern: until a pattern button is pressed, fixed count for a branch with
@@ -62,6 +63,10 @@ enum app_status {
 	APP_STATUS_STICK_LOCKED, /* write-protected, read-only */
 	APP_STATUS_STICK_UNUSABLE, /* unformatted, unsupported or a hostile layout */
 	APP_STATUS_STICK_READY,  /* a stick was put in and can be saved to */
+	/* the vine mode (issue 16) */
+	APP_STATUS_VINE_TAP,     /* entered: tap the ground by the trunk to plant a vine */
+	APP_STATUS_VINE_WHERE,   /* a tap too far from the tree: tap by the trunk's foot */
+	APP_STATUS_VINE_FULL,    /* the tree has as many vines as it takes */
 	APP_STATUS_COUNT,
 };
 #define APP_STATUS_US 4000000u

@@ -59,6 +59,12 @@ int app_templates_build(struct app *app);
 /* app_generate.c: the season, template and parameter buttons. */
 int app_press_functional(struct app *app, enum button b, uint64_t time_us);
 
+/* app_vine.c: the vine op applied to t (SKETCH_GREW when it grew nothing, CHANGED, or
+ * < 0), and the index of t's bark a vine climbs (0, -EINVAL: no bark, -ENOMEM). */
+int app_vine_apply(struct tree *t, const struct doc_op *op);
+struct vine_support;
+int app_vine_support(const struct tree *t, struct vine_support **out);
+
 /* app_view.c */
 void app_camera_store(struct app *app, struct camera c);
 void app_camera_follow_tree(struct app *app);

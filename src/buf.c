@@ -107,3 +107,15 @@ int buf_pad(struct buf *b, size_t align, unsigned char fill)
 	}
 	return 0;
 }
+
+int buf_print_exact(struct buf *b, double v)
+{
+	char s[32];
+
+	for (int digits = 15; digits <= 17; digits++) {
+		snprintf(s, sizeof(s), "%.*g", digits, v);
+		if (strtod(s, NULL) == v)
+			break;
+	}
+	return buf_printf(b, "%s", s);
+}

@@ -22,5 +22,8 @@ int buf_append(struct buf *b, const void *data, size_t len);
 int buf_append_u32le(struct buf *b, uint32_t v);
 int buf_append_f32le(struct buf *b, float v);
 int buf_printf(struct buf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* v as the shortest of %.15g..%.17g that strtod reads back as exactly v (parameter files
+ * that a drawing stores on a line). */
+int buf_print_exact(struct buf *b, double v);
 /* Pads with byte `fill` until len is a multiple of `align`. */
 int buf_pad(struct buf *b, size_t align, unsigned char fill);

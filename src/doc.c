@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include "doc.h"
 #include "gen.h"
+#include "vine.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -16,9 +17,11 @@ void doc_op_finish(struct doc_op *op)
 {
 	free(op->points);
 	free(op->params);
+	free(op->vine);
 	op->points = NULL;
 	op->npoints = 0;
 	op->params = NULL;
+	op->vine = NULL;
 }
 
 int doc_op_copy(struct doc_op *dst, const struct doc_op *src)
@@ -26,6 +29,7 @@ int doc_op_copy(struct doc_op *dst, const struct doc_op *src)
 	*dst = *src;
 	dst->points = NULL;
 	dst->params = NULL;
+	dst->vine = NULL;
 	if (src->npoints) {
 		dst->points = malloc(src->npoints * sizeof(*dst->points));
 		if (!dst->points)
@@ -37,6 +41,12 @@ int doc_op_copy(struct doc_op *dst, const struct doc_op *src)
 		if (!dst->params)
 			goto fail;
 		memcpy(dst->params, src->params, sizeof(*dst->params));
+	}
+	if (src->vine) {
+		dst->vine = malloc(sizeof(*dst->vine));
+		if (!dst->vine)
+			goto fail;
+		*dst->vine = *src->vine;
 	}
 	return 0;
 fail:
@@ -60,6 +70,8 @@ size_t doc_op_weight(const struct doc_op *op)
 	 * not keep --load busy for an hour */
 	if (op->params)
 		n += gen_count_branches(op->params) + gen_count_leaves(op->params);
+	if (op->vine)
+		n += (size_t)op->vine->internodes * (size_t)op->vine->points_per_internode;
 	return n;
 }
 
@@ -100,6 +112,7 @@ int doc_push(struct doc *d, struct doc_op *op)
 	op->points = NULL;
 	op->npoints = 0;
 	op->params = NULL;
+	op->vine = NULL;
 	return 0;
 }
 

@@ -11,6 +11,7 @@
 #include "event.h"
 
 struct gen_params;
+struct vine_params;
 
 /*
  * The drawing as inputs, not polygons: the random seed and the edit history (ops).
@@ -36,6 +37,10 @@ enum doc_op_kind {
 	/* The leaf mode's leaf buttons (version 6, issue 15): `pattern` is the leaf kind
 	 * arrangement and propagation place from then on (ori_kinds.h; -1 the drawn one). */
 	DOC_OP_LEAFTYPE,
+	/* The vine mode's tap (version 7, issue 16): a twining vine with parameters `vine`
+	 * (owned, already scaled to the tree) planted at `plant` (world metres) and grown to
+	 * its end on the tree's bark. */
+	DOC_OP_VINE,
 };
 
 /* Stored as float so that what is written is exactly what is replayed. */
@@ -58,6 +63,8 @@ struct doc_op {
 			       * leaftype: the kind */
 	struct gen_params *params; /* generate: the tree's parameters (owned) */
 	uint64_t seed;        /* generate: the generator's seed */
+	struct vine_params *vine; /* vine: the vine's parameters (owned) */
+	double plant[3];      /* vine: where it is planted, world metres */
 };
 
 struct doc {
@@ -70,8 +77,9 @@ struct doc {
 
 /* 2 added the lift op, 3 the camera (of strokes drawn on a turned 3D tree, and the
  * view when saved), 4 the editing ops (clone, arrange, propagate), 5 the generated trees
- * and the season, 6 the leaf type (origami leaves); older files read as before. */
-#define DOC_FORMAT_VERSION 6
+ * and the season, 6 the leaf type (origami leaves), 7 the vines; older files read as
+ * before. */
+#define DOC_FORMAT_VERSION 7
 
 /*
  * Limits on a drawing, far beyond what a visitor draws in a day, so that a damaged or
@@ -97,7 +105,8 @@ int doc_op_copy(struct doc_op *dst, const struct doc_op *src);
  * (op is left to the caller then). */
 int doc_push(struct doc *d, struct doc_op *op);
 /* What an op counts towards DOC_MAX_POINTS: a stroke its points, a generated tree its
- * branches and leaves (gen_count_branches + gen_count_leaves). */
+ * branches and leaves (gen_count_branches + gen_count_leaves), a vine its budget's axis
+ * points (internodes x points_per_internode). */
 size_t doc_op_weight(const struct doc_op *op);
 /* The weight of ops[0..nops). */
 size_t doc_total_points(const struct doc *d);

@@ -86,6 +86,17 @@ int doc_serialize(const struct doc *d, const struct tree *t, struct buf *out)
 			buf_printf(out, "leaftype %llu %s\n", (unsigned long long)op->time_us,
 				   ori_kind_name(op->pattern) ? ori_kind_name(op->pattern) : "drawn");
 			break;
+		case DOC_OP_VINE:
+			buf_printf(out, "vine %llu", (unsigned long long)op->time_us);
+			for (int k = 0; k < 3; k++) {
+				buf_printf(out, " ");
+				buf_print_exact(out, op->plant[k]);
+			}
+			buf_printf(out, " ");
+			if (op->vine && vine_write(op->vine, out) < 0)
+				return -ENOMEM;
+			buf_printf(out, "\n");
+			break;
 		case DOC_OP_CLONE_ADD:
 		case DOC_OP_CLONE_REMOVE:
 			buf_printf(out, "%s %llu %d\n", edit_keywords[op->kind],
@@ -172,6 +183,11 @@ static int reader_next(struct reader *r)
 				break;
 			/* a generated tree's parameters are the rest of its line, as YAML */
 			if (r->nfields == 4 && !strcmp(r->fields[0], "generate")) {
+				r->fields[r->nfields++] = s;
+				break;
+			}
+			/* and a vine's, after its planting point */
+			if (r->nfields == 5 && !strcmp(r->fields[0], "vine")) {
 				r->fields[r->nfields++] = s;
 				break;
 			}
@@ -372,6 +388,32 @@ static int parse_functional(struct reader *r, struct doc_op *op)
 	return gen_read(r->fields[4], strlen(r->fields[4]), r->name, r->line - 1, op->params, r->err);
 }
 
+/* vine T X Y Z {PARAMETERS} (version 7): the planting point, then a vine file's keys as
+ * YAML on the line (docs/vine-format.md). */
+static int parse_vine(struct reader *r, struct doc_op *op)
+{
+	int ret;
+
+	if ((ret = expect_fields(r, 6, "vine (time, x, y, z, parameters)")) < 0 ||
+	    (ret = parse_u64(r, r->fields[1], UINT64_MAX, &op->time_us, "time")) < 0)
+		return ret;
+	for (int k = 0; k < 3; k++) {
+		float unused;
+		char *endp;
+
+		/* read as a double, bit for bit what was written; the range a stroke's */
+		if ((ret = parse_float(r, r->fields[2 + k], -DOC_MAX_COORD_M, DOC_MAX_COORD_M,
+				       &unused, "planting point")) < 0)
+			return ret;
+		op->plant[k] = strtod(r->fields[2 + k], &endp);
+	}
+	op->vine = malloc(sizeof(*op->vine));
+	if (!op->vine)
+		return error_at(r->err, -ENOMEM, r->name, r->line, "out of memory");
+	return vine_read_at(r->fields[5], strlen(r->fields[5]), r->name, r->line - 1, op->vine,
+			    r->err);
+}
+
 static bool functional_keyword(const char *kw, uint64_t version, enum doc_op_kind *kind)
 {
 	if (version < 5)
@@ -382,6 +424,8 @@ static bool functional_keyword(const char *kw, uint64_t version, enum doc_op_kin
 		*kind = DOC_OP_SEASON;
 	else if (version >= 6 && !strcmp(kw, "leaftype"))
 		*kind = DOC_OP_LEAFTYPE;
+	else if (version >= 7 && !strcmp(kw, "vine"))
+		*kind = DOC_OP_VINE;
 	else
 		return false;
 	return true;
@@ -466,7 +510,8 @@ static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 				ret = parse_edit(r, &op);
 			} else if (functional_keyword(kw, version, &functional)) {
 				op.kind = functional;
-				ret = parse_functional(r, &op);
+				ret = functional == DOC_OP_VINE ? parse_vine(r, &op)
+								: parse_functional(r, &op);
 			} else if (kw[0] == 's') {
 				op.kind = DOC_OP_STROKE;
 				ret = parse_stroke(r, &op, version);
@@ -482,7 +527,8 @@ static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 				if (ret == -ENOSPC)
 					ret = error_at(r->err, -EINVAL, r->name, r->line,
 						       "the drawing has more than %u points in all "
-						       "(a generated tree's branches and leaves count as points)",
+						       "(a generated tree's branches and leaves and a "
+						       "vine's budget count as points)",
 						       DOC_MAX_POINTS);
 				else if (ret < 0)
 					error_at(r->err, ret, r->name, r->line, "out of memory");

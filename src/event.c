@@ -55,6 +55,7 @@ static const char *const button_names[BUTTON_COUNT] = {
 	[BUTTON_LEAF_ENTIRE] = "leaf-entire",
 	[BUTTON_LEAF_HOP] = "leaf-hop",
 	[BUTTON_LEAF_MAPLE] = "leaf-maple",
+	[BUTTON_VINE] = "vine",
 };
 
 #define N(a) (sizeof(a) / sizeof((a)[0]))

@@ -65,6 +65,9 @@ enum button {
 	BUTTON_LEAF_ENTIRE,
 	BUTTON_LEAF_HOP,
 	BUTTON_LEAF_MAPLE,
+	/* Twining vines (issue 16, seed 004): the vine mode, where a tap at the tree's foot
+	 * plants a vine (docs/vines.md) */
+	BUTTON_VINE,
 	BUTTON_COUNT
 };
 

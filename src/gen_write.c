@@ -7,17 +7,9 @@
 
 #include "gen.h"
 
-/* The shortest of %.15g..%.17g that reads back as exactly v. */
 static void number(struct buf *b, double v)
 {
-	char s[32];
-
-	for (int digits = 15; digits <= 17; digits++) {
-		snprintf(s, sizeof(s), "%.*g", digits, v);
-		if (strtod(s, NULL) == v)
-			break;
-	}
-	buf_printf(b, "%s", s);
+	(void)buf_print_exact(b, v);
 }
 
 static void point(struct buf *b, struct vec3 v)

@@ -43,8 +43,11 @@ void tree_clear(struct tree *t)
 		free(t->leaves[i].points);
 		free(t->leaves[i].local);
 	}
+	for (size_t i = 0; i < t->nvines; i++)
+		vine_finish(&t->vines[i]);
 	t->nbranches = 0;
 	t->nleaves = 0;
+	t->nvines = 0;
 	tree_index_drop(t);
 	/* all of it, so that a rebuilt tree depends on its document only */
 	t->last_sketched = -1;
@@ -62,6 +65,7 @@ void tree_finish(struct tree *t)
 	tree_clear(t);
 	free(t->branches);
 	free(t->leaves);
+	free(t->vines);
 	tree_index_destroy(t);
 	tree_init(t);
 }
@@ -115,6 +119,18 @@ int tree_add_branch(struct tree *t, int parent, double parent_t, enum origin ori
 	b->npoints = npoints;
 	t->nbranches++;
 	return b->id;
+}
+
+int tree_add_vine(struct tree *t, struct vine *v)
+{
+	if (t->nvines >= TREE_MAX_VINES)
+		return -ENOSPC;
+	if (grow((void **)&t->vines, &t->cap_vines, t->nvines + 1, sizeof(*t->vines)) < 0)
+		return -ENOMEM;
+	t->vines[t->nvines++] = *v;
+	memset(v, 0, sizeof(*v));
+	v->active = -1;
+	return 0;
 }
 
 int tree_add_leaf(struct tree *t, int branch, enum origin origin, const struct vec3 *points,
@@ -187,6 +203,23 @@ int tree_copy(struct tree *dst, const struct tree *src)
 		}
 		dst->nleaves++;
 	}
+	if (src->nvines > dst->cap_vines) {
+		struct vine *v = realloc(dst->vines, src->nvines * sizeof(*v));
+
+		if (!v) {
+			tree_clear(dst);
+			return -ENOMEM;
+		}
+		dst->vines = v;
+		dst->cap_vines = src->nvines;
+	}
+	for (size_t i = 0; i < src->nvines; i++) {
+		if (vine_copy(&dst->vines[i], &src->vines[i]) < 0) {
+			tree_clear(dst);
+			return -ENOMEM;
+		}
+		dst->nvines++;
+	}
 	dst->lifted = src->lifted;
 	dst->sides = src->sides;
 	dst->season = src->season;
@@ -224,6 +257,9 @@ size_t tree_bytes(const struct tree *t)
 		n += t->branches[i].npoints * (sizeof(struct vec3) + sizeof(double));
 	for (size_t i = 0; i < t->nleaves; i++)
 		n += t->leaves[i].npoints * sizeof(struct vec3) * (t->leaves[i].local ? 2 : 1);
+	n += t->cap_vines * sizeof(*t->vines);
+	for (size_t i = 0; i < t->nvines; i++)
+		n += vine_bytes(&t->vines[i]);
 	return n;
 }
 

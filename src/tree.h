@@ -7,6 +7,7 @@
 
 #include "season.h"
 #include "vec.h"
+#include "vine.h"
 
 /* How an element came to be; written to skeleton.json as a string. */
 enum origin {
@@ -59,6 +60,8 @@ struct leaf {
  */
 #define TREE_MAX_BRANCHES 10000u
 #define TREE_MAX_LEAVES 30000u
+/* Vines on one tree: a planting past it is refused (the kiosk says the tree is full). */
+#define TREE_MAX_VINES 12u
 
 /* The model: what the skeleton, the meshes and the screen are made from. */
 struct tree {
@@ -76,6 +79,10 @@ struct tree {
 	/* The leaf kind the leaf mode chose (DOC_OP_LEAFTYPE, a generated tree's leaves.type):
 	 * what arrangement and propagation place; -1 the drawn leaves. */
 	int leaf_kind;
+	/* Twining vines planted on the tree (issue 16, DOC_OP_VINE), each grown to its end
+	 * on the bark as it stood when planted; later edits leave them as they are. */
+	struct vine *vines;
+	size_t nvines, cap_vines;
 	/* What sketching carries from stroke to stroke; rebuilt with the tree. */
 	int last_sketched;             /* the branch the latest stroke drew, or -1 */
 	uint64_t last_sketched_end_us; /* when that stroke ended */
@@ -96,6 +103,9 @@ int tree_add_branch(struct tree *t, int parent, double parent_t, enum origin ori
 		    const struct vec3 *points, const double *radii, size_t npoints);
 int tree_add_leaf(struct tree *t, int branch, enum origin origin, const struct vec3 *points,
 		  size_t npoints);
+/* Takes v (grown) into the tree; v is left empty. 0, -ENOSPC (TREE_MAX_VINES) or -ENOMEM
+ * (v unchanged then). */
+int tree_add_vine(struct tree *t, struct vine *v);
 /* Makes dst (initialised) an exact copy of src: every field of every branch and leaf, the
  * sketching state, bit for bit. 0, or -ENOMEM (dst is then empty). */
 int tree_copy(struct tree *dst, const struct tree *src);

@@ -52,6 +52,14 @@ void vine_params_default(struct vine_params *p);
  */
 int vine_read(const char *data, size_t len, const char *name, struct vine_params *p,
 	      struct error *err);
+/* The same for text that begins after line_offset lines of its file (a drawing's vine
+ * line, in flow style): the lines told count from the file's start. */
+int vine_read_at(const char *data, size_t len, const char *name, unsigned long line_offset,
+		 struct vine_params *p, struct error *err);
+struct buf;
+/* The parameters as one line of YAML in flow style, every key, that vine_read reads back
+ * bit for bit (how a drawing stores a vine). 0 or -ENOMEM (out as it was). */
+int vine_write(const struct vine_params *p, struct buf *out);
 #define VINE_READ_MAX_BYTES 65536
 #define VINE_READ_MAX_DEPTH 4
 
@@ -91,6 +99,11 @@ struct vine {
 /* A vine about to grow from plant (its root point). */
 void vine_init(struct vine *v, const struct vine_params *p, struct vec3 plant);
 void vine_finish(struct vine *v);
+/* dst (not initialised) becomes an exact copy of src. 0, or -ENOMEM (dst then holds
+ * nothing: vine_finish'ed). */
+int vine_copy(struct vine *dst, const struct vine *src);
+/* Bytes v's arrays take. */
+size_t vine_bytes(const struct vine *v);
 /*
  * Grows v to simulated time `until` (units of step_time): every whole step not yet taken,
  * in order, so growing to 3.5 steps then to 7 gives what growing to 7 at once does. s may

@@ -85,6 +85,49 @@ void vine_finish(struct vine *v)
 	v->active = -1;
 }
 
+int vine_copy(struct vine *dst, const struct vine *src)
+{
+	*dst = *src;
+	dst->shoots = NULL;
+	dst->nshoots = dst->cap = 0;
+	if (src->nshoots == 0)
+		return 0;
+	dst->shoots = calloc(src->nshoots, sizeof(*dst->shoots));
+	if (!dst->shoots) {
+		vine_finish(dst);
+		return -ENOMEM;
+	}
+	dst->cap = src->nshoots;
+	for (size_t i = 0; i < src->nshoots; i++) {
+		const struct vine_shoot *s = &src->shoots[i];
+		struct vine_shoot *d = &dst->shoots[i];
+
+		*d = *s;
+		d->cap = s->n;
+		d->axis = s->n ? malloc(s->n * sizeof(*d->axis)) : NULL;
+		d->contact = s->n ? malloc(s->n * sizeof(*d->contact)) : NULL;
+		dst->nshoots++;
+		if (s->n && (!d->axis || !d->contact)) {
+			vine_finish(dst);
+			return -ENOMEM;
+		}
+		if (s->n) {
+			memcpy(d->axis, s->axis, s->n * sizeof(*d->axis));
+			memcpy(d->contact, s->contact, s->n * sizeof(*d->contact));
+		}
+	}
+	return 0;
+}
+
+size_t vine_bytes(const struct vine *v)
+{
+	size_t n = v->cap * sizeof(*v->shoots);
+
+	for (size_t i = 0; i < v->nshoots; i++)
+		n += v->shoots[i].cap * (sizeof(struct vec3) + 1);
+	return n;
+}
+
 bool vine_done(const struct vine *v)
 {
 	return v->active < 0;

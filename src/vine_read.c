@@ -23,6 +23,7 @@ struct reader {
 	struct error *err;
 	const char *data; /* the text read, for its lines */
 	size_t len;
+	unsigned long offset; /* lines before the text (a drawing's vine line) */
 	yaml_document_t doc;
 	struct vine_params *p;
 };
@@ -60,7 +61,7 @@ static const struct {
 
 static unsigned long line_of(const struct reader *r, const yaml_node_t *n)
 {
-	return n ? yaml_node_line(&n->start_mark, r->data, r->len) : 0;
+	return n ? yaml_node_line(&n->start_mark, r->data, r->len) + r->offset : 0;
 }
 
 static int fail(struct reader *r, const yaml_node_t *n, const char *fmt, ...)
@@ -268,7 +269,7 @@ static unsigned long fault_line(struct reader *r, const yaml_node_t *root, const
 
 static int yaml_fail(struct reader *r, const yaml_parser_t *y, const char *data, size_t len)
 {
-	return yaml_node_parse_error(r->err, r->name, 0, y, data, len);
+	return yaml_node_parse_error(r->err, r->name, r->offset, y, data, len);
 }
 
 static int read_root(struct reader *r, yaml_parser_t *y, const char *data, size_t len)
@@ -282,7 +283,7 @@ static int read_root(struct reader *r, yaml_parser_t *y, const char *data, size_
 	int ret;
 
 	if (!root)
-		return error_at(r->err, -EINVAL, r->name, 1,
+		return error_at(r->err, -EINVAL, r->name, r->offset + 1,
 				"empty: a vine parameter file starts \"edaha-vine: %d\"",
 				VINE_PARAMS_VERSION);
 	if (root->type != YAML_MAPPING_NODE)
@@ -312,27 +313,35 @@ static int read_root(struct reader *r, yaml_parser_t *y, const char *data, size_
  */
 static int prescan(struct reader *r, const char *data, size_t len)
 {
-	return yaml_node_prescan(data, len, r->name, 0, VINE_READ_MAX_DEPTH, "vine parameter file",
+	return yaml_node_prescan(data, len, r->name, r->offset, VINE_READ_MAX_DEPTH, "vine parameter file",
 				 r->err);
 }
 
 int vine_read(const char *data, size_t len, const char *name, struct vine_params *p,
 	      struct error *err)
 {
-	struct reader r = { .name = name, .err = err, .data = data, .len = len };
+	return vine_read_at(data, len, name, 0, p, err);
+}
+
+int vine_read_at(const char *data, size_t len, const char *name, unsigned long line_offset,
+		 struct vine_params *p, struct error *err)
+{
+	struct reader r = { .name = name, .err = err, .data = data, .len = len,
+			    .offset = line_offset };
 	struct vine_params tmp;
 	yaml_parser_t y;
 	int ret;
 
 	if (len > VINE_READ_MAX_BYTES)
-		return error_at(err, -EINVAL, name, 1, "larger than %d bytes: not a vine parameter file",
+		return error_at(err, -EINVAL, name, line_offset + 1,
+				"larger than %d bytes: not a vine parameter file",
 				VINE_READ_MAX_BYTES);
 	if ((ret = prescan(&r, data, len)) < 0)
 		return ret;
 	vine_params_default(&tmp);
 	r.p = &tmp;
 	if (!yaml_parser_initialize(&y))
-		return error_at(err, -ENOMEM, name, 0, "out of memory");
+		return error_at(err, -ENOMEM, name, line_offset, "out of memory");
 	yaml_parser_set_input_string(&y, (const unsigned char *)data, len);
 	if (!yaml_parser_load(&y, &r.doc)) {
 		ret = yaml_fail(&r, &y, data, len);

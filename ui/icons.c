@@ -567,6 +567,9 @@ void icon_draw(struct batch *b, enum button button, struct pt centre, double siz
 	case BUTTON_LEAF_MAPLE:
 		icon_maple(&ic);
 		break;
+	case BUTTON_VINE:
+		icon_leaf(&ic); /* FIXME(issue 16): the vine's own icon */
+		break;
 	case BUTTON_TPL_BLANK:
 		icon_blank(&ic);
 		break;

@@ -46,6 +46,7 @@ static const char *const button_words[BUTTON_COUNT][NLANGS] = {
 	[BUTTON_LEAF_ENTIRE] = { "Plain", "まるい" },
 	[BUTTON_LEAF_HOP] = { "Hop", "ほっぷ" },
 	[BUTTON_LEAF_MAPLE] = { "Maple", "もみじ" },
+	[BUTTON_VINE] = { "Vine", "つる" },
 };
 
 /*
@@ -66,6 +67,12 @@ static const char *const status_words[APP_STATUS_COUNT][NLANGS] = {
 	[APP_STATUS_STICK_LOCKED] = { "The stick is locked", "USBに かきこめないよ" },
 	[APP_STATUS_STICK_UNUSABLE] = { "This stick cannot be used", "この USBは つかえないよ" },
 	[APP_STATUS_STICK_READY] = { "Stick ready: press Save", "USB OK! 「ほぞん」を おしてね" },
+	[APP_STATUS_VINE_TAP] = { "Tap the ground by the trunk to plant a vine",
+				  "みきの ねもとを タップして つるを うえよう" },
+	[APP_STATUS_VINE_WHERE] = { "Tap closer to the bottom of the trunk",
+				    "みきの ねもとの ちかくを タップしてね" },
+	[APP_STATUS_VINE_FULL] = { "This tree has all the vines it can hold",
+				   "この木には もう つるが いっぱいだよ" },
 };
 
 static const char *const attract_words[NLANGS] = {

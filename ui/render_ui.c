@@ -212,6 +212,8 @@ static bool button_active(const struct app *app, enum button button)
 		return button == BUTTON_LEAF;
 	case APP_MODE_PROPAGATE:
 		return button == BUTTON_PROPAGATE;
+	case APP_MODE_VINE:
+		return button == BUTTON_VINE;
 	case APP_MODE_NEW:
 	case APP_MODE_SKETCH:
 		/* drawing on a 3D tree: the 3D button is lit, as its GPIO LED is */
