@@ -155,17 +155,21 @@ static int set_text(struct render *render, const struct options *o)
 
 /*
  * The moment shown: the settled screen, or with --idle what the kiosk shows that long
- * after the last input (a step of the turn into 3D, a message, the attract screen).
+ * after the last input (a step of the turn into 3D, a vine growing, a message, the
+ * attract screen).
  */
 static int draw(struct render *render, const struct run *r)
 {
 	uint64_t idle_us;
 
-	if (!r->o->idle_given)
+	if (!r->o->idle_given) {
+		(void)app_vines_advance(r->app, UINT64_MAX); /* grown */
 		return render_frame(render, r->app);
+	}
 	r->app->attract_after_us = APP_ATTRACT_US_DEFAULT;
 	/* --idle is at most a day: no overflow */
 	idle_us = (uint64_t)llround(r->o->idle_s * 1e6);
+	(void)app_vines_advance(r->app, r->app->last_time_us + idle_us);
 	return render_frame_at(render, r->app, r->app->last_time_us + idle_us);
 }
 

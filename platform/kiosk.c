@@ -197,7 +197,7 @@ static bool look_equal(const struct kiosk_look *a, const struct kiosk_look *b)
 }
 
 /* Whether frames must keep coming at now_us without any input: the turn into 3D, new
- * leaves unfolding, a message fading out. */
+ * leaves unfolding, a message fading out (a vine growing: app_vines_advance). */
 static bool animating_at(const struct app *app, uint64_t now_us, bool turning)
 {
 	uint64_t until;
@@ -597,7 +597,9 @@ static void draw_frame(struct kiosk *k)
 	int ret;
 
 	k->frame_start_us = t;
-	k->animating = animating_at(k->app, t, app_camera_at(k->app, t, &cam));
+	/* a vine planted grows by the clock, as the turn into 3D turns */
+	k->animating = app_vines_advance(k->app, t);
+	k->animating = animating_at(k->app, t, app_camera_at(k->app, t, &cam)) || k->animating;
 	look_of(k->app, t, &k->drawn);
 	k->drawn_valid = true;
 	ret = render_frame_at(k->render, k->app, t);

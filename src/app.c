@@ -43,6 +43,8 @@ struct app *app_create(int width, int height, uint64_t seed)
 		tree_mesh_init(&app->previews[i]);
 	for (int i = 0; i < GEN_PRESET_COUNT; i++)
 		tree_mesh_init(&app->templates[i]);
+	tree_mesh_init(&app->vines_mesh);
+	tree_mesh_init(&app->growth.mesh);
 	return app;
 }
 
@@ -60,6 +62,9 @@ void app_destroy(struct app *app)
 		tree_mesh_finish(&app->previews[i]);
 	for (int i = 0; i < GEN_PRESET_COUNT; i++)
 		tree_mesh_finish(&app->templates[i]);
+	app_vine_growth_clear(app);
+	tree_mesh_finish(&app->vines_mesh);
+	tree_mesh_finish(&app->growth.mesh);
 	free(app->stroke.points);
 	free(app);
 }
@@ -124,13 +129,18 @@ int app_apply_op(struct app *app, const struct doc_op *op)
 
 int app_load_doc(struct app *app, struct doc *doc)
 {
+	int ret, r2;
+
 	doc_finish(&app->doc);
 	history_clear(&app->history);
 	app->doc = *doc;
 	doc_init(doc, doc->seed);
 	app_unfold_clear(app);
+	app_vine_growth_clear(app);
 	app->camera = app->doc.view; /* kept if the drawing is a 3D tree */
-	return app_rebuild(app);
+	ret = app_rebuild(app);
+	r2 = app_vines_refresh(app);
+	return ret < 0 ? ret : r2;
 }
 
 int app_reset(struct app *app, uint64_t seed)
@@ -152,8 +162,8 @@ int app_reset(struct app *app, uint64_t seed)
  * grow with the drawing. */
 int app_push_op(struct app *app, struct doc_op *op)
 {
-	size_t nb = app->tree.nbranches, nl = app->tree.nleaves;
-	int ret = doc_push(&app->doc, op);
+	size_t nb = app->tree.nbranches, nl = app->tree.nleaves, nv = app->tree.nvines;
+	int ret = doc_push(&app->doc, op), r2;
 
 	if (ret < 0)
 		return ret;
@@ -171,8 +181,15 @@ int app_push_op(struct app *app, struct doc_op *op)
 	app_unfold_note(app, op->kind == DOC_OP_GENERATE || app->tree.nleaves < nl ? 0 : nl,
 			op->time_us);
 	if (ret == SKETCH_GREW && app->tree.nbranches >= nb && app->tree.nleaves >= nl)
-		return tree_mesh_append_marked(&app->mesh, &app->tree, nb, nl, &app->mesh_marks);
-	return tree_mesh_build_marked(&app->mesh, &app->tree, &app->mesh_marks);
+		ret = tree_mesh_append_marked(&app->mesh, &app->tree, nb, nl, &app->mesh_marks);
+	else
+		ret = tree_mesh_build_marked(&app->mesh, &app->tree, &app->mesh_marks);
+	if (ret == 0 && app->tree.nvines > nv) /* op is the caller's again: the doc's copy */
+		ret = app_vine_growth_start(app, &app->doc.ops[app->doc.cursor - 1]);
+	else if (ret == 0 && app->tree.nvines < nv)
+		app_vine_growth_clear(app); /* a new tree: the vine growing went with the old */
+	r2 = app_vines_refresh(app);
+	return ret < 0 ? ret : r2;
 }
 
 static void update_pen(struct app *app, const struct event *ev)
@@ -308,13 +325,19 @@ int app_press_button(struct app *app, enum button button, uint64_t time_us)
 		if (!doc_undo(&app->doc))
 			return 0;
 		app_unfold_clear(app);
+		app_vine_growth_clear(app);
 		ret = app_undo(app);
+		if (ret == 0)
+			ret = app_vines_refresh(app);
 		return ret < 0 ? ret : app_refresh_mode_state(app);
 	case BUTTON_REDO:
 		if (!doc_redo(&app->doc))
 			return 0;
 		app_unfold_clear(app);
+		app_vine_growth_clear(app);
 		ret = app_redo(app);
+		if (ret == 0)
+			ret = app_vines_refresh(app);
 		return ret < 0 ? ret : app_refresh_mode_state(app);
 	case BUTTON_EXPORT:
 		app->requests |= APP_REQUEST_EXPORT;
@@ -368,6 +391,28 @@ int app_press_button(struct app *app, enum button button, uint64_t time_us)
 		break;
 	}
 	return 0;
+}
+
+/* An orbit that went nowhere was a tap: the modes that take taps on the canvas get it as
+ * a stroke of one point where the tip went down. */
+static int canvas_tap(struct app *app, const struct event *ev)
+{
+	struct app_stroke *s = &app->stroke;
+	struct event down = *ev;
+	double moved = hypot(app_clamp(ev->x, 0, app->view.width) - app->orbit_x0,
+			     app_clamp(ev->y, 0, app->view.height) - app->orbit_y0);
+	int ret;
+
+	if (!app_mode_ops(app->mode)->taps_on_canvas ||
+	    moved * app->view.m_per_px >= SKETCH_MIN_LENGTH_M)
+		return 0;
+	down.x = app->orbit_x0;
+	down.y = app->orbit_y0;
+	down.time_us = app->orbit_t0_us;
+	s->tool = ev->tool;
+	s->npoints = 0;
+	ret = stroke_add(app, &down);
+	return ret < 0 ? ret : stroke_commit(app);
 }
 
 static int button_event(struct app *app, enum button button, bool pressed, uint64_t time_us)
@@ -430,6 +475,9 @@ void app_handle_event(struct app *app, const struct event *ev)
 			app->orbiting = true;
 			app->orbit_x = app_clamp(ev->x, 0, app->view.width);
 			app->orbit_y = app_clamp(ev->y, 0, app->view.height);
+			app->orbit_x0 = app->orbit_x;
+			app->orbit_y0 = app->orbit_y;
+			app->orbit_t0_us = ev->time_us;
 			break;
 		}
 		app->stroke.active = true;
@@ -455,6 +503,7 @@ void app_handle_event(struct app *app, const struct event *ev)
 		} else if (app->orbiting) {
 			app_orbit_to(app, ev);
 			app->orbiting = false;
+			ret = canvas_tap(app, ev);
 		} else if (app->stroke.active) {
 			ret = stroke_add(app, ev);
 			if (ret == 0)

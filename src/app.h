@@ -126,6 +126,26 @@ struct app_unfold_span {
 	unsigned frame;
 };
 
+/*
+ * A vine planted in the vine mode grows on screen by the events' time, this many axis
+ * points a second (6 internodes of the default 8 points): its apex visibly circles, finds
+ * the trunk and winds up it. The model holds it grown to its end all along.
+ */
+#define APP_VINE_POINTS_PER_S 48.0
+/* The vine preset the kiosk plants (presets/vines/), scaled to the tree. */
+#define APP_VINE_PRESET "morning-glory"
+
+struct vine_support;
+
+/* The vine growing on screen: the tree's last vine, regrown step by step (app_vine.c). */
+struct app_vine_growth {
+	bool on;
+	uint64_t start_us;
+	struct vine v;
+	struct vine_support *support; /* the bark it was planted on */
+	struct tree_mesh mesh;        /* v as grown so far: stems (bark) and leaves */
+};
+
 struct app {
 	struct view view;
 	struct doc doc;       /* strokes, history, seed: what drawing.edaha holds */
@@ -148,6 +168,8 @@ struct app {
 	struct camera camera;
 	bool orbiting;             /* the pen tip is turning the camera */
 	double orbit_x, orbit_y;   /* where the pen was, screen pixels */
+	double orbit_x0, orbit_y0; /* where the tip went down */
+	uint64_t orbit_t0_us;
 	uint64_t turn_start_us;    /* the animated turn after lifting, when turning */
 	bool turning;
 	/* Leaves an edit made from [first, ...) unfolding since start_us, oldest first; each
@@ -157,6 +179,13 @@ struct app {
 		uint64_t start_us;
 	} unfold[APP_UNFOLD_MAX];
 	size_t nunfold;
+	/* The vines' meshes (stems as `bark`), the one growing left out, for the renderer:
+	 * rebuilt when the tree's meshes change (mesh_serial) or a growth ends. */
+	struct tree_mesh vines_mesh;
+	uint64_t vines_mesh_of; /* the mesh_serial it was built for */
+	bool vines_mesh_growing; /* ...with growth on */
+	uint64_t vines_serial;  /* bumped when vines_mesh or growth.mesh changes */
+	struct app_vine_growth growth;
 	/* Example-based editing. */
 	int selected;              /* clone mode: the branch that gets children, or -1 */
 	int suggest_branch;        /* leaf mode: the branch whose leaves suggest... */
@@ -193,6 +222,13 @@ bool app_camera_at(const struct app *app, uint64_t now_us, struct camera *out);
  * keyframes: at most max spans into out, in leaf order. */
 size_t app_unfold_at(const struct app *app, uint64_t now_us, struct app_unfold_span *out,
 		     size_t max);
+/*
+ * Grows the vine planted last to what the screen shows at now_us (UINT64_MAX: grown to its
+ * end), and keeps the vines' meshes in step. The platform calls it before drawing a frame.
+ * True while a vine is still growing, so that the kiosk keeps drawing frames. A failure
+ * to grow it (no memory) ends the growth: the vine shows grown.
+ */
+bool app_vines_advance(struct app *app, uint64_t now_us);
 /* Turns a 3D tree's camera (as orbiting would). False, and nothing changes, for a sketch. */
 bool app_set_camera(struct app *app, struct camera c);
 /* The suggestion thumbnails shown, in order: how many, and their patterns. */

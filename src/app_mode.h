@@ -39,6 +39,9 @@ struct app_mode_ops {
 	/* A finished pen stroke: *taken when it meant something in this mode (a tap, a
 	 * circle); otherwise it is drawn as in sketching. NULL: always drawn. */
 	int (*stroke)(struct app *app, double len, bool *taken);
+	/* A tap on empty canvas, where a drag turns the camera, is the mode's too: a stroke of
+	 * one point (the vine mode's ground). */
+	bool taps_on_canvas;
 	/* The side strip's items, top to bottom; at most max. NULL: an empty strip. */
 	size_t (*side)(const struct app *app, struct app_side_item *out, size_t max);
 	/* A tap on an item whose button is BUTTON_COUNT. */
@@ -50,6 +53,7 @@ extern const struct app_mode_ops app_mode_clone_ops;
 extern const struct app_mode_ops app_mode_leaf_ops;
 extern const struct app_mode_ops app_mode_propagate_ops;
 extern const struct app_mode_ops app_mode_new_ops;
+extern const struct app_mode_ops app_mode_vine_ops;
 
 const struct app_mode_ops *app_mode_ops(enum app_mode mode);
 

@@ -2,7 +2,7 @@
 /* The kiosk's modes (app_mode.h): entering and leaving them, and dispatching the pen's
  * strokes and the side strip's taps to the active one. What each mode does is its own
  * file: app_mode_sketch.c, app_mode_clone.c, app_mode_leaf.c, app_mode_propagate.c,
- * app_mode_new.c; docs/editing.md and docs/functional-trees.md say what the pen does. */
+ * app_mode_new.c, app_mode_vine.c; docs/editing.md and docs/functional-trees.md say what the pen does. */
 #include <errno.h>
 
 #include "app_mode.h"
@@ -17,6 +17,7 @@ static const struct app_mode_ops *const modes[] = {
 	[APP_MODE_LEAF] = &app_mode_leaf_ops,
 	[APP_MODE_PROPAGATE] = &app_mode_propagate_ops,
 	[APP_MODE_NEW] = &app_mode_new_ops,
+	[APP_MODE_VINE] = &app_mode_vine_ops,
 };
 
 const struct app_mode_ops *app_mode_ops(enum app_mode mode)

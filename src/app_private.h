@@ -64,6 +64,17 @@ int app_press_functional(struct app *app, enum button b, uint64_t time_us);
 int app_vine_apply(struct tree *t, const struct doc_op *op);
 struct vine_support;
 int app_vine_support(const struct tree *t, struct vine_support **out);
+/* The vine op just applied (the tree's last vine) starts growing on screen; the one
+ * growing before shows grown. 0 or -ENOMEM. */
+int app_vine_growth_start(struct app *app, const struct doc_op *op);
+/* No vine grows on screen any more (undo, redo, a new drawing). */
+void app_vine_growth_clear(struct app *app);
+/* The vines' meshes in step with the tree's (mesh_serial) and the growth. 0 or -ENOMEM. */
+int app_vines_refresh(struct app *app);
+/* app_mode_vine.c: where a tap at view-space point p plants a vine, with its parameters
+ * scaled to the tree: 1 and *op filled (kind, plant, vine allocated), 0 when the tap is
+ * too far from the tree's foot, or -ENOMEM. */
+int app_vine_plan(const struct app *app, struct vec3 p, uint64_t time_us, struct doc_op *op);
 
 /* app_view.c */
 void app_camera_store(struct app *app, struct camera c);

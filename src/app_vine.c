@@ -53,3 +53,99 @@ int app_vine_apply(struct tree *t, const struct doc_op *op)
 		return SKETCH_GREW;
 	return ret < 0 ? ret : SKETCH_CHANGED;
 }
+
+/* The settled vines' meshes, the growing one left out. 0 or -ENOMEM (empty then). */
+static int vines_mesh_build(struct app *app)
+{
+	struct tree_mesh *m = &app->vines_mesh;
+	size_t n = app->tree.nvines - (app->growth.on && app->tree.nvines ? 1 : 0);
+	int ret = 0;
+
+	mesh_clear(&m->bark);
+	mesh_clear(&m->leaves);
+	for (size_t i = 0; i < n && ret == 0; i++)
+		ret = vine_mesh_append(&app->tree.vines[i], &m->bark, &m->leaves);
+	app->vines_mesh_of = app->mesh_serial;
+	app->vines_mesh_growing = app->growth.on;
+	app->vines_serial++;
+	if (ret < 0) {
+		mesh_clear(&m->bark);
+		mesh_clear(&m->leaves);
+	}
+	return ret;
+}
+
+int app_vines_refresh(struct app *app)
+{
+	if (app->vines_mesh_of == app->mesh_serial && app->vines_mesh_growing == app->growth.on)
+		return 0;
+	return vines_mesh_build(app);
+}
+
+void app_vine_growth_clear(struct app *app)
+{
+	struct app_vine_growth *g = &app->growth;
+
+	if (!g->on)
+		return;
+	g->on = false;
+	vine_finish(&g->v);
+	vine_support_destroy(g->support);
+	g->support = NULL;
+	mesh_clear(&g->mesh.bark);
+	mesh_clear(&g->mesh.leaves);
+	app->vines_serial++;
+}
+
+int app_vine_growth_start(struct app *app, const struct doc_op *op)
+{
+	struct app_vine_growth *g = &app->growth;
+	int ret;
+
+	app_vine_growth_clear(app); /* the one before shows grown */
+	/* the bark it grew on: the tree's, which a vine does not change */
+	ret = app_vine_support(&app->tree, &g->support);
+	if (ret < 0)
+		return ret == -EINVAL ? 0 : ret;
+	vine_init(&g->v, op->vine, vec3(op->plant[0], op->plant[1], op->plant[2]));
+	g->start_us = op->time_us;
+	g->on = true;
+	return app_vines_refresh(app);
+}
+
+bool app_vines_advance(struct app *app, uint64_t now_us)
+{
+	struct app_vine_growth *g = &app->growth;
+	size_t points;
+	double until;
+	int ret;
+
+	if (app_vines_refresh(app) < 0)
+		app->failed = app->failed ? app->failed : -ENOMEM;
+	if (!g->on)
+		return false;
+	points = g->v.points;
+	until = INFINITY;
+	if (now_us != UINT64_MAX) {
+		double s = now_us > g->start_us ? (double)(now_us - g->start_us) * 1e-6 : 0.0;
+
+		until = s * APP_VINE_POINTS_PER_S * g->v.p.step_time;
+	}
+	ret = vine_grow(&g->v, g->support, until);
+	if (ret < 0 || vine_done(&g->v)) {
+		app_vine_growth_clear(app);
+		(void)app_vines_refresh(app);
+		return false;
+	}
+	if (g->v.points != points || g->mesh.bark.nvertices == 0) {
+		mesh_clear(&g->mesh.bark);
+		mesh_clear(&g->mesh.leaves);
+		if (vine_mesh_append(&g->v, &g->mesh.bark, &g->mesh.leaves) < 0) {
+			app_vine_growth_clear(app);
+			(void)app_vines_refresh(app);
+			return false;
+		}
+		app->vines_serial++;
+	}
+	return true;
+}

@@ -79,6 +79,8 @@ int sketch_view_init(struct sketch_view *sv, const struct tree *t, struct camera
 		n += t->leaves[i].npoints;
 	*s = *t;
 	s->index = NULL; /* t's, not the copy's */
+	s->vines = NULL; /* t's, and no stroke lands on a vine */
+	s->nvines = s->cap_vines = 0;
 	s->branches = malloc((t->nbranches ? t->nbranches : 1) * sizeof(*s->branches));
 	s->leaves = malloc((t->nleaves ? t->nleaves : 1) * sizeof(*s->leaves));
 	sv->pool = malloc((n ? n : 1) * sizeof(*sv->pool));

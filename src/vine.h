@@ -43,6 +43,12 @@ struct vine_params {
 	uint64_t seed;
 };
 
+/* The longest lengths a vine file may give (docs/vine-format.md), metres: what a scaled
+ * vine (the kiosk's) keeps within. */
+#define VINE_INTERNODE_MAX 1.0
+#define VINE_RADIUS_MAX 0.05
+#define VINE_LEAF_SIZE_MAX 0.2
+
 /* Table 4.1's defaults and edaha's (docs/vine-format.md). */
 void vine_params_default(struct vine_params *p);
 

@@ -46,10 +46,12 @@ int vine_params_check(const struct vine_params *p, const char **key, struct erro
 
 	if (!key)
 		key = &unused;
-	if (!in(p->internode, 0.005, 1))
-		return BAD("internode", "internode: %g is not within 0.005..1 m", p->internode);
-	if (!in(p->radius, 0.0005, 0.05))
-		return BAD("radius", "radius: %g is not within 0.0005..0.05 m", p->radius);
+	if (!in(p->internode, 0.005, VINE_INTERNODE_MAX))
+		return BAD("internode", "internode: %g is not within 0.005..%g m", p->internode,
+			   VINE_INTERNODE_MAX);
+	if (!in(p->radius, 0.0005, VINE_RADIUS_MAX))
+		return BAD("radius", "radius: %g is not within 0.0005..%g m", p->radius,
+			   VINE_RADIUS_MAX);
 	/* a stem thicker than that would swallow its own internodes' bends */
 	if (!(p->radius < p->internode / 4))
 		return BAD("radius", "radius: %g is not below internode / 4 (%g m)", p->radius,
@@ -67,8 +69,9 @@ int vine_params_check(const struct vine_params *p, const char **key, struct erro
 			   p->leaves_per_node);
 	if (!in_int(p->cotyledons, 0, 2))
 		return BAD("cotyledons", "cotyledons: %d is not within 0..2", p->cotyledons);
-	if (!in(p->leaf_size, 0.001, 0.2))
-		return BAD("leaf_size", "leaf_size: %g is not within 0.001..0.2 m", p->leaf_size);
+	if (!in(p->leaf_size, 0.001, VINE_LEAF_SIZE_MAX))
+		return BAD("leaf_size", "leaf_size: %g is not within 0.001..%g m", p->leaf_size,
+			   VINE_LEAF_SIZE_MAX);
 	if (!in_int(p->points_per_internode, 2, 32))
 		return BAD("points_per_internode", "points_per_internode: %d is not within 2..32",
 			   p->points_per_internode);

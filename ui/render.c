@@ -147,6 +147,7 @@ void render_destroy(struct render *r)
 		return;
 	render_mesh_finish(&r->bark);
 	render_mesh_finish(&r->leaves);
+	render_vines_finish(r);
 	render_instanced_finish(r);
 	render_previews_finish(r);
 	render_text_finish(r);
@@ -324,7 +325,7 @@ static int draw_tree(struct render *r, const struct app *app, const struct camer
 		     const float light[3])
 {
 	float mvp[16];
-	int ret = render_upload_tree(r, app);
+	int ret = render_upload_tree(r, app), r2;
 
 	view_clip_matrix(&app->view, xf, mvp);
 	glEnable(GL_DEPTH_TEST);
@@ -341,6 +342,9 @@ static int draw_tree(struct render *r, const struct app *app, const struct camer
 	glUniform1i(r->tree_two_sided, 0);
 	glUniform3fv(r->tree_color, 1, bark_color);
 	render_mesh_draw(r, &r->bark);
+	r2 = render_vines_draw(r, app);
+	if (ret == 0)
+		ret = r2;
 
 	/* leaves are single polygons seen from either side */
 	glDisable(GL_CULL_FACE);

@@ -126,6 +126,11 @@ struct render {
 	size_t tint_cap;         /* in floats */
 	size_t upload_bytes; /* what the last upload of the tree sent to the GPU */
 
+	/* the vines (app->vines_mesh, app->growth.mesh) as of vines_serial */
+	struct render_mesh vine_stems, vine_leaves, grow_stems, grow_leaves;
+	bool vines_uploaded;
+	uint64_t vines_serial;
+
 	/* the side strip's pictures: the leaf suggestions', then the templates' */
 	struct render_picture pictures[RENDER_PICTURES];
 
@@ -154,6 +159,13 @@ float *render_tint_scratch(struct render *r, size_t n);
 /* Uploads the tree's meshes if mesh_serial changed (render_frame does it first): for
  * benchmarks. 0 or a negative errno. */
 int render_upload_tree(struct render *r, const struct app *app);
+
+/* render_vine.c: the stems' green, and the app's vines drawn with the tree program in use
+ * (uploaded first when vines_serial changed); leaves in the season's colour. 0 or a
+ * negative errno. */
+extern const float render_vine_stem[3];
+int render_vines_draw(struct render *r, const struct app *app);
+void render_vines_finish(struct render *r);
 
 /* render_gl.c: a linked program with attributes at the given locations, or 0 (stderr says why). */
 GLuint render_program(const char *name, const char *vertex_src, const char *fragment_src,

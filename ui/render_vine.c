@@ -20,7 +20,7 @@ static const double vine_light[3] = { -0.48, 0.6, 0.64 };
 /* The screen's bark, and a young stem's green: darker and yellower than the leaves, so
  * that a stem reads against its own leaves. */
 static const float vine_bark[3] = { 0.47f, 0.32f, 0.20f };
-static const float vine_stem[3] = { 0.30f, 0.45f, 0.16f };
+const float render_vine_stem[3] = { 0.30f, 0.45f, 0.16f };
 
 #define VINE_FIT_MARGIN 1.08
 
@@ -29,7 +29,7 @@ int render_vine(struct render *r, const struct mesh *support, const struct mesh 
 {
 	const float leaf[3] = { LEAF_TINT_SUMMER_RGB };
 	const struct mesh *meshes[3] = { support, stems, leaves };
-	const float *colors[3] = { vine_bark, vine_stem, leaf };
+	const float *colors[3] = { vine_bark, render_vine_stem, leaf };
 	struct render_mesh rm[3];
 	struct camera_xf xf;
 	struct vec3 l = vec3_norm_or(vec3(vine_light[0], vine_light[1], vine_light[2]),
@@ -83,4 +83,58 @@ int render_vine(struct render *r, const struct mesh *support, const struct mesh 
 	if (glGetError() != GL_NO_ERROR)
 		return -EIO;
 	return ret;
+}
+
+static int vines_upload(struct render *r, const struct app *app)
+{
+	const struct mesh *m[4] = { &app->vines_mesh.bark, &app->vines_mesh.leaves,
+				    &app->growth.mesh.bark, &app->growth.mesh.leaves };
+	struct render_mesh *rm[4] = { &r->vine_stems, &r->vine_leaves, &r->grow_stems,
+				      &r->grow_leaves };
+	int ret = 0;
+
+	if (r->vines_uploaded && r->vines_serial == app->vines_serial)
+		return 0;
+	for (int i = 0; i < 4 && ret == 0; i++)
+		ret = render_mesh_upload(rm[i], m[i], r->uint_indices);
+	r->stats.uploads += 4;
+	r->vines_uploaded = ret == 0;
+	r->vines_serial = app->vines_serial;
+	return ret;
+}
+
+int render_vines_draw(struct render *r, const struct app *app)
+{
+	float leaf[3];
+	int ret;
+
+	if (app->tree.nvines == 0 && !r->vines_uploaded)
+		return 0;
+	ret = vines_upload(r, app);
+	if (ret < 0)
+		return ret;
+	/* the stems are closed tubes, as the bark */
+	glEnable(GL_CULL_FACE);
+	glUniform1i(r->tree_two_sided, 0);
+	glUniform3fv(r->tree_color, 1, render_vine_stem);
+	render_mesh_draw(r, &r->vine_stems);
+	render_mesh_draw(r, &r->grow_stems);
+	/* a vine's leaves in the tree's season's colour; in winter it has none, as the tree */
+	if (!leaf_tint_uniform(app->tree.season, leaf))
+		return 0;
+	glDisable(GL_CULL_FACE);
+	glUniform1i(r->tree_two_sided, 1);
+	glUniform3fv(r->tree_color, 1, leaf);
+	render_mesh_draw(r, &r->vine_leaves);
+	render_mesh_draw(r, &r->grow_leaves);
+	return 0;
+}
+
+void render_vines_finish(struct render *r)
+{
+	render_mesh_finish(&r->vine_stems);
+	render_mesh_finish(&r->vine_leaves);
+	render_mesh_finish(&r->grow_stems);
+	render_mesh_finish(&r->grow_leaves);
+	r->vines_uploaded = false;
 }
