@@ -231,6 +231,34 @@ t_origami() {
 	same_files "$T/u-0.05" "$T/p-maple" skeleton.json model.glb
 }
 
+# The vine mode (issue 16): the demo's tree, 3D, the vine button and a tap at its foot
+# plant a vine that is in the drawing, replays from it and exports; on screen it grows
+# by the events' time (--idle), and the files do not depend on when they are written.
+t_vine() {
+	local tap="$SRC/data/vine-tap.edaha-trace"
+
+	run --out "$T/v" --replay "$DEMO" --press 3d --press vine --replay "$tap" --view 30,15
+	grep -q '^vine [0-9]* ' "$T/v/drawing.edaha" || fail "no vine op in the drawing"
+	"$GLTF_VALIDATE" "$T/v/model.glb" || fail "the export with a vine does not validate"
+	run --out "$T/v2" --load "$T/v/drawing.edaha" --view 30,15
+	same_files "$T/v" "$T/v2" model.glb model.obj skeleton.json drawing.edaha
+	if [ -n "${EDAHA_UPDATE_GOLDEN:-}" ]; then
+		cp "$T/v/screen.png" "$SRC/golden/vine-demo.png"
+	else
+		"$IMGCMP" "$SRC/golden/vine-demo.png" "$T/v/screen.png" ||
+			fail "the vine on the demo tree differs from golden"
+	fi
+	for s in 0.3 0.3b 2 30; do
+		run --out "$T/i-$s" --replay "$DEMO" --press 3d --press vine --replay "$tap" \
+			--view 30,15 --idle "${s%b}"
+	done
+	cmp -s "$T/i-0.3/screen.png" "$T/i-0.3b/screen.png" || fail "growth is not repeatable"
+	cmp -s "$T/i-0.3/screen.png" "$T/i-2/screen.png" && fail "the vine does not grow"
+	"$IMGCMP" "$T/i-30/screen.png" "$T/v/screen.png" || fail "the vine is not grown after 30 s"
+	same_files "$T/i-0.3" "$T/v" skeleton.json model.glb model.obj
+	echo "a vine planted, replayed, grown on screen and exported"
+}
+
 t_exports_valid() {
 	run --out "$T/demo" --replay "$DEMO"
 	run --out "$T/demo3d" --replay "$DEMO" --press 3d
