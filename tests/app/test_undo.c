@@ -23,6 +23,7 @@
 
 static struct pen clock = { .now_us = 1000 }; /* the apps' events, all on one clock */
 static long checks;
+static long vines_planted; /* by the sessions' taps in the vine mode */
 
 /* ---- the reference: the document replayed from scratch ---- */
 
@@ -110,6 +111,19 @@ static void same_tree(const struct tree *a, const struct tree *b)
 		CHECK(memcmp(x->points, y->points, x->npoints * sizeof(*x->points)) == 0);
 		CHECK((x->local == NULL) == (y->local == NULL));
 		CHECK(!x->local || memcmp(x->local, y->local, x->npoints * sizeof(*x->local)) == 0);
+	}
+	CHECK_INT(a->nvines, b->nvines);
+	for (size_t i = 0; i < a->nvines && i < b->nvines; i++) {
+		const struct vine *x = &a->vines[i], *y = &b->vines[i];
+
+		SAME(x->p, y->p);
+		SAME(x->plant, y->plant);
+		CHECK_INT(x->nshoots, y->nshoots);
+		for (size_t k = 0; k < x->nshoots && k < y->nshoots; k++) {
+			CHECK_INT(x->shoots[k].n, y->shoots[k].n);
+			CHECK(memcmp(x->shoots[k].axis, y->shoots[k].axis,
+				     x->shoots[k].n * sizeof(*x->shoots[k].axis)) == 0);
+		}
 	}
 }
 
@@ -340,11 +354,23 @@ static bool act(struct app *app, struct rng *r, int *propagations, bool gentle)
 				new_tree(app, r);
 		}
 	} else if (what < 78) {
-		/* a generated tree's parameter buttons, or the season (on any tree) */
-		if (app_generated(app) && rng_next(r) % 3)
+		/* a generated tree's parameter buttons, or the season (on any tree); now and then
+		 * a vine tapped in at the trunk's foot, or a little beside it (issue 16) */
+		if (app_generated(app) && rng_next(r) % 3) {
 			press(app, (enum button)(BUTTON_GEN_MORE + rng_next(r) % 8));
-		else
+		} else if (app->tree.nbranches && rng_next(r) % 3 == 0) {
+			press(app, BUTTON_VINE);
+			if (app->mode == APP_MODE_VINE) {
+				size_t nv = app->tree.nvines;
+
+				tap(app, app->view.width / 2 + rng_range(r, -90, 90),
+				    app->view.ground_y_px - 4);
+				vines_planted += app->tree.nvines > nv;
+				press(app, BUTTON_VINE);
+			}
+		} else {
 			press(app, BUTTON_SEASON);
+		}
 	} else if (what < 90) {
 		press(app, BUTTON_UNDO);
 		return true;
@@ -493,6 +519,8 @@ int main(void)
 	session(7, 360, false, true);
 	session(8, 260, true, true);
 	test_oom();
-	fprintf(stderr, "%ld states compared with a full replay\n", checks);
+	fprintf(stderr, "%ld states compared with a full replay, %ld vines planted\n", checks,
+		vines_planted);
+	CHECK(vines_planted > 0);
 	return 0;
 }
