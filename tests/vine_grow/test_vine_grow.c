@@ -15,66 +15,9 @@
 #include "test.h"
 #include "vine.h"
 #include "vine_support.h"
+#include "vine_test.h"
 
 #define DEG (180.0 / VEC_PI)
-
-/* Cylinders (capped) gathered into one mesh. */
-struct mesh_build {
-	float *p;
-	uint32_t *t;
-	size_t np, nt;
-};
-
-/* A cylinder of radius R along +y (axis 1) or +x (axis 0) from (x0, y0, z0), length h. */
-static void cylinder(struct mesh_build *m, double R, double h, int sides, struct vec3 o, int axis)
-{
-	size_t b = m->np;
-
-	m->p = realloc(m->p, (m->np + 2 * (size_t)sides + 2) * 3 * sizeof(*m->p));
-	m->t = realloc(m->t, (m->nt + 4 * (size_t)sides) * 3 * sizeof(*m->t));
-	CHECK(m->p && m->t);
-	for (int i = 0; i < sides; i++) {
-		double a = 2 * VEC_PI * i / sides, u = R * cos(a), w = R * sin(a);
-
-		for (int e = 0; e < 2; e++) {
-			float *q = m->p + 3 * m->np++;
-			struct vec3 v = axis == 1 ? vec3(o.x + u, o.y + e * h, o.z + w) :
-						    vec3(o.x + e * h, o.y + u, o.z + w);
-
-			q[0] = (float)v.x;
-			q[1] = (float)v.y;
-			q[2] = (float)v.z;
-		}
-	}
-	for (int e = 0; e < 2; e++) {
-		float *q = m->p + 3 * m->np++;
-		struct vec3 v = axis == 1 ? vec3(o.x, o.y + e * h, o.z) : vec3(o.x + e * h, o.y, o.z);
-
-		q[0] = (float)v.x;
-		q[1] = (float)v.y;
-		q[2] = (float)v.z;
-	}
-	for (int i = 0; i < sides; i++) {
-		uint32_t j = (uint32_t)((i + 1) % sides), a0 = (uint32_t)(b + 2 * (size_t)i);
-		uint32_t a1 = a0 + 1, b0 = (uint32_t)b + 2 * j, b1 = b0 + 1;
-		uint32_t c0 = (uint32_t)(b + 2 * (size_t)sides), c1 = c0 + 1;
-		uint32_t tri[4][3] = { { a0, b0, a1 }, { a1, b0, b1 }, { c0, b0, a0 }, { c1, a1, b1 } };
-
-		memcpy(m->t + 3 * m->nt, tri, sizeof(tri));
-		m->nt += 4;
-	}
-}
-
-static struct vine_support *support_of(struct mesh_build *m)
-{
-	struct vine_support *s;
-
-	CHECK_INT(vine_support_create(m->p, m->np, m->t, m->nt, &s), 0);
-	free(m->p);
-	free(m->t);
-	memset(m, 0, sizeof(*m));
-	return s;
-}
 
 static struct vine_params params(double angle, enum vine_twining tw, int internodes)
 {
@@ -87,25 +30,18 @@ static struct vine_params params(double angle, enum vine_twining tw, int interno
 	return p;
 }
 
-static double azimuth(struct vec3 p)
-{
-	return atan2(-p.z, p.x); /* counter-clockwise seen from above */
-}
-
 /* On a pole of radius R (64 sides) 1 m tall, planted r + 13 mm from its side. */
 static void test_pole(double angle, enum vine_twining tw)
 {
 	const double R = 0.02, H = 1.0;
-	struct mesh_build m = { 0 };
-	struct vine_support *s;
+	struct vine_support *s = pole(R, H, 64);
 	struct vine_params p = params(angle, tw, 300);
 	struct vine v;
 	const struct vine_shoot *sh;
-	size_t d = (size_t)p.points_per_internode, first = 0, last = 0, u = (size_t)p.free_nodes * d;
-	double turned = 0, l = p.internode / (double)d;
+	size_t d = (size_t)p.points_per_internode, u = (size_t)p.free_nodes * d;
+	double l = p.internode / (double)d;
+	struct helix h;
 
-	cylinder(&m, R, H, 64, vec3(0, 0, 0), 1);
-	s = support_of(&m);
 	vine_init(&v, &p, vec3(R + 0.015, 0, 0));
 	CHECK_INT(vine_grow(&v, s, 1e9), 0);
 	sh = &v.shoots[0];
@@ -120,33 +56,18 @@ static void test_pole(double angle, enum vine_twining tw)
 			CHECK_NEAR(e.y, l, 1e-12);
 	}
 	/* the twined part: points touching, below the top's rim */
-	for (size_t i = 0; i < sh->n; i++) {
-		if (!sh->contact[i] || sh->axis[i].y > H - 0.05)
-			continue;
-		if (!first)
-			first = i;
-		last = i;
-	}
-	CHECK(first > 0 && last > first + 8 * d);
-	for (size_t i = first; i <= last; i++) {
-		double da = azimuth(sh->axis[i]) - (i > first ? azimuth(sh->axis[i - 1]) : azimuth(sh->axis[i]));
-
-		CHECK_NEAR(hypot(sh->axis[i].x, sh->axis[i].z), R + p.radius, 0.1 * p.radius);
-		while (da > VEC_PI)
-			da -= 2 * VEC_PI;
-		while (da < -VEC_PI)
-			da += 2 * VEC_PI;
-		turned += da;
-	}
+	CHECK(pole_helix(sh, H - 0.05, &h));
+	CHECK(h.first > 0 && h.last > h.first + 8 * d);
+	CHECK_NEAR(h.radius_min, R + p.radius, 0.1 * p.radius);
+	CHECK_NEAR(h.radius_max, R + p.radius, 0.1 * p.radius);
 	/* right: counter-clockwise seen from above, a right-handed helix; left the mirror */
-	CHECK(tw == VINE_RIGHT ? turned > 2 * VEC_PI : turned < -2 * VEC_PI);
+	CHECK(tw == VINE_RIGHT ? h.turned > 2 * VEC_PI : h.turned < -2 * VEC_PI);
 	{
-		double pitch = (sh->axis[last].y - sh->axis[first].y) / (fabs(turned) / (2 * VEC_PI));
 		double want = 2 * VEC_PI * (R + p.radius) / tan(angle / DEG);
 
 		printf("pole, %g degrees, %s: pitch %.4f m, 2 pi (R + r) / tan theta_p = %.4f m\n",
-		       angle, tw == VINE_RIGHT ? "right" : "left", pitch, want);
-		CHECK(fabs(pitch - want) <= 0.05 * want);
+		       angle, tw == VINE_RIGHT ? "right" : "left", h.pitch, want);
+		CHECK(fabs(h.pitch - want) <= 0.05 * want);
 	}
 	/* nothing closer than 0.95 r */
 	for (size_t k = 0; k < v.nshoots; k++)

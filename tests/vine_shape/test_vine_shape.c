@@ -17,6 +17,7 @@
 #include "test.h"
 #include "vine.h"
 #include "vine_support.h"
+#include "vine_test.h"
 
 #define DEG (VEC_PI / 180.0)
 
@@ -567,49 +568,6 @@ static void test_mesh(void)
 	}
 }
 
-/* Cylinders along +y gathered into one support (test_vine_grow.c's, standing only). */
-struct mesh_build {
-	float *p;
-	uint32_t *t;
-	size_t np, nt;
-};
-
-static void cylinder(struct mesh_build *m, double R, double h, int sides, struct vec3 o)
-{
-	size_t b = m->np;
-
-	m->p = realloc(m->p, (m->np + 2 * (size_t)sides + 2) * 3 * sizeof(*m->p));
-	m->t = realloc(m->t, (m->nt + 4 * (size_t)sides) * 3 * sizeof(*m->t));
-	CHECK(m->p && m->t);
-	for (int i = 0; i < sides; i++) {
-		double a = 2 * VEC_PI * i / sides;
-
-		for (int e = 0; e < 2; e++) {
-			float *q = m->p + 3 * m->np++;
-
-			q[0] = (float)(o.x + R * cos(a));
-			q[1] = (float)(o.y + e * h);
-			q[2] = (float)(o.z + R * sin(a));
-		}
-	}
-	for (int e = 0; e < 2; e++) {
-		float *q = m->p + 3 * m->np++;
-
-		q[0] = (float)o.x;
-		q[1] = (float)(o.y + e * h);
-		q[2] = (float)o.z;
-	}
-	for (int i = 0; i < sides; i++) {
-		uint32_t j = (uint32_t)((i + 1) % sides), a0 = (uint32_t)(b + 2 * (size_t)i);
-		uint32_t a1 = a0 + 1, b0 = (uint32_t)b + 2 * j, b1 = b0 + 1;
-		uint32_t c0 = (uint32_t)(b + 2 * (size_t)sides), c1 = c0 + 1;
-		uint32_t tri[4][3] = { { a0, b0, a1 }, { a1, b0, b1 }, { c0, b0, a0 }, { c1, a1, b1 } };
-
-		memcpy(m->t + 3 * m->nt, tri, sizeof(tri));
-		m->nt += 4;
-	}
-}
-
 /*
  * Vines grown on a pole shorter than their budget (the apex stops above it, buds take
  * over): every shape check on them; the raw axes the same for another seed, the free
@@ -617,17 +575,12 @@ static void cylinder(struct mesh_build *m, double R, double h, int sides, struct
  */
 static void test_grown(enum vine_twining tw, int per_node)
 {
-	struct mesh_build mb = { 0 };
-	struct vine_support *s;
+	struct vine_support *s = pole(0.02, 0.4, 32);
 	struct vine_params p;
 	struct vine v, w;
 	struct vine_leaf *l;
 	size_t nl, i = 0, d, changed = 0;
 
-	cylinder(&mb, 0.02, 0.4, 32, vec3(0, 0, 0));
-	CHECK_INT(vine_support_create(mb.p, mb.np, mb.t, mb.nt, &s), 0);
-	free(mb.p);
-	free(mb.t);
 	vine_params_default(&p);
 	p.twining = tw;
 	p.internodes = 24;
