@@ -16,9 +16,8 @@ void vine_params_default(struct vine_params *p)
 	p->angle = 18;
 	p->free_nodes = 1;
 	p->twining = VINE_LEFT;
-	/* the thesis's default is none; a default vine should show its leaves */
 	p->leaves_per_node = 1;
-	p->cotyledons = 2;
+	p->cotyledons = 1;
 	p->leaf_size = 0.012;
 	/* edaha's own */
 	p->points_per_internode = 8;

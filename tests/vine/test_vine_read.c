@@ -93,8 +93,8 @@ static void test_defaults(void)
 	CHECK(p.internode == 0.060 && p.radius == 0.002 && p.step_time == 10 && p.angle == 18);
 	CHECK_INT(p.free_nodes, 1);
 	CHECK_INT(p.twining, VINE_LEFT);
-	CHECK_INT(p.leaves_per_node, 1); /* alternate: the thesis's is none */
-	CHECK_INT(p.cotyledons, 2);
+	CHECK_INT(p.leaves_per_node, 1); /* alternate, as Table 4.1's */
+	CHECK_INT(p.cotyledons, 1);
 	CHECK(p.leaf_size == 0.012);
 	/* edaha's own: 22.5 degrees a new point, a turn every two internodes */
 	CHECK_INT(p.points_per_internode, 8);
@@ -111,7 +111,7 @@ static void test_defaults(void)
 	read_ok("edaha-vine: 1\n", &q);
 	check_same(&p, &q);
 	read_ok("edaha-vine: 1\ninternode: 0.06\nradius: 0.002\nstep_time: 10\nangle: 18\n"
-		"free_nodes: 1\ntwining: left\nleaves_per_node: 1\ncotyledons: 2\n"
+		"free_nodes: 1\ntwining: left\nleaves_per_node: 1\ncotyledons: 1\n"
 		"leaf_size: 0.012\npoints_per_internode: 8\nring_sides: 8\nsweep: 2.25\n"
 		"internodes: 40\nseed: 1\n", &q);
 	check_same(&p, &q);

@@ -25,14 +25,16 @@
  * tests/vine_grow's), its twined part measured below the top's rim. */
 static const double R = 0.02, H = 1.0, GAP = 0.015, RIM = 0.95;
 
-/* Fig. 4.5(a) and 4.6(a): Table 4.1 (4.2 is the same), one thesis unit a millimetre. It
- * is vine_params_default but for the cotyledons: the table has 1, edaha's default 2. */
+/* Fig. 4.5(a) and 4.6(a): Table 4.1 (4.2 is the same), one thesis unit a millimetre:
+ * vine_params_default, which the table's values are (checked here). */
 static struct vine_params base(void)
 {
 	struct vine_params p;
 
 	vine_params_default(&p);
-	p.cotyledons = 1;
+	CHECK(p.internode == 0.060 && p.radius == 0.002 && p.step_time == 10 && p.angle == 18);
+	CHECK(p.free_nodes == 1 && p.twining == VINE_LEFT && p.leaves_per_node == 1 &&
+	      p.cotyledons == 1 && p.leaf_size == 0.012);
 	return p;
 }
 
