@@ -3,12 +3,15 @@
  * Twining vines (seed 004): the time to grow a vine of 100 and 1,000 internodes (d = 8,
  * contact bisected to 0.01 r) around a pole tessellated into about 1k and 100k triangles,
  * the support's index built in the time, then the smoothing, leaves and meshes. Prints
- * medians and how each grows with the internodes and with the triangles.
+ * medians and how each grows with the internodes and with the triangles. Then the kiosk's
+ * vine mode on drawn 3D trees of 10 to 160 branches: a tap at the trunk's foot (where it
+ * plants, the vine grown on the bark, its meshes) and a frame of its growth on screen.
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "bench_draw.h"
 #include "bench_util.h"
 #include "mesh.h"
 #include "vine.h"
@@ -116,6 +119,71 @@ static void shape(void *arg)
 	vine_support_destroy(s);
 }
 
+/* The vine button and a tap at the foot of the tree bench_draw_tree draws (its trunk
+ * rises from x = 560 on the ground, y = 736). Seconds the tap took. */
+static double plant(struct app *app, struct bench_pen *bp)
+{
+	double t0;
+
+	(void)bench_press(app, BUTTON_VINE);
+	pen_event(&bp->pen, app, EVENT_PROXIMITY_IN, EVENT_TOOL_PEN, 590, 730, 0.0);
+	pen_event(&bp->pen, app, EVENT_TIP_DOWN, EVENT_TOOL_PEN, 590, 730, 0.5);
+	t0 = bench_now();
+	pen_event(&bp->pen, app, EVENT_TIP_UP, EVENT_TOOL_PEN, 590, 730, 0.0);
+	t0 = bench_now() - t0;
+	pen_event(&bp->pen, app, EVENT_PROXIMITY_OUT, EVENT_TOOL_PEN, 590, 730, 0.0);
+	(void)bench_press(app, BUTTON_VINE);
+	return t0;
+}
+
+static void kiosk(void)
+{
+	static const int branches[] = { 10, 40, 160 };
+	double pn = 0, pt = 0;
+
+	printf("the vine mode on a drawn 3D tree: a tap planting a vine (the kiosk's preset "
+	       "scaled, 40 internodes), median of 5, ms\n");
+	for (size_t i = 0; i < sizeof(branches) / sizeof(*branches); i++) {
+		static double frames[2000];
+		double taps[5], worst = 0.0;
+		size_t nframes = 0, bark = 0;
+		uint64_t t0;
+
+		for (int r = 0; r < 5; r++) {
+			struct bench_pen bp = { .pen = { .now_us = 1000, .steps = 8,
+							 .pause_us = PEN_PAUSE_US } };
+			struct app *app = bench_draw_tree(&bp, branches[i]);
+
+			(void)bench_press(app, BUTTON_3D);
+			bark = app->mesh.bark.nindices / 3;
+			taps[r] = plant(app, &bp);
+			if (app->tree.nvines != 1) {
+				fprintf(stderr, "bench_vine: no vine planted on %d branches\n",
+					branches[i]);
+				exit(1);
+			}
+			/* its growth on screen, at 60 frames a second (the last run's) */
+			t0 = app->doc.ops[app->doc.cursor - 1].time_us;
+			nframes = 0;
+			for (uint64_t t = t0; nframes < 2000; t += 16667) {
+				double s = bench_now();
+				bool on = app_vines_advance(app, t);
+
+				frames[nframes++] = bench_now() - s;
+				if (!on)
+					break;
+			}
+			app_destroy(app);
+		}
+		for (size_t f = 0; f < nframes; f++)
+			worst = frames[f] > worst ? frames[f] : worst;
+		bench_row("  plant, tree branches", branches[i], bench_median(taps, 5), &pn, &pt);
+		printf("    (bark %zu triangles) growth on screen: %zu frames, median %.3f ms, "
+		       "worst %.3f ms a frame\n", bark, nframes,
+		       1e3 * bench_median(frames, nframes), 1e3 * worst);
+	}
+}
+
 int main(void)
 {
 	static const int internodes[] = { 100, 1000 };
@@ -155,5 +223,6 @@ int main(void)
 			free(j.pole.t);
 		}
 	}
+	kiosk();
 	return 0;
 }

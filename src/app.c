@@ -14,6 +14,7 @@
 #include "propagate.h"
 #include "sketch.h"
 #include "tree_index.h"
+#include "vine_support.h"
 
 static void app_fail(struct app *app, int err)
 {
@@ -63,6 +64,7 @@ void app_destroy(struct app *app)
 	for (int i = 0; i < GEN_PRESET_COUNT; i++)
 		tree_mesh_finish(&app->templates[i]);
 	app_vine_growth_clear(app);
+	vine_support_destroy(app->bark_index);
 	tree_mesh_finish(&app->vines_mesh);
 	tree_mesh_finish(&app->growth.mesh);
 	free(app->stroke.points);
@@ -117,7 +119,9 @@ int app_apply_op(struct app *app, const struct doc_op *op)
 			app->tree.season = (enum season)op->pattern;
 		return SKETCH_GREW;
 	case DOC_OP_VINE:
-		return app_vine_apply(&app->tree, op);
+		/* the tap's index of this very tree, if the op is the tap's */
+		return app_vine_apply(&app->tree, op,
+				      op == app->bark_index_op ? app->bark_index : NULL);
 	case DOC_OP_LEAFTYPE:
 		/* what arrangement and propagation place next: no element changes */
 		if (op->pattern >= -1 && op->pattern < ORI_KIND_COUNT)
@@ -169,6 +173,7 @@ int app_push_op(struct app *app, struct doc_op *op)
 		return ret;
 	/* the ops that could be redone are gone, and what was known of their states */
 	history_forget_after(&app->history, app->doc.cursor - 1);
+	app->bark_index_op = app->bark_index ? &app->doc.ops[app->doc.cursor - 1] : NULL;
 	ret = app_apply_recorded(app, app->doc.cursor);
 	if (ret < 0) {
 		/* Half an edit may have been made: the document is the truth, rebuild from it. */

@@ -186,6 +186,11 @@ struct app {
 	bool vines_mesh_growing; /* ...with growth on */
 	uint64_t vines_serial;  /* bumped when vines_mesh or growth.mesh changes */
 	struct app_vine_growth growth;
+	/* The index of the tree's bark a vine tap built to find where it plants, lent to the
+	 * vine op it pushes (bark_index_op) and on to the growth that op starts: one index a
+	 * tap, not three. NULL outside a tap. */
+	struct vine_support *bark_index;
+	const struct doc_op *bark_index_op;
 	/* Example-based editing. */
 	int selected;              /* clone mode: the branch that gets children, or -1 */
 	int suggest_branch;        /* leaf mode: the branch whose leaves suggest... */

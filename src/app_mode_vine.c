@@ -135,7 +135,8 @@ static int reaches(const struct vine_support *s, const struct vine_params *p, st
 	return ret;
 }
 
-int app_vine_plan(const struct app *app, struct vec3 p, uint64_t time_us, struct doc_op *op)
+int app_vine_plan(const struct app *app, struct vec3 p, uint64_t time_us, struct doc_op *op,
+		  struct vine_support **bark)
 {
 	const struct tree *t = &app->tree;
 	struct vine_support *s = NULL;
@@ -183,7 +184,10 @@ int app_vine_plan(const struct app *app, struct vec3 p, uint64_t time_us, struct
 		}
 		at = vec3_add(foot, vec3_scale(dir, lo));
 	}
-	vine_support_destroy(s);
+	if (ret == -ENOMEM || !bark)
+		vine_support_destroy(s);
+	else
+		*bark = s;
 	if (ret == -ENOMEM)
 		return ret;
 	op->kind = DOC_OP_VINE;
@@ -219,13 +223,17 @@ static int vine_stroke(struct app *app, double len, bool *taken)
 		app_set_status(app, APP_STATUS_VINE_FULL, t);
 		return 0;
 	}
-	ret = app_vine_plan(app, app_stroke_point(app, 0), t, &op);
+	ret = app_vine_plan(app, app_stroke_point(app, 0), t, &op, &app->bark_index);
 	if (ret == 0)
 		app_set_status(app, APP_STATUS_VINE_WHERE, t);
 	if (ret <= 0)
 		return ret;
 	ret = app_push_op(app, &op);
 	doc_op_finish(&op);
+	/* lent for this op only (the growth took it, unless it failed) */
+	vine_support_destroy(app->bark_index);
+	app->bark_index = NULL;
+	app->bark_index_op = NULL;
 	if (ret == -ENOSPC) {
 		app_set_status(app, APP_STATUS_VINE_FULL, t);
 		return 0;

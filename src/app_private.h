@@ -60,8 +60,9 @@ int app_templates_build(struct app *app);
 int app_press_functional(struct app *app, enum button b, uint64_t time_us);
 
 /* app_vine.c: the vine op applied to t (SKETCH_GREW when it grew nothing, CHANGED, or
- * < 0), and the index of t's bark a vine climbs (0, -EINVAL: no bark, -ENOMEM). */
-int app_vine_apply(struct tree *t, const struct doc_op *op);
+ * < 0) on bark, the index of t's bark (NULL: made here), and the index of t's bark a vine
+ * climbs (0, -EINVAL: no bark, -ENOMEM). */
+int app_vine_apply(struct tree *t, const struct doc_op *op, const struct vine_support *bark);
 struct vine_support;
 int app_vine_support(const struct tree *t, struct vine_support **out);
 /* The vine op just applied (the tree's last vine) starts growing on screen; the one
@@ -72,9 +73,11 @@ void app_vine_growth_clear(struct app *app);
 /* The vines' meshes in step with the tree's (mesh_serial) and the growth. 0 or -ENOMEM. */
 int app_vines_refresh(struct app *app);
 /* app_mode_vine.c: where a tap at view-space point p plants a vine, with its parameters
- * scaled to the tree: 1 and *op filled (kind, plant, vine allocated), 0 when the tap is
- * too far from the tree's foot, or -ENOMEM. */
-int app_vine_plan(const struct app *app, struct vec3 p, uint64_t time_us, struct doc_op *op);
+ * scaled to the tree: 1 and *op filled (kind, plant, vine allocated) and *bark the index of
+ * the tree's bark it built (the caller's; may be NULL), 0 when the tap is too far from the
+ * tree's foot, or -ENOMEM. */
+int app_vine_plan(const struct app *app, struct vec3 p, uint64_t time_us, struct doc_op *op,
+		  struct vine_support **bark);
 
 /* app_view.c */
 void app_camera_store(struct app *app, struct camera c);

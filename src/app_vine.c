@@ -29,22 +29,23 @@ int app_vine_support(const struct tree *t, struct vine_support **out)
 	return ret;
 }
 
-int app_vine_apply(struct tree *t, const struct doc_op *op)
+int app_vine_apply(struct tree *t, const struct doc_op *op, const struct vine_support *bark)
 {
 	struct vine_support *s = NULL;
 	struct vine v;
-	int ret;
+	int ret = 0;
 
 	/* a drawing's parameters were checked when read; a full tree takes no more */
 	if (!op->vine || t->nvines >= TREE_MAX_VINES || t->nbranches == 0)
 		return SKETCH_GREW;
-	ret = app_vine_support(t, &s);
+	if (!bark)
+		ret = app_vine_support(t, &s);
 	if (ret == -EINVAL)
 		return SKETCH_GREW; /* no bark to climb: nothing grows */
 	if (ret < 0)
 		return ret;
 	vine_init(&v, op->vine, vec3(op->plant[0], op->plant[1], op->plant[2]));
-	ret = vine_grow(&v, s, INFINITY);
+	ret = vine_grow(&v, bark ? bark : s, INFINITY);
 	vine_support_destroy(s);
 	if (ret == 0)
 		ret = tree_add_vine(t, &v);
@@ -103,10 +104,16 @@ int app_vine_growth_start(struct app *app, const struct doc_op *op)
 	int ret;
 
 	app_vine_growth_clear(app); /* the one before shows grown */
-	/* the bark it grew on: the tree's, which a vine does not change */
-	ret = app_vine_support(&app->tree, &g->support);
-	if (ret < 0)
-		return ret == -EINVAL ? 0 : ret;
+	/* the bark it grew on: the tree's, which a vine does not change; the tap's index */
+	if (app->bark_index && op == app->bark_index_op) {
+		g->support = app->bark_index;
+		app->bark_index = NULL;
+		app->bark_index_op = NULL;
+	} else {
+		ret = app_vine_support(&app->tree, &g->support);
+		if (ret < 0)
+			return ret == -EINVAL ? 0 : ret;
+	}
 	vine_init(&g->v, op->vine, vec3(op->plant[0], op->plant[1], op->plant[2]));
 	g->start_us = op->time_us;
 	g->on = true;
