@@ -384,8 +384,8 @@ static int lines_pair(struct cfg_parser *p, const yaml_node_t *key, const char *
 	if (!button_from_name(k, &b))
 		return fail(p, key, "unknown button \"%.40s\" in %s", k, ls->section);
 	if (ls->output && !config_button_is_mode(b))
-		return fail(p, key, "%s: only the modes 3d, clone, leaf and propagate have LEDs, not %s",
-			    ls->section, k);
+		return fail(p, key, "%s: only the modes 3d, clone, leaf, propagate and vine have LEDs, "
+			    "not %s", ls->section, k);
 	snprintf(what, sizeof(what), "%s.%s", ls->section, k);
 	struct config_gpio_line *line = &ls->lines[b];
 	struct line_ctx l = { .line = line, .output = ls->output, .what = what };
@@ -548,7 +548,8 @@ static int top_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
 
 bool config_button_is_mode(enum button b)
 {
-	return b == BUTTON_3D || b == BUTTON_CLONE || b == BUTTON_LEAF || b == BUTTON_PROPAGATE;
+	return b == BUTTON_3D || b == BUTTON_CLONE || b == BUTTON_LEAF || b == BUTTON_PROPAGATE ||
+	       b == BUTTON_VINE;
 }
 
 void config_defaults(struct config *c)

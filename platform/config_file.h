@@ -101,5 +101,5 @@ int config_parse(const char *data, size_t len, const char *name, struct config *
 /* Reads and parses path: a missing file gives the defaults and 0; -errno otherwise. */
 int config_load(const char *path, struct config *c, FILE *warn, struct error *err);
 
-/* The buttons that are modes (and may have an LED): 3d, clone, leaf, propagate. */
+/* The buttons that are modes (and may have an LED): 3d, clone, leaf, propagate, vine. */
 bool config_button_is_mode(enum button b);

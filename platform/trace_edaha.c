@@ -310,7 +310,8 @@ static int parse_button(struct edaha_parser *p, struct event *ev)
 	if (r < 0)
 		return r;
 	if (!button_from_name(p->fields[2], &button)) {
-		char names[256];
+		/* every name (290 bytes with vine), room for a few more, within err->msg */
+		char names[384];
 		size_t o = 0;
 
 		names[0] = '\0';

@@ -13,12 +13,13 @@
  * agree.
  *
  * The bar, along the right edge of the screen, holds its buttons in two columns: the tree
- * tools in pairs from the top (3D | clone, leaf | spread, season | ...), the actions in
+ * tools in pairs from the top (3D | clone, leaf | spread, season | vine), the actions in
  * pairs from the bottom (undo | redo, new | save), with the rows between them left empty
- * so the two kinds read apart. Two columns because eleven buttons (issues 16 and 17 add
- * vine and grow) in one would give each less than 9 mm on a 7-inch 800x480 screen, where
- * the screen is 92 mm tall. The bar's width is the same whatever it holds, so buttons
- * added to a group take its empty places and nothing else moves.
+ * so the two kinds read apart. Grow (issue 17) will be the eleventh, under season, and
+ * empty rows will still part the groups. Two columns because eleven buttons in one would
+ * give each less than 9 mm on a 7-inch 800x480 screen, where the screen is 92 mm tall.
+ * The bar's width is the same whatever it holds, so buttons added to a group take its
+ * empty places and nothing else moves.
  *
  * The side strip, along the canvas's left edge, shows what the active mode offers:
  * buttons in pairs, row by row (the parameter buttons, the propagation patterns), or
@@ -30,7 +31,7 @@
  */
 
 /* Buttons in the kiosk's bar. */
-#define LAYOUT_NBUTTONS 9
+#define LAYOUT_NBUTTONS 10
 /* Rows of the bar: the tree tools' from the top, the actions' from the bottom. */
 #define LAYOUT_TOOL_ROWS 4
 #define LAYOUT_ACTION_ROWS 2
@@ -55,7 +56,7 @@ struct layout_bar_list {
 	const enum button *buttons;
 	size_t n, ntools;
 };
-/* The kiosk's: 3D, clone, leaf, propagate, season; undo, redo, new, export. */
+/* The kiosk's: 3D, clone, leaf, propagate, season, vine; undo, redo, new, export. */
 extern const struct layout_bar_list layout_kiosk_bar;
 
 /*

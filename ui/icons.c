@@ -154,6 +154,87 @@ static void icon_leaf(const struct icon *ic)
 	segment(ic, -0.92, 0.92, -0.62, 0.62, LINE, ic->ink);
 }
 
+/* The ink part way to the background, opaque: a lighter shade that can lie under strokes
+ * (a faded colour would show what is behind it, and darken where its discs overlap). */
+static struct rgba shade(const struct icon *ic, float k)
+{
+	return (struct rgba){ ic->bg.r + (ic->ink.r - ic->bg.r) * k,
+			      ic->bg.g + (ic->ink.g - ic->bg.g) * k,
+			      ic->bg.b + (ic->ink.b - ic->bg.b) * k, ic->ink.a };
+}
+
+/*
+ * The vine's stem round the pole: a helix seen from the side, from the foot up, at turn
+ * t (0 at the foot, VINE_TURNS at the tip); in front of the pole while its cosine is
+ * positive.
+ */
+#define VINE_POLE_X (-0.12)
+#define VINE_TURNS 2.0
+#define VINE_STEPS 48
+
+static struct pt vine_at(double t, bool *front)
+{
+	double a = 2.0 * VEC_PI * t, k = t / VINE_TURNS;
+	/* a little narrower as it climbs, as a young tip is */
+	double r = 0.44 - 0.1 * k;
+
+	if (front)
+		*front = cos(a) > 0.0;
+	return (struct pt){ VINE_POLE_X + r * sin(a), 0.8 - 1.28 * k };
+}
+
+/* The stem's stretches on one side of the pole, each a polyline of its own. */
+static void vine_stem(const struct icon *ic, bool front, double width, struct rgba c)
+{
+	struct pt run[VINE_STEPS + 1];
+	size_t n = 0;
+
+	for (int i = 0; i < VINE_STEPS; i++) {
+		double t0 = VINE_TURNS * i / VINE_STEPS, t1 = VINE_TURNS * (i + 1) / VINE_STEPS;
+		bool f1;
+		struct pt p0 = vine_at(t0, NULL), p1 = vine_at(t1, &f1);
+
+		/* a step crossing a side belongs to the side it ends on */
+		if (f1 == front) {
+			if (n == 0)
+				run[n++] = p0;
+			run[n++] = p1;
+		} else if (n > 0) {
+			line(ic, run, n, width, c);
+			n = 0;
+		}
+	}
+	if (n > 0)
+		line(ic, run, n, width, c);
+}
+
+/* A leaf growing from the stem at turn t, pointing along (dx, dy). */
+static void vine_leaf(const struct icon *ic, double t, double dx, double dy, double width)
+{
+	struct pt p = vine_at(t, NULL);
+
+	leaf_shape(ic, p.x, p.y, p.x + dx, p.y + dy, width);
+}
+
+/*
+ * A vine twining up a pole, a leaf out to the side and one at its tip: the stem goes
+ * behind the pole in a lighter shade and over it in front, so it reads as wound round.
+ */
+static void icon_vine(const struct icon *ic)
+{
+	const double half = 0.14, top = -0.95, foot = 0.97;
+	const struct pt pole[4] = { { VINE_POLE_X - half, top }, { VINE_POLE_X + half, top },
+				    { VINE_POLE_X + half, foot }, { VINE_POLE_X - half, foot } };
+	const double stem = LINE * 1.2;
+
+	vine_stem(ic, false, stem, shade(ic, 0.55f));
+	fill(ic, pole, NPTS(pole), shade(ic, 0.3f));
+	vine_stem(ic, true, stem, ic->ink);
+	/* a leaf out from the left of the first turn, and at the tip, up past the pole */
+	vine_leaf(ic, 0.75, -0.6, -0.24, 0.3);
+	vine_leaf(ic, VINE_TURNS, 0.78, -0.42, 0.36);
+}
+
 /* A round badge with a plus or a minus cut out: "more of it", "less of it". */
 static void badge(const struct icon *ic, double cx, double cy, bool plus)
 {
@@ -568,7 +649,7 @@ void icon_draw(struct batch *b, enum button button, struct pt centre, double siz
 		icon_maple(&ic);
 		break;
 	case BUTTON_VINE:
-		icon_leaf(&ic); /* FIXME(issue 16): the vine's own icon */
+		icon_vine(&ic);
 		break;
 	case BUTTON_TPL_BLANK:
 		icon_blank(&ic);

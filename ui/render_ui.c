@@ -59,6 +59,8 @@ static struct rgba accent(enum button button)
 	case BUTTON_FIXED_COUNT: /* its patterns */
 	case BUTTON_FIXED_SIZE:
 		return (struct rgba){ 0.90f, 0.48f, 0.12f, 1.0f };
+	case BUTTON_VINE: /* a green-teal, apart from the leaf's green and save's teal */
+		return (struct rgba){ 0.0f, 0.56f, 0.50f, 1.0f };
 	case BUTTON_EXPORT:
 		return (struct rgba){ 0.10f, 0.50f, 0.62f, 1.0f };
 	case BUTTON_GEN_MORE: /* branches: bark brown */

@@ -117,6 +117,8 @@ static void test_good(const char *dir)
 	l = &c.gpio.buttons[BUTTON_PROPAGATE];
 	CHECK(l->set && strcmp(l->chip, "kiosk-buttons") == 0 &&
 	      strcmp(l->name, "btn-propagate") == 0);
+	l = &c.gpio.buttons[BUTTON_VINE]; /* the vine mode (issue 16), a button like the others */
+	CHECK(l->set && strcmp(l->chip, "kiosk-buttons") == 0 && strcmp(l->name, "btn-vine") == 0);
 	l = &c.gpio.buttons[BUTTON_EXPORT];
 	CHECK(l->set && l->offset == 3 && !l->active_low);
 	CHECK(!c.gpio.buttons[BUTTON_UNDO].set);
@@ -125,6 +127,10 @@ static void test_good(const char *dir)
 	CHECK(l->set && strcmp(l->name, "GPIO5") == 0);
 	l = &c.gpio.leds[BUTTON_LEAF];
 	CHECK(l->set && l->offset == 6 && l->active_low);
+	l = &c.gpio.leds[BUTTON_VINE]; /* a mode, so it has an LED */
+	CHECK(l->set && strcmp(l->name, "led-vine") == 0 && !l->active_low);
+	CHECK(config_button_is_mode(BUTTON_VINE));
+	CHECK(!config_button_is_mode(BUTTON_SEASON));
 	CHECK(!c.gpio.leds[BUTTON_CLONE].set);
 	free(path);
 

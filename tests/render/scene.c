@@ -14,7 +14,8 @@
 #define PI 3.14159265358979323846
 
 const char *const scene_names[] = { "leaf", "eraser", "kiosk", "saved", "save-failed-ja",
-				    "saving", "saved-usb-ja", "stick-pulled", "no-stick-ja", NULL };
+				    "saving", "saved-usb-ja", "stick-pulled", "no-stick-ja",
+				    "vine-7inch-ja", NULL };
 
 /* The status scenes are drawn a second into their message; a held one (saving) ten
  * seconds in, long after another would have gone. */
@@ -283,6 +284,13 @@ int scene_build(struct app *app, const char *name)
 			app_hold_status(app, status_scenes[i].status, STATUS_AT_US);
 		else
 			app_set_status(app, status_scenes[i].status, STATUS_AT_US);
+		r = 0;
+	} else if (!strcmp(name, "vine-7inch-ja")) {
+		/* a 7-inch kiosk's 800x480 in the vine mode: its button lit beside season */
+		view_init(&app->view, 800, 480);
+		app->mode = APP_MODE_VINE;
+		app->doc.nops = 5;
+		app->doc.cursor = 5;
 		r = 0;
 	} else if (!strcmp(name, "kiosk")) {
 		/* the kiosk's own size, sketch mode, the pen hovering near the tree */

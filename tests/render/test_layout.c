@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * The on-screen layout: the bar's buttons (order, groups, sizes, no overlaps, targets,
- * hit-testing, canvas), the side strip's places, every target at least 9 mm on a 10-inch
- * 1280x800 and a 7-inch 800x480 screen (the 9 buttons of today's bar and the 11 it will
- * hold), and no stroke of the recorded traces (tests/data, given as argv[1]) on the bar.
+ * hit-testing, canvas), the vine button beside season, the side strip's places, every
+ * target at least 9 mm on a 10-inch 1280x800 and a 7-inch 800x480 screen (the 10 buttons
+ * of today's bar and the 11 it will hold), and no stroke of the recorded traces
+ * (tests/data, given as argv[1]) on the bar.
  */
 #include <dirent.h>
 #include <stdbool.h>
@@ -14,16 +15,18 @@
 #include "trace.h"
 #include "view.h"
 
-/* Vine and grow (issues 16 and 17) are not buttons yet: they stand in as BUTTON_COUNT. */
+/* Grow (issue 17) is not a button yet: it stands in as BUTTON_COUNT. */
 #define FUTURE BUTTON_COUNT
 
 static const enum button expected_order[LAYOUT_NBUTTONS] = {
-	BUTTON_3D,   BUTTON_CLONE, BUTTON_LEAF, BUTTON_PROPAGATE, BUTTON_SEASON,
+	BUTTON_3D,   BUTTON_CLONE, BUTTON_LEAF, BUTTON_PROPAGATE, BUTTON_SEASON, BUTTON_VINE,
 	BUTTON_UNDO, BUTTON_REDO,  BUTTON_NEW,  BUTTON_EXPORT,
 };
+/* where they are in it */
+enum { SEASON = 4, VINE = 5, UNDO = 6, REDO = 7, NEW = 8, SAVE = 9 };
 
 static const enum button eleven[] = {
-	BUTTON_3D,   BUTTON_CLONE, BUTTON_LEAF, BUTTON_PROPAGATE, BUTTON_SEASON, FUTURE, FUTURE,
+	BUTTON_3D,   BUTTON_CLONE, BUTTON_LEAF, BUTTON_PROPAGATE, BUTTON_SEASON, BUTTON_VINE, FUTURE,
 	BUTTON_UNDO, BUTTON_REDO,  BUTTON_NEW,  BUTTON_EXPORT,
 };
 static const struct layout_bar_list eleven_bar = { eleven, 11, 7 };
@@ -149,24 +152,25 @@ static void check_screen(int width, int height, double min_canvas)
 	/* two columns: pairs side by side, the tools from the top, the actions at the bottom */
 	CHECK_NEAR(b[0].y, b[1].y, 0);
 	CHECK(b[1].x > b[0].x + b[0].w);
-	CHECK_NEAR(b[4].x, b[0].x, 0);
-	CHECK_NEAR(b[5].y, b[6].y, 0);
-	CHECK_NEAR(b[7].y, b[8].y, 0);
-	CHECK(b[7].y > b[5].y);
-	CHECK_NEAR(b[8].x + b[8].w + (b[1].x - b[0].x - b[0].w), width, 1);
+	CHECK_NEAR(b[SEASON].x, b[0].x, 0);
+	CHECK_NEAR(b[VINE].x, b[1].x, 0);
+	CHECK_NEAR(b[VINE].y, b[SEASON].y, 0); /* season | vine */
+	CHECK_NEAR(b[UNDO].y, b[REDO].y, 0);
+	CHECK_NEAR(b[NEW].y, b[SAVE].y, 0);
+	CHECK(b[NEW].y > b[UNDO].y);
+	CHECK_NEAR(b[SAVE].x + b[SAVE].w + (b[1].x - b[0].x - b[0].w), width, 1);
 	/* the screen's edges belong to the buttons beside them */
 	CHECK_NEAR(b[1].target.y, 0, 0);
-	CHECK_NEAR(b[8].target.x + b[8].target.w, width, 0);
-	CHECK_NEAR(b[8].target.y + b[8].target.h, height, 0);
+	CHECK_NEAR(b[SAVE].target.x + b[SAVE].target.w, width, 0);
+	CHECK_NEAR(b[SAVE].target.y + b[SAVE].target.h, height, 0);
 	/* the tree tools and the actions read apart: the rows between them are empty */
 	row_gap = b[2].y - (b[0].y + b[0].h);
-	group_gap = b[5].y - (b[4].y + b[4].h);
+	group_gap = b[UNDO].y - (b[VINE].y + b[VINE].h);
 	CHECK(group_gap > 3.0 * row_gap);
-	CHECK(!layout_hit(&v, b[4].x + 1, 0.5 * (b[4].y + b[4].h + b[5].y), &hit));
-	/* season's row has room for one more (vine) beside it */
-	CHECK(!layout_hit(&v, b[3].x + 1, b[4].y + 1, &hit));
+	CHECK(!layout_hit(&v, b[SEASON].x + 1, 0.5 * (b[SEASON].y + b[SEASON].h + b[UNDO].y), &hit));
 
-	/* eleven: the two to come take empty places, nothing else moves, nothing overlaps */
+	/* eleven: grow takes the empty place under season, nothing else moves, nothing
+	 * overlaps, and a row still parts it from the actions */
 	CHECK_INT(layout_bar_buttons(&v, &eleven_bar, more, 11), 11);
 	check_bar(&v, &eleven_bar, more, 11);
 	for (size_t i = 0, j = 0; i < 11; i++) {
@@ -176,7 +180,10 @@ static void check_screen(int width, int height, double min_canvas)
 		CHECK(memcmp(&more[i].x, &b[j].x, 4 * sizeof(double)) == 0);
 		j++;
 	}
-	CHECK(more[6].y + more[6].h < more[7].y);
+	CHECK_NEAR(more[6].x, b[SEASON].x, 0);
+	CHECK(more[6].y > b[SEASON].y + b[SEASON].h);
+	CHECK(!layout_hit(&v, more[6].x + more[6].w / 2, more[6].y + more[6].h / 2, &hit));
+	CHECK(more[6].y + more[6].h + row_gap + b[0].h < more[7].y);
 
 	/* every point of every button hits that button and no other */
 	for (int y = 0; y < height; y += 3) {
@@ -193,6 +200,51 @@ static void check_screen(int width, int height, double min_canvas)
 	}
 }
 
+/* The vine button (issue 16) on a kiosk's screen: in the bar once, beside season, its
+ * centre and its corners pressing it, clear of every other button and target. */
+static void check_vine(const struct screen *s)
+{
+	struct view v;
+	struct layout_button b[LAYOUT_NBUTTONS];
+	struct layout_rect bar, vis;
+	size_t found = 0, at = 0;
+	enum button hit = BUTTON_COUNT;
+
+	view_init(&v, s->width, s->height);
+	CHECK_INT(layout_buttons(&v, b, LAYOUT_NBUTTONS), LAYOUT_NBUTTONS);
+	bar = layout_bar(&v);
+	for (size_t i = 0; i < LAYOUT_NBUTTONS; i++) {
+		if (b[i].button == BUTTON_VINE) {
+			found++;
+			at = i;
+		}
+	}
+	CHECK_INT(found, 1);
+	vis = visible(&b[at]);
+	CHECK(vis.x >= bar.x && vis.x + vis.w <= s->width && vis.y >= 0 && vis.y + vis.h <= s->height);
+	CHECK(layout_hit(&v, vis.x + vis.w / 2, vis.y + vis.h / 2, &hit));
+	CHECK_INT(hit, BUTTON_VINE);
+	CHECK(layout_hit(&v, vis.x + 0.5, vis.y + 0.5, &hit));
+	CHECK_INT(hit, BUTTON_VINE);
+	CHECK(layout_hit(&v, vis.x + vis.w - 0.5, vis.y + vis.h - 0.5, &hit));
+	CHECK_INT(hit, BUTTON_VINE);
+	for (size_t i = 0; i < LAYOUT_NBUTTONS; i++) {
+		struct layout_rect o = visible(&b[i]);
+
+		if (i == at)
+			continue;
+		CHECK(!overlap(&vis, &o));
+		CHECK(!overlap(&b[at].target, &b[i].target));
+		/* season's right-hand neighbour, a tool above every action */
+		if (b[i].button == BUTTON_SEASON)
+			CHECK(b[i].y == vis.y && b[i].x + b[i].w < vis.x);
+		if (b[i].button == BUTTON_UNDO)
+			CHECK(vis.y + vis.h < b[i].y);
+	}
+	printf("%4.0f\" %dx%d vine at %.0f,%.0f %.0fx%.0f\n", s->inches, s->width, s->height, vis.x,
+	       vis.y, vis.w, vis.h);
+}
+
 /* Every target on the two screens a kiosk may have is at least 9 mm either way: the bar
  * today and with eleven buttons, the front view button, the side strip's places. */
 static void check_targets(const struct screen *s)
@@ -207,7 +259,7 @@ static void check_targets(const struct screen *s)
 	view_init(&v, s->width, s->height);
 	n = layout_buttons(&v, b, 11);
 	for (size_t i = 0; i < n; i++)
-		check_mm(s, "bar of 9", i, b[i].target);
+		check_mm(s, "bar of 10", i, b[i].target);
 	n = layout_bar_buttons(&v, &eleven_bar, b, 11);
 	CHECK_INT(n, 11);
 	for (size_t i = 0; i < n; i++)
@@ -344,6 +396,8 @@ int main(int argc, char **argv)
 
 	check_targets(&tablet10);
 	check_targets(&tablet7);
+	check_vine(&tablet10);
+	check_vine(&tablet7);
 	for (size_t k = 0; k < 3; k++) {
 		check_side(1280, 800, (enum layout_side_kind)k, 8);
 		check_side(800, 480, (enum layout_side_kind)k, 8);
