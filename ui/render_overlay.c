@@ -38,8 +38,17 @@ static bool good_news(enum app_status s)
 	return s == APP_STATUS_SAVED || s == APP_STATUS_SAVED_USB || s == APP_STATUS_STICK_READY;
 }
 
+/* What to do next, in a mode: shown in the mode's colour, with an arrow down to the
+ * ground the visitor is to tap. */
+static bool hint(enum app_status s)
+{
+	return s == APP_STATUS_VINE_TAP || s == APP_STATUS_VINE_WHERE;
+}
+
 static struct rgba status_colour(enum app_status s)
 {
+	if (hint(s))
+		return (struct rgba){ 0.0f, 0.56f, 0.50f, 1.0f }; /* the vine button's teal */
 	if (good_news(s))
 		return (struct rgba){ 0.24f, 0.58f, 0.22f, 1.0f };
 	if (s == APP_STATUS_SAVING)
@@ -47,8 +56,8 @@ static struct rgba status_colour(enum app_status s)
 	return (struct rgba){ 0.86f, 0.36f, 0.12f, 1.0f };
 }
 
-/* A tick for good news, three dots for something under way, "!" for bad, white in a
- * disc of the message's colour. */
+/* A tick for good news, three dots for something under way, an arrow down for a hint,
+ * "!" for bad, white in a disc of the message's colour. */
 static void status_icon(struct batch *b, enum app_status s, struct pt c, double r, float a)
 {
 	batch_disc(b, c, r, faded(status_colour(s), a));
@@ -61,6 +70,14 @@ static void status_icon(struct batch *b, enum app_status s, struct pt c, double 
 					    { c.x + 0.48 * r, c.y - 0.32 * r } };
 
 		batch_polyline(b, tick, 3, 0.24 * r, faded(white, a));
+	} else if (hint(s)) {
+		const struct pt shaft[2] = { { c.x, c.y - 0.55 * r }, { c.x, c.y + 0.40 * r } };
+		const struct pt head[3] = { { c.x - 0.36 * r, c.y + 0.08 * r },
+					    { c.x, c.y + 0.50 * r },
+					    { c.x + 0.36 * r, c.y + 0.08 * r } };
+
+		batch_polyline(b, shaft, 2, 0.24 * r, faded(white, a));
+		batch_polyline(b, head, 3, 0.24 * r, faded(white, a));
 	} else {
 		const struct pt bar[2] = { { c.x, c.y - 0.52 * r }, { c.x, c.y + 0.12 * r } };
 

@@ -242,11 +242,16 @@ t_vine() {
 	"$GLTF_VALIDATE" "$T/v/model.glb" || fail "the export with a vine does not validate"
 	run --out "$T/v2" --load "$T/v/drawing.edaha" --view 30,15
 	same_files "$T/v" "$T/v2" model.glb model.obj skeleton.json drawing.edaha
+	# entering the mode says where to tap (in the mode's colour, an arrow to the ground)
+	run --out "$T/h" --replay "$DEMO" --press 3d --press vine --idle 1
 	if [ -n "${EDAHA_UPDATE_GOLDEN:-}" ]; then
 		cp "$T/v/screen.png" "$SRC/golden/vine-demo.png"
+		cp "$T/h/screen.png" "$SRC/golden/vine-hint.png"
 	else
 		"$IMGCMP" "$SRC/golden/vine-demo.png" "$T/v/screen.png" ||
 			fail "the vine on the demo tree differs from golden"
+		"$IMGCMP" "$SRC/golden/vine-hint.png" "$T/h/screen.png" ||
+			fail "the vine mode's hint differs from golden"
 	fi
 	for s in 0.3 0.3b 2 30; do
 		run --out "$T/i-$s" --replay "$DEMO" --press 3d --press vine --replay "$tap" \
