@@ -35,7 +35,11 @@ int export_obj(const struct tree *t, const struct tree_mesh *m, const struct tre
  * before its file's name was known. 0, -EINVAL (no mtllib line, a bad name) or -ENOMEM
  * (obj unchanged then). */
 int export_obj_mtllib(struct buf *obj, const char *mtl_name);
-/* skeleton.json, see docs/skeleton-format.md. */
+/* skeleton.json's "version": 2 since trees carry their vines (docs/skeleton-format.md,
+ * Versions). */
+#define SKELETON_VERSION 2
+/* skeleton.json, see docs/skeleton-format.md: the tree, and its "vines" (vine_json.c)
+ * when it has any. */
 int export_skeleton(const struct tree *t, struct buf *out);
 struct json_object;
 /* The same as a json-c object, for writers that add a section (vine_json.c); NULL without
