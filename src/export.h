@@ -17,10 +17,19 @@
  * not looked at); in spring and autumn each leaf takes its palette entry
  * (season_leaf_color), all leaves the palette's first entry where mk does not describe m;
  * in winter there are no leaves in the files at all. The bark is the same in every season.
+ *
+ * t's vines (t->vines) are not in m (the app draws them apart): export_glb and export_obj
+ * mesh them from t (vine_mesh_append, export_vines.h) and write them after the tree, the
+ * stems in their own "vine" material (MATERIAL_VINE_RGB, one-sided: closed tubes), the
+ * leaves in the leaves' material, in summer's green, in spring's and autumn's palette's
+ * first entry (mk describes the tree's own leaves only), in winter not at all. A tree
+ * without vines has the bytes it had before vines.
  */
 
 /* glTF 2.0 binary: y up, metres, normals, "bark" and double-sided leaves materials; in
- * spring and autumn the leaves' colours are their vertices' COLOR_0 (export_gltf.c). */
+ * spring and autumn the leaves' colours are their vertices' COLOR_0 (export_gltf.c). The
+ * one mesh's primitives: "bark", "leaves", "vine" and "vine-leaves" (each left out when it
+ * has no triangles), named so in their accessors' names. */
 int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
 	       struct buf *out);
 /* The same for one mesh of leaves alone (an origami leaf, ori_mesh_append): the leaves'
@@ -28,14 +37,19 @@ int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tre
 int export_glb_leaf(const struct mesh *m, const char *name, struct buf *out);
 /* Wavefront OBJ with its MTL; the OBJ refers to the MTL as mtl_name (e.g. "model.mtl").
  * In spring and autumn the leaves' faces are grouped by colour, one material each
- * ("leaves-autumn-3": palette entry 3), and the MTL has the materials used. */
+ * ("leaves-autumn-3": palette entry 3), and the MTL has the materials used. Objects "bark",
+ * "leaves", "vine" and "vine-leaves", each when it has faces. */
 int export_obj(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
 	       const char *mtl_name, struct buf *obj, struct buf *mtl);
 /* Renames the MTL an OBJ made by export_obj refers to (its mtllib line), for an OBJ built
  * before its file's name was known. 0, -EINVAL (no mtllib line, a bad name) or -ENOMEM
  * (obj unchanged then). */
 int export_obj_mtllib(struct buf *obj, const char *mtl_name);
-/* skeleton.json, see docs/skeleton-format.md. */
+/* skeleton.json's "version": 2 since trees carry their vines (docs/skeleton-format.md,
+ * Versions). */
+#define SKELETON_VERSION 2
+/* skeleton.json, see docs/skeleton-format.md: the tree, and its "vines" (vine_json.c)
+ * when it has any. */
 int export_skeleton(const struct tree *t, struct buf *out);
 struct json_object;
 /* The same as a json-c object, for writers that add a section (vine_json.c); NULL without

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include "export.h"
 #include "export_leaves.h"
+#include "export_vines.h"
 #include "numfmt.h"
 
 #include <errno.h>
@@ -27,6 +28,7 @@
 
 static const double bark_color[4] = { MATERIAL_BARK_RGB, 1.0 };
 static const double leaves_color[4] = { MATERIAL_LEAVES_RGB, 1.0 };
+static const double vine_color[4] = { MATERIAL_VINE_RGB, 1.0 };
 /* glTF multiplies COLOR_0 by the base colour: white leaves it the leaf's own colour. */
 static const double white[4] = { 1.0, 1.0, 1.0, 1.0 };
 
@@ -91,9 +93,28 @@ struct glb_view {
 	enum glb_data kind;
 };
 
+/* The primitives, in the file's order: the tree's bark and leaves, then its vines' stems
+ * and leaves (after the tree's, so a tree without vines has the bytes it had). */
+enum glb_prim { GLB_BARK, GLB_LEAVES, GLB_VINE, GLB_VINE_LEAVES, GLB_NPRIMS };
+static const char *const glb_prim_names[GLB_NPRIMS] = { "bark", "leaves", "vine", "vine-leaves" };
+
+/* The materials, each in the file once, numbered as first used. */
+enum glb_mat { GLB_MAT_BARK, GLB_MAT_LEAVES, GLB_MAT_VINE, GLB_NMATS };
+static const enum glb_mat glb_prim_mat[GLB_NPRIMS] = { GLB_MAT_BARK, GLB_MAT_LEAVES, GLB_MAT_VINE,
+						       GLB_MAT_LEAVES };
+
+/* What one GLB is made of. */
+struct glb_input {
+	const struct mesh *mesh[GLB_NPRIMS];            /* NULL: none */
+	const struct export_leaves *colors[GLB_NPRIMS]; /* the leaves' COLOR_0 in spring, autumn */
+	enum export_look how;
+	enum season season;
+	const char *name; /* the node's and the mesh's */
+};
+
 struct glb {
 	struct json_object *root;
-	struct glb_view views[7]; /* bark: 3, leaves: 3 or 4 */
+	struct glb_view views[4 * GLB_NPRIMS]; /* POSITION, NORMAL, COLOR_0, indices */
 	size_t nviews;
 	size_t bin_len;
 };
@@ -175,17 +196,65 @@ static struct json_object *glb_leaves_material(enum export_look how, enum season
 	return glb_material(name, white, 0.8, true);
 }
 
-/* Builds the JSON document and the list of BIN views; name is the node's and the mesh's. */
-static int glb_build_json(struct glb *g, const struct tree_mesh *tm, enum export_look how,
-			  enum season season, const struct export_leaves *el, const char *name)
+static struct json_object *glb_new_material(enum glb_mat k, enum export_look how, enum season s)
 {
-	const struct {
-		const struct mesh *mesh;
-		const char *name;
-	} prims[] = { { &tm->bark, "bark" }, { &tm->leaves, "leaves" } };
+	if (k == GLB_MAT_BARK)
+		return glb_material("bark", bark_color, 0.9, false);
+	/* a young stem, smoother than bark; closed tubes, so one-sided as the bark */
+	if (k == GLB_MAT_VINE)
+		return glb_material("vine", vine_color, 0.8, false);
+	return glb_leaves_material(how, s);
+}
+
+/* One primitive's accessors, views and its entry in primitives; colors: its COLOR_0. */
+static struct json_object *glb_add_prim(struct glb *g, struct json_object *primitives,
+					struct json_object **accessors, struct json_object **views,
+					const struct mesh *m, const char *prim_name,
+					const struct export_leaves *colors, size_t material)
+{
+	size_t first = g->nviews, idx = first + (colors ? 3 : 2);
+	struct json_object *prim, *attrs, *pos;
+
+	/* Accessors and bufferViews are numbered alike: POSITION, NORMAL, COLOR_0 (leaves in
+	 * spring and autumn only), indices. */
+	pos = glb_accessor(prim_name, "POSITION", first, GL_FLOAT, m->nvertices, "VEC3");
+	*accessors = json_out_push(*accessors, glb_bounds(pos, m));
+	*accessors = json_out_push(*accessors, glb_accessor(prim_name, "NORMAL", first + 1, GL_FLOAT,
+							    m->nvertices, "VEC3"));
+	*views = glb_add_view(g, *views, m->positions, 3 * m->nvertices, GLB_FLOATS, GL_ARRAY_BUFFER);
+	*views = glb_add_view(g, *views, m->normals, 3 * m->nvertices, GLB_FLOATS, GL_ARRAY_BUFFER);
+	if (colors) {
+		struct json_object *col = glb_accessor(prim_name, "COLOR_0", first + 2,
+						       GL_UNSIGNED_BYTE, m->nvertices, "VEC4");
+
+		col = json_out_set(col, "normalized", json_object_new_boolean(1));
+		*accessors = json_out_push(*accessors, col);
+		*views = glb_add_view(g, *views, colors, m->nvertices, GLB_LEAF_RGBA, GL_ARRAY_BUFFER);
+	}
+	*accessors = json_out_push(*accessors, glb_accessor(prim_name, "indices", idx,
+							    GL_UNSIGNED_INT, m->nindices, "SCALAR"));
+	*views = glb_add_view(g, *views, m->indices, m->nindices, GLB_U32, GL_ELEMENT_ARRAY_BUFFER);
+
+	attrs = json_object_new_object();
+	attrs = json_out_set(attrs, "POSITION", jint(first));
+	attrs = json_out_set(attrs, "NORMAL", jint(first + 1));
+	if (colors)
+		attrs = json_out_set(attrs, "COLOR_0", jint(first + 2));
+	prim = json_object_new_object();
+	prim = json_out_set(prim, "attributes", attrs);
+	prim = json_out_set(prim, "indices", jint(idx));
+	prim = json_out_set(prim, "material", jint(material));
+	prim = json_out_set(prim, "mode", jint(GL_TRIANGLES));
+	return json_out_push(primitives, prim);
+}
+
+/* Builds the JSON document and the list of BIN views. */
+static int glb_build_json(struct glb *g, const struct glb_input *in)
+{
 	struct json_object *root, *asset, *scene, *scenes;
 	struct json_object *primitives, *accessors, *views, *materials;
-	size_t nprims = 0;
+	size_t nprims = 0, nmats = 0, mat_index[GLB_NMATS];
+	bool have_mat[GLB_NMATS] = { false };
 
 	root = json_object_new_object();
 	asset = json_object_new_object();
@@ -198,58 +267,24 @@ static int glb_build_json(struct glb *g, const struct tree_mesh *tm, enum export
 	accessors = json_object_new_array();
 	views = json_object_new_array();
 	materials = json_object_new_array();
-	for (size_t i = 0; i < sizeof(prims) / sizeof(prims[0]); i++) {
-		const struct mesh *m = prims[i].mesh;
-		const char *prim_name = prims[i].name;
-		bool leaves = i == 1, colored = leaves && how == EXPORT_LEAVES_COLORED;
-		size_t first = g->nviews, idx = first + (colored ? 3 : 2);
-		struct json_object *prim, *attrs, *pos;
+	for (size_t i = 0; i < GLB_NPRIMS; i++) {
+		const struct mesh *m = in->mesh[i];
+		enum glb_mat k = glb_prim_mat[i];
+		bool leaves = k == GLB_MAT_LEAVES;
 
 		/* An empty primitive is invalid glTF: leave it out. */
-		if (m->nindices < 3 || m->nvertices == 0 || (leaves && how == EXPORT_LEAVES_NONE))
+		if (!m || m->nindices < 3 || m->nvertices == 0 ||
+		    (leaves && in->how == EXPORT_LEAVES_NONE))
 			continue;
-
-		/* Accessors and bufferViews are numbered alike: POSITION, NORMAL, COLOR_0 (the
-		 * leaves in spring and autumn only), indices. */
-		pos = glb_accessor(prim_name, "POSITION", first, GL_FLOAT, m->nvertices, "VEC3");
-		accessors = json_out_push(accessors, glb_bounds(pos, m));
-		accessors = json_out_push(accessors, glb_accessor(prim_name, "NORMAL", first + 1, GL_FLOAT,
-							  m->nvertices, "VEC3"));
-		views = glb_add_view(g, views, m->positions, 3 * m->nvertices, GLB_FLOATS,
-				     GL_ARRAY_BUFFER);
-		views = glb_add_view(g, views, m->normals, 3 * m->nvertices, GLB_FLOATS,
-				     GL_ARRAY_BUFFER);
-		if (colored) {
-			struct json_object *col = glb_accessor(prim_name, "COLOR_0", first + 2,
-							       GL_UNSIGNED_BYTE, m->nvertices, "VEC4");
-
-			col = json_out_set(col, "normalized", json_object_new_boolean(1));
-			accessors = json_out_push(accessors, col);
-			views = glb_add_view(g, views, el, m->nvertices, GLB_LEAF_RGBA,
-					     GL_ARRAY_BUFFER);
+		if (!have_mat[k]) {
+			materials = json_out_push(materials, glb_new_material(k, in->how, in->season));
+			mat_index[k] = nmats++;
+			have_mat[k] = true;
 		}
-		accessors = json_out_push(accessors, glb_accessor(prim_name, "indices", idx,
-							  GL_UNSIGNED_INT, m->nindices, "SCALAR"));
-		views = glb_add_view(g, views, m->indices, m->nindices, GLB_U32,
-				     GL_ELEMENT_ARRAY_BUFFER);
-
-		attrs = json_object_new_object();
-		attrs = json_out_set(attrs, "POSITION", jint(first));
-		attrs = json_out_set(attrs, "NORMAL", jint(first + 1));
-		if (colored)
-			attrs = json_out_set(attrs, "COLOR_0", jint(first + 2));
-		prim = json_object_new_object();
-		prim = json_out_set(prim, "attributes", attrs);
-		prim = json_out_set(prim, "indices", jint(idx));
-		prim = json_out_set(prim, "material", jint(nprims));
-		prim = json_out_set(prim, "mode", jint(GL_TRIANGLES));
-		primitives = json_out_push(primitives, prim);
-
-		if (!leaves)
-			materials = json_out_push(materials, glb_material("bark", bark_color, 0.9, false));
-		else
-			materials = json_out_push(materials,
-						  glb_leaves_material(how, season));
+		primitives = glb_add_prim(g, primitives, &accessors, &views, m, glb_prim_names[i],
+					  leaves && in->how == EXPORT_LEAVES_COLORED ? in->colors[i]
+										     : NULL,
+					  mat_index[k]);
 		nprims++;
 	}
 
@@ -269,10 +304,10 @@ static int glb_build_json(struct glb *g, const struct tree_mesh *tm, enum export
 
 		scene = json_out_set(scene, "nodes", json_out_push(json_object_new_array(), jint(0)));
 		root = json_out_set(root, "scenes", json_out_push(scenes, scene));
-		node = json_out_set(node, "name", jstr(name));
+		node = json_out_set(node, "name", jstr(in->name));
 		node = json_out_set(node, "mesh", jint(0));
 		root = json_out_set(root, "nodes", json_out_push(json_object_new_array(), node));
-		mesh = json_out_set(mesh, "name", jstr(name));
+		mesh = json_out_set(mesh, "name", jstr(in->name));
 		mesh = json_out_set(mesh, "primitives", primitives);
 		root = json_out_set(root, "meshes", json_out_push(json_object_new_array(), mesh));
 		root = json_out_set(root, "accessors", accessors);
@@ -392,9 +427,9 @@ static int glb_write(struct buf *out, const char *json, size_t json_len, const s
 	return append_fill(out, bin_padded - g->bin_len, 0);
 }
 
-/* The GLB of tm, every primitive that has triangles, appended to out or nothing at all. */
-static int glb_export(const struct tree_mesh *tm, enum export_look how, enum season season,
-		      const struct export_leaves *el, const char *name, struct buf *out)
+/* The GLB of in's meshes, every primitive that has triangles, appended to out or nothing
+ * at all. */
+static int glb_export(const struct glb_input *in, struct buf *out)
 {
 	struct glb g;
 	struct buf json;
@@ -403,7 +438,7 @@ static int glb_export(const struct tree_mesh *tm, enum export_look how, enum sea
 
 	memset(&g, 0, sizeof(g));
 	buf_init(&json);
-	r = glb_build_json(&g, tm, how, season, el, name);
+	r = glb_build_json(&g, in);
 	if (r < 0)
 		return r;
 	r = json_out_append(g.root, NULL, &json);
@@ -419,21 +454,41 @@ static int glb_export(const struct tree_mesh *tm, enum export_look how, enum sea
 int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
 	       struct buf *out)
 {
-	enum export_look how = export_look(t->season);
-	struct export_leaves el;
+	struct glb_input in = {
+		.mesh = { &m->bark, &m->leaves, NULL, NULL },
+		.how = export_look(t->season),
+		.season = t->season,
+		.name = "tree",
+	};
+	struct export_leaves el, vel;
+	struct export_vines ev;
+	int r = export_vines_build(&ev, t);
 
-	if (how == EXPORT_LEAVES_COLORED)
-		export_leaves_init(&el, t, &m->leaves, mk);
-	return glb_export(m, how, t->season, how == EXPORT_LEAVES_COLORED ? &el : NULL, "tree",
-			  out);
+	if (r == 0) {
+		in.mesh[GLB_VINE] = &ev.stems;
+		in.mesh[GLB_VINE_LEAVES] = &ev.leaves;
+		if (in.how == EXPORT_LEAVES_COLORED) {
+			export_leaves_init(&el, t, &m->leaves, mk);
+			/* no marks: the vines' leaves one part, in the palette's first colour */
+			export_leaves_init(&vel, t, &ev.leaves, NULL);
+			in.colors[GLB_LEAVES] = &el;
+			in.colors[GLB_VINE_LEAVES] = &vel;
+		}
+		r = glb_export(&in, out);
+	}
+	export_vines_finish(&ev);
+	return r;
 }
 
 int export_glb_leaf(const struct mesh *m, const char *name, struct buf *out)
 {
-	struct tree_mesh tm;
+	/* no bark: the leaves' primitive alone, in summer's green */
+	const struct glb_input in = {
+		.mesh = { NULL, m, NULL, NULL },
+		.how = EXPORT_LEAVES_GREEN,
+		.season = SEASON_SUMMER,
+		.name = name,
+	};
 
-	/* no bark: the leaves' primitive alone, in summer's green (the mesh is only read) */
-	mesh_init(&tm.bark);
-	tm.leaves = *m;
-	return glb_export(&tm, EXPORT_LEAVES_GREEN, SEASON_SUMMER, NULL, name, out);
+	return glb_export(&in, out);
 }

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include "export.h"
 #include "export_leaves.h"
+#include "export_vines.h"
 #include "numfmt.h"
 
 #include <errno.h>
@@ -10,6 +11,7 @@
 
 static const double bark_color[3] = { MATERIAL_BARK_RGB };
 static const double leaves_color[3] = { MATERIAL_LEAVES_RGB };
+static const double vine_color[3] = { MATERIAL_VINE_RGB };
 
 #define OBJ_MATERIAL_NAME 32
 
@@ -116,46 +118,79 @@ static int obj_colored_faces(struct buf *obj, const struct export_leaves *el, ui
 	return 0;
 }
 
-static int obj_write(const struct tree_mesh *tm, enum export_look how,
-		     const struct export_leaves *el, const char *mtl_name, struct buf *obj)
+/* What one OBJ and its MTL are made of: the tree's meshes, then its vines' (after the
+ * tree's, so a tree without vines has the bytes it had). */
+struct obj_input {
+	const struct mesh *bark, *leaves, *vine, *vine_leaves;
+	enum export_look how;
+	/* spring, autumn: the tree's leaves by their marks, the vines' in one part */
+	const struct export_leaves *colors, *vine_colors;
+};
+
+/* Counts of v and vn lines written so far: the next object's numbers follow them. */
+struct obj_count {
+	uint32_t nv, nn;
+};
+
+/* A closed surface (the bark, the vines' stems): its vertices, normals and faces behind
+ * one material. */
+static int obj_solid(struct buf *obj, const struct mesh *m, const char *name, struct obj_count *c)
 {
-	uint32_t nv = 0, nn = 0; /* v and vn lines so far */
+	int r;
+
+	if (m->nindices < 3)
+		return 0;
+	if ((r = buf_printf(obj, "o %s\nusemtl %s\n", name, name)) < 0 ||
+	    (r = obj_vec3s(obj, "v", m->positions, m->nvertices, 1.0)) < 0 ||
+	    (r = obj_vec3s(obj, "vn", m->normals, m->nvertices, 1.0)) < 0 ||
+	    (r = obj_faces(obj, m, 0, m->nindices, c->nv + 1, c->nn + 1, false)) < 0)
+		return r;
+	c->nv += (uint32_t)m->nvertices;
+	c->nn += (uint32_t)m->nvertices;
+	return 0;
+}
+
+/* Leaves, both sides: summer's one material, or spring's and autumn's by colour. */
+static int obj_leaves(struct buf *obj, const struct mesh *m, const char *name,
+		      enum export_look how, const struct export_leaves *el, struct obj_count *c)
+{
+	uint32_t v0 = c->nv + 1, n0 = c->nn + 1, n_back = n0 + (uint32_t)m->nvertices;
+	int r;
+
+	if (m->nindices < 3 || how == EXPORT_LEAVES_NONE)
+		return 0;
+	/* OBJ has no double-sided materials: the back side is its own faces and normals. */
+	if ((r = buf_printf(obj, how == EXPORT_LEAVES_GREEN ? "o %s\nusemtl leaves\n" : "o %s\n",
+			    name)) < 0 ||
+	    (r = obj_vec3s(obj, "v", m->positions, m->nvertices, 1.0)) < 0 ||
+	    (r = obj_vec3s(obj, "vn", m->normals, m->nvertices, 1.0)) < 0 ||
+	    (r = obj_vec3s(obj, "vn", m->normals, m->nvertices, -1.0)) < 0)
+		return r;
+	c->nv += (uint32_t)m->nvertices;
+	c->nn += 2 * (uint32_t)m->nvertices;
+	if (how == EXPORT_LEAVES_COLORED)
+		return obj_colored_faces(obj, el, v0, n0);
+	if ((r = obj_faces(obj, m, 0, m->nindices, v0, n0, false)) < 0 ||
+	    (r = obj_faces(obj, m, 0, m->nindices, v0, n_back, true)) < 0)
+		return r;
+	return 0;
+}
+
+static int obj_write(const struct obj_input *in, const char *mtl_name, struct buf *obj)
+{
+	struct obj_count c = { 0, 0 };
 	int r;
 
 	r = buf_printf(obj, "# edaha tree: metres, y up\nmtllib %s\n", mtl_name);
-	if (r < 0)
-		return r;
-
-	if (tm->bark.nindices >= 3) {
-		const struct mesh *m = &tm->bark;
-
-		if ((r = buf_printf(obj, "o bark\nusemtl bark\n")) < 0 ||
-		    (r = obj_vec3s(obj, "v", m->positions, m->nvertices, 1.0)) < 0 ||
-		    (r = obj_vec3s(obj, "vn", m->normals, m->nvertices, 1.0)) < 0 ||
-		    (r = obj_faces(obj, m, 0, m->nindices, nv + 1, nn + 1, false)) < 0)
-			return r;
-		nv += (uint32_t)m->nvertices;
-		nn += (uint32_t)m->nvertices;
-	}
-
-	if (tm->leaves.nindices >= 3 && how != EXPORT_LEAVES_NONE) {
-		const struct mesh *m = &tm->leaves;
-		uint32_t n_back = nn + 1 + (uint32_t)m->nvertices;
-
-		/* OBJ has no double-sided materials: the back side is its own faces and normals. */
-		if ((r = buf_printf(obj, how == EXPORT_LEAVES_GREEN ? "o leaves\nusemtl leaves\n"
-								 : "o leaves\n")) < 0 ||
-		    (r = obj_vec3s(obj, "v", m->positions, m->nvertices, 1.0)) < 0 ||
-		    (r = obj_vec3s(obj, "vn", m->normals, m->nvertices, 1.0)) < 0 ||
-		    (r = obj_vec3s(obj, "vn", m->normals, m->nvertices, -1.0)) < 0)
-			return r;
-		if (how == EXPORT_LEAVES_COLORED)
-			return obj_colored_faces(obj, el, nv + 1, nn + 1);
-		if ((r = obj_faces(obj, m, 0, m->nindices, nv + 1, nn + 1, false)) < 0 ||
-		    (r = obj_faces(obj, m, 0, m->nindices, nv + 1, n_back, true)) < 0)
-			return r;
-	}
-	return 0;
+	if (r >= 0)
+		r = obj_solid(obj, in->bark, "bark", &c);
+	if (r >= 0)
+		r = obj_leaves(obj, in->leaves, "leaves", in->how, in->colors, &c);
+	if (r >= 0)
+		r = obj_solid(obj, in->vine, "vine", &c);
+	if (r >= 0)
+		r = obj_leaves(obj, in->vine_leaves, "vine-leaves", in->how, in->vine_colors, &c);
+	return r;
 }
 
 static int mtl_material(struct buf *mtl, const char *name, const double kd[3])
@@ -172,23 +207,13 @@ static int mtl_material(struct buf *mtl, const char *name, const double kd[3])
 			  name, kd[0], kd[1], kd[2]);
 }
 
-/* The MTL: bark, then the leaves' materials that the OBJ uses (summer's one green always,
- * as before seasons). */
-static int mtl_write(enum export_look how, const struct export_leaves *el, struct buf *mtl)
+/* Spring's and autumn's leaves' materials that the OBJ uses, the vines' leaves' too. */
+static int mtl_colored(const struct obj_input *in, struct buf *mtl)
 {
-	unsigned used;
-	int r = buf_printf(mtl, "# edaha tree materials\n");
+	const struct export_leaves *el = in->colors;
+	unsigned used = export_leaves_colors_used(el) | export_leaves_colors_used(in->vine_colors);
+	int r = 0;
 
-	if (r >= 0)
-		r = mtl_material(mtl, "bark", bark_color);
-	if (r < 0 || how == EXPORT_LEAVES_NONE)
-		return r;
-	if (how == EXPORT_LEAVES_GREEN) {
-		if ((r = buf_printf(mtl, "\n")) < 0)
-			return r;
-		return mtl_material(mtl, "leaves", leaves_color);
-	}
-	used = export_leaves_colors_used(el);
 	for (size_t k = 0; k < el->ncolors && r >= 0; k++) {
 		const double kd[3] = { el->palette[k].r, el->palette[k].g, el->palette[k].b };
 		char name[OBJ_MATERIAL_NAME];
@@ -202,34 +227,72 @@ static int mtl_write(enum export_look how, const struct export_leaves *el, struc
 	return r;
 }
 
+/* The MTL: bark, the leaves' materials that the OBJ uses (summer's one green always, as
+ * before seasons), then the vines' stems' when there are any. */
+static int mtl_write(const struct obj_input *in, struct buf *mtl)
+{
+	int r = buf_printf(mtl, "# edaha tree materials\n");
+
+	if (r >= 0)
+		r = mtl_material(mtl, "bark", bark_color);
+	if (r >= 0 && in->how == EXPORT_LEAVES_GREEN && (r = buf_printf(mtl, "\n")) >= 0)
+		r = mtl_material(mtl, "leaves", leaves_color);
+	if (r >= 0 && in->how == EXPORT_LEAVES_COLORED)
+		r = mtl_colored(in, mtl);
+	if (r >= 0 && in->vine->nindices >= 3 && (r = buf_printf(mtl, "\n")) >= 0)
+		r = mtl_material(mtl, "vine", vine_color);
+	return r;
+}
+
+/* Whether every v and vn number fits: 1-based uint32, leaves' normals counted twice. */
+static bool obj_fits(const struct obj_input *in)
+{
+	size_t leaf_normals = 0, n;
+
+	if (in->how != EXPORT_LEAVES_NONE)
+		leaf_normals = 2 * (in->leaves->nvertices + in->vine_leaves->nvertices);
+	n = in->bark->nvertices + in->vine->nvertices + leaf_normals;
+	return n < UINT32_MAX;
+}
+
 int export_obj(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
 	       const char *mtl_name, struct buf *obj, struct buf *mtl)
 {
 	size_t obj_start = obj->len, mtl_start = mtl->len;
-	enum export_look how = export_look(t->season);
-	struct export_leaves el;
-	const struct export_leaves *colored;
-	size_t leaf_normals;
+	struct obj_input in = { &m->bark, &m->leaves, NULL, NULL, export_look(t->season), NULL,
+				NULL };
+	struct export_leaves el, vel;
+	struct export_vines ev;
 	int r;
 
 	/* The name lands on the mtllib line: one line, not empty. */
 	if (!mtl_name || !*mtl_name || strpbrk(mtl_name, "\r\n"))
 		return -EINVAL;
-	/* 1-based uint32 face numbers, leaves' normals counted twice (if there are leaves). */
-	leaf_normals = how == EXPORT_LEAVES_NONE ? 0 : 2 * m->leaves.nvertices;
-	if (m->bark.nvertices + leaf_normals >= UINT32_MAX)
-		return -EFBIG;
-	if (how == EXPORT_LEAVES_COLORED)
+	r = export_vines_build(&ev, t);
+	if (r < 0)
+		goto out;
+	in.vine = &ev.stems;
+	in.vine_leaves = &ev.leaves;
+	if (!obj_fits(&in)) {
+		r = -EFBIG;
+		goto out;
+	}
+	if (in.how == EXPORT_LEAVES_COLORED) {
 		export_leaves_init(&el, t, &m->leaves, mk);
-	colored = how == EXPORT_LEAVES_COLORED ? &el : NULL;
-
-	r = obj_write(m, how, colored, mtl_name, obj);
+		/* no marks: the vines' leaves one part, in the palette's first colour */
+		export_leaves_init(&vel, t, &ev.leaves, NULL);
+		in.colors = &el;
+		in.vine_colors = &vel;
+	}
+	r = obj_write(&in, mtl_name, obj);
 	if (r >= 0)
-		r = mtl_write(how, colored, mtl);
+		r = mtl_write(&in, mtl);
+out:
 	if (r < 0) {
 		obj->len = obj_start;
 		mtl->len = mtl_start;
 	}
+	export_vines_finish(&ev);
 	return r;
 }
 

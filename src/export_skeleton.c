@@ -7,9 +7,9 @@
 
 #include "json_out.h"
 #include "ori_kinds.h"
+#include "vine_json.h"
 
 #define SKELETON_FORMAT "edaha-skeleton"
-#define SKELETON_VERSION 1
 
 static struct json_object *jpoints(const struct vec3 *p, size_t n)
 {
@@ -81,7 +81,11 @@ struct json_object *export_skeleton_object(const struct tree *t)
 	root = json_out_set(root, "view", view);
 	root = json_out_set(root, "season", json_object_new_string(season_name(t->season)));
 	root = json_out_set(root, "branches", branches);
-	return json_out_set(root, "leaves", leaves);
+	root = json_out_set(root, "leaves", leaves);
+	/* absent without vines: a tree without them has the keys it always had */
+	if (t->nvines > 0)
+		root = vine_json_set(root, t->vines, t->nvines);
+	return root;
 }
 
 int export_skeleton(const struct tree *t, struct buf *out)

@@ -9,7 +9,10 @@
 
 struct json_object *json_out_set(struct json_object *obj, const char *key, struct json_object *val)
 {
-	if (!obj || !val || json_object_object_add(obj, key, val) < 0) {
+	/* The key kept as it is, not copied: json-c (before its PR 962) leaks the copy when
+	 * the object's table fails to grow, as a vine's 18 keys make it. */
+	if (!obj || !val || json_object_object_add_ex(obj, key, val,
+						     JSON_C_OBJECT_ADD_CONSTANT_KEY) < 0) {
 		json_object_put(val);
 		json_object_put(obj);
 		return NULL;

@@ -10,6 +10,7 @@
  * frees the parent too, so one check on the root covers the whole document and nothing
  * leaks. Shared by the exporters.
  */
+/* key must outlive obj (a string literal): obj keeps the pointer, not a copy. */
 struct json_object *json_out_set(struct json_object *obj, const char *key, struct json_object *val);
 struct json_object *json_out_push(struct json_object *arr, struct json_object *val);
 

@@ -19,3 +19,6 @@ size_t numfmt_micro(char out[NUMFMT_MAX], double v, bool trim);
 /* Shared by every exporter so the bark and leaves look the same in every format. */
 #define MATERIAL_BARK_RGB 0.33, 0.22, 0.13
 #define MATERIAL_LEAVES_RGB 0.24, 0.52, 0.16
+/* A vine's stems: the screen's stem green (ui/render_vine.c), darker and yellower than the
+ * leaves. */
+#define MATERIAL_VINE_RGB 0.30, 0.45, 0.16

@@ -106,15 +106,22 @@ static struct json_object *jvine(const struct vine *v)
 	return json_out_set(o, "leaves", leaves);
 }
 
-int vine_skeleton(const struct tree *t, const struct vine *vines, size_t nvines, struct buf *out)
+struct json_object *vine_json_set(struct json_object *root, const struct vine *vines,
+				  size_t nvines)
 {
-	struct json_object *root = export_skeleton_object(t);
 	struct json_object *arr = json_object_new_array_ext((int)nvines);
-	int r;
 
 	for (size_t i = 0; i < nvines; i++)
 		arr = json_out_push(arr, jvine(&vines[i]));
-	root = json_out_set(root, "vines", arr);
+	return json_out_set(root, "vines", arr);
+}
+
+int vine_skeleton(const struct tree *t, const struct vine *vines, size_t nvines, struct buf *out)
+{
+	/* json-c replaces a key's value in place: t's own vines, if any, give way */
+	struct json_object *root = vine_json_set(export_skeleton_object(t), vines, nvines);
+	int r;
+
 	if (!root)
 		return -ENOMEM;
 	r = json_out_append(root, "\n", out);

@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Allocation failure: fails the 1st, 2nd, ... allocation of tree_mesh_build and every
- * exporter in turn, the glTF and OBJ exporters in every season; each must return -ENOMEM,
- * leave nothing half-built and leak nothing.
+ * exporter in turn, the glTF and OBJ exporters in every season, a tree with a vine too
+ * (the exporters mesh it); each must return -ENOMEM, leave nothing half-built and leak
+ * nothing.
  * Allocations fail through tests/fail_alloc.c, which replaces malloc & co., so it is not
  * built with sanitizers, which replace them too.
  */
@@ -16,6 +17,7 @@
 #include "fail_alloc.h"
 #include "mesh.h"
 #include "synth_tree.h"
+#include "synth_vine.h"
 #include "test.h"
 #include "tree.h"
 
@@ -102,10 +104,45 @@ static long exhaust(op_fn op, const struct job *j)
 	}
 }
 
+static const enum season seasons[] = { SEASON_SUMMER, SEASON_SPRING, SEASON_AUTUMN,
+				       SEASON_WINTER };
+
+/* The glTF and OBJ exporters of a trunk with a vine, in every season, and its skeleton. */
+static void vine_tree(void)
+{
+	struct tree t;
+	struct tree_mesh tm;
+	struct tree_mesh_marks mk;
+	struct job j = { &t, &tm, &mk };
+	long n;
+
+	tree_init(&t);
+	tree_mesh_init(&tm);
+	tree_mesh_marks_init(&mk);
+	CHECK_INT(synth_vine_tree(&t, 1), 0);
+	CHECK_INT(tree_mesh_build_marked(&tm, &t, &mk), 0);
+	for (size_t i = 0; i < sizeof(seasons) / sizeof(*seasons); i++) {
+		t.season = seasons[i];
+		n = exhaust(op_glb, &j);
+		printf("export_glb of a vine in %s: %ld allocations, each failed once\n",
+		       season_name(t.season), n);
+		CHECK(n > 0);
+		n = exhaust(op_obj, &j);
+		printf("export_obj of a vine in %s: %ld allocations, each failed once\n",
+		       season_name(t.season), n);
+		CHECK(n > 0);
+	}
+	t.season = SEASON_SUMMER;
+	n = exhaust(op_skeleton, &j);
+	printf("export_skeleton of a vine: %ld allocations, each failed once\n", n);
+	CHECK(n > 0);
+	tree_mesh_marks_finish(&mk);
+	tree_mesh_finish(&tm);
+	tree_finish(&t);
+}
+
 int main(void)
 {
-	static const enum season seasons[] = { SEASON_SUMMER, SEASON_SPRING, SEASON_AUTUMN,
-					       SEASON_WINTER };
 	struct tree t;
 	struct tree_mesh tm;
 	struct tree_mesh_marks mk;
@@ -141,5 +178,6 @@ int main(void)
 	tree_mesh_marks_finish(&mk);
 	tree_mesh_finish(&tm);
 	tree_finish(&t);
+	vine_tree();
 	return 0;
 }

@@ -65,7 +65,7 @@ static void check_tree(struct json_object *root, const struct tree *t)
 	struct json_object *leaves = get(root, "leaves", json_type_array);
 
 	CHECK(!strcmp(json_object_get_string(get(root, "format", json_type_string)), "edaha-skeleton"));
-	CHECK_INT(json_object_get_int(get(root, "version", json_type_int)), 1);
+	CHECK_INT(json_object_get_int(get(root, "version", json_type_int)), 2);
 	CHECK(!strcmp(json_object_get_string(get(root, "up", json_type_string)), "y"));
 	CHECK(!strcmp(json_object_get_string(get(root, "units", json_type_string)), "m"));
 	CHECK_INT(json_object_array_length(view), 3);
@@ -110,7 +110,7 @@ static void test_exact(void)
 	const double tr[] = { 0.1, 0.05 };
 	const struct vec3 leaf[] = { { 1, 2, 0 }, { 1.5, 2, 0 }, { 1, 2.5, 0.1234567 } };
 	const char *want =
-		"{\"format\":\"edaha-skeleton\",\"version\":1,\"up\":\"y\",\"units\":\"m\","
+		"{\"format\":\"edaha-skeleton\",\"version\":2,\"up\":\"y\",\"units\":\"m\","
 		"\"view\":[0,0,-1],\"season\":\"summer\",\"branches\":["
 		"{\"id\":0,\"parent\":-1,\"generation\":0,\"origin\":\"sketch\",\"parent_t\":0,"
 		"\"points\":[[0,0,0],[0,0.1,0.333333]],\"radii\":[0.25,0]},"
@@ -149,7 +149,7 @@ static void test_empty(void)
 	root = export_parse(&t, &out);
 	check_tree(root, &t);
 	CHECK(!strcmp((const char *)out.data,
-		      "{\"format\":\"edaha-skeleton\",\"version\":1,\"up\":\"y\",\"units\":\"m\","
+		      "{\"format\":\"edaha-skeleton\",\"version\":2,\"up\":\"y\",\"units\":\"m\","
 		      "\"view\":[0,0,-1],\"season\":\"summer\",\"branches\":[],\"leaves\":[]}\n"));
 	json_object_put(root);
 	buf_finish(&out);

@@ -3,8 +3,9 @@
  * write_samples DIR: writes sample exports for external checkers (the Khronos glTF
  * validator, assimp): DIR/empty.glb, one-branch.glb, concave-leaf.glb, synth-500.glb,
  * plus synth-500.obj/.mtl and synth-500.skeleton.json, all in summer (summer.sha256 has
- * what they were before seasons); and synth-500-SEASON.glb/.obj/.mtl for spring, autumn
- * and winter. See validate_samples.sh.
+ * what they were before seasons); synth-500-SEASON.glb/.obj/.mtl for spring, autumn
+ * and winter; and a trunk with two vines (synth_vine_tree) in every season,
+ * vines-SEASON.glb/.obj/.mtl. See validate_samples.sh.
  */
 #include <errno.h>
 #include <stdio.h>
@@ -14,6 +15,7 @@
 #include "export.h"
 #include "mesh.h"
 #include "synth_tree.h"
+#include "synth_vine.h"
 #include "tree.h"
 
 static int write_file(const char *dir, const char *name, const struct buf *b)
@@ -131,24 +133,42 @@ static int synth_extras(const char *dir, const struct tree *t)
 	return r;
 }
 
-/* The same tree in the other seasons. */
-static int synth_seasons(const char *dir, struct tree *t)
+/* The same tree in the seasons given, as BASE-SEASON.glb/.obj/.mtl. */
+static int write_seasons(const char *dir, const char *base, struct tree *t,
+			 const enum season *seasons, size_t n)
 {
-	static const enum season seasons[] = { SEASON_SPRING, SEASON_AUTUMN, SEASON_WINTER };
 	int r = 0;
 
-	for (size_t i = 0; i < sizeof(seasons) / sizeof(*seasons) && r >= 0; i++) {
+	for (size_t i = 0; i < n && r >= 0; i++) {
 		char name[64];
 
 		t->season = seasons[i];
-		snprintf(name, sizeof(name), "synth-500-%s.glb", season_name(seasons[i]));
+		snprintf(name, sizeof(name), "%s-%s.glb", base, season_name(seasons[i]));
 		r = write_glb(dir, name, t);
-		snprintf(name, sizeof(name), "synth-500-%s", season_name(seasons[i]));
+		snprintf(name, sizeof(name), "%s-%s", base, season_name(seasons[i]));
 		if (r >= 0)
 			r = write_obj(dir, name, t);
 	}
 	t->season = SEASON_SUMMER;
 	return r;
+}
+
+/* The same tree in the other seasons. */
+static int synth_seasons(const char *dir, struct tree *t)
+{
+	static const enum season seasons[] = { SEASON_SPRING, SEASON_AUTUMN, SEASON_WINTER };
+
+	return write_seasons(dir, "synth-500", t, seasons, 3);
+}
+
+/* A trunk with two vines, in every season. */
+static int vine_seasons(const char *dir, struct tree *t)
+{
+	static const enum season seasons[] = { SEASON_SUMMER, SEASON_SPRING, SEASON_AUTUMN,
+					       SEASON_WINTER };
+	int r = synth_vine_tree(t, 2);
+
+	return r < 0 ? r : write_seasons(dir, "vines", t, seasons, 4);
 }
 
 int main(int argc, char **argv)
@@ -179,6 +199,8 @@ int main(int argc, char **argv)
 		r = synth_extras(argv[1], &t);
 	if (r >= 0)
 		r = synth_seasons(argv[1], &t);
+	if (r >= 0)
+		r = vine_seasons(argv[1], &t);
 	tree_finish(&t);
 	if (r < 0) {
 		fprintf(stderr, "write_samples: %s\n", strerror(-r));

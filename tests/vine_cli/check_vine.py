@@ -44,7 +44,7 @@ def check_fields(doc):
     for k in ["format", "version", "up", "units", "view", "season", "branches", "leaves"]:
         if k not in doc:
             fail(f"no \"{k}\": the skeleton's keys are not kept")
-    if doc["format"] != "edaha-skeleton" or doc["version"] != 1:
+    if doc["format"] != "edaha-skeleton" or doc["version"] != 2:
         fail(f"format {doc['format']!r} version {doc['version']!r}")
     if doc["branches"] != [] or doc["leaves"] != []:
         fail("a vine alone has tree parts")
