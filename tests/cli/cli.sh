@@ -239,6 +239,9 @@ t_vine() {
 
 	run --out "$T/v" --replay "$DEMO" --press 3d --press vine --replay "$tap" --view 30,15
 	grep -q '^vine [0-9]* ' "$T/v/drawing.edaha" || fail "no vine op in the drawing"
+	grep -q '"version":2' "$T/v/skeleton.json" || fail "skeleton.json is not version 2"
+	grep -q '"vines":\[{' "$T/v/skeleton.json" || fail "no vine in skeleton.json"
+	grep -q '^o vine$' "$T/v/model.obj" || fail "no vine in model.obj"
 	"$GLTF_VALIDATE" "$T/v/model.glb" || fail "the export with a vine does not validate"
 	run --out "$T/v2" --load "$T/v/drawing.edaha" --view 30,15
 	same_files "$T/v" "$T/v2" model.glb model.obj skeleton.json drawing.edaha
