@@ -7,6 +7,7 @@
  * bad input writes nothing.
  */
 #include "headless.h"
+#include "headless_one.h"
 
 #include <errno.h>
 #include <math.h>
@@ -17,11 +18,9 @@
 #include <sys/stat.h>
 
 #include "buf.h"
-#include "egl_headless.h"
 #include "export.h"
 #include "fileio.h"
 #include "mesh.h"
-#include "pngio.h"
 #include "render.h"
 #include "support_obj.h"
 #include "tree.h"
@@ -30,53 +29,25 @@
 #include "vine_presets.h"
 #include "vine_support.h"
 
-/* Exit status for a failure to read input: the input's fault (2) or the machine's (1). */
-static int input_status(int err)
-{
-	return err == -ENOMEM || err == -EIO ? 1 : 2;
-}
-
-static bool is_preset(const char *name)
-{
-	size_t n;
-	const char *const *names = vine_preset_names(&n);
-
-	for (size_t i = 0; i < n; i++)
-		if (strcmp(names[i], name) == 0)
-			return true;
-	return false;
-}
-
-/* A name that is no preset and nothing on disk: most likely a preset misspelt. */
-static int no_such_vine(const char *arg)
-{
-	size_t n;
-	const char *const *names = vine_preset_names(&n);
-
-	fprintf(stderr, "edaha: --vine \"%s\": no such vine preset or file (presets:", arg);
-	for (size_t i = 0; i < n; i++)
-		fprintf(stderr, "%s %s", i ? "," : "", names[i]);
-	fputs(")\n", stderr);
-	return 2;
-}
-
 /* The parameters: a preset's, else a file's, read through fileio and named by its path. */
 static int read_params(const char *arg, struct vine_params *p)
 {
+	size_t n;
+	const char *const *names = vine_preset_names(&n);
 	struct error err = { { 0 } };
 	struct stat st;
 	size_t len;
 	char *data;
 	int ret;
 
-	if (is_preset(arg)) {
+	if (headless_is_preset(names, n, arg)) {
 		ret = vine_preset(arg, p, &err);
 		if (ret < 0) /* compiled in and tested: not the visitor's fault */
 			fprintf(stderr, "edaha: vine preset %s: %s\n", arg, err.msg);
 		return ret < 0 ? 1 : 0;
 	}
 	if (stat(arg, &st) < 0 && (errno == ENOENT || errno == ENOTDIR))
-		return no_such_vine(arg);
+		return headless_no_such_preset("--vine", "vine", arg, names, n);
 	/* vine_read tells a longer file at its first line; past this it is not read at all */
 	ret = fileio_read_all(arg, 2 * VINE_READ_MAX_BYTES, &data, &len, &err);
 	if (ret == 0) {
@@ -85,7 +56,7 @@ static int read_params(const char *arg, struct vine_params *p)
 	}
 	if (ret < 0) {
 		fprintf(stderr, "edaha: %s\n", err.msg);
-		return input_status(ret);
+		return headless_input_status(ret);
 	}
 	return 0;
 }
@@ -129,58 +100,23 @@ static int support_mesh(const struct support_obj *s, struct mesh *m)
 	return 0;
 }
 
-/* The picture, RGBA top row first (malloc'ed). 0, or 1 with stderr saying why. */
-static int draw(const struct options *o, const struct mesh *support, const struct tree_mesh *v,
-		uint8_t **rgba)
-{
-	struct error err = { { 0 } };
-	struct egl_headless *egl;
-	struct render *render;
-	int status = 1;
+/* What the picture shows: the support, and the vine's stems and leaves. */
+struct picture {
+	const struct mesh *support;
+	const struct tree_mesh *vine;
+};
 
-	*rgba = NULL;
-	egl = egl_headless_create(o->width, o->height, &err);
-	if (!egl) {
-		fprintf(stderr, "edaha: no headless GL: %s\n", err.msg);
-		return 1;
-	}
-	render = render_create();
-	*rgba = malloc((size_t)o->width * (size_t)o->height * 4);
-	if (!render || !*rgba)
-		fprintf(stderr, "edaha: cannot set up the renderer\n");
-	else if (render_vine(render, support, &v->bark, &v->leaves, o->width, o->height) < 0 ||
-		 egl_headless_read_rgba(egl, *rgba) < 0)
-		fprintf(stderr, "edaha: rendering failed\n");
-	else
-		status = 0;
-	render_destroy(render);
-	egl_headless_destroy(egl);
-	if (status) {
-		free(*rgba);
-		*rgba = NULL;
-	}
-	return status;
+static int draw(struct render *r, const void *ctx, int width, int height)
+{
+	const struct picture *p = ctx;
+
+	return render_vine(r, p->support, &p->vine->bark, &p->vine->leaves, width, height);
 }
 
 enum { OUT_SKELETON, OUT_GLB, OUT_OBJ, OUT_MTL, OUT_PNG, OUT_N };
 static const char *const out_names[OUT_N] = {
 	"skeleton.json", "model.glb", "model.obj", "model.mtl", "screen.png",
 };
-
-/* The files, each atomically; 0 or 1 with stderr naming the file. */
-static int write_files(const char *dir, const struct buf *files)
-{
-	struct error err = { { 0 } };
-	int ret = fileio_mkdirs(dir, &err);
-
-	for (int i = 0; i < OUT_N && ret == 0; i++)
-		ret = fileio_write_atomic(dir, out_names[i], files[i].data, files[i].len, &err);
-	if (ret < 0) {
-		fprintf(stderr, "edaha: %s\n", err.msg);
-		return 1;
-	}
-	return 0;
-}
 
 /* The support and the vine as a tree's meshes for the exporters: the support and the stems
  * are the bark, the vine's leaves the leaves. */
@@ -217,7 +153,7 @@ int headless_vine_run(const struct options *o)
 	struct mesh sm;
 	struct tree_mesh vm;
 	struct buf files[OUT_N];
-	uint8_t *rgba = NULL;
+	struct picture pic = { &sm, &vm };
 	bool planted = false;
 	int ret, status;
 
@@ -232,7 +168,7 @@ int headless_vine_run(const struct options *o)
 	ret = support_obj_read(o->support, &obj, &err);
 	if (ret < 0) {
 		fprintf(stderr, "edaha: %s\n", ret == -ENOMEM ? "out of memory" : err.msg);
-		status = input_status(ret);
+		status = headless_input_status(ret);
 		goto out;
 	}
 	ret = vine_support_create(obj.positions, obj.nvertices, obj.indices, obj.ntriangles,
@@ -255,21 +191,15 @@ int headless_vine_run(const struct options *o)
 		status = 1;
 		goto out;
 	}
-	status = draw(o, &sm, &vm, &rgba);
+	status = headless_one_picture(o, draw, &pic, &files[OUT_PNG]);
 	if (status)
 		goto out;
-	if (pngio_encode_rgba(rgba, o->width, o->height, &files[OUT_PNG], &err) < 0) {
-		fprintf(stderr, "edaha: screen.png: %s\n", err.msg);
-		status = 1;
-		goto out;
-	}
-	status = write_files(o->out_dir, files);
+	status = headless_one_write(o->out_dir, out_names, files, OUT_N);
 	if (status == 0)
 		printf("edaha: wrote skeleton.json, model.glb, model.obj, model.mtl and screen.png "
 		       "to %s (a vine of %zu shoots on %zu triangles)\n", o->out_dir, v.nshoots,
 		       obj.ntriangles);
 out:
-	free(rgba);
 	for (int i = 0; i < OUT_N; i++)
 		buf_finish(&files[i]);
 	tree_mesh_finish(&vm);
