@@ -1,0 +1,173 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "error.h"
+#include "mesh.h"
+#include "tree.h"
+#include "vec.h"
+
+/*
+ * Growing wood (seed 002, Ohshida, Muraoka and Chiba; issue 17): a tree's thick branches
+ * registered in a voxel space as a density field, a mass-spring model of the voxels at
+ * rest under gravity (and wind), and the wood thickened in the surface layer where it is
+ * compressed (conifers: compression wood) or stretched (broadleaf trees: tension wood);
+ * the bark drawn back from the field as its iso-surface at density 0.5. docs/wood.md says
+ * how; docs/wood-format.md is the settings file (`edaha-wood: 1`). Pure and deterministic:
+ * the same tree and settings give the same field, bit for bit.
+ *
+ * Units in the grid: lengths in voxels (a spring's rest length is 1, sqrt 2 or sqrt 3),
+ * every spring's constant k = 1, every mass m = 1, forces in those units; `gravity` and
+ * `wind` are accelerations in them (docs/wood.md: "Units").
+ */
+
+/* The settings file's version (`edaha-wood: N`) this edaha reads. */
+#define WOOD_PARAMS_VERSION 1
+
+enum wood_mode {
+	WOOD_CONIFER = 0, /* thickens where compressed */
+	WOOD_BROADLEAF,   /* thickens where stretched */
+};
+
+struct wood_params {
+	enum wood_mode mode;
+	int grid;        /* cells along the padded box's longest side: 64 (the kiosk) or 128 */
+	double alpha;    /* Csi = (alpha * C_den * f)^beta */
+	double beta;
+	double gravity;  /* downward acceleration, voxel units (k = 1, m = 1) */
+	double wind[3];  /* a horizontal acceleration on every mass point (y ignored) */
+};
+
+/* The documented defaults (docs/wood-format.md). */
+void wood_params_default(struct wood_params *p);
+/* Within every limit: 0, or -EINVAL with err naming the key (*key set, may be NULL). */
+int wood_params_check(const struct wood_params *p, const char **key, struct error *err);
+/*
+ * Reads a settings file (docs/wood-format.md) from memory; name is the file's name for
+ * messages, line_offset the lines before the text in its file (0 for a file of its own).
+ * 0, or -EINVAL/-ENOMEM with err "NAME:LINE: what is wrong" (*p unchanged).
+ */
+int wood_read(const char *data, size_t len, const char *name, unsigned long line_offset,
+	      struct wood_params *p, struct error *err);
+#define WOOD_READ_MAX_BYTES 65536
+
+/* Step 1: the paper's power law at every fork, d^a = d1^a + d2^a + ..., with a = 2.5. */
+#define WOOD_POWER_LAW_A 2.5
+/*
+ * Sets each branch's radius at its root so that at every fork the parent's radius there,
+ * to the a-th power, is the sum of its children's and its own continuation's; tips keep
+ * their drawn radius and every radius along a branch is scaled by one factor (its profile
+ * kept), from the tips down to the trunk. 0 or -ENOMEM (t unchanged). wood_radii.c.
+ */
+int wood_power_law(struct tree *t, double a);
+
+/* A branch is voxelised (as octagonal prisms, one an internode) when its radius is at
+ * least this many voxels at its root; thinner twigs keep their swept meshes. */
+#define WOOD_PRISM_MIN_VOXELS 1.5
+#define WOOD_PRISM_SIDES 8
+/* Rays a voxel along z (step 3): the centre and four about it. */
+#define WOOD_RAYS 5
+/* The box about the prisms is padded by this fraction of its longest side on every
+ * side, so that the wood has room to grow. */
+#define WOOD_PAD 0.15
+
+/* Flags of a voxel. */
+enum {
+	WOOD_MASS = 1u << 0,  /* a mass point: density above 0, connected to the base */
+	WOOD_FIXED = 1u << 1, /* within one voxel of the ground under the trunk */
+};
+
+/* The voxel space: nx * ny * nz cells of side h metres, x fastest, then y, then z;
+ * `origin` the grid's minimum corner (world metres, y up). */
+struct wood_grid {
+	int nx, ny, nz;
+	struct vec3 origin;
+	double h;
+	double *density;      /* 0..1 a voxel */
+	double *compression;  /* per voxel: the sum of |S| over its compressed springs */
+	double *tension;      /* per voxel: the sum of S over its stretched springs */
+	double *displacement; /* 3 a voxel: its mass point's, voxel units (0 elsewhere) */
+	uint8_t *flags;
+};
+
+/* An empty grid of the given size (all zero). 0, -EINVAL (a size < 1 or above 1024 a
+ * side, h not positive and finite) or -ENOMEM. */
+int wood_grid_create(struct wood_grid *g, int nx, int ny, int nz, struct vec3 origin,
+		     double h);
+void wood_grid_finish(struct wood_grid *g);
+static inline size_t wood_index(const struct wood_grid *g, int x, int y, int z)
+{
+	return (size_t)x + (size_t)g->nx * ((size_t)y + (size_t)g->ny * (size_t)z);
+}
+static inline size_t wood_cells(const struct wood_grid *g)
+{
+	return (size_t)g->nx * (size_t)g->ny * (size_t)g->nz;
+}
+
+/*
+ * Steps 2-3 (wood_voxel.c). The prisms: one octagonal prism (WOOD_PRISM_SIDES) an
+ * internode of every branch of t at least WOOD_PRISM_MIN_VOXELS voxels thick at its root,
+ * for a grid of cells along its padded box's longest side, as a closed, outward-oriented
+ * triangle mesh (each prism its own closed solid; they overlap at forks). *voxelised
+ * (t->nbranches entries, may be NULL) says which branches are.
+ */
+int wood_prisms(const struct tree *t, int cells, struct mesh *out, bool *voxelised);
+/* The grid for those prisms: their box padded by WOOD_PAD on every side, `cells` along
+ * its longest side, every density 0. 0, -EINVAL (nothing to voxelise) or -ENOMEM. */
+int wood_grid_for(const struct mesh *prisms, int cells, struct wood_grid *g);
+/*
+ * Each voxel's density: the part of its WOOD_RAYS rays along z (through the voxel's
+ * footprint, parallel) inside the union of the prisms (a point is inside when the signed
+ * crossings below it sum above 0), averaged: 0..1. Adds to the field (call on a grid of
+ * zeros). 0 or -ENOMEM.
+ */
+int wood_voxelise(struct wood_grid *g, const struct mesh *prisms);
+
+/*
+ * Steps 4-5 (wood_spring.c, wood_solve.c). Mass points are the voxels of density above
+ * 0; springs join each to its 26 neighbours that are mass points (rest lengths 1, sqrt 2,
+ * sqrt 3 voxels, k = 1, m = 1). Fixed: the mass points within one voxel of the ground
+ * (the trunk's root's height, `ground_y` in metres) under the trunk. Points not joined to
+ * a fixed one through springs are dropped (*dropped says how many). Then the rest state
+ * under gravity and wind, solved directly as the static equilibrium of the springs (small
+ * displacements: K u = f, preconditioned conjugate gradients, to a relative force
+ * residual of at most 1e-6), into displacement, compression, tension and flags.
+ */
+struct wood_solve_stats {
+	size_t points, fixed, springs, dropped;
+	int iterations;
+	double residual; /* |f - K u| / |f| reached */
+};
+int wood_rest(struct wood_grid *g, const struct wood_params *p, double ground_y,
+	      struct wood_solve_stats *stats);
+/*
+ * The paper's own scheme for the same springs (improved Euler with damping C, spring
+ * limits), run until every point's speed and net force are below `tol` or max_steps pass:
+ * for small cases, to check wood_rest against. Full (not linearised) springs. Fills the
+ * same fields. 0, -ETIMEDOUT (not at rest in max_steps) or -ENOMEM.
+ */
+int wood_rest_euler(struct wood_grid *g, const struct wood_params *p, double ground_y,
+		    double dt, double damping, long max_steps, double tol,
+		    struct wood_solve_stats *stats);
+
+/*
+ * Step 6 (wood_thicken.c): Csi = (alpha * density * f)^beta in every mass point of the
+ * surface layer (density below 1), f its compression (conifer) or tension (broadleaf),
+ * all computed from the field before any is added; added to its density; what passes 1.0
+ * goes to the voxels below 1.0 about it in proportion to 1 / distance, ring by ring
+ * outwards until all of it is placed (a voxel at 1.0 takes no more). Every density stays
+ * within 0..1 and none decreases. *added: the wood added (sum of Csi), *lost: what found
+ * no room inside the grid (its edge). 0 or -ENOMEM.
+ */
+int wood_thicken(struct wood_grid *g, const struct wood_params *p, double *added, double *lost);
+
+/*
+ * Step 7 (wood_iso.c): the bark as the iso-surface of the density at `iso` (0.5) by Doi's
+ * method (marching tetrahedra, six a cube), in world metres, with smooth normals (the
+ * density's gradient): closed, consistently oriented (outward), no degenerate triangles.
+ * Appended to out. 0 or -ENOMEM.
+ */
+int wood_iso(const struct wood_grid *g, double iso, struct mesh *out);
