@@ -1,321 +1,61 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Vine parameter files (docs/vine-format.md): YAML read with libyaml's document loader,
- * from memory (no files here: platform/ reads them), as ori_read.c reads leaf designs. A
- * flat mapping of known keys; every refusal names the line.
+ * Vine parameter files (docs/vine-format.md): a flat settings file (yaml_flat.h) whose
+ * keys are these, in the file format's order.
  */
-#include <errno.h>
-#include <inttypes.h>
-#include <limits.h>
-#include <math.h>
-#include <stdarg.h>
 #include <stddef.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <yaml.h>
 
 #include "vine.h"
-#include "yaml_node.h"
+#include "yaml_flat.h"
 
-struct reader {
-	const char *name;
-	struct error *err;
-	const char *data; /* the text read, for its lines */
-	size_t len;
-	unsigned long offset; /* lines before the text (a drawing's vine line) */
-	yaml_document_t doc;
-	struct vine_params *p;
+static const char *const twinings[] = { "left", "right", NULL }; /* enum vine_twining */
+/* a word's index is stored as an int */
+_Static_assert(sizeof(enum vine_twining) == sizeof(int), "enum vine_twining is not an int");
+
+/* partner: the other key of a limit the two share (radius below internode / 4, sweep x
+ * step_time at most 45), whose line a refusal of this key is told at when the file
+ * leaves this one out. */
+static const struct yaml_flat_key keys[] = {
+	{ "internode", YAML_FLAT_NUMBER, offsetof(struct vine_params, internode), NULL, NULL },
+	{ "radius", YAML_FLAT_NUMBER, offsetof(struct vine_params, radius), "internode", NULL },
+	{ "step_time", YAML_FLAT_NUMBER, offsetof(struct vine_params, step_time), NULL, NULL },
+	{ "angle", YAML_FLAT_NUMBER, offsetof(struct vine_params, angle), NULL, NULL },
+	{ "free_nodes", YAML_FLAT_WHOLE, offsetof(struct vine_params, free_nodes), NULL, NULL },
+	{ "twining", YAML_FLAT_WORD, offsetof(struct vine_params, twining), NULL, twinings },
+	{ "leaves_per_node", YAML_FLAT_WHOLE, offsetof(struct vine_params, leaves_per_node), NULL,
+	  NULL },
+	{ "cotyledons", YAML_FLAT_WHOLE, offsetof(struct vine_params, cotyledons), NULL, NULL },
+	{ "leaf_size", YAML_FLAT_NUMBER, offsetof(struct vine_params, leaf_size), NULL, NULL },
+	{ "points_per_internode", YAML_FLAT_WHOLE,
+	  offsetof(struct vine_params, points_per_internode), NULL, NULL },
+	{ "ring_sides", YAML_FLAT_WHOLE, offsetof(struct vine_params, ring_sides), NULL, NULL },
+	{ "sweep", YAML_FLAT_NUMBER, offsetof(struct vine_params, sweep), "step_time", NULL },
+	{ "internodes", YAML_FLAT_WHOLE, offsetof(struct vine_params, internodes), NULL, NULL },
+	{ "seed", YAML_FLAT_SEED, offsetof(struct vine_params, seed), NULL, NULL },
 };
 
-/* How a key's value is read. */
-enum kind { NUMBER, WHOLE, TWINING, SEED };
+static void defaults(void *p)
+{
+	vine_params_default(p);
+}
 
-/*
- * The keys but the version, in the file format's order. partner: the other key of a limit
- * the two share (radius below internode / 4, sweep × step_time at most 45), whose line a
- * refusal of this key is told at when the file leaves this one out.
- */
-static const struct {
-	const char *key;
-	enum kind kind;
-	size_t at; /* in struct vine_params */
-	const char *partner;
-} keys[] = {
-	{ "internode", NUMBER, offsetof(struct vine_params, internode), NULL },
-	{ "radius", NUMBER, offsetof(struct vine_params, radius), "internode" },
-	{ "step_time", NUMBER, offsetof(struct vine_params, step_time), NULL },
-	{ "angle", NUMBER, offsetof(struct vine_params, angle), NULL },
-	{ "free_nodes", WHOLE, offsetof(struct vine_params, free_nodes), NULL },
-	{ "twining", TWINING, offsetof(struct vine_params, twining), NULL },
-	{ "leaves_per_node", WHOLE, offsetof(struct vine_params, leaves_per_node), NULL },
-	{ "cotyledons", WHOLE, offsetof(struct vine_params, cotyledons), NULL },
-	{ "leaf_size", NUMBER, offsetof(struct vine_params, leaf_size), NULL },
-	{ "points_per_internode", WHOLE, offsetof(struct vine_params, points_per_internode), NULL },
-	{ "ring_sides", WHOLE, offsetof(struct vine_params, ring_sides), NULL },
-	{ "sweep", NUMBER, offsetof(struct vine_params, sweep), "step_time" },
-	{ "internodes", WHOLE, offsetof(struct vine_params, internodes), NULL },
-	{ "seed", SEED, offsetof(struct vine_params, seed), NULL },
+static int check(const void *p, const char **key, struct error *err)
+{
+	return vine_params_check(p, key, err);
+}
+
+static const struct yaml_flat_format format = {
+	.version_key = "edaha-vine",
+	.version = VINE_PARAMS_VERSION,
+	.what = "vine parameter file",
+	.keys = keys,
+	.nkeys = sizeof(keys) / sizeof(keys[0]),
+	.max_bytes = VINE_READ_MAX_BYTES,
+	.max_depth = VINE_READ_MAX_DEPTH,
+	.size = sizeof(struct vine_params),
+	.defaults = defaults,
+	.check = check,
 };
-#define NKEYS (sizeof(keys) / sizeof(keys[0]))
-
-static unsigned long line_of(const struct reader *r, const yaml_node_t *n)
-{
-	return n ? yaml_node_line(&n->start_mark, r->data, r->len) + r->offset : 0;
-}
-
-static int fail(struct reader *r, const yaml_node_t *n, const char *fmt, ...)
-	__attribute__((format(printf, 3, 4)));
-
-static int fail(struct reader *r, const yaml_node_t *n, const char *fmt, ...)
-{
-	char msg[sizeof(r->err->msg)];
-	va_list ap;
-
-	va_start(ap, fmt);
-	vsnprintf(msg, sizeof(msg), fmt, ap);
-	va_end(ap);
-	return error_at(r->err, -EINVAL, r->name, line_of(r, n), "%s", msg);
-}
-
-/* What a value that is not the plain scalar asked for is, in a message. */
-static const char *got(const yaml_node_t *n)
-{
-	return n->type == YAML_SCALAR_NODE ? "a quoted string" : yaml_node_kind(n);
-}
-
-/* The user's text in a message (yaml_node_shown). */
-static const char *shown(const char *s, char out[24])
-{
-	return yaml_node_shown(s, out);
-}
-
-/* A decimal number: digits with an optional sign, point and exponent; finite. */
-static int get_number(struct reader *r, const yaml_node_t *n, const char *what, double *v)
-{
-	const char *s = yaml_node_text(n);
-	char buf[24];
-	double x;
-
-	if (!s || !yaml_node_plain(n))
-		return fail(r, n, "%s: expected a number, got %s", what, got(n));
-	if (!yaml_node_number(s, &x))
-		return fail(r, n, "%s: \"%s\" is not a number", what, shown(s, buf));
-	*v = x;
-	return 0;
-}
-
-static int get_int(struct reader *r, const yaml_node_t *n, const char *what, int *v)
-{
-	double x;
-	int ret = get_number(r, n, what, &x);
-
-	if (ret < 0)
-		return ret;
-	if (x != floor(x) || fabs(x) > 1e6)
-		return fail(r, n, "%s: expected a whole number, got %g", what, x);
-	*v = (int)x;
-	return 0;
-}
-
-static int get_word(struct reader *r, const yaml_node_t *n, const char *what, const char **w)
-{
-	const char *s = yaml_node_text(n);
-
-	if (!s || !yaml_node_plain(n))
-		return fail(r, n, "%s: expected a word, got %s", what, got(n));
-	*w = s;
-	return 0;
-}
-
-/* Any 64-bit seed, exactly: decimal digits, read as an integer (a double would round
- * seeds above 2^53). */
-static int get_seed(struct reader *r, const yaml_node_t *n, uint64_t *v)
-{
-	const char *s = yaml_node_text(n);
-	char buf[24], *end;
-	unsigned long long x;
-	size_t digits;
-
-	if (!s || !yaml_node_plain(n))
-		return fail(r, n, "seed: expected a whole number, got %s", got(n));
-	if ((*s == '-' || *s == '+') && s[1] && strspn(s + 1, "0123456789") == strlen(s + 1))
-		return fail(r, n, "seed: \"%s\" has a sign: a seed is 0..%" PRIu64, shown(s, buf),
-			    UINT64_MAX);
-	digits = strspn(s, "0123456789");
-	if (digits == 0 || s[digits])
-		return fail(r, n, "seed: \"%s\" is not a whole number", shown(s, buf));
-	errno = 0;
-	x = strtoull(s, &end, 10);
-#if ULLONG_MAX > UINT64_MAX
-	if (x > UINT64_MAX)
-		errno = ERANGE;
-#endif
-	if (errno == ERANGE || *end)
-		return fail(r, n, "seed: %s is over %" PRIu64, shown(s, buf), UINT64_MAX);
-	*v = (uint64_t)x;
-	return 0;
-}
-
-static int get_twining(struct reader *r, const yaml_node_t *n, enum vine_twining *t)
-{
-	const char *w = ""; /* get_word sets it when it succeeds, which gcc cannot see */
-	char buf[24];
-	int ret = get_word(r, n, "twining", &w);
-
-	if (ret < 0)
-		return ret;
-	if (!strcmp(w, "left"))
-		*t = VINE_LEFT;
-	else if (!strcmp(w, "right"))
-		*t = VINE_RIGHT;
-	else
-		return fail(r, n, "twining: \"%s\" is none of left, right", shown(w, buf));
-	return 0;
-}
-
-/* The value of key k in mapping n, or NULL. */
-static const yaml_node_t *lookup(struct reader *r, const yaml_node_t *n, const char *k,
-				 const yaml_node_t **key)
-{
-	return yaml_node_lookup(&r->doc, n, k, key);
-}
-
-static int read_value(struct reader *r, size_t i, const yaml_node_t *v)
-{
-	char *field = (char *)r->p + keys[i].at;
-
-	switch (keys[i].kind) {
-	case NUMBER:
-		return get_number(r, v, keys[i].key, (double *)(void *)field);
-	case WHOLE:
-		return get_int(r, v, keys[i].key, (int *)(void *)field);
-	case TWINING:
-		return get_twining(r, v, (enum vine_twining *)(void *)field);
-	case SEED:
-		return get_seed(r, v, (uint64_t *)(void *)field);
-	}
-	return fail(r, v, "%s: broken key table", keys[i].key);
-}
-
-/* Every pair of the top mapping: known keys, once each. */
-static int read_pairs(struct reader *r, const yaml_node_t *root)
-{
-	yaml_node_pair_t *start = root->data.mapping.pairs.start, *top = root->data.mapping.pairs.top;
-
-	for (yaml_node_pair_t *pair = start; pair < top; pair++) {
-		const yaml_node_t *key = yaml_document_get_node(&r->doc, pair->key);
-		const yaml_node_t *value = yaml_document_get_node(&r->doc, pair->value), *other;
-		const char *k;
-		char buf[24];
-		size_t i;
-		int ret;
-
-		if (!key || !value)
-			return fail(r, root, "the top level: broken YAML node");
-		k = yaml_node_text(key);
-		if (!k || !yaml_node_plain(key))
-			return fail(r, key, "the top level: expected a plain key, got %s", got(key));
-		/* the pairs before are known keys, each once: a short look back */
-		other = yaml_node_earlier_key(&r->doc, root, pair, k);
-		if (other)
-			return fail(r, key, "duplicate key \"%s\" (first on line %lu)", shown(k, buf),
-				    line_of(r, other));
-		if (!strcmp(k, "edaha-vine"))
-			continue; /* read first */
-		for (i = 0; i < NKEYS && strcmp(keys[i].key, k); i++)
-			;
-		if (i == NKEYS)
-			return fail(r, key, "unknown key \"%s\"", shown(k, buf));
-		if ((ret = read_value(r, i, value)) < 0)
-			return ret;
-	}
-	return 0;
-}
-
-/* The version comes first: it says how to read the rest. Its key's line, in *line. */
-static int read_head(struct reader *r, const yaml_node_t *root, unsigned long *line)
-{
-	const yaml_node_t *key = NULL, *first, *v = lookup(r, root, "edaha-vine", &key);
-	int version, ret;
-
-	if (!v)
-		return fail(r, root, "not a vine parameter file: \"edaha-vine: %d\" is missing",
-			    VINE_PARAMS_VERSION);
-	first = yaml_document_get_node(&r->doc, root->data.mapping.pairs.start->key);
-	if ((ret = get_int(r, v, "edaha-vine", &version)) < 0)
-		return ret;
-	if (version != VINE_PARAMS_VERSION)
-		return fail(r, v, "edaha-vine: version %d: this edaha reads %d", version,
-			    VINE_PARAMS_VERSION);
-	if (key != first)
-		return fail(r, key, "edaha-vine: not the first key: it says how to read the rest");
-	*line = line_of(r, key);
-	return 0;
-}
-
-/* The line vine_params_check's refusal of key is told at: its value's; else (a default
- * at fault, through a limit shared with another key) that key's; else the version's. */
-static unsigned long fault_line(struct reader *r, const yaml_node_t *root, const char *key,
-				unsigned long version_line)
-{
-	const yaml_node_t *v = key ? lookup(r, root, key, NULL) : NULL;
-
-	for (size_t i = 0; !v && key && i < NKEYS; i++)
-		if (!strcmp(keys[i].key, key) && keys[i].partner)
-			v = lookup(r, root, keys[i].partner, NULL);
-	return v ? line_of(r, v) : version_line;
-}
-
-static int yaml_fail(struct reader *r, const yaml_parser_t *y, const char *data, size_t len)
-{
-	return yaml_node_parse_error(r->err, r->name, r->offset, y, data, len);
-}
-
-static int read_root(struct reader *r, yaml_parser_t *y, const char *data, size_t len)
-{
-	yaml_node_t *root = yaml_document_get_root_node(&r->doc);
-	yaml_document_t second;
-	const char *key = NULL;
-	struct error why;
-	unsigned long second_at, version_line = 0;
-	bool more;
-	int ret;
-
-	if (!root)
-		return error_at(r->err, -EINVAL, r->name, r->offset + 1,
-				"empty: a vine parameter file starts \"edaha-vine: %d\"",
-				VINE_PARAMS_VERSION);
-	if (root->type != YAML_MAPPING_NODE)
-		return fail(r, root, "expected a mapping (edaha-vine:, internode:, ...) at the top, "
-			    "got %s", yaml_node_kind(root));
-	if (!yaml_parser_load(y, &second))
-		return yaml_fail(r, y, data, len);
-	more = yaml_document_get_root_node(&second) != NULL;
-	second_at = more ? line_of(r, yaml_document_get_root_node(&second)) : 0;
-	yaml_document_delete(&second);
-	if (more)
-		return error_at(r->err, -EINVAL, r->name, second_at,
-				"a second YAML document; one is expected");
-	if ((ret = read_head(r, root, &version_line)) < 0 || (ret = read_pairs(r, root)) < 0)
-		return ret;
-	if ((ret = vine_params_check(r->p, &key, &why)) < 0)
-		return error_at(r->err, ret, r->name, fault_line(r, root, key, version_line), "%s",
-				why.msg);
-	return 0;
-}
-
-/*
- * What the loader is not shown. A vine file has no use for YAML's aliases (*name), and the
- * loaded document shares an aliased node with its anchor, so a bad value there would be
- * told at the anchor's line: they are refused where they are. Nor for deep nesting, which
- * libyaml's loader takes seconds over. A syntax error is left to the loader to tell.
- */
-static int prescan(struct reader *r, const char *data, size_t len)
-{
-	return yaml_node_prescan(data, len, r->name, r->offset, VINE_READ_MAX_DEPTH, "vine parameter file",
-				 r->err);
-}
 
 int vine_read(const char *data, size_t len, const char *name, struct vine_params *p,
 	      struct error *err)
@@ -326,32 +66,5 @@ int vine_read(const char *data, size_t len, const char *name, struct vine_params
 int vine_read_at(const char *data, size_t len, const char *name, unsigned long line_offset,
 		 struct vine_params *p, struct error *err)
 {
-	struct reader r = { .name = name, .err = err, .data = data, .len = len,
-			    .offset = line_offset };
-	struct vine_params tmp;
-	yaml_parser_t y;
-	int ret;
-
-	if (len > VINE_READ_MAX_BYTES)
-		return error_at(err, -EINVAL, name, line_offset + 1,
-				"larger than %d bytes: not a vine parameter file",
-				VINE_READ_MAX_BYTES);
-	if ((ret = prescan(&r, data, len)) < 0)
-		return ret;
-	vine_params_default(&tmp);
-	r.p = &tmp;
-	if (!yaml_parser_initialize(&y))
-		return error_at(err, -ENOMEM, name, line_offset, "out of memory");
-	yaml_parser_set_input_string(&y, (const unsigned char *)data, len);
-	if (!yaml_parser_load(&y, &r.doc)) {
-		ret = yaml_fail(&r, &y, data, len);
-		yaml_parser_delete(&y);
-		return ret;
-	}
-	ret = read_root(&r, &y, data, len);
-	yaml_document_delete(&r.doc);
-	yaml_parser_delete(&y);
-	if (ret == 0)
-		*p = tmp;
-	return ret;
+	return yaml_flat_read(&format, data, len, name, line_offset, p, err);
 }
