@@ -41,7 +41,10 @@ struct wood_params {
 	double wind[3];  /* a horizontal acceleration on every mass point (y ignored) */
 };
 
-/* The documented defaults (docs/wood-format.md). */
+/* The defaults (docs/wood-format.md): broadleaf, the 64 grid, beta 1, no wind; alpha and
+ * gravity these. */
+#define WOOD_ALPHA_DEFAULT 20.0
+#define WOOD_GRAVITY_DEFAULT 1e-3
 void wood_params_default(struct wood_params *p);
 /* Within every limit: 0, or -EINVAL with err naming the key (*key set, may be NULL). */
 int wood_params_check(const struct wood_params *p, const char **key, struct error *err);
@@ -57,10 +60,12 @@ int wood_read(const char *data, size_t len, const char *name, unsigned long line
 /* Step 1: the paper's power law at every fork, d^a = d1^a + d2^a + ..., with a = 2.5. */
 #define WOOD_POWER_LAW_A 2.5
 /*
- * Sets each branch's radius at its root so that at every fork the parent's radius there,
- * to the a-th power, is the sum of its children's and its own continuation's; tips keep
- * their drawn radius and every radius along a branch is scaled by one factor (its profile
- * kept), from the tips down to the trunk. 0 or -ENOMEM (t unchanged). wood_radii.c.
+ * The radii so that at every fork the parent's radius at the point below it, to the a-th
+ * power, is the sum of its radius at the point above and its children's root radii there
+ * (children whose parent_t is in (t_k, t_k+1] join below point k + 1, at point k); each
+ * tip keeps its drawn radius, and between forks a branch keeps its drawn taper (the ratio
+ * of neighbouring radii), from the tips down to the trunk. Applying it again changes
+ * nothing. 0 or -ENOMEM (t unchanged). wood_radii.c.
  */
 int wood_power_law(struct tree *t, double a);
 

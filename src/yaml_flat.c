@@ -167,7 +167,7 @@ static int get_vec3(struct reader *r, const yaml_node_t *n, const char *what, do
 	start = n->data.sequence.items.start;
 	top = n->data.sequence.items.top;
 	if (top - start != 3)
-		return fail(r, n, "%s: expected three numbers [x, y, z], got %ld", what,
+		return fail(r, n, "%s: expected three numbers [x, y, z], got a list of %ld", what,
 			    (long)(top - start));
 	for (int i = 0; i < 3; i++) {
 		const yaml_node_t *item = yaml_document_get_node(&r->doc, start[i]);
