@@ -176,3 +176,35 @@ int wood_thicken(struct wood_grid *g, const struct wood_params *p, double *added
  * Appended to out. 0 or -ENOMEM.
  */
 int wood_iso(const struct wood_grid *g, double iso, struct mesh *out);
+
+/*
+ * A tree's wood through its presses (wood_press.c): begun once (the power law on the
+ * tree, its prisms voxelised: density0), then each press finds the rest state and
+ * thickens, from the field the press before left.
+ */
+struct wood {
+	struct wood_params p;
+	struct wood_grid g;
+	double *density0;  /* the field before the first press */
+	double ground_y;   /* the trunk's foot, metres */
+	bool *voxelised;   /* per branch of the tree begun on */
+	size_t nbranches;
+	int presses;
+	/* the last press's */
+	struct wood_solve_stats solve;
+	double added, lost;
+};
+/* Applies the power law to t (its radii change: the twigs' meshes show it), and registers
+ * its thick branches in a new grid (p->grid cells). 0, -EINVAL (no branch thick enough to
+ * voxelise, or no trunk) or -ENOMEM (w empty then). */
+int wood_begin(struct wood *w, struct tree *t, const struct wood_params *p);
+/* One press: the rest state (wood_rest), then thickening (wood_thicken). 0, -EINVAL (no
+ * point fixed) or -ENOMEM. */
+int wood_press(struct wood *w);
+void wood_finish(struct wood *w);
+
+struct buf;
+/* voxels.json and voxels.bin (docs/wood.md, "Voxels dumped"): w's grid, settings and
+ * presses; its fields density0, density, compression, tension, displacement (3, f64) and
+ * flags (u8), x fastest. Appended: 0 or -ENOMEM (both as they were). wood_dump.c. */
+int wood_dump(const struct wood *w, struct buf *json, struct buf *bin);
