@@ -44,6 +44,7 @@ struct iso {
 	struct mesh *out;
 	int sx, sy, sz;     /* padded samples along each axis: the grid's + 2 */
 	uint32_t *lo, *hi;  /* the vertex on each edge (ISO_DIRS a sample) of two slabs */
+	double *below, *above; /* sample layers k and k + 1, padded: sx * sy values each */
 	int k;              /* the layer of cubes being marched: samples k and k + 1 */
 };
 
@@ -75,14 +76,34 @@ static double iso_edge_t(double a, double b, double iso)
  * ramp, clamped at 0 and 1, leave a ball's normals 7 degrees from radial on average and
  * 20 at worst; smoothed, 1.4 and 4.4 (tests/wood_iso).
  */
-static struct vec3 iso_gradient(const struct wood_grid *g, int i, int j, int k)
+static const double iso_smooth[3] = { 0.25, 0.5, 0.25 };
+
+/* The same away from the grid's sides: p the sample's density, sy and sz the strides. */
+static struct vec3 iso_gradient_inner(const double *p, ptrdiff_t sy, ptrdiff_t sz)
 {
-	static const double w[3] = { 0.25, 0.5, 0.25 };
 	struct vec3 d = vec3(0, 0, 0);
 
 	for (int a = -1; a <= 1; a++)
 		for (int b = -1; b <= 1; b++) {
-			double ab = 0.5 * w[a + 1] * w[b + 1];
+			double ab = 0.5 * iso_smooth[a + 1] * iso_smooth[b + 1];
+
+			d.x += ab * (p[1 + a * sy + b * sz] - p[-1 + a * sy + b * sz]);
+			d.y += ab * (p[a + sy + b * sz] - p[a - sy + b * sz]);
+			d.z += ab * (p[a + b * sy + sz] - p[a + b * sy - sz]);
+		}
+	return d;
+}
+
+static struct vec3 iso_gradient(const struct wood_grid *g, int i, int j, int k)
+{
+	struct vec3 d = vec3(0, 0, 0);
+
+	if (i > 1 && j > 1 && k > 1 && i < g->nx && j < g->ny && k < g->nz)
+		return iso_gradient_inner(g->density + wood_index(g, i - 1, j - 1, k - 1), g->nx,
+					  (ptrdiff_t)g->nx * g->ny);
+	for (int a = -1; a <= 1; a++)
+		for (int b = -1; b <= 1; b++) {
+			double ab = 0.5 * iso_smooth[a + 1] * iso_smooth[b + 1];
 
 			d.x += ab * (iso_sample(g, i + 1, j + a, k + b) -
 				     iso_sample(g, i - 1, j + a, k + b));
@@ -253,7 +274,9 @@ static int iso_cube(struct iso *s, int i, int j)
 	int r;
 
 	for (int m = 0; m < 8; m++) {
-		val[m] = iso_sample(s->g, i + (m & 1), j + ((m >> 1) & 1), s->k + ((m >> 2) & 1));
+		const double *layer = (m & 4) ? s->above : s->below;
+
+		val[m] = layer[(size_t)(i + (m & 1)) + (size_t)s->sx * (size_t)(j + ((m >> 1) & 1))];
 		if (val[m] >= s->iso)
 			in |= 1u << m;
 	}
@@ -332,16 +355,36 @@ static int iso_fix_normals(struct mesh *m, size_t first, size_t first_index)
 	return 0;
 }
 
+/* Padded sample layer k into layer: the grid's densities, zeros about them (a copy, so
+ * that the cubes read their corners without asking where they are). */
+static void iso_fill_layer(const struct iso *s, double *layer, int k)
+{
+	const struct wood_grid *g = s->g;
+
+	memset(layer, 0, (size_t)s->sx * (size_t)s->sy * sizeof(*layer));
+	if (k < 1 || k > g->nz)
+		return;
+	for (int j = 1; j <= g->ny; j++)
+		memcpy(layer + 1 + (size_t)s->sx * (size_t)j, g->density + wood_index(g, 0, j - 1, k - 1),
+		       (size_t)g->nx * sizeof(*layer));
+}
+
 static int iso_march(struct iso *s)
 {
 	size_t slab = (size_t)s->sx * (size_t)s->sy * ISO_DIRS;
 
 	memset(s->lo, 0xff, slab * sizeof(*s->lo));
 	memset(s->hi, 0xff, slab * sizeof(*s->hi));
+	iso_fill_layer(s, s->above, 0);
 	for (s->k = 0; s->k + 1 < s->sz; s->k++) {
 		uint32_t *t;
-		int r = iso_layer(s);
+		double *l = s->below;
+		int r;
 
+		s->below = s->above;
+		s->above = l;
+		iso_fill_layer(s, s->above, s->k + 1);
+		r = iso_layer(s);
 		if (r < 0)
 			return r;
 		/* the upper layer becomes the lower one, its in-plane vertices kept */
@@ -356,18 +399,22 @@ static int iso_march(struct iso *s)
 int wood_iso(const struct wood_grid *g, double iso, struct mesh *out)
 {
 	struct iso s = { .g = g, .iso = iso, .out = out };
-	size_t first = out->nvertices, first_index = out->nindices, slab;
+	size_t first = out->nvertices, first_index = out->nindices, plane;
 	int r;
 
 	s.sx = g->nx + 2;
 	s.sy = g->ny + 2;
 	s.sz = g->nz + 2;
-	slab = (size_t)s.sx * (size_t)s.sy * ISO_DIRS;
-	s.lo = malloc(slab * sizeof(*s.lo));
-	s.hi = malloc(slab * sizeof(*s.hi));
-	r = s.lo && s.hi ? iso_march(&s) : -ENOMEM;
+	plane = (size_t)s.sx * (size_t)s.sy;
+	s.lo = malloc(plane * ISO_DIRS * sizeof(*s.lo));
+	s.hi = malloc(plane * ISO_DIRS * sizeof(*s.hi));
+	s.below = malloc(plane * sizeof(*s.below));
+	s.above = malloc(plane * sizeof(*s.above));
+	r = s.lo && s.hi && s.below && s.above ? iso_march(&s) : -ENOMEM;
 	free(s.lo);
 	free(s.hi);
+	free(s.below);
+	free(s.above);
 	if (r == 0)
 		r = iso_fix_normals(out, first, first_index);
 	if (r < 0) {
