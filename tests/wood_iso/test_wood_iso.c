@@ -560,7 +560,7 @@ static void test_determinism_append(void)
 	wood_grid_finish(&one);
 }
 
-/* No wood, or an iso value no density reaches: nothing appended. */
+/* No wood, or an iso value that leaves every sample on one side: nothing appended. */
 static void test_nothing(void)
 {
 	struct wood_grid g;
@@ -572,6 +572,9 @@ static void test_nothing(void)
 	CHECK(m.nvertices == 0 && m.nindices == 0);
 	iso_block(&g, 1, 1, 1, 3, 3, 3, 0.9);
 	CHECK_INT(wood_iso(&g, 1.5, &m), 0);
+	CHECK(m.nvertices == 0 && m.nindices == 0);
+	/* at 0 the padding is inside too: no side to the wood */
+	CHECK_INT(wood_iso(&g, 0.0, &m), 0);
 	CHECK(m.nvertices == 0 && m.nindices == 0);
 	mesh_finish(&m);
 	wood_grid_finish(&g);
