@@ -179,6 +179,9 @@ int wood_thicken(struct wood_grid *g, const struct wood_params *p, double *added
  * method (marching tetrahedra, six a cube), in world metres, with smooth normals (the
  * density's gradient): closed, consistently oriented (outward), no degenerate triangles.
  * Appended to out. 0 or -ENOMEM.
+ * Samples at the voxels' centres, 0 outside the grid (closed at its sides too); inside is
+ * density >= iso; each vertex kept 1e-3 of its edge from either end; a manifold for any
+ * field; on -ENOMEM out keeps what it had (docs/wood.md, "Step 7").
  */
 int wood_iso(const struct wood_grid *g, double iso, struct mesh *out);
 
