@@ -118,6 +118,11 @@ static inline size_t wood_cells(const struct wood_grid *g)
  * for a grid of cells along its padded box's longest side, as a closed, outward-oriented
  * triangle mesh (each prism its own closed solid; they overlap at forks). *voxelised
  * (t->nbranches entries, may be NULL) says which branches are.
+ * The grid depends on the branches chosen and they on its h, so (docs/wood.md): thickest
+ * first, equal radii together, while the thinnest so far is thick enough in the grid of
+ * those so far; a branch thick enough only in a grid made without it is left out.
+ * Appended to out (on an empty out, wood_grid_for makes the grid they were chosen for).
+ * 0, -EINVAL (cells not 1..1024) or -ENOMEM (out and *voxelised unchanged).
  */
 int wood_prisms(const struct tree *t, int cells, struct mesh *out, bool *voxelised);
 /* The grid for those prisms: their box padded by WOOD_PAD on every side, `cells` along
@@ -127,7 +132,10 @@ int wood_grid_for(const struct mesh *prisms, int cells, struct wood_grid *g);
  * Each voxel's density: the part of its WOOD_RAYS rays along z (through the voxel's
  * footprint, parallel) inside the union of the prisms (a point is inside when the signed
  * crossings below it sum above 0), averaged: 0..1. Adds to the field (call on a grid of
- * zeros). 0 or -ENOMEM.
+ * zeros). The rays are the voxel's centre and (+-1/4, +-1/4) of a voxel about it; a ray
+ * exactly on an edge or a corner is counted as the ray moved by (+e, +e^2), e > 0 tiny
+ * (docs/wood.md), so each crossing once. 0, -EINVAL (an index past the vertices) or
+ * -ENOMEM.
  */
 int wood_voxelise(struct wood_grid *g, const struct mesh *prisms);
 
