@@ -133,8 +133,7 @@ int wood_rest_euler(struct wood_grid *g, const struct wood_params *p, double gro
 	e.f = w + 6 * m.n;
 	e.v1 = w + 9 * m.n;
 	for (int d = 0; d < WOOD_DIRS; d++)
-		e.rest_len[d] = sqrt(1.0 * (wood_dir[d][0] * wood_dir[d][0] +
-					    wood_dir[d][1] * wood_dir[d][1] + wood_dir[d][2] * wood_dir[d][2]));
+		e.rest_len[d] = sqrt(1.0 / wood_dir_inv_len2[d]); /* 1, sqrt 2, sqrt 3 */
 	e.ext[0] = p->wind[0];
 	e.ext[1] = -p->gravity;
 	e.ext[2] = p->wind[2];

@@ -269,8 +269,8 @@ static void galerkin_add(struct mg_level *f, struct mg_level *c, size_t i, size_
 
 	for (int s = 0; s < 8 && pi[s] >= 0; s++)
 		for (int t = 0; t < 8 && pj[t] >= 0; t++) {
-			double *o = c->a + 9 * (MG_SLOTS * (size_t)pi[s] + (size_t)slot(c, pi[s], pj[t]));
-			double w = wi[s] * wj[t];
+			size_t k = MG_SLOTS * (size_t)pi[s] + (size_t)slot(c, pi[s], pj[t]);
+			double *o = c->a + 9 * k, w = wi[s] * wj[t];
 
 			for (int k = 0; k < 9; k++)
 				o[k] += w * B[k];
@@ -288,11 +288,11 @@ static void galerkin(struct wood_precond *pc, int lf)
 		if (!is_free(f, i))
 			continue;
 		if (lf > 0) {
-			for (int s = 0; s < MG_SLOTS; s++) {
-				int32_t j = f->nb[MG_SLOTS * i + (size_t)s];
+			for (size_t s = 0; s < MG_SLOTS; s++) {
+				int32_t j = f->nb[MG_SLOTS * i + s];
 
 				if (j >= 0)
-					galerkin_add(f, c, i, (size_t)j, f->a + 9 * (MG_SLOTS * i + (size_t)s));
+					galerkin_add(f, c, i, (size_t)j, f->a + 9 * (MG_SLOTS * i + s));
 			}
 			continue;
 		}
@@ -447,8 +447,8 @@ static void vcycle(struct wood_precond *pc, int k)
 		if (!is_free(l, i))
 			continue;
 		row(pc, l, i, l->x, ax);
-		for (int s = 0; s < 8 && l->par[8 * i + (size_t)s] >= 0; s++) {
-			double *o = c->b + 3 * (size_t)l->par[8 * i + (size_t)s], w = l->w[8 * i + (size_t)s];
+		for (size_t s = 0; s < 8 && l->par[8 * i + s] >= 0; s++) {
+			double *o = c->b + 3 * (size_t)l->par[8 * i + s], w = l->w[8 * i + s];
 
 			for (int t = 0; t < 3; t++)
 				o[t] += w * (l->b[3 * i + (size_t)t] - ax[t]);

@@ -25,7 +25,8 @@ const int wood_dir[WOOD_DIRS][3] = {
 #define I2 (1.0 / 2.0)
 #define I3 (1.0 / 3.0)
 const double wood_dir_inv_len2[WOOD_DIRS] = {
-	I3, I2, I3, I2, 1, I2, I3, I2, I3, I2, 1, I2, 1, 1, I2, 1, I2, I3, I2, I3, I2, 1, I2, I3, I2, I3,
+	I3, I2, I3, I2, 1, I2, I3, I2, I3, I2, 1, I2, 1,
+	1,  I2, 1, I2, I3, I2, I3, I2, 1, I2, I3, I2, I3,
 };
 
 #define S2 (1.0 / 2.0)
