@@ -81,7 +81,7 @@ int wood_power_law(struct tree *t, double a);
 
 /* Flags of a voxel. */
 enum {
-	WOOD_MASS = 1u << 0,  /* a mass point: density above 0, connected to the base */
+	WOOD_MASS = 1u << 0,  /* a kept mass point: density above 0, held from the base */
 	WOOD_FIXED = 1u << 1, /* within one voxel of the ground under the trunk */
 };
 
@@ -140,28 +140,54 @@ int wood_grid_for(const struct mesh *prisms, int cells, struct wood_grid *g);
 int wood_voxelise(struct wood_grid *g, const struct mesh *prisms);
 
 /*
- * Steps 4-5 (wood_spring.c, wood_solve.c). Mass points are the voxels of density above
- * 0; springs join each to its 26 neighbours that are mass points (rest lengths 1, sqrt 2,
- * sqrt 3 voxels, k = 1, m = 1). Fixed: the mass points within one voxel of the ground
- * (the trunk's root's height, `ground_y` in metres) under the trunk. Points not joined to
- * a fixed one through springs are dropped (*dropped says how many). Then the rest state
- * under gravity and wind, solved directly as the static equilibrium of the springs (small
- * displacements: K u = f, preconditioned conjugate gradients, to a relative force
- * residual of at most 1e-6), into displacement, compression, tension and flags.
+ * Steps 4-5 (wood_spring.c; wood_solve.c and wood_mg.c; wood_euler.c). Mass points are
+ * the voxels of density above 0; springs join each to its 26 neighbours that are mass
+ * points (rest lengths 1, sqrt 2, sqrt 3 voxels, k = 1, m = 1, whatever the density).
+ * Fixed: the mass points within one voxel of the ground (the trunk's root's height,
+ * `ground_y` in metres), those whose centre's height origin.y + (y + 0.5) h is at most
+ * ground_y + h: the trunk's foot (and any wood lower). Kept: the fixed points and then,
+ * again and again, every mass point whose springs to kept ones pull in all three
+ * directions (their rest directions span space), so that the kept points' linearised
+ * springs hold every one of them (K is positive definite). The others are dropped
+ * (*dropped; their flags and fields 0): those not joined to a fixed point through springs,
+ * and the few joined but not held (*loose: a voxel hanging by a corner or an edge, a sheet
+ * one voxel thin), which linear springs cannot hold still. Then the rest state under
+ * gravity and wind, solved directly as the static equilibrium of the springs (small
+ * displacements: K u = f, f = m (wind.x, -gravity, wind.z) on every free point,
+ * conjugate gradients preconditioned by a multigrid cycle, to a relative force residual
+ * |f - K u| / |f| of at most 1e-6), into displacement, compression, tension and flags of
+ * the kept points (every other voxel's fields 0). A spring's force S = k e . (u_j - u_i),
+ * e its rest direction, S > 0 stretched; a point's compression is the sum of |S| over its
+ * compressed springs and its tension the sum of S over its stretched ones (the paper's
+ * sums, of magnitudes: a vector sum would cancel inside an evenly loaded column). With no
+ * load (gravity 0, no wind) u = 0 and every force 0, without an iteration. The forces are
+ * in proportion to the load. 0; -EINVAL (no point fixed; ground_y, gravity or wind not
+ * finite), -ENOMEM or -ETIMEDOUT (the iterations did not converge: not seen); on an error
+ * every field but density is 0.
  */
 struct wood_solve_stats {
-	size_t points, fixed, springs, dropped;
-	int iterations;
-	double residual; /* |f - K u| / |f| reached */
+	size_t points, fixed, springs, dropped; /* kept points, fixed ones, springs between kept
+						   points (each once), mass points dropped */
+	size_t loose;    /* of dropped: joined to a fixed point, but not held in 3 directions */
+	int iterations;  /* wood_rest: CG's; wood_rest_euler: time steps */
+	double residual; /* |f - K u| / |f| reached (wood_rest_euler: |net force| / |f|) */
 };
 int wood_rest(struct wood_grid *g, const struct wood_params *p, double ground_y,
 	      struct wood_solve_stats *stats);
 /*
- * The paper's own scheme for the same springs (improved Euler with damping C, spring
- * limits), run until every point's speed and net force are below `tol` or max_steps pass:
- * for small cases, to check wood_rest against. Full (not linearised) springs. Fills the
- * same fields. 0, -ETIMEDOUT (not at rest in max_steps) or -ENOMEM.
+ * The paper's own scheme for the same kept springs: improved Euler with damping C,
+ *   v(t + dt) = v(t) + dt (g + sum S - C v(t)),  h(t + dt) = h(t) + dt/2 (v(t) + v(t + dt))
+ * (m = 1), on full springs (S = k (l - l0) along the current direction, |l - l0| limited
+ * to WOOD_SPRING_LIMIT), from rest at the rest positions until every free point's speed
+ * and net force are below `tol` or max_steps pass: for small cases, to check wood_rest
+ * against (they differ by the springs' turning, in proportion to the displacements: within
+ * 1% where the largest is about 0.01 voxel). Stable when damping > dt * 26/3 (K's largest
+ * eigenvalue is at most 2 * 26/3): e.g. dt 0.1, damping 1. Fills the same fields from the
+ * last state, at rest or not (compression and tension from its springs' S). 0, -ETIMEDOUT
+ * (not at rest in max_steps), -EINVAL (as wood_rest; dt or tol not above 0, damping or
+ * max_steps below 0) or -ENOMEM.
  */
+#define WOOD_SPRING_LIMIT 0.5
 int wood_rest_euler(struct wood_grid *g, const struct wood_params *p, double ground_y,
 		    double dt, double damping, long max_steps, double tol,
 		    struct wood_solve_stats *stats);
