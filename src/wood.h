@@ -43,8 +43,8 @@ struct wood_params {
 
 /* The defaults (docs/wood-format.md): broadleaf, the 64 grid, beta 1, no wind; alpha and
  * gravity these. */
-#define WOOD_ALPHA_DEFAULT 20.0
-#define WOOD_GRAVITY_DEFAULT 1e-3
+#define WOOD_ALPHA_DEFAULT 1e4
+#define WOOD_GRAVITY_DEFAULT 2e-7
 void wood_params_default(struct wood_params *p);
 /* Within every limit: 0, or -EINVAL with err naming the key (*key set, may be NULL). */
 int wood_params_check(const struct wood_params *p, const char **key, struct error *err);
