@@ -15,6 +15,7 @@
 #include "sketch.h"
 #include "tree_index.h"
 #include "vine_support.h"
+#include "wood.h"
 
 static void app_fail(struct app *app, int err)
 {
@@ -46,6 +47,7 @@ struct app *app_create(int width, int height, uint64_t seed)
 		tree_mesh_init(&app->templates[i]);
 	tree_mesh_init(&app->vines_mesh);
 	tree_mesh_init(&app->growth.mesh);
+	wood_params_default(&app->wood_settings);
 	return app;
 }
 
@@ -71,7 +73,19 @@ void app_destroy(struct app *app)
 	free(app);
 }
 
+static int apply_op(struct app *app, const struct doc_op *op);
+
+/* An op on the tree; one that changed its branches drops its wood (app_wood.c). */
 int app_apply_op(struct app *app, const struct doc_op *op)
+{
+	int ret = apply_op(app, op);
+
+	if (ret >= 0 && !app_op_keeps_wood(op->kind, ret))
+		tree_wood_drop(&app->tree);
+	return ret;
+}
+
+static int apply_op(struct app *app, const struct doc_op *op)
 {
 	switch (op->kind) {
 	case DOC_OP_STROKE:
@@ -118,6 +132,10 @@ int app_apply_op(struct app *app, const struct doc_op *op)
 		if ((unsigned)op->pattern < SEASON_COUNT)
 			app->tree.season = (enum season)op->pattern;
 		return SKETCH_GREW;
+	case DOC_OP_GROW:
+		return app_wood_apply(&app->tree, op);
+	case DOC_OP_IMPORT:
+		return app_import_apply(&app->tree, op);
 	case DOC_OP_VINE:
 		/* the tap's index of this very tree, if the op is the tap's */
 		return app_vine_apply(&app->tree, op,
@@ -320,6 +338,8 @@ int app_press_button(struct app *app, enum button button, uint64_t time_us)
 		return app_set_mode(app, APP_MODE_PROPAGATE, time_us);
 	case BUTTON_VINE:
 		return app_set_mode(app, APP_MODE_VINE, time_us);
+	case BUTTON_GROW:
+		return app_grow(app, time_us);
 	case BUTTON_FIXED_COUNT:
 		app->pattern = APP_PATTERN_FIXED_COUNT;
 		return 0;

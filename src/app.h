@@ -15,6 +15,7 @@
 #include "rng.h"
 #include "tree.h"
 #include "view.h"
+#include "wood.h"
 
 /*
  * The kiosk's state machine. It consumes struct event only and owns the document,
@@ -191,6 +192,8 @@ struct app {
 	 * tap, not three. NULL outside a tap. */
 	struct vine_support *bark_index;
 	const struct doc_op *bark_index_op;
+	/* What a grow press grows with (issue 17; wood.h): the defaults, or --wood's file. */
+	struct wood_params wood_settings;
 	/* Example-based editing. */
 	int selected;              /* clone mode: the branch that gets children, or -1 */
 	int suggest_branch;        /* leaf mode: the branch whose leaves suggest... */

@@ -79,6 +79,14 @@ int app_vines_refresh(struct app *app);
 int app_vine_plan(const struct app *app, struct vec3 p, uint64_t time_us, struct doc_op *op,
 		  struct vine_support **bark);
 
+/* app_wood.c: a grow op (a press) and an import op applied to t (SKETCH_* or < 0); and
+ * whether the tree keeps its wood after an op of this kind gave this result. */
+int app_wood_apply(struct tree *t, const struct doc_op *op);
+int app_import_apply(struct tree *t, const struct doc_op *op);
+bool app_op_keeps_wood(enum doc_op_kind kind, int result);
+/* The grow button. 0 or a negative errno. */
+int app_grow(struct app *app, uint64_t time_us);
+
 /* app_view.c */
 void app_camera_store(struct app *app, struct camera c);
 void app_camera_follow_tree(struct app *app);

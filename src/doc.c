@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 #include "doc.h"
 #include "gen.h"
+#include "tree.h"
 #include "vine.h"
+#include "wood.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -18,10 +20,16 @@ void doc_op_finish(struct doc_op *op)
 	free(op->points);
 	free(op->params);
 	free(op->vine);
+	free(op->wood);
+	if (op->import)
+		tree_finish(op->import);
+	free(op->import);
 	op->points = NULL;
 	op->npoints = 0;
 	op->params = NULL;
 	op->vine = NULL;
+	op->wood = NULL;
+	op->import = NULL;
 }
 
 int doc_op_copy(struct doc_op *dst, const struct doc_op *src)
@@ -30,6 +38,8 @@ int doc_op_copy(struct doc_op *dst, const struct doc_op *src)
 	dst->points = NULL;
 	dst->params = NULL;
 	dst->vine = NULL;
+	dst->wood = NULL;
+	dst->import = NULL;
 	if (src->npoints) {
 		dst->points = malloc(src->npoints * sizeof(*dst->points));
 		if (!dst->points)
@@ -47,6 +57,20 @@ int doc_op_copy(struct doc_op *dst, const struct doc_op *src)
 		if (!dst->vine)
 			goto fail;
 		*dst->vine = *src->vine;
+	}
+	if (src->wood) {
+		dst->wood = malloc(sizeof(*dst->wood));
+		if (!dst->wood)
+			goto fail;
+		*dst->wood = *src->wood;
+	}
+	if (src->import) {
+		dst->import = malloc(sizeof(*dst->import));
+		if (!dst->import)
+			goto fail;
+		tree_init(dst->import);
+		if (tree_copy(dst->import, src->import) < 0)
+			goto fail;
 	}
 	return 0;
 fail:
@@ -72,6 +96,10 @@ size_t doc_op_weight(const struct doc_op *op)
 		n += gen_count_branches(op->params) + gen_count_leaves(op->params);
 	if (op->vine)
 		n += (size_t)op->vine->internodes * (size_t)op->vine->points_per_internode;
+	if (op->kind == DOC_OP_GROW)
+		n += DOC_GROW_WEIGHT;
+	for (size_t i = 0; op->import && i < op->import->nbranches; i++)
+		n += op->import->branches[i].npoints;
 	return n;
 }
 
@@ -113,6 +141,8 @@ int doc_push(struct doc *d, struct doc_op *op)
 	op->npoints = 0;
 	op->params = NULL;
 	op->vine = NULL;
+	op->wood = NULL;
+	op->import = NULL;
 	return 0;
 }
 

@@ -12,6 +12,8 @@
 
 struct gen_params;
 struct vine_params;
+struct wood_params;
+struct tree;
 
 /*
  * The drawing as inputs, not polygons: the random seed and the edit history (ops).
@@ -41,6 +43,11 @@ enum doc_op_kind {
 	 * (owned, already scaled to the tree) planted at `plant` (world metres) and grown to
 	 * its end on the tree's bark. */
 	DOC_OP_VINE,
+	/* Growing wood (version 8, issue 17): the grow button, a year of thickening with the
+	 * settings `wood` (owned); and a skeleton.json's branches as the canvas's tree
+	 * (`import`, owned: branches only, lifted), as --skeleton starts from. */
+	DOC_OP_GROW,
+	DOC_OP_IMPORT,
 };
 
 /* Stored as float so that what is written is exactly what is replayed. */
@@ -65,6 +72,8 @@ struct doc_op {
 	uint64_t seed;        /* generate: the generator's seed */
 	struct vine_params *vine; /* vine: the vine's parameters (owned) */
 	double plant[3];      /* vine: where it is planted, world metres */
+	struct wood_params *wood; /* grow: the settings (owned) */
+	struct tree *import;  /* import: the branches (owned; tree_finish'ed and freed) */
 };
 
 struct doc {
@@ -77,9 +86,9 @@ struct doc {
 
 /* 2 added the lift op, 3 the camera (of strokes drawn on a turned 3D tree, and the
  * view when saved), 4 the editing ops (clone, arrange, propagate), 5 the generated trees
- * and the season, 6 the leaf type (origami leaves), 7 the vines; older files read as
- * before. */
-#define DOC_FORMAT_VERSION 7
+ * and the season, 6 the leaf type (origami leaves), 7 the vines, 8 growing wood (grow,
+ * import); older files read as before. */
+#define DOC_FORMAT_VERSION 8
 
 /*
  * Limits on a drawing, far beyond what a visitor draws in a day, so that a damaged or
@@ -92,6 +101,9 @@ struct doc {
 				    * as points (doc_op_weight) */
 #define DOC_MAX_COORD_M 1000.0f    /* |x|, |y| on the sketch plane */
 #define DOC_MAX_FILE_BYTES (256u << 20)
+/* A grow press costs a solve of the tree's springs (up to seconds on the board): it counts
+ * as this many points, so that a drawing holds at most 40 and --load stays bounded. */
+#define DOC_GROW_WEIGHT 100000u
 
 void doc_init(struct doc *d, uint64_t seed);
 void doc_finish(struct doc *d);
@@ -106,7 +118,8 @@ int doc_op_copy(struct doc_op *dst, const struct doc_op *src);
 int doc_push(struct doc *d, struct doc_op *op);
 /* What an op counts towards DOC_MAX_POINTS: a stroke its points, a generated tree its
  * branches and leaves (gen_count_branches + gen_count_leaves), a vine its budget's axis
- * points (internodes x points_per_internode). */
+ * points (internodes x points_per_internode), a grow press DOC_GROW_WEIGHT, an import its
+ * branches' points. */
 size_t doc_op_weight(const struct doc_op *op);
 /* The weight of ops[0..nops). */
 size_t doc_total_points(const struct doc *d);

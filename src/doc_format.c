@@ -14,6 +14,7 @@
 #include "ori_kinds.h"
 #include "propagate.h"
 #include "tree.h"
+#include "wood.h"
 
 static const char *const propagate_names[] = {
 	[PROPAGATE_FIXED_COUNT] = "fixed-count",
@@ -38,6 +39,34 @@ static const char *pattern_name(const struct doc_op *op)
 }
 
 #define MAX_FIELDS 8
+
+/* import T B, then each branch: PARENT PARENT_T GENERATION N, and its N points X Y Z R,
+ * numbers written to read back bit for bit. */
+static int write_import(const struct doc_op *op, struct buf *out)
+{
+	const struct tree *t = op->import;
+	size_t n = t ? t->nbranches : 0;
+
+	buf_printf(out, "import %llu %zu\n", (unsigned long long)op->time_us, n);
+	for (size_t i = 0; i < n; i++) {
+		const struct branch *b = &t->branches[i];
+
+		buf_printf(out, "%d ", b->parent);
+		buf_print_exact(out, b->parent_t);
+		buf_printf(out, " %d %zu\n", b->generation, b->npoints);
+		for (size_t k = 0; k < b->npoints; k++) {
+			buf_print_exact(out, b->points[k].x);
+			buf_printf(out, " ");
+			buf_print_exact(out, b->points[k].y);
+			buf_printf(out, " ");
+			buf_print_exact(out, b->points[k].z);
+			buf_printf(out, " ");
+			buf_print_exact(out, b->radii[k]);
+			buf_printf(out, "\n");
+		}
+	}
+	return out->failed ? -ENOMEM : 0;
+}
 
 int doc_serialize(const struct doc *d, const struct tree *t, struct buf *out)
 {
@@ -96,6 +125,16 @@ int doc_serialize(const struct doc *d, const struct tree *t, struct buf *out)
 			if (op->vine && vine_write(op->vine, out) < 0)
 				return -ENOMEM;
 			buf_printf(out, "\n");
+			break;
+		case DOC_OP_GROW:
+			buf_printf(out, "grow %llu ", (unsigned long long)op->time_us);
+			if (op->wood && wood_write(op->wood, out) < 0)
+				return -ENOMEM;
+			buf_printf(out, "\n");
+			break;
+		case DOC_OP_IMPORT:
+			if (write_import(op, out) < 0)
+				return -ENOMEM;
 			break;
 		case DOC_OP_CLONE_ADD:
 		case DOC_OP_CLONE_REMOVE:
@@ -186,8 +225,9 @@ static int reader_next(struct reader *r)
 				r->fields[r->nfields++] = s;
 				break;
 			}
-			/* and a vine's, after its planting point */
-			if (r->nfields == 5 && !strcmp(r->fields[0], "vine")) {
+			/* and a vine's, after its planting point; a grow press's settings */
+			if ((r->nfields == 5 && !strcmp(r->fields[0], "vine")) ||
+			    (r->nfields == 2 && !strcmp(r->fields[0], "grow"))) {
 				r->fields[r->nfields++] = s;
 				break;
 			}
@@ -414,6 +454,120 @@ static int parse_vine(struct reader *r, struct doc_op *op)
 			    r->err);
 }
 
+/* grow T {SETTINGS} (version 8): a wood settings file's keys as YAML on the line. */
+static int parse_grow(struct reader *r, struct doc_op *op)
+{
+	int ret;
+
+	if ((ret = expect_fields(r, 3, "grow (time, settings)")) < 0 ||
+	    (ret = parse_u64(r, r->fields[1], UINT64_MAX, &op->time_us, "time")) < 0)
+		return ret;
+	op->wood = malloc(sizeof(*op->wood));
+	if (!op->wood)
+		return error_at(r->err, -ENOMEM, r->name, r->line, "out of memory");
+	return wood_read(r->fields[2], strlen(r->fields[2]), r->name, r->line - 1, op->wood, r->err);
+}
+
+/* A number of an import's line, exactly as written (a double), within [lo, hi]. */
+static int parse_exact(struct reader *r, const char *s, double lo, double hi, double *v,
+		       const char *what)
+{
+	char *endp;
+	double x;
+
+	errno = 0;
+	x = strtod(s, &endp);
+	if (endp == s || *endp || errno == ERANGE || !isfinite(x))
+		return error_at(r->err, -EINVAL, r->name, r->line, "bad %s \"%s\"", what, s);
+	if (x < lo || x > hi)
+		return error_at(r->err, -EINVAL, r->name, r->line, "%s %s out of range %g..%g", what, s,
+				lo, hi);
+	*v = x;
+	return 0;
+}
+
+/* One branch of an import: its head line (read), then its points. */
+static int parse_import_branch(struct reader *r, struct tree *t, size_t i)
+{
+	uint64_t n, gen;
+	double parent, pt;
+	struct vec3 *p;
+	double *rad;
+	int ret;
+
+	if ((ret = expect_fields(r, 4, "an imported branch (parent parent_t generation points)")) < 0 ||
+	    (ret = parse_exact(r, r->fields[0], -1, (double)i - 1, &parent, "parent")) < 0 ||
+	    (ret = parse_exact(r, r->fields[1], 0, 1, &pt, "parent_t")) < 0 ||
+	    (ret = parse_u64(r, r->fields[2], 1000, &gen, "generation")) < 0 ||
+	    (ret = parse_u64(r, r->fields[3], DOC_MAX_STROKE_POINTS, &n, "point count")) < 0)
+		return ret;
+	if (parent != floor(parent))
+		return error_at(r->err, -EINVAL, r->name, r->line, "parent %s is not a branch",
+				r->fields[0]);
+	if (n < 2)
+		return error_at(r->err, -EINVAL, r->name, r->line, "a branch needs two points or more");
+	p = malloc(n * sizeof(*p));
+	rad = malloc(n * sizeof(*rad));
+	if (!p || !rad) {
+		free(p);
+		free(rad);
+		return error_at(r->err, -ENOMEM, r->name, r->line, "out of memory");
+	}
+	for (size_t k = 0; k < n && ret == 0; k++) {
+		ret = reader_next(r);
+		if (ret == 0)
+			ret = error_at(r->err, -EINVAL, r->name, r->line,
+				       "file ends inside an imported branch (%zu of %llu points)", k,
+				       (unsigned long long)n);
+		if (ret < 0)
+			break;
+		if ((ret = expect_fields(r, 4, "a branch point (x y z radius)")) < 0 ||
+		    (ret = parse_exact(r, r->fields[0], -DOC_MAX_COORD_M, DOC_MAX_COORD_M, &p[k].x, "x")) < 0 ||
+		    (ret = parse_exact(r, r->fields[1], -DOC_MAX_COORD_M, DOC_MAX_COORD_M, &p[k].y, "y")) < 0 ||
+		    (ret = parse_exact(r, r->fields[2], -DOC_MAX_COORD_M, DOC_MAX_COORD_M, &p[k].z, "z")) < 0 ||
+		    (ret = parse_exact(r, r->fields[3], 0, DOC_MAX_COORD_M, &rad[k], "radius")) < 0)
+			break;
+	}
+	if (ret == 0) {
+		ret = tree_add_branch(t, (int)parent, pt, ORIGIN_SKETCH, p, rad, n);
+		if (ret >= 0) {
+			t->branches[ret].generation = (int)gen;
+			ret = 0;
+		} else {
+			ret = error_at(r->err, ret, r->name, r->line, "out of memory");
+		}
+	}
+	free(p);
+	free(rad);
+	return ret;
+}
+
+/* import T B (version 8): B branches follow, parents before children. */
+static int parse_import(struct reader *r, struct doc_op *op)
+{
+	uint64_t n;
+	int ret;
+
+	if ((ret = expect_fields(r, 3, "import (time, branches)")) < 0 ||
+	    (ret = parse_u64(r, r->fields[1], UINT64_MAX, &op->time_us, "time")) < 0 ||
+	    (ret = parse_u64(r, r->fields[2], TREE_MAX_BRANCHES, &n, "branch count")) < 0)
+		return ret;
+	op->import = malloc(sizeof(*op->import));
+	if (!op->import)
+		return error_at(r->err, -ENOMEM, r->name, r->line, "out of memory");
+	tree_init(op->import);
+	for (size_t i = 0; i < n; i++) {
+		ret = reader_next(r);
+		if (ret == 0)
+			ret = error_at(r->err, -EINVAL, r->name, r->line,
+				       "file ends inside an import (%zu of %llu branches)", i,
+				       (unsigned long long)n);
+		if (ret < 0 || (ret = parse_import_branch(r, op->import, i)) < 0)
+			return ret;
+	}
+	return 0;
+}
+
 static bool functional_keyword(const char *kw, uint64_t version, enum doc_op_kind *kind)
 {
 	if (version < 5)
@@ -426,6 +580,10 @@ static bool functional_keyword(const char *kw, uint64_t version, enum doc_op_kin
 		*kind = DOC_OP_LEAFTYPE;
 	else if (version >= 7 && !strcmp(kw, "vine"))
 		*kind = DOC_OP_VINE;
+	else if (version >= 8 && !strcmp(kw, "grow"))
+		*kind = DOC_OP_GROW;
+	else if (version >= 8 && !strcmp(kw, "import"))
+		*kind = DOC_OP_IMPORT;
 	else
 		return false;
 	return true;
@@ -510,8 +668,10 @@ static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 				ret = parse_edit(r, &op);
 			} else if (functional_keyword(kw, version, &functional)) {
 				op.kind = functional;
-				ret = functional == DOC_OP_VINE ? parse_vine(r, &op)
-								: parse_functional(r, &op);
+				ret = functional == DOC_OP_VINE	  ? parse_vine(r, &op) :
+				      functional == DOC_OP_GROW	  ? parse_grow(r, &op) :
+				      functional == DOC_OP_IMPORT ? parse_import(r, &op) :
+								    parse_functional(r, &op);
 			} else if (kw[0] == 's') {
 				op.kind = DOC_OP_STROKE;
 				ret = parse_stroke(r, &op, version);

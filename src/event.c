@@ -56,6 +56,7 @@ static const char *const button_names[BUTTON_COUNT] = {
 	[BUTTON_LEAF_HOP] = "leaf-hop",
 	[BUTTON_LEAF_MAPLE] = "leaf-maple",
 	[BUTTON_VINE] = "vine",
+	[BUTTON_GROW] = "grow",
 };
 
 #define N(a) (sizeof(a) / sizeof((a)[0]))

@@ -68,6 +68,8 @@ enum button {
 	/* Twining vines (issue 16, seed 004): the vine mode, where a tap at the tree's foot
 	 * plants a vine (docs/vines.md) */
 	BUTTON_VINE,
+	/* Growing wood (issue 17, seed 002): a year of thickening a press (docs/wood.md) */
+	BUTTON_GROW,
 	BUTTON_COUNT
 };
 

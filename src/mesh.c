@@ -1115,7 +1115,9 @@ int tree_mesh_append_marked(struct tree_mesh *tm, const struct tree *t, size_t f
 		mark_start(&mk->leaves, &mk->nleaves, first_leaf, &tm->leaves);
 	}
 	for (size_t i = first_branch; i < t->nbranches && r == 0; i++) {
-		r = tube_build(&tm->bark, t, i, &sc);
+		/* a branch the wood holds has the wood's bark (wood.h): an empty part here */
+		if (!tree_branch_in_wood(t, i))
+			r = tube_build(&tm->bark, t, i, &sc);
 		if (mk)
 			mark_next(&mk->bark, &mk->nbark, &mk->cap_bark, &tm->bark);
 	}

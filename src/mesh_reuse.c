@@ -192,7 +192,8 @@ int tree_mesh_rebuild_from(struct tree_mesh *tm, struct tree_mesh_marks *mk, con
 	int ret;
 
 	/* the old parts must be known, made with the same sides, and ids fit the maps */
-	if (old->sides != t->sides || mk->nbark != old->nbranches + 1 || mk->nleaves != old->nleaves + 1 ||
+	/* (a tree's wood decides which branches have parts: not compared, rebuilt) */
+	if (old->sides != t->sides || old->wood || t->wood || mk->nbark != old->nbranches + 1 || mk->nleaves != old->nleaves + 1 ||
 	    t->nbranches >= INT32_MAX || old->nbranches >= INT32_MAX || old->nleaves >= INT32_MAX)
 		return tree_mesh_build_marked(tm, t, mk);
 	reuse_branch = malloc((t->nbranches + 1) * sizeof(*reuse_branch));

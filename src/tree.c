@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "tree_index.h"
+#include "wood.h"
 
 const char *origin_name(enum origin origin)
 {
@@ -45,6 +46,7 @@ void tree_clear(struct tree *t)
 	}
 	for (size_t i = 0; i < t->nvines; i++)
 		vine_finish(&t->vines[i]);
+	tree_wood_drop(t);
 	t->nbranches = 0;
 	t->nleaves = 0;
 	t->nvines = 0;
@@ -119,6 +121,20 @@ int tree_add_branch(struct tree *t, int parent, double parent_t, enum origin ori
 	b->npoints = npoints;
 	t->nbranches++;
 	return b->id;
+}
+
+void tree_wood_drop(struct tree *t)
+{
+	if (!t->wood)
+		return;
+	wood_finish(t->wood);
+	free(t->wood);
+	t->wood = NULL;
+}
+
+bool tree_branch_in_wood(const struct tree *t, size_t i)
+{
+	return t->wood && i < t->wood->nbranches && t->wood->voxelised[i];
 }
 
 int tree_add_vine(struct tree *t, struct vine *v)
@@ -220,6 +236,15 @@ int tree_copy(struct tree *dst, const struct tree *src)
 		}
 		dst->nvines++;
 	}
+	if (src->wood) {
+		dst->wood = malloc(sizeof(*dst->wood));
+		if (!dst->wood || wood_copy(dst->wood, src->wood) < 0) {
+			free(dst->wood);
+			dst->wood = NULL;
+			tree_clear(dst);
+			return -ENOMEM;
+		}
+	}
 	dst->lifted = src->lifted;
 	dst->sides = src->sides;
 	dst->season = src->season;
@@ -258,6 +283,8 @@ size_t tree_bytes(const struct tree *t)
 	for (size_t i = 0; i < t->nleaves; i++)
 		n += t->leaves[i].npoints * sizeof(struct vec3) * (t->leaves[i].local ? 2 : 1);
 	n += t->cap_vines * sizeof(*t->vines);
+	if (t->wood)
+		n += sizeof(*t->wood) + wood_bytes(t->wood);
 	for (size_t i = 0; i < t->nvines; i++)
 		n += vine_bytes(&t->vines[i]);
 	return n;

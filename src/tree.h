@@ -83,6 +83,10 @@ struct tree {
 	 * on the bark as it stood when planted; later edits leave them as they are. */
 	struct vine *vines;
 	size_t nvines, cap_vines;
+	/* Growing wood (issue 17, DOC_OP_GROW): the field of its thick branches through its
+	 * presses and the bark drawn from it (wood.h), or NULL: never grown, or an edit changed
+	 * its branches since. Owned, copied with the tree. */
+	struct wood *wood;
 	/* What sketching carries from stroke to stroke; rebuilt with the tree. */
 	int last_sketched;             /* the branch the latest stroke drew, or -1 */
 	uint64_t last_sketched_end_us; /* when that stroke ended */
@@ -103,6 +107,12 @@ int tree_add_branch(struct tree *t, int parent, double parent_t, enum origin ori
 		    const struct vec3 *points, const double *radii, size_t npoints);
 int tree_add_leaf(struct tree *t, int branch, enum origin origin, const struct vec3 *points,
 		  size_t npoints);
+struct wood;
+/* Drops t's wood (its branches show their swept bark again, their radii as the power law
+ * left them). */
+void tree_wood_drop(struct tree *t);
+/* Whether branch i's bark is the wood's (voxelised), not its swept tube. */
+bool tree_branch_in_wood(const struct tree *t, size_t i);
 /* Takes v (grown) into the tree; v is left empty. 0, -ENOSPC (TREE_MAX_VINES) or -ENOMEM
  * (v unchanged then). */
 int tree_add_vine(struct tree *t, struct vine *v);

@@ -235,6 +235,9 @@ struct wood {
 	/* the last press's */
 	struct wood_solve_stats solve;
 	double added, lost;
+	/* the bark of the voxelised branches: the field's iso-surface at 0.5 (wood_iso),
+	 * world metres; made by wood_press (empty before the first) */
+	struct mesh bark;
 };
 /* Applies the power law to t (its radii change: the twigs' meshes show it), and registers
  * its thick branches in a new grid (p->grid cells). 0, -EINVAL (no branch thick enough to
@@ -244,6 +247,13 @@ int wood_begin(struct wood *w, struct tree *t, const struct wood_params *p);
  * point fixed) or -ENOMEM. */
 int wood_press(struct wood *w);
 void wood_finish(struct wood *w);
+/* dst (not initialised) becomes a copy of src. 0 or -ENOMEM (dst empty then). */
+int wood_copy(struct wood *dst, const struct wood *src);
+/* Bytes w's arrays take. */
+size_t wood_bytes(const struct wood *w);
+/* The settings as one line of YAML in flow style, every key, that wood_read reads back
+ * bit for bit (how a drawing stores a grow press). 0 or -ENOMEM (out as it was). */
+int wood_write(const struct wood_params *p, struct buf *out);
 
 struct buf;
 /* voxels.json and voxels.bin (docs/wood.md, "Voxels dumped"): w's grid, settings and

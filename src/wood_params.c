@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include <string.h>
 
+#include "buf.h"
 #include "wood.h"
 #include "yaml_flat.h"
 
@@ -48,6 +49,35 @@ int wood_params_check(const struct wood_params *p, const char **key, struct erro
 			   p->wind[1], p->wind[2]);
 	if (p->wind[1] != 0.0)
 		return BAD("wind", "wind: %g up: the wind blows level (its y is 0)", p->wind[1]);
+	return 0;
+}
+
+static void key_number(struct buf *b, const char *key, double v)
+{
+	buf_printf(b, ", %s: ", key);
+	(void)buf_print_exact(b, v);
+}
+
+int wood_write(const struct wood_params *p, struct buf *out)
+{
+	size_t len = out->len;
+
+	/* the order of docs/wood-format.md */
+	buf_printf(out, "{edaha-wood: %d, mode: %s, grid: %d", WOOD_PARAMS_VERSION,
+		   p->mode == WOOD_CONIFER ? "conifer" : "broadleaf", p->grid);
+	key_number(out, "alpha", p->alpha);
+	key_number(out, "beta", p->beta);
+	key_number(out, "gravity", p->gravity);
+	buf_printf(out, ", wind: [");
+	for (int i = 0; i < 3; i++) {
+		buf_printf(out, i ? ", " : "");
+		(void)buf_print_exact(out, p->wind[i]);
+	}
+	buf_printf(out, "]}");
+	if (out->failed) {
+		out->len = len < out->len ? len : out->len;
+		return -ENOMEM;
+	}
 	return 0;
 }
 

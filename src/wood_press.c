@@ -63,6 +63,10 @@ int wood_press(struct wood *w)
 
 	if (ret == 0)
 		ret = wood_thicken(&w->g, &w->p, &w->added, &w->lost);
+	if (ret == 0) {
+		mesh_clear(&w->bark);
+		ret = wood_iso(&w->g, 0.5, &w->bark);
+	}
 	if (ret == 0)
 		w->presses++;
 	return ret;
@@ -73,5 +77,54 @@ void wood_finish(struct wood *w)
 	wood_grid_finish(&w->g);
 	free(w->density0);
 	free(w->voxelised);
+	mesh_finish(&w->bark);
 	memset(w, 0, sizeof(*w));
+}
+
+static void *dup(const void *src, size_t n)
+{
+	void *p = malloc(n ? n : 1);
+
+	if (p && n)
+		memcpy(p, src, n);
+	return p;
+}
+
+int wood_copy(struct wood *dst, const struct wood *src)
+{
+	size_t n = wood_cells(&src->g);
+	const struct mesh *b = &src->bark;
+
+	*dst = *src;
+	memset(&dst->g, 0, sizeof(dst->g));
+	dst->density0 = NULL;
+	dst->voxelised = NULL;
+	mesh_init(&dst->bark);
+	if (wood_grid_create(&dst->g, src->g.nx, src->g.ny, src->g.nz, src->g.origin, src->g.h) < 0)
+		goto fail;
+	memcpy(dst->g.density, src->g.density, n * sizeof(double));
+	memcpy(dst->g.compression, src->g.compression, n * sizeof(double));
+	memcpy(dst->g.tension, src->g.tension, n * sizeof(double));
+	memcpy(dst->g.displacement, src->g.displacement, 3 * n * sizeof(double));
+	memcpy(dst->g.flags, src->g.flags, n);
+	dst->density0 = dup(src->density0, n * sizeof(double));
+	dst->voxelised = dup(src->voxelised, src->nbranches * sizeof(bool));
+	if (!dst->density0 || !dst->voxelised || mesh_reserve(&dst->bark, b->nvertices, b->nindices) < 0)
+		goto fail;
+	memcpy(dst->bark.positions, b->positions, 3 * b->nvertices * sizeof(float));
+	memcpy(dst->bark.normals, b->normals, 3 * b->nvertices * sizeof(float));
+	memcpy(dst->bark.indices, b->indices, b->nindices * sizeof(uint32_t));
+	dst->bark.nvertices = b->nvertices;
+	dst->bark.nindices = b->nindices;
+	return 0;
+fail:
+	wood_finish(dst);
+	return -ENOMEM;
+}
+
+size_t wood_bytes(const struct wood *w)
+{
+	/* the grid's five fields (49 bytes a cell), density0, the bark */
+	return wood_cells(&w->g) * (49 + sizeof(double)) + w->nbranches +
+	       w->bark.cap_vertices * 6 * sizeof(float) + w->bark.cap_indices * sizeof(uint32_t);
 }

@@ -484,6 +484,24 @@ static void icon_blossom(const struct icon *ic)
 }
 
 /* Summer: the sun. */
+/* Grow: a cut trunk's year rings, thicker on one side (wood grows where it bears the
+ * load), and arrows out: a year older, a trunk thicker. */
+static void icon_grow(const struct icon *ic)
+{
+	static const double ring[4] = { 0.62, 0.44, 0.27, 0.1 };
+
+	for (int k = 0; k < 4; k++) {
+		/* each ring a little off centre, as real year rings are */
+		double off = 0.05 * (3 - k);
+
+		disc(ic, -off, 0.08 + off, ring[k], ic->ink);
+		if (k < 3)
+			disc(ic, -off + 0.02, 0.1 + off, ring[k] - 0.09, ic->bg);
+	}
+	segment(ic, 0.52, -0.5, 0.78, -0.76, LINE, ic->ink);
+	arrow_head(ic, 0.92, -0.9, 1.0, -1.0, 0.26, 0.16, ic->ink);
+}
+
 static void icon_sun(const struct icon *ic)
 {
 	disc(ic, 0.0, 0.0, 0.44, ic->ink);
@@ -647,6 +665,9 @@ void icon_draw(struct batch *b, enum button button, struct pt centre, double siz
 		break;
 	case BUTTON_LEAF_MAPLE:
 		icon_maple(&ic);
+		break;
+	case BUTTON_GROW:
+		icon_grow(&ic);
 		break;
 	case BUTTON_VINE:
 		icon_vine(&ic);

@@ -47,6 +47,7 @@ static const char *const button_words[BUTTON_COUNT][NLANGS] = {
 	[BUTTON_LEAF_HOP] = { "Hop", "ほっぷ" },
 	[BUTTON_LEAF_MAPLE] = { "Maple", "もみじ" },
 	[BUTTON_VINE] = { "Vine", "つる" },
+	[BUTTON_GROW] = { "Grow", "そだてる" },
 };
 
 /*

@@ -104,7 +104,7 @@ static void test_errors(void)
 {
 	expect_error("", "bad.edaha: empty file");
 	expect_error("hello\n", "bad.edaha:1: not an edaha drawing");
-	expect_error("# c\nedaha-drawing 8\n", "bad.edaha:2: drawing format version 8");
+	expect_error("# c\nedaha-drawing 9\n", "bad.edaha:2: drawing format version 9");
 	/* the editing ops came with version 4 */
 	expect_error("edaha-drawing 3\nseed 1\nhistory 1 1\nclone-add 5 0\n", "bad.edaha:4: unknown line");
 	expect_error("edaha-drawing 4\nseed 1\nhistory 1 1\nclone-add 5\n",
@@ -174,7 +174,7 @@ static void test_versions(void)
 	CHECK_INT(doc_serialize(&d, NULL, &b), 0);
 	/* read as version 2, written as the newest: a front-view drawing needs no camera */
 	CHECK(b.len > 0 && strstr((const char *)b.data, "\nlift 9\n") &&
-	      strncmp((const char *)b.data, "edaha-drawing 7\n", 16) == 0 &&
+	      strncmp((const char *)b.data, "edaha-drawing 8\n", 16) == 0 &&
 	      !strstr((const char *)b.data, "view"));
 	buf_finish(&b);
 	doc_finish(&d);

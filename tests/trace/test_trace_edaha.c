@@ -311,7 +311,7 @@ static const struct bad bad_inputs[] = {
 	  "unknown button \"3D\" (valid: 3d clone leaf propagate undo redo export new fixed-count "
 	  "fixed-size view season tpl-blank" },
 	/* the list goes on to the last name */
-	{ "edaha-trace 1\nscreen 1280 800\n5 button 3D pressed\n", 3, " leaf-maple vine)" },
+	{ "edaha-trace 1\nscreen 1280 800\n5 button 3D pressed\n", 3, " leaf-maple vine grow)" },
 	{ "edaha-trace 1\nscreen 1280 800\n5 button undo down\n", 3,
 	  "expected pressed or released, got \"down\"" },
 	{ "edaha-trace 1\nscreen 1280 800\n5 button undo\n", 3, "expected 4 fields for button, got 3" },

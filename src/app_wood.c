@@ -1,0 +1,108 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Growing wood on the visitor's tree (issue 17, seed 002; docs/wood.md): a grow op is a
+ * press, the first one applying the power law and registering the tree's thick branches;
+ * an import op puts a skeleton's branches on the canvas. An edit that changes the tree's
+ * branches drops its wood (the field no longer holds them).
+ */
+#include <errno.h>
+#include <stdlib.h>
+
+#include "app_private.h"
+#include "sketch.h"
+#include "tree_index.h"
+#include "wood.h"
+
+/* A press on t with the op's settings (those of t's first press stand for its grid). */
+int app_wood_apply(struct tree *t, const struct doc_op *op)
+{
+	struct wood *w = t->wood;
+	int ret;
+
+	if (!op->wood || !t->lifted || t->nbranches == 0)
+		return SKETCH_GREW; /* nothing to grow */
+	if (!w) {
+		w = malloc(sizeof(*w));
+		if (!w)
+			return -ENOMEM;
+		ret = wood_begin(w, t, op->wood);
+		if (ret < 0) {
+			free(w);
+			/* nothing thick enough to hold wood: the radii alone changed */
+			return ret == -EINVAL ? SKETCH_CHANGED : ret;
+		}
+		t->wood = w;
+	} else {
+		/* the settings but the grid may change from press to press */
+		int grid = w->p.grid;
+
+		w->p = *op->wood;
+		w->p.grid = grid;
+	}
+	ret = wood_press(w);
+	if (ret == -EINVAL) /* no point on the ground: nothing holds it up */
+		return SKETCH_CHANGED;
+	if (ret < 0) {
+		tree_wood_drop(t); /* half a press is no press: the document is the truth */
+		return ret;
+	}
+	return SKETCH_CHANGED;
+}
+
+int app_import_apply(struct tree *t, const struct doc_op *op)
+{
+	const struct tree *in = op->import;
+
+	tree_clear(t);
+	if (!in)
+		return SKETCH_CHANGED;
+	for (size_t i = 0; i < in->nbranches; i++) {
+		const struct branch *b = &in->branches[i];
+		int ret = tree_add_branch(t, b->parent, b->parent_t, b->origin, b->points, b->radii,
+					  b->npoints);
+
+		if (ret < 0)
+			return ret;
+		t->branches[ret].generation = b->generation;
+	}
+	t->lifted = true; /* a skeleton is 3D */
+	tree_index_keep(t);
+	return SKETCH_CHANGED;
+}
+
+bool app_op_keeps_wood(enum doc_op_kind kind, int result)
+{
+	switch (kind) {
+	case DOC_OP_GROW:
+	case DOC_OP_SEASON:
+	case DOC_OP_LEAFTYPE:
+	case DOC_OP_VINE:
+	case DOC_OP_ARRANGE: /* moves leaves, not branches */
+		return true;
+	default:
+		/* appended branches and leaves keep their swept bark beside the wood */
+		return result == SKETCH_GREW;
+	}
+}
+
+/* A year of growth: a grow press with the app's wood settings, on a 3D tree (a sketch is
+ * made 3D first, as the modes do). */
+int app_grow(struct app *app, uint64_t time_us)
+{
+	struct doc_op op = { .kind = DOC_OP_GROW, .time_us = time_us };
+	int ret = 0;
+
+	if (app->tree.nbranches == 0)
+		return 0;
+	if (!app->tree.lifted)
+		ret = app_press_button(app, BUTTON_3D, time_us);
+	if (ret < 0 || !app->tree.lifted)
+		return ret;
+	op.wood = malloc(sizeof(*op.wood));
+	if (!op.wood)
+		return -ENOMEM;
+	*op.wood = app->wood_settings;
+	ret = app_push_op(app, &op);
+	doc_op_finish(&op);
+	return ret == -ENOSPC ? 0 : ret;
+}
