@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "app.h"
+#include "buf.h"
 #include "docfile.h"
 #include "egl_headless.h"
 #include "fileio.h"
@@ -16,6 +17,7 @@
 #include "output.h"
 #include "render.h"
 #include "trace.h"
+#include "wood.h"
 
 /* Gaps put between inputs given one after another, so time always moves forward. */
 #define GAP_BETWEEN_INPUTS_US 100000
@@ -111,6 +113,46 @@ static int read_params(const char *path, struct gen_params *p)
 		return input_status(ret);
 	}
 	return 0;
+}
+
+/* The wood settings file (--wood), read before anything runs, as the tree parameters. */
+static int read_wood(const char *path, struct wood_params *p)
+{
+	struct error err = { { 0 } };
+	size_t len;
+	char *data;
+	int ret = fileio_read_all(path, 2 * WOOD_READ_MAX_BYTES, &data, &len, &err);
+
+	if (ret == 0) {
+		ret = wood_read(data, len, path, 0, p, &err);
+		free(data);
+	}
+	if (ret < 0) {
+		fprintf(stderr, "edaha: %s\n", err.msg);
+		return input_status(ret);
+	}
+	return 0;
+}
+
+/* --dump-voxels: the grown wood's voxels beside the other files (docs/wood.md). */
+static int dump_voxels(const struct app *app, const char *dir)
+{
+	struct error err = { { 0 } };
+	struct buf json, bin;
+	int ret;
+
+	buf_init(&json);
+	buf_init(&bin);
+	ret = wood_dump(app->tree.wood, &json, &bin);
+	if (ret == 0)
+		ret = fileio_write_atomic(dir, "voxels.json", json.data, json.len, &err);
+	if (ret == 0)
+		ret = fileio_write_atomic(dir, "voxels.bin", bin.data, bin.len, &err);
+	if (ret < 0)
+		fprintf(stderr, "edaha: %s\n", ret == -ENOMEM ? "out of memory" : err.msg);
+	buf_finish(&json);
+	buf_finish(&bin);
+	return ret < 0 ? 1 : 0;
 }
 
 /* Reads every trace before anything runs, so bad input stops the run before it starts. */
@@ -225,6 +267,8 @@ int headless_run(const struct options *o)
 	status = load_traces(o, traces);
 	if (status == 0 && o->generate)
 		status = read_params(o->generate, &params);
+	if (status == 0 && o->wood)
+		status = read_wood(o->wood, &r.app->wood_settings);
 	if (status == 0 && o->load)
 		status = load_doc(&r, o->load);
 	if (status == 0 && o->record) {
@@ -256,11 +300,19 @@ int headless_run(const struct options *o)
 		goto out;
 	}
 	status = r.status;
+	if (status == 0 && o->dump_voxels && !r.app->tree.wood) {
+		fprintf(stderr, "edaha: --dump-voxels: the tree has no wood to dump (it was never "
+			"grown: --press grow)\n");
+		status = 2;
+	}
 	if (status == 0)
 		status = render_and_write(&r);
+	if (status == 0 && o->dump_voxels)
+		status = dump_voxels(r.app, o->out_dir);
 	if (status == 0)
-		printf("edaha: wrote screen.png, model.glb, model.obj, model.mtl, skeleton.json and "
-		       "drawing.edaha to %s\n", o->out_dir);
+		printf("edaha: wrote screen.png, model.glb, model.obj, model.mtl, skeleton.json%s and "
+		       "drawing.edaha to %s\n", o->dump_voxels ? ", voxels.json, voxels.bin" : "",
+		       o->out_dir);
 out:
 	if (r.rec && trace_writer_destroy(r.rec) < 0 && status == 0) {
 		fprintf(stderr, "edaha: %s: cannot write the recording\n", o->record);

@@ -62,6 +62,10 @@ void options_usage(FILE *f)
 	      "  --vine NAME|FILE    the vine: a preset (default, morning-glory) or a vine\n"
 	      "                      file (docs/vine-format.md)\n"
 	      "  --plant X,Y,Z       where the vine is planted, metres\n"
+	      "  --wood FILE         what the grow button grows with: a wood settings file\n"
+	      "                      (docs/wood-format.md); default: broadleaf, the 64 grid\n"
+	      "  --dump-voxels       also write voxels.json and voxels.bin: the grown wood's\n"
+	      "                      voxels after the last grow press (docs/wood.md)\n"
 	      "\n"
 	      "Kiosk test runs (no effect on a normal kiosk):\n"
 	      "  --kiosk-frames N    draw a new frame every vblank, as if the drawing changed\n"
@@ -211,7 +215,7 @@ int options_parse(struct options *o, int argc, char **argv)
 	enum { OPT_HEADLESS = 256, OPT_SIZE, OPT_SEED, OPT_OUT, OPT_LOAD, OPT_REPLAY, OPT_PRESS,
 	       OPT_VIEW, OPT_RECORD, OPT_HELP, OPT_VERSION, OPT_KIOSK_FRAMES, OPT_SCREENSHOT,
 	       OPT_CONFIG, OPT_STATS, OPT_LANG, OPT_IDLE, OPT_GENERATE, OPT_LEAF, OPT_OPENING,
-	       OPT_SUPPORT, OPT_VINE, OPT_PLANT };
+	       OPT_SUPPORT, OPT_VINE, OPT_PLANT, OPT_WOOD, OPT_DUMP_VOXELS };
 	static const struct option longopts[] = {
 		{ "headless", no_argument, NULL, OPT_HEADLESS },
 		{ "size", required_argument, NULL, OPT_SIZE },
@@ -234,6 +238,8 @@ int options_parse(struct options *o, int argc, char **argv)
 		{ "support", required_argument, NULL, OPT_SUPPORT },
 		{ "vine", required_argument, NULL, OPT_VINE },
 		{ "plant", required_argument, NULL, OPT_PLANT },
+		{ "wood", required_argument, NULL, OPT_WOOD },
+		{ "dump-voxels", no_argument, NULL, OPT_DUMP_VOXELS },
 		{ "help", no_argument, NULL, OPT_HELP },
 		{ "version", no_argument, NULL, OPT_VERSION },
 		{ NULL, 0, NULL, 0 },
@@ -351,6 +357,14 @@ int options_parse(struct options *o, int argc, char **argv)
 						   "metres)", optarg);
 			o->plant_given = true;
 			break;
+		case OPT_WOOD:
+			if (!optarg[0])
+				return usage_error("%s needs a file name", "--wood");
+			o->wood = optarg;
+			break;
+		case OPT_DUMP_VOXELS:
+			o->dump_voxels = true;
+			break;
 		case OPT_HELP:
 			o->help = true;
 			break;
@@ -365,6 +379,11 @@ int options_parse(struct options *o, int argc, char **argv)
 		return usage_error("unexpected argument \"%s\"", argv[optind]);
 	if (o->help || o->version)
 		return 0;
+	if (!o->headless && (o->wood || o->dump_voxels))
+		return usage_error("%s needs --headless", o->wood ? "--wood" : "--dump-voxels");
+	if ((o->leaf || o->support) && (o->wood || o->dump_voxels))
+		return usage_error("%s is for a tree, not --leaf or --support",
+				   o->wood ? "--wood" : "--dump-voxels");
 	if (!o->headless && (o->out_dir || o->nsteps || o->view_given || o->idle_given || o->generate ||
 			     o->leaf || o->opening_given || o->support || o->vine || o->plant_given))
 		return usage_error("%s needs --headless",

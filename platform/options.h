@@ -44,6 +44,8 @@ struct options {
 	const char *leaf;       /* headless: an origami leaf alone, a preset's name or a file */
 	bool opening_given;     /* ...opened this far, 0..1 (else the design's rest) */
 	double opening;
+	const char *wood;       /* headless: the grow button's settings file (docs/wood-format.md) */
+	bool dump_voxels;       /* headless: voxels.json and voxels.bin of the grown wood */
 	const char *support;    /* headless: a vine on this OBJ support alone... */
 	const char *vine;       /* ...a vine preset's name or a vine file... */
 	bool plant_given;       /* ...planted here, metres */

@@ -11,6 +11,7 @@
 #include "leaf_colors.h"
 #include "leaf_tint.h"
 #include "render_private.h"
+#include "wood.h"
 #include "sketch_view.h"
 
 /* GLSL ES 1.00 so the same shaders run on GLES 2 and 3. With TINT defined, each vertex
@@ -146,6 +147,7 @@ void render_destroy(struct render *r)
 	if (!r)
 		return;
 	render_mesh_finish(&r->bark);
+	render_mesh_finish(&r->wood);
 	render_mesh_finish(&r->leaves);
 	render_vines_finish(r);
 	render_instanced_finish(r);
@@ -265,6 +267,14 @@ int render_upload_tree(struct render *r, const struct app *app)
 	r->upload_bytes = 0;
 	ret = render_mesh_upload(&r->bark, &app->mesh.bark, r->uint_indices);
 	r->upload_bytes += r->bark.bytes;
+	/* the wood's bark (issue 17): the thick branches' since the first grow */
+	if (ret == 0) {
+		static const struct mesh none;
+
+		ret = render_mesh_upload(&r->wood, app->tree.wood ? &app->tree.wood->bark : &none,
+					 r->uint_indices);
+		r->upload_bytes += r->wood.bytes;
+	}
 	if (ret == 0 && inst) {
 		/* the leaves go one way or the other: the unused copy gives its memory back */
 		render_mesh_finish(&r->leaves);
@@ -342,6 +352,7 @@ static int draw_tree(struct render *r, const struct app *app, const struct camer
 	glUniform1i(r->tree_two_sided, 0);
 	glUniform3fv(r->tree_color, 1, bark_color);
 	render_mesh_draw(r, &r->bark);
+	render_mesh_draw(r, &r->wood);
 	r2 = render_vines_draw(r, app);
 	if (ret == 0)
 		ret = r2;

@@ -116,6 +116,7 @@ struct render {
 	bool instanced;
 
 	struct render_mesh bark, leaves;
+	struct render_mesh wood; /* the tree's wood's bark (app->tree.wood), or empty */
 	struct render_instanced inst;
 	bool uploaded;       /* the meshes hold mesh_serial's tree */
 	bool uploaded_instanced; /* ...its leaves in inst, not in leaves */

@@ -1,0 +1,72 @@
+#!/bin/bash
+# SPDX-License-Identifier: MIT
+# The grow button on the command line (issue 17, seed 002): edaha --headless ... --press
+# grow [--wood FILE] [--dump-voxels] --out DIR, end to end: wood.sh TEST. Paths come from
+# meson's environment: EDAHA, SRC (the source tree).
+set -uo pipefail
+: "${EDAHA:?}" "${SRC:?}"
+T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-wood.XXXXXX")
+trap 'rm -rf "$T"' EXIT
+DEMO=$SRC/tests/data/demo.edaha-trace
+CHECK=$SRC/tests/wood_cli/check_voxels.py
+
+# fail, and edaha (the GL driver preloaded under ASan)
+. "$(dirname "$0")/../tools/edaha.sh"
+run() { # run ARGS...: a headless run that must succeed
+	local rc=0
+	edaha --headless "$@" >"$T/stdout" 2>"$T/stderr" || rc=$?
+	[ $rc -eq 0 ] || { cat "$T/stderr" >&2; fail "edaha $* exited $rc"; }
+}
+
+# Two presses on the demo's tree: the drawing holds them, the dumped voxels are at rest
+# and their forces are the springs', and the drawing replays to the same files.
+t_dump() {
+	run --replay "$DEMO" --press 3d --press grow --press grow --dump-voxels --out "$T/a"
+	[ "$(grep -c '^grow [0-9]* {edaha-wood: 1, mode: broadleaf, grid: 64,' "$T/a/drawing.edaha")" = 2 ] ||
+		fail "the drawing does not hold two grow presses"
+	grep -q '"step":2' "$T/a/voxels.json" || fail "voxels.json does not say two presses"
+	python3 "$CHECK" "$T/a" || fail "the dumped voxels are not at rest"
+	run --load "$T/a/drawing.edaha" --dump-voxels --out "$T/b"
+	for f in voxels.json voxels.bin skeleton.json model.glb model.obj drawing.edaha; do
+		cmp -s "$T/a/$f" "$T/b/$f" || fail "$f differs after --load"
+	done
+	echo "two presses dumped at rest and replayed"
+}
+
+# A settings file: conifer, in the drawing; no gravity, no growth; bad files refused.
+t_settings() {
+	printf 'edaha-wood: 1\nmode: conifer\ngravity: 0\n' >"$T/still.yaml"
+	run --replay "$DEMO" --press 3d --press grow --press grow --press grow --wood "$T/still.yaml" \
+		--dump-voxels --out "$T/s"
+	grep -q '^grow [0-9]* {edaha-wood: 1, mode: conifer, grid: 64, alpha: 10000, beta: 1, gravity: 0,' \
+		"$T/s/drawing.edaha" || fail "the conifer settings are not in the drawing"
+	python3 - "$T/s" <<'PY' || fail "without gravity the wood grew"
+import sys
+from array import array
+import json
+d = sys.argv[1]
+m = json.load(open(d + "/voxels.json"))
+raw = open(d + "/voxels.bin", "rb").read()
+n = m["dims"][0] * m["dims"][1] * m["dims"][2]
+f = m["fields"]
+a = raw[f["density0"]["offset"]:f["density0"]["offset"] + 8 * n]
+b = raw[f["density"]["offset"]:f["density"]["offset"] + 8 * n]
+sys.exit(0 if a == b else 1)
+PY
+	printf 'edaha-wood: 1\nmode: oak\n' >"$T/bad.yaml"
+	local rc=0
+	edaha --headless --replay "$DEMO" --press grow --wood "$T/bad.yaml" --out "$T/x" \
+		>/dev/null 2>"$T/err" || rc=$?
+	[ $rc -eq 2 ] || fail "a bad --wood file: exit $rc, wanted 2"
+	grep -qF "edaha: $T/bad.yaml:2: mode:" "$T/err" || { cat "$T/err"; fail "no FILE:LINE"; }
+	[ ! -e "$T/x" ] || fail "a bad --wood file wrote output"
+	rc=0
+	edaha --headless --replay "$DEMO" --dump-voxels --out "$T/y" >/dev/null 2>"$T/err" || rc=$?
+	[ $rc -eq 2 ] || fail "--dump-voxels of a tree never grown: exit $rc, wanted 2"
+	[ ! -e "$T/y" ] || fail "--dump-voxels of a tree never grown wrote output"
+	edaha --dump-voxels >/dev/null 2>"$T/err" && fail "--dump-voxels without --headless ran"
+	grep -q "needs --headless" "$T/err" || fail "--dump-voxels without --headless: no usage error"
+	echo "settings in the drawing, still without gravity, bad input refused"
+}
+
+"t_$1"
