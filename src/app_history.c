@@ -16,7 +16,8 @@
 
 static bool slow_op(const struct doc_op *op)
 {
-	return op->kind == DOC_OP_LIFT || op->kind == DOC_OP_PROPAGATE || op->kind == DOC_OP_GENERATE;
+	return op->kind == DOC_OP_LIFT || op->kind == DOC_OP_PROPAGATE || op->kind == DOC_OP_GENERATE ||
+	       op->kind == DOC_OP_GROW || op->kind == DOC_OP_VINE; /* a press; a vine's growth */
 }
 
 /* What app_push_op and replays apply: op on top of the app's tree, then the state is

@@ -20,10 +20,12 @@
 #include "rng.h"
 #include "sketch_view.h"
 #include "test.h"
+#include "wood.h"
 
 static struct pen clock = { .now_us = 1000 }; /* the apps' events, all on one clock */
 static long checks;
 static long vines_planted; /* by the sessions' taps in the vine mode */
+static long grows;         /* grow presses that left the tree with wood */
 
 /* ---- the reference: the document replayed from scratch ---- */
 
@@ -111,6 +113,13 @@ static void same_tree(const struct tree *a, const struct tree *b)
 		CHECK(memcmp(x->points, y->points, x->npoints * sizeof(*x->points)) == 0);
 		CHECK((x->local == NULL) == (y->local == NULL));
 		CHECK(!x->local || memcmp(x->local, y->local, x->npoints * sizeof(*x->local)) == 0);
+	}
+	CHECK((a->wood == NULL) == (b->wood == NULL));
+	if (a->wood && b->wood) {
+		CHECK_INT(a->wood->presses, b->wood->presses);
+		CHECK(wood_cells(&a->wood->g) == wood_cells(&b->wood->g));
+		CHECK(memcmp(a->wood->g.density, b->wood->g.density,
+			     wood_cells(&a->wood->g) * sizeof(double)) == 0);
 	}
 	CHECK_INT(a->nvines, b->nvines);
 	for (size_t i = 0; i < a->nvines && i < b->nvines; i++) {
@@ -358,6 +367,10 @@ static bool act(struct app *app, struct rng *r, int *propagations, bool gentle)
 		 * a vine tapped in at the trunk's foot, or a little beside it (issue 16) */
 		if (app_generated(app) && rng_next(r) % 3) {
 			press(app, (enum button)(BUTTON_GEN_MORE + rng_next(r) % 8));
+		} else if (app->tree.lifted && rng_next(r) % 5 == 0) {
+			/* a year of growth (issue 17) */
+			press(app, BUTTON_GROW);
+			grows += app->tree.wood != NULL;
 		} else if (app->tree.nbranches && rng_next(r) % 3 == 0) {
 			press(app, BUTTON_VINE);
 			if (app->mode == APP_MODE_VINE) {
@@ -519,8 +532,9 @@ int main(void)
 	session(7, 360, false, true);
 	session(8, 260, true, true);
 	test_oom();
-	fprintf(stderr, "%ld states compared with a full replay, %ld vines planted\n", checks,
-		vines_planted);
+	fprintf(stderr, "%ld states compared with a full replay, %ld vines planted, %ld grow "
+		"presses\n", checks, vines_planted, grows);
 	CHECK(vines_planted > 0);
+	CHECK(grows > 0);
 	return 0;
 }
