@@ -46,7 +46,9 @@ int app_wood_apply(struct tree *t, const struct doc_op *op)
 		tree_wood_drop(t); /* half a press is no press: the document is the truth */
 		return ret;
 	}
-	return SKETCH_CHANGED;
+	/* the new bark buries no leaf nor vine: they move out with it */
+	ret = wood_move_out(w, t);
+	return ret < 0 ? ret : SKETCH_CHANGED;
 }
 
 int app_import_apply(struct tree *t, const struct doc_op *op)

@@ -247,6 +247,21 @@ int wood_begin(struct wood *w, struct tree *t, const struct wood_params *p);
  * point fixed) or -ENOMEM. */
 int wood_press(struct wood *w);
 void wood_finish(struct wood *w);
+/*
+ * After a press (wood_move.c, docs/wood.md "Leaves and vines move out"): what the new bark
+ * buried moves out of it. Buried: the density there (wood_density_at) above 0.5. A leaf
+ * with a point buried moves rigidly across its branch's axis (at branch_t, towards its
+ * centroid; a leaf on a branch not voxelised, away from the nearest voxelised axis) by
+ * the smallest shift that unburies it and 0.05 voxel more; its `local` follows. A buried
+ * vine axis point (every shoot's, raw) moves away from the nearest voxelised axis to the
+ * surface plus the stem's radius; the smoothed axes and meshes, drawn from it, follow;
+ * contacts stay. Nothing else changes, bit for bit. Deterministic, no allocation:
+ * 0, or -EINVAL (w has no field).
+ */
+int wood_move_out(const struct wood *w, struct tree *t);
+/* The density at p (world metres): the voxel centres' samples trilinearly interpolated, 0
+ * outside the grid. */
+double wood_density_at(const struct wood_grid *g, struct vec3 p);
 /* dst (not initialised) becomes a copy of src. 0 or -ENOMEM (dst empty then). */
 int wood_copy(struct wood *dst, const struct wood *src);
 /* Bytes w's arrays take. */
