@@ -35,11 +35,12 @@ void options_usage(FILE *f)
 	      "  --replay FILE       feed recorded input: an edaha trace or a `libinput record`\n"
 	      "                      YAML file; may be repeated\n"
 	      "  --press BUTTON      press and release a button: 3d, clone, leaf, propagate,\n"
-	      "                      vine, undo, redo, export, new, fixed-count, fixed-size,\n"
-	      "                      view, season, tpl-blank, tpl-cherry, tpl-zelkova,\n"
-	      "                      tpl-hedge, tpl-ball, tpl-cone, tpl-palm, gen-more,\n"
-	      "                      gen-fewer, gen-wider, gen-narrower, gen-taller,\n"
-	      "                      gen-shorter, gen-leafier, gen-barer; may be repeated.\n"
+	      "                      vine, grow, undo, redo, export, new, fixed-count,\n"
+	      "                      fixed-size, view, season, tpl-blank, tpl-cherry,\n"
+	      "                      tpl-zelkova, tpl-hedge, tpl-ball, tpl-cone, tpl-palm,\n"
+	      "                      gen-more, gen-fewer, gen-wider, gen-narrower,\n"
+	      "                      gen-taller, gen-shorter, gen-leafier, gen-barer; may be\n"
+	      "                      repeated.\n"
 	      "                      --replay and --press apply in the order given.\n"
 	      "  --view YAW[,PITCH]  show a 3D tree turned: the camera's azimuth (90 = from\n"
 	      "                      the right) and height in degrees, after all input\n"
@@ -292,8 +293,8 @@ int options_parse(struct options *o, int argc, char **argv)
 			s.kind = STEP_PRESS;
 			if (!button_from_name(optarg, &s.button))
 				return usage_error("unknown button \"%s\" (3d, clone, leaf, propagate, vine, "
-						   "undo, redo, export, new, fixed-count, fixed-size, view, "
-						   "season, tpl-..., gen-...: see --help)", optarg);
+						   "grow, undo, redo, export, new, fixed-count, fixed-size, "
+						   "view, season, tpl-..., gen-...: see --help)", optarg);
 			if ((ret = add_step(o, s)))
 				return ret;
 			break;

@@ -4,14 +4,15 @@
 #include <math.h>
 
 static const enum button kiosk_buttons[LAYOUT_NBUTTONS] = {
-	/* tree tools, in pairs from the top: 3D | clone, leaf | spread, season | vine; grow
-	 * (issue 17) will take the fourth row's left place, under season */
+	/* tree tools, in pairs from the top: 3D | clone, leaf | spread, season | vine, grow
+	 * (the fourth row's left place, under season; its right one stays empty) */
 	BUTTON_3D, BUTTON_CLONE, BUTTON_LEAF, BUTTON_PROPAGATE, BUTTON_SEASON, BUTTON_VINE,
+	BUTTON_GROW,
 	/* actions, in pairs up from the bottom: undo | redo over new | save */
 	BUTTON_UNDO, BUTTON_REDO, BUTTON_NEW, BUTTON_EXPORT,
 };
 
-const struct layout_bar_list layout_kiosk_bar = { kiosk_buttons, LAYOUT_NBUTTONS, 6 };
+const struct layout_bar_list layout_kiosk_bar = { kiosk_buttons, LAYOUT_NBUTTONS, 7 };
 
 /*
  * Sizes follow the button height, a fraction of the screen height, so the screen looks the

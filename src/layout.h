@@ -13,10 +13,9 @@
  * agree.
  *
  * The bar, along the right edge of the screen, holds its buttons in two columns: the tree
- * tools in pairs from the top (3D | clone, leaf | spread, season | vine), the actions in
- * pairs from the bottom (undo | redo, new | save), with the rows between them left empty
- * so the two kinds read apart. Grow (issue 17) will be the eleventh, under season, and
- * empty rows will still part the groups. Two columns because eleven buttons in one would
+ * tools in pairs from the top (3D | clone, leaf | spread, season | vine, grow), the
+ * actions in pairs from the bottom (undo | redo, new | save), with the rows between them
+ * left empty so the two kinds read apart. Two columns because eleven buttons in one would
  * give each less than 9 mm on a 7-inch 800x480 screen, where the screen is 92 mm tall.
  * The bar's width is the same whatever it holds, so buttons added to a group take its
  * empty places and nothing else moves.
@@ -31,7 +30,7 @@
  */
 
 /* Buttons in the kiosk's bar. */
-#define LAYOUT_NBUTTONS 10
+#define LAYOUT_NBUTTONS 11
 /* Rows of the bar: the tree tools' from the top, the actions' from the bottom. */
 #define LAYOUT_TOOL_ROWS 4
 #define LAYOUT_ACTION_ROWS 2
@@ -56,7 +55,7 @@ struct layout_bar_list {
 	const enum button *buttons;
 	size_t n, ntools;
 };
-/* The kiosk's: 3D, clone, leaf, propagate, season, vine; undo, redo, new, export. */
+/* The kiosk's: 3D, clone, leaf, propagate, season, vine, grow; undo, redo, new, export. */
 extern const struct layout_bar_list layout_kiosk_bar;
 
 /*

@@ -483,25 +483,25 @@ static void icon_blossom(const struct icon *ic)
 	disc(ic, 0.0, 0.0, 0.09, ic->ink);
 }
 
-/* Summer: the sun. */
-/* Grow: a cut trunk's year rings, thicker on one side (wood grows where it bears the
- * load), and arrows out: a year older, a trunk thicker. */
+/* Grow: a cut trunk's year rings with a plus, "one more ring": a year older, a trunk
+ * thicker. The rings are off centre, wider to the lower left, as wood grows where it
+ * bears the load; bold and few, to read at a button's size. */
 static void icon_grow(const struct icon *ic)
 {
-	static const double ring[4] = { 0.62, 0.44, 0.27, 0.1 };
+	static const double ring[3] = { 0.9, 0.6, 0.31 };
+	double cx = 0.0, cy = 0.0;
 
-	for (int k = 0; k < 4; k++) {
-		/* each ring a little off centre, as real year rings are */
-		double off = 0.05 * (3 - k);
-
-		disc(ic, -off, 0.08 + off, ring[k], ic->ink);
-		if (k < 3)
-			disc(ic, -off + 0.02, 0.1 + off, ring[k] - 0.09, ic->bg);
+	for (int k = 0; k < 3; k++) {
+		cx = -0.1 + 0.06 * k;
+		cy = -0.06 - 0.06 * k;
+		disc(ic, cx, cy, ring[k], ic->ink);
+		disc(ic, cx, cy, ring[k] - LINE, ic->bg);
 	}
-	segment(ic, 0.52, -0.5, 0.78, -0.76, LINE, ic->ink);
-	arrow_head(ic, 0.92, -0.9, 1.0, -1.0, 0.26, 0.16, ic->ink);
+	disc(ic, cx, cy, 0.08, ic->ink); /* the pith */
+	badge(ic, 0.58, 0.58, true);
 }
 
+/* Summer: the sun. */
 static void icon_sun(const struct icon *ic)
 {
 	disc(ic, 0.0, 0.0, 0.44, ic->ink);

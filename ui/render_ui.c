@@ -61,6 +61,8 @@ static struct rgba accent(enum button button)
 		return (struct rgba){ 0.90f, 0.48f, 0.12f, 1.0f };
 	case BUTTON_VINE: /* a green-teal, apart from the leaf's green and save's teal */
 		return (struct rgba){ 0.0f, 0.56f, 0.50f, 1.0f };
+	case BUTTON_GROW: /* wood: a deep walnut, darker than the branches' brown below */
+		return (struct rgba){ 0.40f, 0.24f, 0.12f, 1.0f };
 	case BUTTON_EXPORT:
 		return (struct rgba){ 0.10f, 0.50f, 0.62f, 1.0f };
 	case BUTTON_GEN_MORE: /* branches: bark brown */
@@ -232,8 +234,9 @@ static bool button_enabled(const struct app *app, enum button button)
 		return doc_can_redo(&app->doc);
 	if (button == BUTTON_VIEW)
 		return !camera_is_front(app->camera);
-	if (button == BUTTON_SEASON)
-		return app->tree.nbranches > 0; /* an empty canvas has no season to show */
+	/* an empty canvas has no season to show, no wood to grow */
+	if (button == BUTTON_SEASON || button == BUTTON_GROW)
+		return app->tree.nbranches > 0;
 	if (button >= BUTTON_GEN_MORE && button <= BUTTON_GEN_BARER)
 		return app_gen_possible(app, button);
 	return true;

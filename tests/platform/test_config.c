@@ -131,6 +131,7 @@ static void test_good(const char *dir)
 	CHECK(l->set && strcmp(l->name, "led-vine") == 0 && !l->active_low);
 	CHECK(config_button_is_mode(BUTTON_VINE));
 	CHECK(!config_button_is_mode(BUTTON_SEASON));
+	CHECK(!config_button_is_mode(BUTTON_GROW)); /* an action: no state for an LED to show */
 	CHECK(!c.gpio.leds[BUTTON_CLONE].set);
 	free(path);
 
@@ -148,6 +149,16 @@ static void test_good(const char *dir)
 	static const char no_copy[] = "kiosk:\n  export_dir: none\n";
 	CHECK_INT(config_parse(no_copy, strlen(no_copy), "none", &c, NULL, &err), 0);
 	CHECK(c.kiosk.export_dir[0] == '\0' && c.usb.enabled);
+	/* grow (issue 17): a button like the others, with no LED */
+	static const char grow[] = "gpio:\n  buttons:\n    grow: { chip: pinctrl-bcm2711, "
+				   "line: GPIO20, active_low: true, pull_up: true }\n";
+	CHECK_INT(config_parse(grow, strlen(grow), "grow", &c, NULL, &err), 0);
+	l = &c.gpio.buttons[BUTTON_GROW];
+	CHECK(l->set && strcmp(l->name, "GPIO20") == 0 && l->active_low && l->pull_up);
+	CHECK_INT(l->conf_line, 3);
+	static const char grow_led[] = "gpio:\n  leds:\n    grow: { chip: a, line: 1 }\n";
+	CHECK_INT(config_parse(grow_led, strlen(grow_led), "grow-led", &c, NULL, &err), -EINVAL);
+	CHECK(strstr(err.msg, "grow-led:3:") && strstr(err.msg, "not grow"));
 	static const char mode[] = "display:\n  mode: 800x480\n";
 	CHECK_INT(config_parse(mode, strlen(mode), "mode", &c, NULL, &err), 0);
 	CHECK_INT(c.display.mode_w, 800);

@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * The on-screen layout: the bar's buttons (order, groups, sizes, no overlaps, targets,
- * hit-testing, canvas), the vine button beside season, the side strip's places, every
- * target at least 9 mm on a 10-inch 1280x800 and a 7-inch 800x480 screen (the 10 buttons
- * of today's bar and the 11 it will hold), and no stroke of the recorded traces
- * (tests/data, given as argv[1]) on the bar.
+ * hit-testing, canvas), the vine button beside season and the grow button under it, the
+ * side strip's places, every target at least 9 mm on a 10-inch 1280x800 and a 7-inch
+ * 800x480 screen, and no stroke of the recorded traces (tests/data, given as argv[1]) on
+ * the bar.
  */
 #include <dirent.h>
 #include <stdbool.h>
@@ -15,21 +15,12 @@
 #include "trace.h"
 #include "view.h"
 
-/* Grow (issue 17) is not a button yet: it stands in as BUTTON_COUNT. */
-#define FUTURE BUTTON_COUNT
-
 static const enum button expected_order[LAYOUT_NBUTTONS] = {
 	BUTTON_3D,   BUTTON_CLONE, BUTTON_LEAF, BUTTON_PROPAGATE, BUTTON_SEASON, BUTTON_VINE,
-	BUTTON_UNDO, BUTTON_REDO,  BUTTON_NEW,  BUTTON_EXPORT,
+	BUTTON_GROW, BUTTON_UNDO,  BUTTON_REDO, BUTTON_NEW,       BUTTON_EXPORT,
 };
 /* where they are in it */
-enum { SEASON = 4, VINE = 5, UNDO = 6, REDO = 7, NEW = 8, SAVE = 9 };
-
-static const enum button eleven[] = {
-	BUTTON_3D,   BUTTON_CLONE, BUTTON_LEAF, BUTTON_PROPAGATE, BUTTON_SEASON, BUTTON_VINE, FUTURE,
-	BUTTON_UNDO, BUTTON_REDO,  BUTTON_NEW,  BUTTON_EXPORT,
-};
-static const struct layout_bar_list eleven_bar = { eleven, 11, 7 };
+enum { SEASON = 4, VINE = 5, GROW = 6, UNDO = 7, REDO = 8, NEW = 9, SAVE = 10 };
 
 /* A screen of this many inches across its diagonal. */
 struct screen {
@@ -122,7 +113,7 @@ static void check_bar(const struct view *v, const struct layout_bar_list *list,
 static void check_screen(int width, int height, double min_canvas)
 {
 	struct view v;
-	struct layout_button b[LAYOUT_NBUTTONS], more[11];
+	struct layout_button b[LAYOUT_NBUTTONS];
 	struct layout_rect canvas, bar;
 	enum button hit;
 	double row_gap, group_gap;
@@ -155,6 +146,8 @@ static void check_screen(int width, int height, double min_canvas)
 	CHECK_NEAR(b[SEASON].x, b[0].x, 0);
 	CHECK_NEAR(b[VINE].x, b[1].x, 0);
 	CHECK_NEAR(b[VINE].y, b[SEASON].y, 0); /* season | vine */
+	CHECK_NEAR(b[GROW].x, b[SEASON].x, 0); /* grow under season */
+	CHECK(b[GROW].y > b[SEASON].y + b[SEASON].h);
 	CHECK_NEAR(b[UNDO].y, b[REDO].y, 0);
 	CHECK_NEAR(b[NEW].y, b[SAVE].y, 0);
 	CHECK(b[NEW].y > b[UNDO].y);
@@ -163,27 +156,13 @@ static void check_screen(int width, int height, double min_canvas)
 	CHECK_NEAR(b[1].target.y, 0, 0);
 	CHECK_NEAR(b[SAVE].target.x + b[SAVE].target.w, width, 0);
 	CHECK_NEAR(b[SAVE].target.y + b[SAVE].target.h, height, 0);
-	/* the tree tools and the actions read apart: the rows between them are empty */
+	/* the tree tools and the actions read apart: a whole empty row at least between them */
 	row_gap = b[2].y - (b[0].y + b[0].h);
-	group_gap = b[UNDO].y - (b[VINE].y + b[VINE].h);
-	CHECK(group_gap > 3.0 * row_gap);
-	CHECK(!layout_hit(&v, b[SEASON].x + 1, 0.5 * (b[SEASON].y + b[SEASON].h + b[UNDO].y), &hit));
-
-	/* eleven: grow takes the empty place under season, nothing else moves, nothing
-	 * overlaps, and a row still parts it from the actions */
-	CHECK_INT(layout_bar_buttons(&v, &eleven_bar, more, 11), 11);
-	check_bar(&v, &eleven_bar, more, 11);
-	for (size_t i = 0, j = 0; i < 11; i++) {
-		if (more[i].button == FUTURE)
-			continue;
-		CHECK_INT(more[i].button, b[j].button);
-		CHECK(memcmp(&more[i].x, &b[j].x, 4 * sizeof(double)) == 0);
-		j++;
-	}
-	CHECK_NEAR(more[6].x, b[SEASON].x, 0);
-	CHECK(more[6].y > b[SEASON].y + b[SEASON].h);
-	CHECK(!layout_hit(&v, more[6].x + more[6].w / 2, more[6].y + more[6].h / 2, &hit));
-	CHECK(more[6].y + more[6].h + row_gap + b[0].h < more[7].y);
+	group_gap = b[UNDO].y - (b[GROW].y + b[GROW].h);
+	CHECK(group_gap > 2.0 * row_gap + b[0].h);
+	CHECK(!layout_hit(&v, b[GROW].x + 1, 0.5 * (b[GROW].y + b[GROW].h + b[UNDO].y), &hit));
+	/* the place beside grow is empty */
+	CHECK(!layout_hit(&v, b[VINE].x + b[VINE].w / 2, b[GROW].y + b[GROW].h / 2, &hit));
 
 	/* every point of every button hits that button and no other */
 	for (int y = 0; y < height; y += 3) {
@@ -200,12 +179,13 @@ static void check_screen(int width, int height, double min_canvas)
 	}
 }
 
-/* The vine button (issue 16) on a kiosk's screen: in the bar once, beside season, its
- * centre and its corners pressing it, clear of every other button and target. */
-static void check_vine(const struct screen *s)
+/* A tree tool on a kiosk's screen: in the bar once, its centre and its corners pressing
+ * it, clear of every other button and target, above every action. Fills b and returns
+ * the tool's place in it. */
+static size_t check_tool(const struct screen *s, enum button tool,
+			 struct layout_button b[LAYOUT_NBUTTONS])
 {
 	struct view v;
-	struct layout_button b[LAYOUT_NBUTTONS];
 	struct layout_rect bar, vis;
 	size_t found = 0, at = 0;
 	enum button hit = BUTTON_COUNT;
@@ -214,7 +194,7 @@ static void check_vine(const struct screen *s)
 	CHECK_INT(layout_buttons(&v, b, LAYOUT_NBUTTONS), LAYOUT_NBUTTONS);
 	bar = layout_bar(&v);
 	for (size_t i = 0; i < LAYOUT_NBUTTONS; i++) {
-		if (b[i].button == BUTTON_VINE) {
+		if (b[i].button == tool) {
 			found++;
 			at = i;
 		}
@@ -223,11 +203,15 @@ static void check_vine(const struct screen *s)
 	vis = visible(&b[at]);
 	CHECK(vis.x >= bar.x && vis.x + vis.w <= s->width && vis.y >= 0 && vis.y + vis.h <= s->height);
 	CHECK(layout_hit(&v, vis.x + vis.w / 2, vis.y + vis.h / 2, &hit));
-	CHECK_INT(hit, BUTTON_VINE);
+	CHECK_INT(hit, tool);
 	CHECK(layout_hit(&v, vis.x + 0.5, vis.y + 0.5, &hit));
-	CHECK_INT(hit, BUTTON_VINE);
+	CHECK_INT(hit, tool);
+	CHECK(layout_hit(&v, vis.x + vis.w - 0.5, vis.y + 0.5, &hit));
+	CHECK_INT(hit, tool);
+	CHECK(layout_hit(&v, vis.x + 0.5, vis.y + vis.h - 0.5, &hit));
+	CHECK_INT(hit, tool);
 	CHECK(layout_hit(&v, vis.x + vis.w - 0.5, vis.y + vis.h - 0.5, &hit));
-	CHECK_INT(hit, BUTTON_VINE);
+	CHECK_INT(hit, tool);
 	for (size_t i = 0; i < LAYOUT_NBUTTONS; i++) {
 		struct layout_rect o = visible(&b[i]);
 
@@ -235,35 +219,52 @@ static void check_vine(const struct screen *s)
 			continue;
 		CHECK(!overlap(&vis, &o));
 		CHECK(!overlap(&b[at].target, &b[i].target));
-		/* season's right-hand neighbour, a tool above every action */
-		if (b[i].button == BUTTON_SEASON)
-			CHECK(b[i].y == vis.y && b[i].x + b[i].w < vis.x);
 		if (b[i].button == BUTTON_UNDO)
 			CHECK(vis.y + vis.h < b[i].y);
 	}
-	printf("%4.0f\" %dx%d vine at %.0f,%.0f %.0fx%.0f\n", s->inches, s->width, s->height, vis.x,
-	       vis.y, vis.w, vis.h);
+	printf("%4.0f\" %dx%d %s at %.0f,%.0f %.0fx%.0f\n", s->inches, s->width, s->height,
+	       button_name(tool), vis.x, vis.y, vis.w, vis.h);
+	return at;
 }
 
-/* Every target on the two screens a kiosk may have is at least 9 mm either way: the bar
- * today and with eleven buttons, the front view button, the side strip's places. */
+/* The vine button (issue 16): season's right-hand neighbour. */
+static void check_vine(const struct screen *s)
+{
+	struct layout_button b[LAYOUT_NBUTTONS];
+	size_t at = check_tool(s, BUTTON_VINE, b);
+
+	CHECK(b[SEASON].y == b[at].y && b[SEASON].x + b[SEASON].w < b[at].x);
+}
+
+/* The grow button (issue 17): under season, in the left column, with an empty row at
+ * least between it and the actions. */
+static void check_grow(const struct screen *s)
+{
+	struct layout_button b[LAYOUT_NBUTTONS];
+	size_t at = check_tool(s, BUTTON_GROW, b);
+	double row = b[2].y - b[0].y;
+
+	CHECK(b[SEASON].x == b[at].x && b[SEASON].y + b[SEASON].h < b[at].y);
+	CHECK_NEAR(b[at].y - b[SEASON].y, row, 0);
+	CHECK(b[at].y + row + b[at].h < b[UNDO].y);
+}
+
+/* Every target on the two screens a kiosk may have is at least 9 mm either way: the bar's,
+ * the front view button, the side strip's places. */
 static void check_targets(const struct screen *s)
 {
 	static const enum layout_side_kind kinds[] = { LAYOUT_SIDE_BUTTONS, LAYOUT_SIDE_CARDS,
 						       LAYOUT_SIDE_NAMED_CARDS };
 	static const char *const kind_names[] = { "side button", "card", "named card" };
 	struct view v;
-	struct layout_button b[11];
+	struct layout_button b[LAYOUT_NBUTTONS];
 	size_t n;
 
 	view_init(&v, s->width, s->height);
-	n = layout_buttons(&v, b, 11);
+	n = layout_buttons(&v, b, LAYOUT_NBUTTONS);
+	CHECK_INT(n, LAYOUT_NBUTTONS);
 	for (size_t i = 0; i < n; i++)
-		check_mm(s, "bar of 10", i, b[i].target);
-	n = layout_bar_buttons(&v, &eleven_bar, b, 11);
-	CHECK_INT(n, 11);
-	for (size_t i = 0; i < n; i++)
-		check_mm(s, "bar of 11", i, b[i].target);
+		check_mm(s, "bar", i, b[i].target);
 	check_mm(s, "front view", 0, layout_view_button(&v).target);
 	for (size_t k = 0; k < 3; k++) {
 		/* the New strip's seven cards, the eight parameter buttons */
@@ -398,6 +399,8 @@ int main(int argc, char **argv)
 	check_targets(&tablet7);
 	check_vine(&tablet10);
 	check_vine(&tablet7);
+	check_grow(&tablet10);
+	check_grow(&tablet7);
 	for (size_t k = 0; k < 3; k++) {
 		check_side(1280, 800, (enum layout_side_kind)k, 8);
 		check_side(800, 480, (enum layout_side_kind)k, 8);
