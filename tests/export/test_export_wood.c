@@ -249,12 +249,19 @@ static void obj_of(const struct tree *t, const struct tree_mesh *tm,
 	mtl->len--;
 }
 
+/* The line after l's, or NULL. */
+static const char *next_line(const char *l)
+{
+	l = strchr(l, '\n');
+	return l ? l + 1 : NULL;
+}
+
 /* Lines beginning with tag in [from, to) (to NULL: the end). */
 static size_t lines_starting(const char *from, const char *to, const char *tag)
 {
 	size_t n = 0, len = strlen(tag);
 
-	for (const char *l = from; l && *l && (!to || l < to); l = strchr(l, '\n'), l = l ? l + 1 : NULL)
+	for (const char *l = from; l && *l && (!to || l < to); l = next_line(l))
 		n += !strncmp(l, tag, len);
 	return n;
 }
@@ -264,7 +271,7 @@ static void check_faces(const char *text)
 {
 	size_t nv = lines_starting(text, NULL, "v "), nn = lines_starting(text, NULL, "vn ");
 
-	for (const char *l = text; l && *l; l = strchr(l, '\n'), l = l ? l + 1 : NULL) {
+	for (const char *l = text; l && *l; l = next_line(l)) {
 		unsigned long v[3], n[3];
 
 		if (strncmp(l, "f ", 2))
