@@ -24,12 +24,19 @@
  * leaves in the leaves' material, in summer's green, in spring's and autumn's palette's
  * first entry (mk describes the tree's own leaves only), in winter not at all. A tree
  * without vines has the bytes it had before vines.
+ *
+ * t's wood (t->wood, wood.h): m leaves out the swept tubes of the branches the wood holds
+ * (tree_branch_in_wood), so export_glb and export_obj write the wood's bark (wood->bark,
+ * the iso-surface, closed, smooth normals) after m's bark, in the bark's material; the
+ * twigs keep their swept tubes in m's bark. A tree without wood has the bytes it had
+ * before wood.
  */
 
 /* glTF 2.0 binary: y up, metres, normals, "bark" and double-sided leaves materials; in
  * spring and autumn the leaves' colours are their vertices' COLOR_0 (export_gltf.c). The
- * one mesh's primitives: "bark", "leaves", "vine" and "vine-leaves" (each left out when it
- * has no triangles), named so in their accessors' names. */
+ * one mesh's primitives: "bark", "wood" (the wood's bark, in the bark's material), "leaves",
+ * "vine" and "vine-leaves" (each left out when it has no triangles), named so in their
+ * accessors' names. */
 int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
 	       struct buf *out);
 /* The same for one mesh of leaves alone (an origami leaf, ori_mesh_append): the leaves'
@@ -38,7 +45,7 @@ int export_glb_leaf(const struct mesh *m, const char *name, struct buf *out);
 /* Wavefront OBJ with its MTL; the OBJ refers to the MTL as mtl_name (e.g. "model.mtl").
  * In spring and autumn the leaves' faces are grouped by colour, one material each
  * ("leaves-autumn-3": palette entry 3), and the MTL has the materials used. Objects "bark",
- * "leaves", "vine" and "vine-leaves", each when it has faces. */
+ * "wood" (usemtl bark), "leaves", "vine" and "vine-leaves", each when it has faces. */
 int export_obj(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
 	       const char *mtl_name, struct buf *obj, struct buf *mtl);
 /* Renames the MTL an OBJ made by export_obj refers to (its mtllib line), for an OBJ built
@@ -48,8 +55,8 @@ int export_obj_mtllib(struct buf *obj, const char *mtl_name);
 /* skeleton.json's "version": 2 since trees carry their vines (docs/skeleton-format.md,
  * Versions). */
 #define SKELETON_VERSION 2
-/* skeleton.json, see docs/skeleton-format.md: the tree, and its "vines" (vine_json.c)
- * when it has any. */
+/* skeleton.json, see docs/skeleton-format.md: the tree, its "wood" when it was grown, and
+ * its "vines" (vine_json.c) when it has any. */
 int export_skeleton(const struct tree *t, struct buf *out);
 struct json_object;
 /* The same as a json-c object, for writers that add a section (vine_json.c); NULL without

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "json_out.h"
+#include "wood.h"
 
 /* GLB container constants, glTF 2.0 spec section 4.4. */
 #define GLB_MAGIC 0x46546c67u      /* "glTF" */
@@ -93,15 +94,18 @@ struct glb_view {
 	enum glb_data kind;
 };
 
-/* The primitives, in the file's order: the tree's bark and leaves, then its vines' stems
- * and leaves (after the tree's, so a tree without vines has the bytes it had). */
-enum glb_prim { GLB_BARK, GLB_LEAVES, GLB_VINE, GLB_VINE_LEAVES, GLB_NPRIMS };
-static const char *const glb_prim_names[GLB_NPRIMS] = { "bark", "leaves", "vine", "vine-leaves" };
+/* The primitives, in the file's order: the tree's swept bark, its wood's bark (the
+ * voxelised branches', wood.h; the bark beside the bark), its leaves, then its vines'
+ * stems and leaves. A part that is not there is left out, so a tree without wood or vines
+ * has the bytes it had. */
+enum glb_prim { GLB_BARK, GLB_WOOD, GLB_LEAVES, GLB_VINE, GLB_VINE_LEAVES, GLB_NPRIMS };
+static const char *const glb_prim_names[GLB_NPRIMS] = { "bark", "wood", "leaves", "vine",
+							"vine-leaves" };
 
-/* The materials, each in the file once, numbered as first used. */
+/* The materials, each in the file once, numbered as first used; the wood is bark. */
 enum glb_mat { GLB_MAT_BARK, GLB_MAT_LEAVES, GLB_MAT_VINE, GLB_NMATS };
-static const enum glb_mat glb_prim_mat[GLB_NPRIMS] = { GLB_MAT_BARK, GLB_MAT_LEAVES, GLB_MAT_VINE,
-						       GLB_MAT_LEAVES };
+static const enum glb_mat glb_prim_mat[GLB_NPRIMS] = { GLB_MAT_BARK, GLB_MAT_BARK, GLB_MAT_LEAVES,
+						       GLB_MAT_VINE, GLB_MAT_LEAVES };
 
 /* What one GLB is made of. */
 struct glb_input {
@@ -455,7 +459,10 @@ int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tre
 	       struct buf *out)
 {
 	struct glb_input in = {
-		.mesh = { &m->bark, &m->leaves, NULL, NULL },
+		.mesh = { [GLB_BARK] = &m->bark,
+			  /* m leaves the voxelised branches out: their bark is the wood's */
+			  [GLB_WOOD] = t->wood ? &t->wood->bark : NULL,
+			  [GLB_LEAVES] = &m->leaves },
 		.how = export_look(t->season),
 		.season = t->season,
 		.name = "tree",
@@ -484,7 +491,7 @@ int export_glb_leaf(const struct mesh *m, const char *name, struct buf *out)
 {
 	/* no bark: the leaves' primitive alone, in summer's green */
 	const struct glb_input in = {
-		.mesh = { NULL, m, NULL, NULL },
+		.mesh = { [GLB_LEAVES] = m },
 		.how = EXPORT_LEAVES_GREEN,
 		.season = SEASON_SUMMER,
 		.name = name,

@@ -3,6 +3,7 @@
 #include "export_leaves.h"
 #include "export_vines.h"
 #include "numfmt.h"
+#include "wood.h"
 
 #include <errno.h>
 #include <math.h>
@@ -118,10 +119,11 @@ static int obj_colored_faces(struct buf *obj, const struct export_leaves *el, ui
 	return 0;
 }
 
-/* What one OBJ and its MTL are made of: the tree's meshes, then its vines' (after the
- * tree's, so a tree without vines has the bytes it had). */
+/* What one OBJ and its MTL are made of: the tree's meshes (its wood's bark after the swept
+ * bark), then its vines'; a part that is not there writes nothing, so a tree without wood
+ * or vines has the bytes it had. */
 struct obj_input {
-	const struct mesh *bark, *leaves, *vine, *vine_leaves;
+	const struct mesh *bark, *wood, *leaves, *vine, *vine_leaves;
 	enum export_look how;
 	/* spring, autumn: the tree's leaves by their marks, the vines' in one part */
 	const struct export_leaves *colors, *vine_colors;
@@ -132,15 +134,16 @@ struct obj_count {
 	uint32_t nv, nn;
 };
 
-/* A closed surface (the bark, the vines' stems): its vertices, normals and faces behind
- * one material. */
-static int obj_solid(struct buf *obj, const struct mesh *m, const char *name, struct obj_count *c)
+/* A closed surface (the bark, the wood's bark, the vines' stems): its vertices, normals
+ * and faces behind one material. m may be NULL: nothing. */
+static int obj_solid(struct buf *obj, const struct mesh *m, const char *name, const char *mat,
+		     struct obj_count *c)
 {
 	int r;
 
-	if (m->nindices < 3)
+	if (!m || m->nindices < 3)
 		return 0;
-	if ((r = buf_printf(obj, "o %s\nusemtl %s\n", name, name)) < 0 ||
+	if ((r = buf_printf(obj, "o %s\nusemtl %s\n", name, mat)) < 0 ||
 	    (r = obj_vec3s(obj, "v", m->positions, m->nvertices, 1.0)) < 0 ||
 	    (r = obj_vec3s(obj, "vn", m->normals, m->nvertices, 1.0)) < 0 ||
 	    (r = obj_faces(obj, m, 0, m->nindices, c->nv + 1, c->nn + 1, false)) < 0)
@@ -183,11 +186,13 @@ static int obj_write(const struct obj_input *in, const char *mtl_name, struct bu
 
 	r = buf_printf(obj, "# edaha tree: metres, y up\nmtllib %s\n", mtl_name);
 	if (r >= 0)
-		r = obj_solid(obj, in->bark, "bark", &c);
+		r = obj_solid(obj, in->bark, "bark", "bark", &c);
+	if (r >= 0)
+		r = obj_solid(obj, in->wood, "wood", "bark", &c);
 	if (r >= 0)
 		r = obj_leaves(obj, in->leaves, "leaves", in->how, in->colors, &c);
 	if (r >= 0)
-		r = obj_solid(obj, in->vine, "vine", &c);
+		r = obj_solid(obj, in->vine, "vine", "vine", &c);
 	if (r >= 0)
 		r = obj_leaves(obj, in->vine_leaves, "vine-leaves", in->how, in->vine_colors, &c);
 	return r;
@@ -252,6 +257,8 @@ static bool obj_fits(const struct obj_input *in)
 	if (in->how != EXPORT_LEAVES_NONE)
 		leaf_normals = 2 * (in->leaves->nvertices + in->vine_leaves->nvertices);
 	n = in->bark->nvertices + in->vine->nvertices + leaf_normals;
+	if (in->wood)
+		n += in->wood->nvertices;
 	return n < UINT32_MAX;
 }
 
@@ -259,8 +266,9 @@ int export_obj(const struct tree *t, const struct tree_mesh *m, const struct tre
 	       const char *mtl_name, struct buf *obj, struct buf *mtl)
 {
 	size_t obj_start = obj->len, mtl_start = mtl->len;
-	struct obj_input in = { &m->bark, &m->leaves, NULL, NULL, export_look(t->season), NULL,
-				NULL };
+	/* m leaves the voxelised branches out: their bark is the wood's */
+	struct obj_input in = { &m->bark, t->wood ? &t->wood->bark : NULL, &m->leaves, NULL, NULL,
+				export_look(t->season), NULL, NULL };
 	struct export_leaves el, vel;
 	struct export_vines ev;
 	int r;

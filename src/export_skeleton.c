@@ -8,6 +8,7 @@
 #include "json_out.h"
 #include "ori_kinds.h"
 #include "vine_json.h"
+#include "wood.h"
 
 #define SKELETON_FORMAT "edaha-skeleton"
 
@@ -58,6 +59,35 @@ static struct json_object *jleaf(const struct leaf *l)
 	return json_out_set(o, "points", jpoints(l->points, l->npoints));
 }
 
+/* The tree's wood (docs/skeleton-format.md): its presses and grid, and which branches it
+ * holds (their bark is the wood's in the meshes). */
+static struct json_object *jwood(const struct tree *t)
+{
+	const struct wood *w = t->wood;
+	const struct wood_grid *g = &w->g;
+	struct json_object *o = json_object_new_object();
+	struct json_object *grid = json_object_new_array_ext(3);
+	struct json_object *origin = json_object_new_array_ext(3);
+	struct json_object *ids = json_object_new_array();
+
+	grid = json_out_push(grid, json_object_new_int(g->nx));
+	grid = json_out_push(grid, json_object_new_int(g->ny));
+	grid = json_out_push(grid, json_object_new_int(g->nz));
+	origin = json_out_push(origin, json_out_num(g->origin.x));
+	origin = json_out_push(origin, json_out_num(g->origin.y));
+	origin = json_out_push(origin, json_out_num(g->origin.z));
+	for (size_t i = 0; i < t->nbranches; i++)
+		if (tree_branch_in_wood(t, i))
+			ids = json_out_push(ids, json_object_new_int(t->branches[i].id));
+	o = json_out_set(o, "presses", json_object_new_int(w->presses));
+	o = json_out_set(o, "mode", json_object_new_string(w->p.mode == WOOD_CONIFER ? "conifer"
+										   : "broadleaf"));
+	o = json_out_set(o, "grid", grid);
+	o = json_out_set(o, "voxel", json_out_num(g->h));
+	o = json_out_set(o, "origin", origin);
+	return json_out_set(o, "branches", ids);
+}
+
 struct json_object *export_skeleton_object(const struct tree *t)
 {
 	struct json_object *root = json_object_new_object();
@@ -82,6 +112,9 @@ struct json_object *export_skeleton_object(const struct tree *t)
 	root = json_out_set(root, "season", json_object_new_string(season_name(t->season)));
 	root = json_out_set(root, "branches", branches);
 	root = json_out_set(root, "leaves", leaves);
+	/* absent without wood: a tree never grown has the keys it always had */
+	if (t->wood)
+		root = json_out_set(root, "wood", jwood(t));
 	/* absent without vines: a tree without them has the keys it always had */
 	if (t->nvines > 0)
 		root = vine_json_set(root, t->vines, t->nvines);

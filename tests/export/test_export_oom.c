@@ -2,8 +2,8 @@
 /*
  * Allocation failure: fails the 1st, 2nd, ... allocation of tree_mesh_build and every
  * exporter in turn, the glTF and OBJ exporters in every season, a tree with a vine too
- * (the exporters mesh it); each must return -ENOMEM, leave nothing half-built and leak
- * nothing.
+ * (the exporters mesh it) and a grown tree (its wood's bark, skeleton.json's "wood");
+ * each must return -ENOMEM, leave nothing half-built and leak nothing.
  * Allocations fail through tests/fail_alloc.c, which replaces malloc & co., so it is not
  * built with sanitizers, which replace them too.
  */
@@ -18,6 +18,7 @@
 #include "mesh.h"
 #include "synth_tree.h"
 #include "synth_vine.h"
+#include "synth_wood.h"
 #include "test.h"
 #include "tree.h"
 
@@ -141,6 +142,34 @@ static void vine_tree(void)
 	tree_finish(&t);
 }
 
+/* The glTF and OBJ exporters of a grown tree (its wood's bark), and its skeleton. */
+static void wood_tree(void)
+{
+	struct tree t;
+	struct tree_mesh tm;
+	struct tree_mesh_marks mk;
+	struct job j = { &t, &tm, &mk };
+	long n;
+
+	tree_init(&t);
+	tree_mesh_init(&tm);
+	tree_mesh_marks_init(&mk);
+	CHECK_INT(synth_wood_tree(&t, 1, 1 /* broadleaf */), 0);
+	CHECK_INT(tree_mesh_build_marked(&tm, &t, &mk), 0);
+	n = exhaust(op_glb, &j);
+	printf("export_glb of a grown tree: %ld allocations, each failed once\n", n);
+	CHECK(n > 0);
+	n = exhaust(op_obj, &j);
+	printf("export_obj of a grown tree: %ld allocations, each failed once\n", n);
+	CHECK(n > 0);
+	n = exhaust(op_skeleton, &j);
+	printf("export_skeleton of a grown tree: %ld allocations, each failed once\n", n);
+	CHECK(n > 0);
+	tree_mesh_marks_finish(&mk);
+	tree_mesh_finish(&tm);
+	tree_finish(&t);
+}
+
 int main(void)
 {
 	struct tree t;
@@ -179,5 +208,6 @@ int main(void)
 	tree_mesh_finish(&tm);
 	tree_finish(&t);
 	vine_tree();
+	wood_tree();
 	return 0;
 }

@@ -4,8 +4,10 @@
  * validator, assimp): DIR/empty.glb, one-branch.glb, concave-leaf.glb, synth-500.glb,
  * plus synth-500.obj/.mtl and synth-500.skeleton.json, all in summer (summer.sha256 has
  * what they were before seasons); synth-500-SEASON.glb/.obj/.mtl for spring, autumn
- * and winter; and a trunk with two vines (synth_vine_tree) in every season,
- * vines-SEASON.glb/.obj/.mtl. See validate_samples.sh.
+ * and winter; a trunk with two vines (synth_vine_tree) in every season,
+ * vines-SEASON.glb/.obj/.mtl; and a tree grown a press (synth_wood_tree: the wood's bark
+ * beside the twigs' swept tubes) in summer and winter, wood-SEASON.glb/.obj/.mtl, with
+ * wood.skeleton.json. See validate_samples.sh.
  */
 #include <errno.h>
 #include <stdio.h>
@@ -16,7 +18,9 @@
 #include "mesh.h"
 #include "synth_tree.h"
 #include "synth_vine.h"
+#include "synth_wood.h"
 #include "tree.h"
+#include "wood.h"
 
 static int write_file(const char *dir, const char *name, const struct buf *b)
 {
@@ -171,6 +175,24 @@ static int vine_seasons(const char *dir, struct tree *t)
 	return r < 0 ? r : write_seasons(dir, "vines", t, seasons, 4);
 }
 
+/* A tree grown a press (broadleaf), with leaves and without (winter), and its skeleton. */
+static int wood_seasons(const char *dir, struct tree *t)
+{
+	static const enum season seasons[] = { SEASON_SUMMER, SEASON_WINTER };
+	struct buf skel;
+	int r = synth_wood_tree(t, 1, WOOD_BROADLEAF);
+
+	if (r >= 0)
+		r = write_seasons(dir, "wood", t, seasons, 2);
+	buf_init(&skel);
+	if (r >= 0)
+		r = export_skeleton(t, &skel);
+	if (r >= 0)
+		r = write_file(dir, "wood.skeleton.json", &skel);
+	buf_finish(&skel);
+	return r;
+}
+
 int main(int argc, char **argv)
 {
 	struct tree t;
@@ -201,6 +223,8 @@ int main(int argc, char **argv)
 		r = synth_seasons(argv[1], &t);
 	if (r >= 0)
 		r = vine_seasons(argv[1], &t);
+	if (r >= 0)
+		r = wood_seasons(argv[1], &t);
 	tree_finish(&t);
 	if (r < 0) {
 		fprintf(stderr, "write_samples: %s\n", strerror(-r));
