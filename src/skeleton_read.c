@@ -224,7 +224,9 @@ static int parse_json(struct sk *r, struct json_object **root)
 		/* the text's end: a number at the top level ends here, else it is cut short */
 		*root = json_tokener_parse_ex(tok, "", 1);
 		e = json_tokener_get_error(tok);
-		end = r->len;
+		end = r->len; /* cut short: the line of the text's last character */
+		while (end > 0 && is_ws(r->s[end - 1]))
+			end--;
 	}
 	json_tokener_free(tok);
 	if (e != json_tokener_success) {
@@ -311,20 +313,23 @@ static int read_head(const struct sk *r, struct json_object *b, size_t i, int *p
 static int read_number(const struct sk *r, struct json_object *m, double lo, double hi,
 		       size_t i, const char *key, size_t k, size_t j, double *v)
 {
+	const char *wrong = NULL;
 	char what[64];
-	size_t at = where(r, i, key, k, j);
 
+	if (!get_number(m, v))
+		wrong = "expected a number";
+	else if (!isfinite(*v))
+		wrong = "not a finite number";
+	else if (*v >= lo && *v <= hi)
+		return 0;
+	/* only now: finding the value's line walks the text */
 	if (j == NONE)
 		snprintf(what, sizeof(what), "branch %zu: radius %zu", i, k);
 	else
 		snprintf(what, sizeof(what), "branch %zu: point %zu: %c", i, k, "xyz"[j % 3]);
-	if (!get_number(m, v))
-		return fail(r, at, "%s: expected a number", what);
-	if (!isfinite(*v))
-		return fail(r, at, "%s: not a finite number", what);
-	if (*v < lo || *v > hi)
-		return fail(r, at, "%s: %g is out of range %g..%g", what, *v, lo, hi);
-	return 0;
+	if (wrong)
+		return fail(r, where(r, i, key, k, j), "%s: %s", what, wrong);
+	return fail(r, where(r, i, key, k, j), "%s: %g is out of range %g..%g", what, *v, lo, hi);
 }
 
 static int read_point(const struct sk *r, struct json_object *a, size_t i, size_t k,
