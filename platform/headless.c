@@ -16,6 +16,7 @@
 #include "font_file.h"
 #include "output.h"
 #include "render.h"
+#include "skeleton_read.h"
 #include "trace.h"
 #include "wood.h"
 
@@ -125,6 +126,25 @@ static int read_wood(const char *path, struct wood_params *p)
 
 	if (ret == 0) {
 		ret = wood_read(data, len, path, 0, p, &err);
+		free(data);
+	}
+	if (ret < 0) {
+		fprintf(stderr, "edaha: %s\n", err.msg);
+		return input_status(ret);
+	}
+	return 0;
+}
+
+/* The skeleton.json's branches, read before anything runs as the parameter file is. */
+static int read_skeleton(const char *path, struct tree *t)
+{
+	struct error err = { { 0 } };
+	size_t len;
+	char *data;
+	int ret = fileio_read_all(path, SKELETON_READ_MAX_BYTES, &data, &len, &err);
+
+	if (ret == 0) {
+		ret = skeleton_read(data, len, path, t, &err);
 		free(data);
 	}
 	if (ret < 0) {
@@ -254,10 +274,12 @@ int headless_run(const struct options *o)
 {
 	struct run r = { .o = o };
 	struct gen_params params;
+	struct tree skeleton;
 	struct trace *traces = calloc(o->nsteps ? o->nsteps : 1, sizeof(*traces));
 	struct error err = { { 0 } };
 	int status;
 
+	tree_init(&skeleton);
 	r.app = app_create(o->width, o->height, o->seed);
 	if (!traces || !r.app) {
 		fprintf(stderr, "edaha: out of memory\n");
@@ -269,6 +291,8 @@ int headless_run(const struct options *o)
 		status = read_params(o->generate, &params);
 	if (status == 0 && o->wood)
 		status = read_wood(o->wood, &r.app->wood_settings);
+	if (status == 0 && o->skeleton)
+		status = read_skeleton(o->skeleton, &skeleton);
 	if (status == 0 && o->load)
 		status = load_doc(&r, o->load);
 	if (status == 0 && o->record) {
@@ -283,6 +307,18 @@ int headless_run(const struct options *o)
 	/* the tree first, as a template tap on the canvas (or on the loaded drawing) */
 	if (o->generate && app_generate(r.app, &params, r.now_us + GAP_BETWEEN_INPUTS_US) == 0)
 		r.now_us += GAP_BETWEEN_INPUTS_US;
+	/* or the skeleton's branches, as the drawing's first op */
+	if (o->skeleton) {
+		int ret = app_import(r.app, &skeleton, r.now_us + GAP_BETWEEN_INPUTS_US);
+
+		if (ret < 0) {
+			fprintf(stderr, "edaha: %s: %s\n", o->skeleton,
+				ret == -ENOMEM ? "out of memory" : "too big for a drawing");
+			status = ret == -ENOMEM ? 1 : 2;
+			goto out;
+		}
+		r.now_us += GAP_BETWEEN_INPUTS_US;
+	}
 	for (size_t i = 0; i < o->nsteps; i++) {
 		if (o->steps[i].kind == STEP_REPLAY)
 			replay(&r, &traces[i]);
@@ -321,6 +357,7 @@ out:
 	for (size_t i = 0; traces && i < o->nsteps; i++)
 		trace_finish(&traces[i]);
 	free(traces);
+	tree_finish(&skeleton);
 	app_destroy(r.app);
 	return status;
 }

@@ -32,6 +32,11 @@ void options_usage(FILE *f)
 	      "  --generate FILE     start from the tree a parameter file describes (a\n"
 	      "                      functional tree: docs/tree-params.md); --replay,\n"
 	      "                      --press and --view apply after it\n"
+	      "  --skeleton FILE.json  start from the branches of a skeleton.json (as\n"
+	      "                      edaha writes it: docs/skeleton-format.md; its leaves and\n"
+	      "                      vines are left out), a 3D tree: an import op of the\n"
+	      "                      drawing; --replay, --press and --view apply after it;\n"
+	      "                      not with --load or --generate (docs/wood.md)\n"
 	      "  --replay FILE       feed recorded input: an edaha trace or a `libinput record`\n"
 	      "                      YAML file; may be repeated\n"
 	      "  --press BUTTON      press and release a button: 3d, clone, leaf, propagate,\n"
@@ -216,7 +221,7 @@ int options_parse(struct options *o, int argc, char **argv)
 	enum { OPT_HEADLESS = 256, OPT_SIZE, OPT_SEED, OPT_OUT, OPT_LOAD, OPT_REPLAY, OPT_PRESS,
 	       OPT_VIEW, OPT_RECORD, OPT_HELP, OPT_VERSION, OPT_KIOSK_FRAMES, OPT_SCREENSHOT,
 	       OPT_CONFIG, OPT_STATS, OPT_LANG, OPT_IDLE, OPT_GENERATE, OPT_LEAF, OPT_OPENING,
-	       OPT_SUPPORT, OPT_VINE, OPT_PLANT, OPT_WOOD, OPT_DUMP_VOXELS };
+	       OPT_SUPPORT, OPT_VINE, OPT_PLANT, OPT_WOOD, OPT_DUMP_VOXELS, OPT_SKELETON };
 	static const struct option longopts[] = {
 		{ "headless", no_argument, NULL, OPT_HEADLESS },
 		{ "size", required_argument, NULL, OPT_SIZE },
@@ -224,6 +229,7 @@ int options_parse(struct options *o, int argc, char **argv)
 		{ "out", required_argument, NULL, OPT_OUT },
 		{ "load", required_argument, NULL, OPT_LOAD },
 		{ "generate", required_argument, NULL, OPT_GENERATE },
+		{ "skeleton", required_argument, NULL, OPT_SKELETON },
 		{ "replay", required_argument, NULL, OPT_REPLAY },
 		{ "press", required_argument, NULL, OPT_PRESS },
 		{ "view", required_argument, NULL, OPT_VIEW },
@@ -279,6 +285,11 @@ int options_parse(struct options *o, int argc, char **argv)
 			if (!optarg[0])
 				return usage_error("%s needs a file name", "--generate");
 			o->generate = optarg;
+			break;
+		case OPT_SKELETON:
+			if (!optarg[0])
+				return usage_error("%s needs a file name", "--skeleton");
+			o->skeleton = optarg;
 			break;
 		case OPT_RECORD:
 			o->record = optarg;
@@ -393,6 +404,13 @@ int options_parse(struct options *o, int argc, char **argv)
 				   o->leaf ? "--leaf" : o->opening_given ? "--opening" :
 				   o->support ? "--support" : o->vine ? "--vine" :
 				   o->plant_given ? "--plant" : "--idle");
+	if (o->skeleton && !o->headless)
+		return usage_error("%s needs --headless", "--skeleton");
+	/* the skeleton is the start of a new drawing, as a parameter file is */
+	if (o->skeleton && (o->load || o->generate || o->leaf || o->support))
+		return usage_error("%s does not go with --skeleton",
+				   o->load ? "--load" : o->generate ? "--generate" :
+				   o->leaf ? "--leaf" : "--support");
 	if (o->headless && (o->kiosk_frames || o->screenshot || o->config || o->stats))
 		return usage_error("%s is for the kiosk, not --headless",
 				   o->kiosk_frames ? "--kiosk-frames" : o->screenshot ? "--screenshot" :

@@ -28,6 +28,7 @@ struct options {
 	const char *out_dir;
 	const char *load;
 	const char *generate; /* a tree parameter file (docs/tree-params.md) */
+	const char *skeleton; /* headless: start from a skeleton.json's branches */
 	const char *record;
 	bool view_given;
 	double view_yaw, view_pitch; /* degrees */

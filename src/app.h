@@ -257,6 +257,10 @@ int app_rebuild(struct app *app);
 /* Puts the tree p describes on the canvas, as a template tap does (--generate): one
  * undoable op. 0, -ENOMEM. */
 int app_generate(struct app *app, const struct gen_params *p, uint64_t time_us);
+/* Puts branches (a tree of branches only, as skeleton_read gives) on the canvas as one
+ * undoable import op (--skeleton); branches is left empty. 0, -ENOMEM, or -ENOSPC (past
+ * a DOC_MAX_ limit: nothing changed). */
+int app_import(struct app *app, struct tree *branches, uint64_t time_us);
 /* The generate op of the tree on the canvas while nobody has edited it by hand (season
  * changes aside), or NULL: the parameter buttons work on it. */
 const struct doc_op *app_generated(const struct app *app);

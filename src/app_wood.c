@@ -72,6 +72,30 @@ int app_import_apply(struct tree *t, const struct doc_op *op)
 	return SKETCH_CHANGED;
 }
 
+/* --skeleton: as a template tap puts a tree on the canvas (app_generate.c). */
+int app_import(struct app *app, struct tree *branches, uint64_t time_us)
+{
+	struct doc_op op = { .kind = DOC_OP_IMPORT, .time_us = time_us };
+	int ret;
+
+	op.import = malloc(sizeof(*op.import));
+	if (!op.import)
+		return -ENOMEM;
+	tree_init(op.import);
+	tree_swap(op.import, branches);
+	app->mode = APP_MODE_SKETCH;
+	app->selected = -1;
+	app_clear_suggestions(app);
+	ret = app_push_op(app, &op);
+	doc_op_finish(&op);
+	if (ret == 0 && app->tree.lifted) {
+		/* the same short swing as after 3D: it is a 3D tree */
+		app->turning = true;
+		app->turn_start_us = time_us;
+	}
+	return ret;
+}
+
 bool app_op_keeps_wood(enum doc_op_kind kind, int result)
 {
 	switch (kind) {
