@@ -2,9 +2,11 @@
 # SPDX-License-Identifier: MIT
 # The grow button on the command line (issue 17, seed 002): edaha --headless ... --press
 # grow [--wood FILE] [--dump-voxels] --out DIR, end to end: wood.sh TEST. Paths come from
-# meson's environment: EDAHA, SRC (the source tree).
+# meson's environment: EDAHA, IMGCMP, GLTF_VALIDATE, SRC (the source tree). With
+# EDAHA_UPDATE_GOLDEN=1, `golden` writes tests/golden/wood/ instead of comparing: look at
+# every picture before committing it.
 set -uo pipefail
-: "${EDAHA:?}" "${SRC:?}"
+: "${EDAHA:?}" "${IMGCMP:?}" "${GLTF_VALIDATE:?}" "${SRC:?}"
 T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-wood.XXXXXX")
 trap 'rm -rf "$T"' EXIT
 DEMO=$SRC/tests/data/demo.edaha-trace
@@ -67,6 +69,40 @@ PY
 	edaha --dump-voxels >/dev/null 2>"$T/err" && fail "--dump-voxels without --headless ran"
 	grep -q "needs --headless" "$T/err" || fail "--dump-voxels without --headless: no usage error"
 	echo "settings in the drawing, still without gravity, bad input refused"
+}
+
+# golden NAME DIR: DIR/screen.png against tests/golden/wood/NAME.png (or written there)
+golden() {
+	if [ "${EDAHA_UPDATE_GOLDEN:-0}" = 1 ]; then
+		mkdir -p "$SRC/tests/golden/wood"
+		cp "$2/screen.png" "$SRC/tests/golden/wood/$1.png"
+		echo "wood.sh: updated tests/golden/wood/$1.png"
+	elif ! "$IMGCMP" "$SRC/tests/golden/wood/$1.png" "$2/screen.png"; then
+		fail "$1: screen.png differs from its golden tests/golden/wood/$1.png"
+	fi
+}
+
+# The pictures: the demo's tree after 0, 3 and 8 presses; a trunk leaning 45 degrees
+# (tests/data/leaning-trunk.json) after 5 as a conifer and as a broadleaf tree; their
+# exports validate.
+t_golden() {
+	local presses n
+	for n in 0 3 8; do
+		presses=()
+		for ((i = 0; i < n; i++)); do presses+=(--press grow); done
+		run --size 640x400 --replay "$DEMO" --press 3d "${presses[@]}" --view 25,10 \
+			--out "$T/d$n"
+		golden "drawn-$n" "$T/d$n"
+	done
+	"$GLTF_VALIDATE" "$T/d8/model.glb" || fail "the grown tree's glb does not validate"
+	for m in conifer broadleaf; do
+		run --size 640x400 --skeleton "$SRC/tests/data/leaning-trunk.json" \
+			--wood "$SRC/tests/data/wood-$m.yaml" --press grow --press grow --press grow \
+			--press grow --press grow --view 0,10 --out "$T/$m"
+		golden "leaning-$m-5" "$T/$m"
+		"$GLTF_VALIDATE" "$T/$m/model.glb" || fail "the leaning $m's glb does not validate"
+	done
+	echo "five pictures of grown wood as their goldens, their exports valid"
 }
 
 "t_$1"
