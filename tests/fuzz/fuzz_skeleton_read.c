@@ -12,37 +12,10 @@
 #include <string.h>
 
 #include "doc.h"
+#include "fuzz_refusal.h"
 #include "skeleton_read.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
-
-static unsigned long lines_of(const uint8_t *data, size_t size)
-{
-	unsigned long n = 1;
-
-	for (size_t i = 0; i < size; i++)
-		n += data[i] == '\n';
-	return n;
-}
-
-static void check_refusal(int ret, const struct error *err, unsigned long lines)
-{
-	const char *s = err->msg + strlen("fuzz:");
-	unsigned long line = 0;
-
-	if (ret != -EINVAL && ret != -ENOMEM)
-		abort();
-	if (strncmp(err->msg, "fuzz:", 5) != 0 || !memchr(err->msg, '\0', sizeof(err->msg)))
-		abort();
-	if (*s == ' ' && ret == -ENOMEM)
-		return;
-	if (*s < '1' || *s > '9')
-		abort();
-	while (*s >= '0' && *s <= '9' && line <= lines)
-		line = line * 10 + (unsigned long)(*s++ - '0');
-	if (s[0] != ':' || s[1] != ' ' || line > lines)
-		abort();
-}
 
 static bool in(double v, double lo, double hi)
 {
@@ -105,7 +78,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		abort();
 	ret = skeleton_read((const char *)data, size, "fuzz", &t, &err);
 	if (ret < 0) {
-		check_refusal(ret, &err, lines_of(data, size));
+		fuzz_check_refusal(ret, &err, fuzz_lines_of(data, size));
 		/* untouched */
 		if (t.nbranches != 1 || t.branches[0].origin != ORIGIN_CLONE ||
 		    t.branches[0].radii[1] != 0.25)

@@ -11,19 +11,10 @@
 #include <string.h>
 
 #include "fileio.h"
+#include "malformed_dir.h"
 #include "test.h"
 #include "vine.h"
 #include "vine_presets.h"
-
-static char *path_of(const char *dir, const char *name)
-{
-	size_t n = strlen(dir) + strlen(name) + 2;
-	char *p = malloc(n);
-
-	CHECK(p);
-	snprintf(p, n, "%s/%s", dir, name);
-	return p;
-}
 
 static int read_text(const char *text, struct vine_params *p, struct error *err)
 {
@@ -328,51 +319,17 @@ static void test_presets(void)
 	CHECK(p.internode != 0.06); /* untouched: still the pattern */
 }
 
+static int read_one(const char *data, size_t len, const char *path, void *out,
+		    struct error *err)
+{
+	return vine_read(data, len, path, out, err);
+}
+
 static void test_malformed(const char *dir)
 {
-	char *expect = path_of(dir, "EXPECT");
-	char *data;
-	size_t len;
-	struct error err;
-	int count = 0;
+	struct vine_params scratch;
 
-	CHECK_INT(fileio_read_all(expect, 1 << 20, &data, &len, &err), 0);
-	for (char *line = strtok(data, "\n"); line; line = strtok(NULL, "\n")) {
-		struct vine_params p, before;
-		char name[128], want[192], *path, *text, *file;
-		size_t flen;
-		unsigned long at;
-		int skip = 0, ret;
-
-		if (line[0] == '#')
-			continue;
-		CHECK(sscanf(line, "%127s %lu %n", name, &at, &skip) == 2 && skip > 0);
-		text = line + skip;
-		CHECK(*text);
-		path = path_of(dir, name);
-		CHECK_INT(fileio_read_all(path, 1 << 20, &file, &flen, &err), 0);
-		memset(&p, 0xa5, sizeof(p));
-		memcpy(&before, &p, sizeof(p));
-		ret = vine_read(file, flen, path, &p, &err);
-		if (ret != -EINVAL) {
-			fprintf(stderr, "%s: not refused with -EINVAL (%d)\n", path, ret);
-			CHECK(0);
-		}
-		CHECK(memcmp(&p, &before, sizeof(p)) == 0); /* nothing half-read */
-		snprintf(want, sizeof(want), "%s:%lu: ", path, at);
-		if (strncmp(err.msg, want, strlen(want)) != 0 || !strstr(err.msg, text)) {
-			fprintf(stderr, "%s: expected \"%s...%s...\", got \"%s\"\n", name, want, text,
-				err.msg);
-			CHECK(0);
-		}
-		printf("%s\n", err.msg);
-		free(file);
-		free(path);
-		count++;
-	}
-	CHECK(count >= 40);
-	free(data);
-	free(expect);
+	CHECK(malformed_dir_check(dir, read_one, &scratch, sizeof(scratch)) >= 40);
 }
 
 static void test_too_large(void)

@@ -10,18 +10,9 @@
 #include <string.h>
 
 #include "fileio.h"
+#include "malformed_dir.h"
 #include "test.h"
 #include "wood.h"
-
-static char *path_of(const char *dir, const char *name)
-{
-	size_t n = strlen(dir) + strlen(name) + 2;
-	char *p = malloc(n);
-
-	CHECK(p);
-	snprintf(p, n, "%s/%s", dir, name);
-	return p;
-}
 
 static void read_ok(const char *text, struct wood_params *p)
 {
@@ -108,51 +99,17 @@ static void test_offset(void)
 	CHECK(strncmp(err.msg, "d.edaha:7: beta", 15) == 0);
 }
 
+static int read_one(const char *data, size_t len, const char *path, void *out,
+		    struct error *err)
+{
+	return wood_read(data, len, path, 0, out, err);
+}
+
 static void test_malformed(const char *dir)
 {
-	char *expect = path_of(dir, "EXPECT");
-	char *data;
-	size_t len;
-	struct error err;
-	int count = 0;
+	struct wood_params scratch;
 
-	CHECK_INT(fileio_read_all(expect, 1 << 20, &data, &len, &err), 0);
-	for (char *line = strtok(data, "\n"); line; line = strtok(NULL, "\n")) {
-		struct wood_params p, before;
-		char name[128], want[192], *path, *text, *file;
-		size_t flen;
-		unsigned long at;
-		int skip = 0, ret;
-
-		if (line[0] == '#')
-			continue;
-		CHECK(sscanf(line, "%127s %lu %n", name, &at, &skip) == 2 && skip > 0);
-		text = line + skip;
-		CHECK(*text);
-		path = path_of(dir, name);
-		CHECK_INT(fileio_read_all(path, 1 << 20, &file, &flen, &err), 0);
-		memset(&p, 0xa5, sizeof(p));
-		memcpy(&before, &p, sizeof(p));
-		ret = wood_read(file, flen, path, 0, &p, &err);
-		if (ret != -EINVAL) {
-			fprintf(stderr, "%s: not refused with -EINVAL (%d)\n", path, ret);
-			CHECK(0);
-		}
-		CHECK(memcmp(&p, &before, sizeof(p)) == 0); /* nothing half-read */
-		snprintf(want, sizeof(want), "%s:%lu: ", path, at);
-		if (strncmp(err.msg, want, strlen(want)) != 0 || !strstr(err.msg, text)) {
-			fprintf(stderr, "%s: expected \"%s...%s...\", got \"%s\"\n", name, want, text,
-				err.msg);
-			CHECK(0);
-		}
-		printf("%s\n", err.msg);
-		free(file);
-		free(path);
-		count++;
-	}
-	CHECK(count >= 25);
-	free(data);
-	free(expect);
+	CHECK(malformed_dir_check(dir, read_one, &scratch, sizeof(scratch)) >= 25);
 }
 
 int main(int argc, char **argv)
