@@ -16,38 +16,11 @@
 /* A press on t with the op's settings (those of t's first press stand for its grid). */
 int app_wood_apply(struct tree *t, const struct doc_op *op)
 {
-	struct wood *w = t->wood;
 	int ret;
 
 	if (!op->wood || !t->lifted || t->nbranches == 0)
 		return SKETCH_GREW; /* nothing to grow */
-	if (!w) {
-		w = malloc(sizeof(*w));
-		if (!w)
-			return -ENOMEM;
-		ret = wood_begin(w, t, op->wood);
-		if (ret < 0) {
-			free(w);
-			/* nothing thick enough to hold wood: the radii alone changed */
-			return ret == -EINVAL ? SKETCH_CHANGED : ret;
-		}
-		t->wood = w;
-	} else {
-		/* the settings but the grid may change from press to press */
-		int grid = w->p.grid;
-
-		w->p = *op->wood;
-		w->p.grid = grid;
-	}
-	ret = wood_press(w);
-	if (ret == -EINVAL) /* no point on the ground: nothing holds it up */
-		return SKETCH_CHANGED;
-	if (ret < 0) {
-		tree_wood_drop(t); /* half a press is no press: the document is the truth */
-		return ret;
-	}
-	/* the new bark buries no leaf nor vine: they move out with it */
-	ret = wood_move_out(w, t);
+	ret = wood_grow(t, op->wood);
 	return ret < 0 ? ret : SKETCH_CHANGED;
 }
 

@@ -248,6 +248,14 @@ int wood_begin(struct wood *w, struct tree *t, const struct wood_params *p);
 int wood_press(struct wood *w);
 void wood_finish(struct wood *w);
 /*
+ * A year of growth on tree t (what a grow op does): its wood begun if it has none (the
+ * power law, the grid: wood_begin), a press, and its leaves and vines moved out of the new
+ * bark (wood_move_out). Pure: a copy of the tree grown on another thread gives the same
+ * tree. 0; 1 when nothing holds wood (no branch thick enough, or none on the ground: the
+ * radii alone may have changed); -ENOMEM (t's wood dropped).
+ */
+int wood_grow(struct tree *t, const struct wood_params *p);
+/*
  * After a press (wood_move.c, docs/wood.md "Leaves and vines move out"): what the new bark
  * buried moves out of it. Buried: the density there (wood_density_at) above 0.5. A leaf
  * with a point buried moves rigidly across its branch's axis (at branch_t, towards its

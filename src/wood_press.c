@@ -128,3 +128,38 @@ size_t wood_bytes(const struct wood *w)
 	return wood_cells(&w->g) * (49 + sizeof(double)) + w->nbranches +
 	       w->bark.cap_vertices * 6 * sizeof(float) + w->bark.cap_indices * sizeof(uint32_t);
 }
+
+int wood_grow(struct tree *t, const struct wood_params *p)
+{
+	struct wood *w = t->wood;
+	int ret;
+
+	if (!w) {
+		w = malloc(sizeof(*w));
+		if (!w)
+			return -ENOMEM;
+		ret = wood_begin(w, t, p);
+		if (ret < 0) {
+			free(w);
+			/* nothing thick enough to hold wood: the radii alone changed */
+			return ret == -EINVAL ? 1 : ret;
+		}
+		t->wood = w;
+	} else {
+		/* the settings but the grid may change from press to press */
+		int grid = w->p.grid;
+
+		w->p = *p;
+		w->p.grid = grid;
+	}
+	ret = wood_press(w);
+	if (ret == -EINVAL) /* no point on the ground: nothing holds it up */
+		return 1;
+	if (ret < 0) {
+		tree_wood_drop(t); /* half a press is no press: the document is the truth */
+		return ret;
+	}
+	/* the new bark buries no leaf nor vine: they move out with it */
+	ret = wood_move_out(w, t);
+	return ret < 0 ? ret : 0;
+}
