@@ -197,7 +197,8 @@ static bool look_equal(const struct kiosk_look *a, const struct kiosk_look *b)
 }
 
 /* Whether frames must keep coming at now_us without any input: the turn into 3D, new
- * leaves unfolding, a message fading out (a vine growing: app_vines_advance). */
+ * leaves unfolding, a grown bark swelling, a message fading out (a vine growing:
+ * app_vines_advance). */
 static bool animating_at(const struct app *app, uint64_t now_us, bool turning)
 {
 	uint64_t until;
@@ -205,6 +206,10 @@ static bool animating_at(const struct app *app, uint64_t now_us, bool turning)
 	struct app_unfold_span span;
 
 	if (turning || app_unfold_at(app, now_us, &span, 1) > 0)
+		return true;
+	/* a grow press's bark swelling */
+	if (app->swell_start_us != UINT64_MAX &&
+	    (now_us < app->swell_start_us || now_us - app->swell_start_us < APP_SWELL_US))
 		return true;
 	return app_status_at(app, now_us, &until) != APP_STATUS_NONE &&
 	       now_us + APP_STATUS_FADE_US >= until;

@@ -48,6 +48,7 @@ struct app *app_create(int width, int height, uint64_t seed)
 	tree_mesh_init(&app->vines_mesh);
 	tree_mesh_init(&app->growth.mesh);
 	wood_params_default(&app->wood_settings);
+	app->swell_start_us = UINT64_MAX;
 	return app;
 }
 
@@ -159,6 +160,7 @@ int app_load_doc(struct app *app, struct doc *doc)
 	doc_init(doc, doc->seed);
 	app_unfold_clear(app);
 	app_vine_growth_clear(app);
+	app->swell_start_us = UINT64_MAX;
 	app->camera = app->doc.view; /* kept if the drawing is a 3D tree */
 	ret = app_rebuild(app);
 	r2 = app_vines_refresh(app);
@@ -207,6 +209,8 @@ int app_push_op(struct app *app, struct doc_op *op)
 		ret = tree_mesh_append_marked(&app->mesh, &app->tree, nb, nl, &app->mesh_marks);
 	else
 		ret = tree_mesh_build_marked(&app->mesh, &app->tree, &app->mesh_marks);
+	/* a press swells on screen; any other change of the tree shows its bark at rest */
+	app->swell_start_us = op->kind == DOC_OP_GROW && app->tree.wood ? op->time_us : UINT64_MAX;
 	if (ret == 0 && app->tree.nvines > nv) /* op is the caller's again: the doc's copy */
 		ret = app_vine_growth_start(app, &app->doc.ops[app->doc.cursor - 1]);
 	else if (ret == 0 && app->tree.nvines < nv)
@@ -351,6 +355,7 @@ int app_press_button(struct app *app, enum button button, uint64_t time_us)
 			return 0;
 		app_unfold_clear(app);
 		app_vine_growth_clear(app);
+		app->swell_start_us = UINT64_MAX;
 		ret = app_undo(app);
 		if (ret == 0)
 			ret = app_vines_refresh(app);
@@ -360,6 +365,7 @@ int app_press_button(struct app *app, enum button button, uint64_t time_us)
 			return 0;
 		app_unfold_clear(app);
 		app_vine_growth_clear(app);
+		app->swell_start_us = UINT64_MAX;
 		ret = app_redo(app);
 		if (ret == 0)
 			ret = app_vines_refresh(app);

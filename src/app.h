@@ -194,6 +194,8 @@ struct app {
 	const struct doc_op *bark_index_op;
 	/* What a grow press grows with (issue 17; wood.h): the defaults, or --wood's file. */
 	struct wood_params wood_settings;
+	/* The last press swells on screen from then (UINT64_MAX: nothing swells). */
+	uint64_t swell_start_us;
 	/* Example-based editing. */
 	int selected;              /* clone mode: the branch that gets children, or -1 */
 	int suggest_branch;        /* leaf mode: the branch whose leaves suggest... */
@@ -237,6 +239,12 @@ size_t app_unfold_at(const struct app *app, uint64_t now_us, struct app_unfold_s
  * to grow it (no memory) ends the growth: the vine shows grown.
  */
 bool app_vines_advance(struct app *app, uint64_t now_us);
+/* A grow press's bark swells on screen over this long, by the events' time (wood.h's
+ * WOOD_SWELL_FRAMES frames). */
+#define APP_SWELL_US 1000000u
+/* The wood's bark to show at now_us (UINT64_MAX: at rest): a frame of the last press's
+ * swelling while it lasts, else the bark; NULL without wood. */
+const struct mesh *app_wood_bark_at(const struct app *app, uint64_t now_us);
 /* Turns a 3D tree's camera (as orbiting would). False, and nothing changes, for a sketch. */
 bool app_set_camera(struct app *app, struct camera c);
 /* The suggestion thumbnails shown, in order: how many, and their patterns. */

@@ -6,6 +6,7 @@
  * branches drops its wood (the field no longer holds them).
  */
 #include <errno.h>
+#include <stdint.h>
 #include <stdlib.h>
 
 #include "app_private.h"
@@ -104,4 +105,21 @@ int app_grow(struct app *app, uint64_t time_us)
 	ret = app_push_op(app, &op);
 	doc_op_finish(&op);
 	return ret == -ENOSPC ? 0 : ret;
+}
+
+const struct mesh *app_wood_bark_at(const struct app *app, uint64_t now_us)
+{
+	const struct wood *w = app->tree.wood;
+	uint64_t age;
+	size_t k;
+
+	if (!w)
+		return NULL;
+	if (now_us == UINT64_MAX || app->swell_start_us == UINT64_MAX || w->nswell == 0 ||
+	    now_us < app->swell_start_us)
+		return &w->bark;
+	age = now_us - app->swell_start_us;
+	/* frame k (the field k + 1 eighths of the way) for the k-th eighth of the second */
+	k = age >= APP_SWELL_US ? SIZE_MAX : (size_t)(age * WOOD_SWELL_FRAMES / APP_SWELL_US);
+	return k < (size_t)w->nswell ? &w->swell[k] : &w->bark;
 }

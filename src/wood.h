@@ -219,6 +219,9 @@ int wood_thicken(struct wood_grid *g, const struct wood_params *p, double *added
  */
 int wood_iso(const struct wood_grid *g, double iso, struct mesh *out);
 
+/* Frames of a press's swelling on screen, its bark the last (docs/wood.md). */
+#define WOOD_SWELL_FRAMES 8
+
 /*
  * A tree's wood through its presses (wood_press.c): begun once (the power law on the
  * tree, its prisms voxelised: density0), then each press finds the rest state and
@@ -238,6 +241,11 @@ struct wood {
 	/* the bark of the voxelised branches: the field's iso-surface at 0.5 (wood_iso),
 	 * world metres; made by wood_press (empty before the first) */
 	struct mesh bark;
+	/* The last press's swelling, for the screen: the iso-surfaces of the field between
+	 * before and after it, at k / WOOD_SWELL_FRAMES for k = 1 .. nswell; bark is the
+	 * last frame. Not copied (wood_copy): a tree undone to shows its bark at rest. */
+	struct mesh swell[WOOD_SWELL_FRAMES - 1];
+	int nswell;
 };
 /* Applies the power law to t (its radii change: the twigs' meshes show it), and registers
  * its thick branches in a new grid (p->grid cells). 0, -EINVAL (no branch thick enough to

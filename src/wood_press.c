@@ -57,18 +57,61 @@ int wood_begin(struct wood *w, struct tree *t, const struct wood_params *p)
 	return ret;
 }
 
+static void swell_clear(struct wood *w)
+{
+	for (int k = 0; k < w->nswell; k++)
+		mesh_clear(&w->swell[k]);
+	w->nswell = 0;
+}
+
+/* The frames between the field before (density `before`) and w's now. 0 or -ENOMEM (none
+ * then: the screen shows the bark at once). */
+static int swell_frames(struct wood *w, const double *before)
+{
+	struct wood_grid view = w->g;
+	size_t n = wood_cells(&w->g);
+	double *blend = malloc(n * sizeof(*blend));
+	int ret = blend ? 0 : -ENOMEM;
+
+	view.density = blend;
+	for (int k = 1; k < WOOD_SWELL_FRAMES && ret == 0; k++) {
+		double t = (double)k / WOOD_SWELL_FRAMES;
+
+		for (size_t i = 0; i < n; i++)
+			blend[i] = before[i] + (w->g.density[i] - before[i]) * t;
+		ret = wood_iso(&view, 0.5, &w->swell[k - 1]);
+		if (ret == 0)
+			w->nswell = k;
+	}
+	free(blend);
+	if (ret < 0)
+		swell_clear(w);
+	return ret;
+}
+
 int wood_press(struct wood *w)
 {
-	int ret = wood_rest(&w->g, &w->p, w->ground_y, &w->solve);
+	size_t n = wood_cells(&w->g);
+	double *before = malloc(n * sizeof(*before));
+	int ret = before ? 0 : -ENOMEM;
 
+	swell_clear(w);
+	if (ret == 0) {
+		/* the first press swells from the swept branches' field */
+		memcpy(before, w->presses ? w->g.density : w->density0, n * sizeof(*before));
+		ret = wood_rest(&w->g, &w->p, w->ground_y, &w->solve);
+	}
 	if (ret == 0)
 		ret = wood_thicken(&w->g, &w->p, &w->added, &w->lost);
 	if (ret == 0) {
 		mesh_clear(&w->bark);
 		ret = wood_iso(&w->g, 0.5, &w->bark);
 	}
-	if (ret == 0)
+	if (ret == 0) {
 		w->presses++;
+		(void)swell_frames(w, before); /* without them, the bark shows at once */
+	}
+	free(before);
 	return ret;
 }
 
@@ -78,6 +121,8 @@ void wood_finish(struct wood *w)
 	free(w->density0);
 	free(w->voxelised);
 	mesh_finish(&w->bark);
+	for (int k = 0; k < WOOD_SWELL_FRAMES - 1; k++)
+		mesh_finish(&w->swell[k]);
 	memset(w, 0, sizeof(*w));
 }
 
@@ -100,6 +145,9 @@ int wood_copy(struct wood *dst, const struct wood *src)
 	dst->density0 = NULL;
 	dst->voxelised = NULL;
 	mesh_init(&dst->bark);
+	for (int k = 0; k < WOOD_SWELL_FRAMES - 1; k++)
+		mesh_init(&dst->swell[k]);
+	dst->nswell = 0;
 	if (wood_grid_create(&dst->g, src->g.nx, src->g.ny, src->g.nz, src->g.origin, src->g.h) < 0)
 		goto fail;
 	memcpy(dst->g.density, src->g.density, n * sizeof(double));

@@ -267,14 +267,7 @@ int render_upload_tree(struct render *r, const struct app *app)
 	r->upload_bytes = 0;
 	ret = render_mesh_upload(&r->bark, &app->mesh.bark, r->uint_indices);
 	r->upload_bytes += r->bark.bytes;
-	/* the wood's bark (issue 17): the thick branches' since the first grow */
-	if (ret == 0) {
-		static const struct mesh none;
-
-		ret = render_mesh_upload(&r->wood, app->tree.wood ? &app->tree.wood->bark : &none,
-					 r->uint_indices);
-		r->upload_bytes += r->wood.bytes;
-	}
+	r->wood_src = NULL; /* the wood's bark goes up with it (upload_wood) */
 	if (ret == 0 && inst) {
 		/* the leaves go one way or the other: the unused copy gives its memory back */
 		render_mesh_finish(&r->leaves);
@@ -331,11 +324,33 @@ static void draw_leaves(struct render *r, const struct app *app, const float mvp
 	}
 }
 
+/* The wood's bark (issue 17) as the screen shows it at the frame's time: a frame of a
+ * press's swelling, or the bark at rest; uploaded when that changes. */
+static int upload_wood(struct render *r, const struct app *app)
+{
+	static const struct mesh none;
+	const struct mesh *m = app_wood_bark_at(app, r->frame_us);
+	int ret;
+
+	m = m ? m : &none;
+	if (m == r->wood_src && r->wood_serial == app->mesh_serial)
+		return 0;
+	ret = render_mesh_upload(&r->wood, m, r->uint_indices);
+	r->upload_bytes += r->wood.bytes;
+	r->wood_src = ret == 0 ? m : NULL;
+	r->wood_serial = app->mesh_serial;
+	return ret;
+}
+
 static int draw_tree(struct render *r, const struct app *app, const struct camera_xf *xf,
 		     const float light[3])
 {
 	float mvp[16];
 	int ret = render_upload_tree(r, app), r2;
+
+	r2 = upload_wood(r, app);
+	if (ret == 0)
+		ret = r2;
 
 	view_clip_matrix(&app->view, xf, mvp);
 	glEnable(GL_DEPTH_TEST);
@@ -381,6 +396,7 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 
 	(void)app_camera_at(app, now_us, &cam);
 	r->nunfold = app_unfold_at(app, now_us, r->unfold, APP_UNFOLD_MAX);
+	r->frame_us = now_us;
 	camera_xf_init(&xf, cam, sketch_view_pivot(&app->tree));
 	/* the light turns with the camera: the side a visitor looks at is always lit */
 	l = camera_dir_from_view(&xf, vec3(render_light_dir[0], render_light_dir[1],

@@ -116,7 +116,10 @@ struct render {
 	bool instanced;
 
 	struct render_mesh bark, leaves;
-	struct render_mesh wood; /* the tree's wood's bark (app->tree.wood), or empty */
+	struct render_mesh wood; /* the tree's wood's bark (app_wood_bark_at), or empty */
+	const struct mesh *wood_src; /* what wood holds (NULL: nothing known) */
+	uint64_t wood_serial;        /* ...of the tree at this mesh_serial */
+	uint64_t frame_us;           /* the time render_frame_at draws */
 	struct render_instanced inst;
 	bool uploaded;       /* the meshes hold mesh_serial's tree */
 	bool uploaded_instanced; /* ...its leaves in inst, not in leaves */

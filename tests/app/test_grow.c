@@ -40,6 +40,56 @@ static bool same_wood(const struct wood *a, const struct wood *b)
 	       memcmp(a->bark.positions, b->bark.positions, 3 * a->bark.nvertices * sizeof(float)) == 0;
 }
 
+/* The volume a closed mesh holds (the divergence theorem). */
+static double volume(const struct mesh *m)
+{
+	double v = 0.0;
+
+	for (size_t i = 0; i + 2 < m->nindices; i += 3) {
+		const float *a = m->positions + 3 * m->indices[i];
+		const float *b = m->positions + 3 * m->indices[i + 1];
+		const float *c = m->positions + 3 * m->indices[i + 2];
+
+		v += (double)a[0] * ((double)b[1] * c[2] - (double)b[2] * c[1]) -
+		     (double)a[1] * ((double)b[0] * c[2] - (double)b[2] * c[0]) +
+		     (double)a[2] * ((double)b[0] * c[1] - (double)b[1] * c[0]);
+	}
+	return v / 6.0;
+}
+
+/* A press's bark swells on screen over a second by the events' time: a frame an eighth,
+ * each holding more wood than the one before, then the bark at rest; undo shows it at
+ * rest at once. */
+static void test_swell(void)
+{
+	struct app *app = drawn_tree();
+	const struct wood *w;
+	uint64_t t;
+	double last = 0.0;
+
+	pen_button(&pen, app, BUTTON_GROW);
+	pen_button(&pen, app, BUTTON_GROW);
+	w = app->tree.wood;
+	CHECK(w != NULL);
+	CHECK_INT(w->nswell, WOOD_SWELL_FRAMES - 1);
+	t = app->doc.ops[app->doc.cursor - 1].time_us;
+	CHECK(app_wood_bark_at(app, UINT64_MAX) == &w->bark);
+	for (int k = 0; k < WOOD_SWELL_FRAMES; k++) {
+		const struct mesh *m = app_wood_bark_at(app, t + (uint64_t)k * APP_SWELL_US /
+								  WOOD_SWELL_FRAMES + 1000);
+		double v = volume(m);
+
+		CHECK(m == (k < w->nswell ? &w->swell[k] : &w->bark));
+		CHECK(v >= last);
+		last = v;
+	}
+	CHECK(app_wood_bark_at(app, t + APP_SWELL_US) == &w->bark);
+	pen_button(&pen, app, BUTTON_UNDO);
+	CHECK(app->tree.wood != NULL);
+	CHECK(app_wood_bark_at(app, t + 1000) == &app->tree.wood->bark);
+	app_destroy(app);
+}
+
 static void test_presses(void)
 {
 	struct app *app = drawn_tree(), *back = app_create(1280, 800, 1);
@@ -117,6 +167,7 @@ static void test_edits(void)
 int main(void)
 {
 	test_presses();
+	test_swell();
 	test_edits();
 	return 0;
 }
