@@ -19,6 +19,7 @@
 #include "autosave.h"
 #include "buf.h"
 #include "fileio.h"
+#include "grow_worker.h"
 #include "latency.h"
 #include "notify.h"
 #include "pngio.h"
@@ -109,6 +110,7 @@ struct kiosk {
 	bool export_asked, export_ready;
 	uint8_t *pixels;
 	struct usb_export *usb;  /* where the export goes: sticks, the local copy */
+	struct grow_worker *grow; /* grow presses, off the loop */
 	struct autosave *autosave; /* NULL: none */
 	bool autosave_failing;     /* said once, not at every stroke */
 	enum button mode_lit;    /* what mode_changed was last told */
@@ -207,7 +209,9 @@ static bool animating_at(const struct app *app, uint64_t now_us, bool turning)
 
 	if (turning || app_unfold_at(app, now_us, &span, 1) > 0)
 		return true;
-	/* a grow press's bark swelling */
+	/* a grow press under way (its message's dots move) or its bark swelling */
+	if (app->grow_waiting)
+		return true;
 	if (app->swell_start_us != UINT64_MAX &&
 	    (now_us < app->swell_start_us || now_us - app->swell_start_us < APP_SWELL_US))
 		return true;
@@ -461,6 +465,12 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 	}
 	if (open_usb(k) < 0)
 		goto fail;
+	k->grow = grow_worker_create(&err);
+	if (!k->grow) {
+		fprintf(stderr, "edaha: %s\n", err.msg);
+		goto fail;
+	}
+	k->app->grow_async = true;
 	return k;
 
 fail:
@@ -476,6 +486,7 @@ void kiosk_destroy(struct kiosk *k)
 		fprintf(stderr, "edaha: %s: cannot write the recording\n", k->cfg.record);
 	/* waits for a save under way: its files reach the stick whole or not at all */
 	usb_export_destroy(k->usb);
+	grow_worker_destroy(k->grow); /* and for a press under way */
 	/* GL objects go while the display's context is still current */
 	render_destroy(k->render);
 	drm_display_destroy(k->display);
@@ -774,6 +785,53 @@ static void idle_reset(struct kiosk *k, uint64_t now)
 	save_edits(k);
 }
 
+/* A grow press the app waits for, on the worker: a copy of the tree as it is now. */
+static void start_grow(struct kiosk *k)
+{
+	struct tree *t = malloc(sizeof(*t));
+	struct wood_params p;
+	uint64_t serial;
+	int ret = t ? 0 : -ENOMEM;
+
+	if (t) {
+		tree_init(t);
+		ret = app_grow_job(k->app, t, &p, &serial);
+	}
+	if (ret == 0)
+		ret = grow_worker_start(k->grow, t, &p, serial);
+	if (ret < 0) {
+		if (t) {
+			tree_finish(t);
+			free(t);
+		}
+		fprintf(stderr, "edaha: warning: a grow press could not start: %s\n", strerror(-ret));
+		k->app->grow_waiting = false;
+		app_set_status(k->app, APP_STATUS_NONE, now_us());
+	}
+}
+
+/* The worker's press done: to the app, or again if the tree changed meanwhile. */
+static void on_grow(struct kiosk *k)
+{
+	struct tree *t;
+	uint64_t serial;
+	int result, ret;
+
+	if (grow_worker_take(k->grow, &t, &result, &serial) < 0)
+		return;
+	ret = result < 0 ? result : app_grow_done(k->app, t, serial, now_us());
+	tree_finish(t);
+	free(t);
+	if (ret == -EAGAIN) {
+		start_grow(k);
+	} else if (ret < 0) {
+		fprintf(stderr, "edaha: warning: a grow press failed: %s\n", strerror(-ret));
+		k->app->grow_waiting = false;
+		app_set_status(k->app, APP_STATUS_NONE, now_us());
+	}
+	save_edits(k);
+}
+
 /* Things the app asks of the platform between frames. */
 static void take_requests(struct kiosk *k)
 {
@@ -782,6 +840,8 @@ static void take_requests(struct kiosk *k)
 
 	if (req & APP_REQUEST_EXPORT)
 		k->export_asked = true;
+	if ((req & APP_REQUEST_GROW) && !grow_worker_busy(k->grow))
+		start_grow(k);
 	if (mode != k->mode_lit) {
 		k->mode_lit = mode;
 		if (k->mode_changed)
@@ -894,7 +954,7 @@ static int take_final_shot(struct kiosk *k)
 
 int kiosk_run(struct kiosk *k)
 {
-	struct pollfd fds[DRM_DISPLAY_MAX_POLLFDS + 4 + KIOSK_MAX_SOURCES];
+	struct pollfd fds[DRM_DISPLAY_MAX_POLLFDS + 5 + KIOSK_MAX_SOURCES];
 
 	take_requests(k); /* the LEDs show the first mode */
 	while (!k->quit) {
@@ -932,6 +992,7 @@ int kiosk_run(struct kiosk *k)
 		fds[n++] = (struct pollfd){ .fd = k->ui_timer_fd, .events = POLLIN };
 		/* -1 without a watchdog: poll() skips it */
 		fds[n++] = (struct pollfd){ .fd = k->watchdog_fd, .events = POLLIN };
+		fds[n++] = (struct pollfd){ .fd = grow_worker_fd(k->grow), .events = POLLIN };
 		for (size_t i = 0; i < nsrc; i++)
 			fds[n++] = (struct pollfd){ .fd = k->sources[i].fd, .events = POLLIN };
 		if (poll(fds, n, -1) < 0) {
@@ -948,9 +1009,11 @@ int kiosk_run(struct kiosk *k)
 			on_ui_timer(k);
 		if (fds[nd + 3].revents)
 			on_watchdog(k);
+		if (fds[nd + 4].revents)
+			on_grow(k);
 		/* backwards, so that dropping a failed source leaves the rest in place */
 		for (size_t i = nsrc; i-- > 0;) {
-			if (fds[nd + 4 + i].revents)
+			if (fds[nd + 5 + i].revents)
 				on_source(k, i);
 		}
 		take_requests(k);

@@ -134,7 +134,7 @@ static int apply_op(struct app *app, const struct doc_op *op)
 			app->tree.season = (enum season)op->pattern;
 		return SKETCH_GREW;
 	case DOC_OP_GROW:
-		return app_wood_apply(&app->tree, op);
+		return app_wood_apply(app, op);
 	case DOC_OP_IMPORT:
 		return app_import_apply(&app->tree, op);
 	case DOC_OP_VINE:
@@ -193,6 +193,7 @@ int app_push_op(struct app *app, struct doc_op *op)
 		return ret;
 	/* the ops that could be redone are gone, and what was known of their states */
 	history_forget_after(&app->history, app->doc.cursor - 1);
+	app->grow_lent_op = app->grow_lent ? &app->doc.ops[app->doc.cursor - 1] : NULL;
 	app->bark_index_op = app->bark_index ? &app->doc.ops[app->doc.cursor - 1] : NULL;
 	ret = app_apply_recorded(app, app->doc.cursor);
 	if (ret < 0) {

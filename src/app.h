@@ -44,6 +44,8 @@ enum app_pattern {
 /* Bits returned by app_take_requests(). */
 enum app_request {
 	APP_REQUEST_EXPORT = 1u << 0,
+	/* a grow press to make off the loop (grow_async: app_grow_job, app_grow_done) */
+	APP_REQUEST_GROW = 1u << 1,
 };
 
 /*
@@ -68,6 +70,7 @@ enum app_status {
 	APP_STATUS_VINE_TAP,     /* entered: tap the ground by the trunk to plant a vine */
 	APP_STATUS_VINE_WHERE,   /* a tap too far from the tree: tap by the trunk's foot */
 	APP_STATUS_VINE_FULL,    /* the tree has as many vines as it takes */
+	APP_STATUS_GROWING,      /* a grow press under way (the kiosk's): held until done */
 	APP_STATUS_COUNT,
 };
 #define APP_STATUS_US 4000000u
@@ -196,6 +199,13 @@ struct app {
 	struct wood_params wood_settings;
 	/* The last press swells on screen from then (UINT64_MAX: nothing swells). */
 	uint64_t swell_start_us;
+	/* The kiosk makes a grow press off its loop (it sets grow_async): the button asks
+	 * (APP_REQUEST_GROW, grow_waiting) and the press lands when the platform hands back
+	 * the grown tree (app_grow_done), lent to the op it pushes. */
+	bool grow_async;
+	bool grow_waiting;
+	struct tree *grow_lent;
+	const struct doc_op *grow_lent_op;
 	/* Example-based editing. */
 	int selected;              /* clone mode: the branch that gets children, or -1 */
 	int suggest_branch;        /* leaf mode: the branch whose leaves suggest... */
@@ -239,6 +249,17 @@ size_t app_unfold_at(const struct app *app, uint64_t now_us, struct app_unfold_s
  * to grow it (no memory) ends the growth: the vine shows grown.
  */
 bool app_vines_advance(struct app *app, uint64_t now_us);
+/*
+ * A grow press off the loop (grow_async). job: the tree to grow (a copy into *copy, an
+ * initialised tree), the settings and the serial it is of; 0 or -ENOMEM. done: the copy,
+ * grown with wood_grow on any thread, becomes the app's tree as a grow op at now_us (the
+ * copy then holds the tree before, for the caller to free); -EAGAIN when the app's tree
+ * changed meanwhile (the caller grows a new job's), 0 when no press waits any more (the
+ * copy is the caller's), or -ENOMEM.
+ */
+int app_grow_job(const struct app *app, struct tree *copy, struct wood_params *p,
+		 uint64_t *serial);
+int app_grow_done(struct app *app, struct tree *grown, uint64_t serial, uint64_t now_us);
 /* A grow press's bark swells on screen over this long, by the events' time (wood.h's
  * WOOD_SWELL_FRAMES frames). */
 #define APP_SWELL_US 1000000u

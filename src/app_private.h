@@ -79,9 +79,10 @@ int app_vines_refresh(struct app *app);
 int app_vine_plan(const struct app *app, struct vec3 p, uint64_t time_us, struct doc_op *op,
 		  struct vine_support **bark);
 
-/* app_wood.c: a grow op (a press) and an import op applied to t (SKETCH_* or < 0); and
+/* app_wood.c: a grow op (a press; one grown off the loop, lent, is swapped in) and an
+ * import op applied to the app's tree (SKETCH_* or < 0); and
  * whether the tree keeps its wood after an op of this kind gave this result. */
-int app_wood_apply(struct tree *t, const struct doc_op *op);
+int app_wood_apply(struct app *app, const struct doc_op *op);
 int app_import_apply(struct tree *t, const struct doc_op *op);
 bool app_op_keeps_wood(enum doc_op_kind kind, int result);
 /* The grow button. 0 or a negative errno. */

@@ -15,14 +15,53 @@
 #include "wood.h"
 
 /* A press on t with the op's settings (those of t's first press stand for its grid). */
-int app_wood_apply(struct tree *t, const struct doc_op *op)
+int app_wood_apply(struct app *app, const struct doc_op *op)
 {
+	struct tree *t = &app->tree;
 	int ret;
 
 	if (!op->wood || !t->lifted || t->nbranches == 0)
 		return SKETCH_GREW; /* nothing to grow */
+	if (app->grow_lent && op == app->grow_lent_op) {
+		/* grown off the loop from a copy of this very tree: the same tree, bit for bit */
+		tree_swap(t, app->grow_lent);
+		tree_index_keep(t);
+		return SKETCH_CHANGED;
+	}
 	ret = wood_grow(t, op->wood);
 	return ret < 0 ? ret : SKETCH_CHANGED;
+}
+
+int app_grow_job(const struct app *app, struct tree *copy, struct wood_params *p,
+		 uint64_t *serial)
+{
+	*p = app->wood_settings;
+	*serial = app->mesh_serial;
+	return tree_copy(copy, &app->tree);
+}
+
+int app_grow_done(struct app *app, struct tree *grown, uint64_t serial, uint64_t now_us)
+{
+	struct doc_op op = { .kind = DOC_OP_GROW, .time_us = now_us };
+	int ret;
+
+	if (!app->grow_waiting)
+		return 0;
+	if (serial != app->mesh_serial)
+		return -EAGAIN;
+	op.wood = malloc(sizeof(*op.wood));
+	if (!op.wood)
+		return -ENOMEM;
+	*op.wood = app->wood_settings;
+	app->grow_waiting = false;
+	app->grow_lent = grown;
+	ret = app_push_op(app, &op);
+	app->grow_lent = NULL;
+	app->grow_lent_op = NULL;
+	doc_op_finish(&op);
+	if (app->status == APP_STATUS_GROWING)
+		app_set_status(app, APP_STATUS_NONE, now_us);
+	return ret == -ENOSPC ? 0 : ret;
 }
 
 int app_import_apply(struct tree *t, const struct doc_op *op)
@@ -98,6 +137,15 @@ int app_grow(struct app *app, uint64_t time_us)
 		ret = app_press_button(app, BUTTON_3D, time_us);
 	if (ret < 0 || !app->tree.lifted)
 		return ret;
+	if (app->grow_async) {
+		/* the kiosk presses off its loop; one press at a time */
+		if (!app->grow_waiting) {
+			app->grow_waiting = true;
+			app->requests |= APP_REQUEST_GROW;
+			app_hold_status(app, APP_STATUS_GROWING, time_us);
+		}
+		return 0;
+	}
 	op.wood = malloc(sizeof(*op.wood));
 	if (!op.wood)
 		return -ENOMEM;

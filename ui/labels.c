@@ -72,6 +72,7 @@ static const char *const status_words[APP_STATUS_COUNT][NLANGS] = {
 				  "みきの ねもとを タップして つるを うえよう" },
 	[APP_STATUS_VINE_WHERE] = { "Tap closer to the bottom of the trunk",
 				    "みきの ねもとの ちかくを タップしてね" },
+	[APP_STATUS_GROWING] = { "Growing... a year older", "そだってるよ… 1ねん たつよ" },
 	[APP_STATUS_VINE_FULL] = { "This tree has all the vines it can hold",
 				   "この木には もう つるが いっぱいだよ" },
 };

@@ -53,15 +53,26 @@ static struct rgba status_colour(enum app_status s)
 		return (struct rgba){ 0.24f, 0.58f, 0.22f, 1.0f };
 	if (s == APP_STATUS_SAVING)
 		return (struct rgba){ 0.20f, 0.45f, 0.78f, 1.0f };
+	if (s == APP_STATUS_GROWING)
+		return (struct rgba){ 0.40f, 0.24f, 0.12f, 1.0f }; /* the grow button's walnut */
 	return (struct rgba){ 0.86f, 0.36f, 0.12f, 1.0f };
 }
 
-/* A tick for good news, three dots for something under way, an arrow down for a hint,
- * "!" for bad, white in a disc of the message's colour. */
-static void status_icon(struct batch *b, enum app_status s, struct pt c, double r, float a)
+/* A tick for good news, three dots for something under way (lighting in turn while a
+ * tree grows), an arrow down for a hint, "!" for bad, white in a disc of the message's
+ * colour. */
+static void status_icon(struct batch *b, enum app_status s, struct pt c, double r, float a,
+			uint64_t now_us)
 {
 	batch_disc(b, c, r, faded(status_colour(s), a));
-	if (s == APP_STATUS_SAVING) {
+	if (s == APP_STATUS_GROWING) {
+		/* under way: the dots light one after another, so the visitor sees it move */
+		unsigned lit = (unsigned)(now_us / 250000u % 4u);
+
+		for (int i = -1; i <= 1; i++)
+			batch_disc(b, (struct pt){ c.x + 0.42 * r * i, c.y }, 0.14 * r,
+				   faded(white, (unsigned)(i + 1) < lit ? a : 0.35f * a));
+	} else if (s == APP_STATUS_SAVING) {
 		for (int i = -1; i <= 1; i++)
 			batch_disc(b, (struct pt){ c.x + 0.42 * r * i, c.y }, 0.14 * r, faded(white, a));
 	} else if (good_news(s)) {
@@ -140,7 +151,7 @@ void render_ui_status(struct batch *b, const struct ui_text *t, const struct app
 	batch_rounded_rect(b, x, y, w, h, 0.5 * h, faded(card, a));
 	batch_rounded_frame(b, x, y, w, h, 0.5 * h, fmax(1.5, 0.04 * h),
 			    faded(status_colour(s), a));
-	status_icon(b, s, (struct pt){ x + pad + r, y + 0.5 * h }, r, a);
+	status_icon(b, s, (struct pt){ x + pad + r, y + 0.5 * h }, r, a, now_us);
 	if (msg)
 		text_draw(b, t->font, msg, px, x + 2.0 * (pad + r) + 0.2 * h,
 			  y + 0.5 * h + 0.5 * (e.ascent - e.descent), faded(ink, a));

@@ -5,6 +5,7 @@
  * same wood bit for bit; the voxelised branches' swept bark gives way to the wood's; an
  * edit that changes the branches drops the wood, one that adds to them keeps it.
  */
+#include <errno.h>
 #include <string.h>
 
 #include "app.h"
@@ -90,6 +91,57 @@ static void test_swell(void)
 	app_destroy(app);
 }
 
+/* The kiosk's press off its loop: asked for, made on a copy (here on this thread, as the
+ * kiosk's worker does), handed back; the same tree as a press on the loop, bit for bit. A
+ * copy made before the tree changed is refused and made again. */
+static void test_async(void)
+{
+	struct app *a = drawn_tree(), *s = drawn_tree();
+	struct tree copy;
+	struct wood_params p;
+	uint64_t serial;
+
+	a->grow_async = true;
+	pen_button(&pen, a, BUTTON_GROW);
+	pen_button(&pen, s, BUTTON_GROW);
+	CHECK(app_take_requests(a) & APP_REQUEST_GROW);
+	CHECK(a->grow_waiting && a->tree.wood == NULL);
+	CHECK_INT(app_status_at(a, pen.now_us, NULL), APP_STATUS_GROWING);
+	/* a second press while one is under way asks nothing more */
+	pen_button(&pen, a, BUTTON_GROW);
+	CHECK(!(app_take_requests(a) & APP_REQUEST_GROW));
+	tree_init(&copy);
+	CHECK_INT(app_grow_job(a, &copy, &p, &serial), 0);
+	/* the visitor draws meanwhile: that copy is stale */
+	pen_line(&pen, a, 640, 300, 560, 200);
+	pen_line(&pen, s, 640, 300, 560, 200);
+	CHECK_INT(wood_grow(&copy, &p), 0);
+	CHECK_INT(app_grow_done(a, &copy, serial, pen.now_us), -EAGAIN);
+	CHECK(a->tree.wood == NULL && a->grow_waiting);
+	tree_clear(&copy);
+	/* the job again, of the tree as it is now */
+	CHECK_INT(app_grow_job(a, &copy, &p, &serial), 0);
+	CHECK_INT(wood_grow(&copy, &p), 0);
+	CHECK_INT(app_grow_done(a, &copy, serial, pen.now_us), 0);
+	CHECK(!a->grow_waiting);
+	CHECK_INT(app_status_at(a, pen.now_us, NULL), APP_STATUS_NONE);
+	CHECK_INT(a->doc.ops[a->doc.cursor - 1].kind, DOC_OP_GROW);
+	/* the same as the press made on the loop, the stroke before it */
+	pen_button(&pen, s, BUTTON_UNDO);
+	pen_button(&pen, s, BUTTON_UNDO);
+	pen_line(&pen, s, 640, 300, 560, 200);
+	pen_button(&pen, s, BUTTON_GROW);
+	CHECK(same_wood(a->tree.wood, s->tree.wood));
+	CHECK_INT(a->tree.nbranches, s->tree.nbranches);
+	for (size_t i = 0; i < a->tree.nbranches; i++)
+		CHECK(memcmp(a->tree.branches[i].radii, s->tree.branches[i].radii,
+			     a->tree.branches[i].npoints * sizeof(double)) == 0);
+	CHECK_INT(a->mesh.bark.nindices, s->mesh.bark.nindices);
+	tree_finish(&copy);
+	app_destroy(a);
+	app_destroy(s);
+}
+
 static void test_presses(void)
 {
 	struct app *app = drawn_tree(), *back = app_create(1280, 800, 1);
@@ -168,6 +220,7 @@ int main(void)
 {
 	test_presses();
 	test_swell();
+	test_async();
 	test_edits();
 	return 0;
 }
