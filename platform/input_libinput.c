@@ -43,6 +43,7 @@ struct input {
 	struct libinput_device *owner_dev;
 	bool in, down;
 	struct event last; /* position, tool, pressure, tilt of the last event */
+	uint64_t last_time; /* of the last event given out */
 	double mouse_x, mouse_y;
 	int32_t touch_slot;
 	bool debug;
@@ -77,6 +78,16 @@ static uint64_t now_us(void)
 	return (uint64_t)ts.tv_sec * 1000000u + (uint64_t)ts.tv_nsec / 1000u;
 }
 
+/* libinput's own events (a tablet's proximity, timers) can be stamped a few microseconds
+ * before one already given out; the event model and traces need time never to go back. */
+static void deliver(struct input *in, struct event *ev)
+{
+	if (ev->time_us < in->last_time)
+		ev->time_us = in->last_time;
+	in->last_time = ev->time_us;
+	in->emit(in->data, ev);
+}
+
 static void emit(struct input *in, enum event_type type, uint64_t time_us)
 {
 	struct event ev = in->last;
@@ -102,7 +113,7 @@ static void emit(struct input *in, enum event_type type, uint64_t time_us)
 	default:
 		break;
 	}
-	in->emit(in->data, &ev);
+	deliver(in, &ev);
 }
 
 /* Lets go of the pen: tip up and out of proximity, whoever held it. */
@@ -277,7 +288,7 @@ static void tablet_event(struct input *in, struct libinput_event *e)
 		ev.button = b == BTN_STYLUS ? EVENT_PEN_BUTTON_STYLUS : EVENT_PEN_BUTTON_STYLUS2;
 		ev.pressed = libinput_event_tablet_tool_get_button_state(t) ==
 			     LIBINPUT_BUTTON_STATE_PRESSED;
-		in->emit(in->data, &ev);
+		deliver(in, &ev);
 		break;
 	}
 	default:
