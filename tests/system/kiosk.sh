@@ -4,10 +4,12 @@
 # libevdev's uinput API) and the mode buttons on a gpio-sim chip (the module built from
 # Debian's linux-source by build_kmods.sh, as Debian's kernel lacks it). A visitor's
 # session (kiosk.script) draws a tree, has the tablet pulled out and plugged back in,
-# presses 3D, clone, leaf, propagate and export through gpio-sim, with pen taps between.
+# presses 3D, clone, leaf, propagate, grow and export through gpio-sim, with pen taps
+# between.
 # Checks on the host:
 #   - the kiosk ran through it: the tablet came back after the replug, the mode LEDs
-#     followed the buttons, the export was written and the kiosk stopped cleanly;
+#     followed the buttons, the grow press ran on its worker while frames went on, the
+#     export was written and the kiosk stopped cleanly;
 #   - the exported files: the .glb passes the Khronos glTF validator, the .obj loads in
 #     assimp, the .edaha loads back and holds what clone, leaf and propagate made;
 #   - the recording (--record) is the session: replayed headlessly it gives the exported
@@ -53,7 +55,10 @@ grep -qx 'after-3d 1 0' "$T/vm/leds" || fail "after 3D, not only the 3d LED lit:
 grep -qx 'after-clone 0 1' "$T/vm/leds" || fail "after clone, not only the clone LED lit"
 grep -q "edaha: exported /tmp/export/tree-0001.glb" "$log" || fail "no export in the log"
 grep -q "edaha: Terminated, stopping" "$log" || fail "the kiosk did not stop on SIGTERM"
-for b in 3d clone leaf propagate export; do
+grow=$(grep -m1 'edaha: grew a year' "$log") || fail "the grow press did not land"
+shown=$(echo "$grow" | sed -n 's/.*, \([0-9]*\) frames shown meanwhile$/\1/p')
+[ -n "$shown" ] && [ "$shown" -gt 0 ] || fail "no frame was shown while the tree grew: $grow"
+for b in 3d clone leaf propagate grow export; do
 	grep -q " button $b pressed$" "$T/vm/session.edaha-trace" || fail "the recording has no $b press"
 done
 
@@ -74,6 +79,8 @@ for o in clone arrange propagate; do
 	grep -q "\"origin\": *\"$o\"" "$T/loaded/skeleton.json" ||
 		fail "the exported tree has nothing from $o (the session's $o did not work)"
 done
+grep -q '^grow ' "$ex/tree-0001.edaha" || fail "the exported drawing has no grow op"
+grep -q '"wood": *{' "$T/loaded/skeleton.json" || fail "the exported tree has no wood"
 
 # the recording is the session: the same tree, the same screen
 env "${host_env[@]}" "$EDAHA" --headless --size 640x400 --replay "$T/vm/session.edaha-trace" --out "$T/replay" \
@@ -89,6 +96,7 @@ env "${host_env[@]}" "$EDAHA" --headless --size 640x400 --replay "$T/vm/session.
 "$IMGCMP" --max-diff 64 --max-fraction 0.02 "$T/vm/final.png" "$ex/tree-0001.png" ||
 	fail "the exported picture is not the screen"
 
+echo "grow press in the VM: ${grow#edaha: }"
 echo "kiosk responsiveness in the VM (TCG-emulated CPU and llvmpipe, far slower than a board):"
 grep 'pen events to screen\|frames; first' "$T/vm/stats.txt" | sed 's/^/  /'
 grep -q 'pen events to screen' "$T/vm/stats.txt" || fail "--stats printed no latency"
