@@ -83,6 +83,14 @@ static void press(const struct tree *src, const struct wood_params *p, double s[
 	s[THICKEN] = bench_now() - t0;
 	t0 = bench_now();
 	must(wood_iso(&g, 0.5, &bark), "wood_iso");
+	{
+		double wood = 0.0;
+
+		for (size_t i = 0; i < wood_cells(&g); i++)
+			wood += g.density[i];
+		must(wood_iso_keep_volume(&bark, 0, 0, wood * g.h * g.h * g.h, g.h),
+		     "wood_iso_keep_volume");
+	}
 	s[BARK] = bench_now() - t0;
 	s[TOTAL] = s[VOXELISE] + s[REST] + s[THICKEN] + s[BARK];
 	st->occupied = 0;

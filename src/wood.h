@@ -43,7 +43,7 @@ struct wood_params {
 
 /* The defaults (docs/wood-format.md): broadleaf, the 64 grid, beta 1, no wind; alpha and
  * gravity these. */
-#define WOOD_ALPHA_DEFAULT 1e4
+#define WOOD_ALPHA_DEFAULT 2e4
 #define WOOD_GRAVITY_DEFAULT 2e-7
 void wood_params_default(struct wood_params *p);
 /* Within every limit: 0, or -EINVAL with err naming the key (*key set, may be NULL). */
@@ -218,6 +218,15 @@ int wood_thicken(struct wood_grid *g, const struct wood_params *p, double *added
  * field; on -ENOMEM out keeps what it had (docs/wood.md, "Step 7").
  */
 int wood_iso(const struct wood_grid *g, double iso, struct mesh *out);
+/*
+ * The triangles of an iso-surface are chords inside curved bark (a 1.5-voxel branch loses
+ * a tenth): moves the vertices of m from first (its triangles from first_index) along
+ * their normals by their chords' sag, all by one factor, so that the volume is `wood`
+ * (m^3, the sum of density h^3); a face that would turn over keeps its corners. Normals
+ * and triangles unchanged. 0 or -ENOMEM (m unchanged).
+ */
+int wood_iso_keep_volume(struct mesh *m, size_t first, size_t first_index, double wood,
+			 double h);
 
 /* Frames of a press's swelling on screen, its bark the last (docs/wood.md). */
 #define WOOD_SWELL_FRAMES 8

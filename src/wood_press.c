@@ -64,6 +64,20 @@ static void swell_clear(struct wood *w)
 	w->nswell = 0;
 }
 
+/* The iso-surface of g, as much as its wood. */
+static int bark_of(const struct wood_grid *g, struct mesh *m)
+{
+	size_t n = wood_cells(g);
+	double wood = 0.0;
+	int ret = wood_iso(g, 0.5, m);
+
+	for (size_t i = 0; i < n; i++)
+		wood += g->density[i];
+	if (ret == 0)
+		ret = wood_iso_keep_volume(m, 0, 0, wood * g->h * g->h * g->h, g->h);
+	return ret;
+}
+
 /* The frames between the field before (density `before`) and w's now. 0 or -ENOMEM (none
  * then: the screen shows the bark at once). */
 static int swell_frames(struct wood *w, const double *before)
@@ -79,7 +93,7 @@ static int swell_frames(struct wood *w, const double *before)
 
 		for (size_t i = 0; i < n; i++)
 			blend[i] = before[i] + (w->g.density[i] - before[i]) * t;
-		ret = wood_iso(&view, 0.5, &w->swell[k - 1]);
+		ret = bark_of(&view, &w->swell[k - 1]);
 		if (ret == 0)
 			w->nswell = k;
 	}
@@ -105,7 +119,7 @@ int wood_press(struct wood *w)
 		ret = wood_thicken(&w->g, &w->p, &w->added, &w->lost);
 	if (ret == 0) {
 		mesh_clear(&w->bark);
-		ret = wood_iso(&w->g, 0.5, &w->bark);
+		ret = bark_of(&w->g, &w->bark);
 	}
 	if (ret == 0) {
 		w->presses++;

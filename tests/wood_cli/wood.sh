@@ -40,7 +40,7 @@ t_settings() {
 	printf 'edaha-wood: 1\nmode: conifer\ngravity: 0\n' >"$T/still.yaml"
 	run --replay "$DEMO" --press 3d --press grow --press grow --press grow --wood "$T/still.yaml" \
 		--dump-voxels --out "$T/s"
-	grep -q '^grow [0-9]* {edaha-wood: 1, mode: conifer, grid: 64, alpha: 10000, beta: 1, gravity: 0,' \
+	grep -q '^grow [0-9]* {edaha-wood: 1, mode: conifer, grid: 64, alpha: 20000, beta: 1, gravity: 0,' \
 		"$T/s/drawing.edaha" || fail "the conifer settings are not in the drawing"
 	python3 - "$T/s" <<'PY' || fail "without gravity the wood grew"
 import sys
