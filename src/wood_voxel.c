@@ -102,6 +102,7 @@ struct rings {
 	double *r;
 	float *v; /* 3 * WOOD_PRISM_SIDES a ring */
 	size_t k, cap;
+	const bool *fork_tip; /* per branch: children start at its tip (NULL: none do) */
 };
 
 static void rings_finish(struct rings *s)
@@ -208,7 +209,7 @@ static int branch_rings(const struct branch *b, struct rings *s)
 	s->k = 0;
 	if (b->npoints < 2)
 		return 0;
-	ret = rings_reserve(s, b->npoints);
+	ret = rings_reserve(s, b->npoints + 1);
 	if (ret < 0)
 		return ret;
 	for (size_t i = 0; i < b->npoints; i++) {
@@ -226,6 +227,17 @@ static int branch_rings(const struct branch *b, struct rings *s)
 	if (s->k < 2) {
 		s->k = 0;
 		return 0;
+	}
+	/* Children that start at the tip start on its end face, where the density is about
+	 * a half: the wood goes on by half the tip's radius, so that their swept roots are
+	 * inside the bark (docs/wood.md, "The prisms"). */
+	if (s->fork_tip && s->fork_tip[b->id] && s->r[s->k - 1] > 0.0) {
+		struct vec3 d = vec3_sub(s->p[s->k - 1], s->p[s->k - 2]);
+
+		s->p[s->k] = vec3_add(s->p[s->k - 1],
+				      vec3_scale(d, 0.5 * s->r[s->k - 1] / vec3_len(d)));
+		s->r[s->k] = s->r[s->k - 1];
+		s->k++;
 	}
 	rings_frames(s);
 	for (size_t i = 0; i < s->k; i++)
@@ -422,7 +434,7 @@ int wood_prisms(const struct tree *t, int cells, struct mesh *out, bool *voxelis
 {
 	struct rings s = { 0 };
 	struct candidate *c = NULL;
-	bool *in = NULL;
+	bool *in = NULL, *fork_tip = NULL;
 	size_t n = 0, nin;
 	size_t nv = out->nvertices, ni = out->nindices;
 	int ret;
@@ -431,7 +443,15 @@ int wood_prisms(const struct tree *t, int cells, struct mesh *out, bool *voxelis
 		return -EINVAL;
 	c = malloc((t->nbranches ? t->nbranches : 1) * sizeof(*c));
 	in = calloc(t->nbranches ? t->nbranches : 1, sizeof(*in));
-	ret = c && in ? 0 : -ENOMEM;
+	fork_tip = calloc(t->nbranches ? t->nbranches : 1, sizeof(*fork_tip));
+	ret = c && in && fork_tip ? 0 : -ENOMEM;
+	for (size_t b = 0; ret == 0 && b < t->nbranches; b++) {
+		int parent = t->branches[b].parent;
+
+		if (parent >= 0 && (size_t)parent < t->nbranches && t->branches[b].parent_t >= 1.0)
+			fork_tip[parent] = true;
+	}
+	s.fork_tip = fork_tip;
 	if (ret == 0)
 		ret = candidates(t, &s, c, &n);
 	if (ret == 0) {
@@ -449,6 +469,7 @@ int wood_prisms(const struct tree *t, int cells, struct mesh *out, bool *voxelis
 	rings_finish(&s);
 	free(c);
 	free(in);
+	free(fork_tip);
 	return ret;
 }
 

@@ -6,7 +6,7 @@
  * bit, press after press; the same tree gives the same field. Each pressed tree's bark
  * (these and a 127-branch zelkova, argv[1], after three presses) is closed, oriented and a
  * manifold without degenerate triangles, its volume within 5% of the wood (sum of
- * density h^3).
+ * density h^3), and the zelkova's twigs beside the wood start inside it.
  */
 #include <math.h>
 #include <stdio.h>
@@ -256,6 +256,24 @@ static void test_zelkova(void)
 	for (int i = 0; i < 3; i++)
 		CHECK_INT(wood_press(&w), 0);
 	check_bark(&w, "zelkova, 3 presses");
+	/* every twig beside the wood starts inside it: its tube leaves the bark without a gap */
+	{
+		size_t twigs = 0;
+		double least = 1.0;
+
+		for (size_t i = 0; i < t.nbranches; i++) {
+			const struct branch *b = &t.branches[i];
+
+			if (w.voxelised[i] || b->parent < 0 || !w.voxelised[b->parent])
+				continue;
+			least = fmin(least, wood_density_at(&w.g, b->points[0]));
+			twigs++;
+		}
+		printf("zelkova: %zu twigs on the wood, the least density at their roots %.3g\n",
+		       twigs, least);
+		CHECK(twigs > 10);
+		CHECK(least > 0.5);
+	}
 	wood_finish(&w);
 	tree_finish(&t);
 }

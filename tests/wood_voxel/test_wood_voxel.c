@@ -371,7 +371,8 @@ static double union_volume(const struct mesh *m, size_t nprisms, struct vec3 lo,
 	return (double)in * d.x * d.y * d.z;
 }
 
-/* A Y fork: a trunk and two children from its top, overlapping it there. */
+/* A Y fork: a trunk and two children from its top, overlapping it there; the trunk goes
+ * on past its top by half its radius (the children start at its tip): 4 prisms. */
 static void fork_tree(struct tree *t)
 {
 	tree_init(t);
@@ -391,8 +392,16 @@ static void test_fork(int cells, double want)
 	fork_tree(&t);
 	voxelise_tree(&t, cells, &m, vox, &g);
 	CHECK(vox[0] && vox[1] && vox[2]);
-	CHECK_INT(m.nindices, 3 * 28 * 3);
-	for (size_t p = 0; p < 3; p++)
+	CHECK_INT(m.nindices, 4 * 28 * 3);
+	/* the trunk's two prisms (48 vertices each) reach 0.05 past its top */
+	{
+		double top = 0.0;
+
+		for (size_t v = 0; v < 2 * 48; v++)
+			top = fmax(top, m.positions[3 * v + 1]);
+		CHECK_NEAR(top, 1.05, 1e-6);
+	}
+	for (size_t p = 0; p < 4; p++)
 		sum += signed_volume(&m, 28 * p, 28 * (p + 1));
 	check_range(&g);
 	vol = field_sum(&g) * g.h * g.h * g.h;
@@ -674,7 +683,7 @@ int main(void)
 	fork_tree(&t);
 	mesh_init(&m);
 	CHECK_INT(wood_prisms(&t, 64, &m, NULL), 0);
-	want = union_volume(&m, 3, vec3(-0.6, -0.01, -0.2), vec3(0.55, 1.7, 0.2), 200);
+	want = union_volume(&m, 4, vec3(-0.6, -0.01, -0.2), vec3(0.55, 1.7, 0.2), 200);
 	mesh_finish(&m);
 	tree_finish(&t);
 	test_fork(64, want);
