@@ -22,14 +22,11 @@ static void params(const struct branch *b, double *t)
 }
 
 /* The point below where a child at parent_t joins: the segment (t[k], t[k + 1]] it is on
- * (parent_t 0: point 0); a child at the tip (parent_t 1) joins the tip itself, which is a
- * fork then and no tip. */
+ * (parent_t 0: point 0). */
 static size_t point_below(const double *t, size_t n, double parent_t)
 {
 	size_t k = 0;
 
-	if (n > 1 && parent_t >= 1.0)
-		return n - 1;
 	while (k + 2 < n && parent_t > t[k + 1])
 		k++;
 	return k;
@@ -60,9 +57,8 @@ int wood_power_law(struct tree *t, double a)
 
 		if (n == 0)
 			continue;
-		/* a free tip keeps its drawn radius, one with children at it is their fork;
-		 * between forks, the drawn taper */
-		r[n - 1] = below[n - 1] > 0.0 ? pow(below[n - 1], 1.0 / a) : b->radii[n - 1];
+		/* the tip keeps its drawn radius; between forks, the drawn taper */
+		r[n - 1] = b->radii[n - 1];
 		for (size_t k = n - 1; k-- > 0;) {
 			if (below[k] > 0.0)
 				r[k] = pow(pow(r[k + 1], a) + below[k], 1.0 / a);

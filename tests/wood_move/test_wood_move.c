@@ -74,11 +74,11 @@ static void leaves(struct tree *t)
 	leaf(t, 1, 0.7, vec3(0.35, 0.81, 0.05), vec3(0, 0, 1), limb_dir);
 	leaf(t, 1, 0.3, vec3(0.15, 0.69, -0.05), vec3(0, 0, -1), limb_dir);
 	/* on the twig's far end (FAR_FIRST on) */
-	leaf(t, 2, 0.9, vec3(0.76, 1.12, 0.0), up, vec3(0, 0, 1));
-	leaf(t, 2, 1.0, vec3(0.8, 1.14, 0.0), vec3(1, 0, 0), vec3(0, 0, 1));
+	leaf(t, 2, 0.9, vec3(0.86, 1.18, 0.0), up, vec3(0, 0, 1));
+	leaf(t, 2, 1.0, vec3(0.9, 1.2, 0.0), vec3(1, 0, 0), vec3(0, 0, 1));
 }
 
-/* The tree: a trunk of 1 m (r 0.08), a limb from 0.6 of it, a twig from 0.8 of the limb. */
+/* The tree: a trunk of 1 m (r 0.08), a limb from 0.6 of it, a twig off the limb's end. */
 static void build(struct tree *t)
 {
 	struct vec3 p[11];
@@ -89,10 +89,8 @@ static void build(struct tree *t)
 	CHECK_INT(tree_add_branch(t, -1, 0, ORIGIN_SKETCH, p, r, 11), 0);
 	line(p, r, 6, vec3(0, 0.6, 0), vec3(0.5, 0.9, 0), 0.05, 0.04);
 	CHECK_INT(tree_add_branch(t, 0, 0.6, ORIGIN_SKETCH, p, r, 6), 1);
-	/* from 0.8 of the limb: a twig at its tip would be the limb's fork, making the limb
-	 * as thin as the twig by the power law */
-	line(p, r, 5, vec3(0.4, 0.84, 0), vec3(0.8, 1.14, 0), 0.008, 0.005);
-	CHECK_INT(tree_add_branch(t, 1, 0.8, ORIGIN_SKETCH, p, r, 5), 2);
+	line(p, r, 5, vec3(0.5, 0.9, 0), vec3(0.9, 1.2, 0), 0.008, 0.005);
+	CHECK_INT(tree_add_branch(t, 1, 1.0, ORIGIN_SKETCH, p, r, 5), 2);
 	t->lifted = true;
 	leaves(t);
 }
