@@ -3,7 +3,7 @@
  * Step 6 of growing wood (wood.h, docs/wood.md "Step 6: thickening"): the surface layer's
  * growth Csi = (alpha * density * f)^beta, every Csi from the field as it was, each added
  * to its own voxel first, then what passed 1.0 spread ring by ring about its voxel in
- * proportion to 1 / distance, sources in scan order.
+ * proportion to 1 / distance, every source at once.
  */
 #include <errno.h>
 #include <math.h>
@@ -19,15 +19,22 @@ struct wood_grow {
 
 /* What a pass over a ring does to each voxel below 1.0 in it. */
 enum wood_pass {
-	WOOD_PASS_WEIGH, /* sum the weights */
-	WOOD_PASS_FILL,  /* fill those whose share reaches 1.0, to exactly 1.0 */
-	WOOD_PASS_ADD,   /* add every share */
+	WOOD_PASS_WEIGH,  /* sum the weights */
+	WOOD_PASS_DEMAND, /* add the source's share to the voxel's demand */
+	WOOD_PASS_TAKE,   /* sum what of its shares the voxels can take */
+	WOOD_PASS_APPLY,  /* each voxel takes its demand, or fills to exactly 1.0 */
 };
 
 struct wood_ring_acc {
 	double weight; /* WEIGH: the sum of 1 / distance */
-	double placed; /* FILL: what the filled voxels took */
-	size_t open;   /* WEIGH: voxels below 1.0; FILL, ADD: voxels brought to 1.0 */
+	double placed; /* TAKE: what of the source's shares is taken */
+	size_t open;   /* WEIGH: voxels below 1.0; APPLY: voxels brought to 1.0 */
+};
+
+/* A source of overflow: where, what it still has to place, and the ring it is on. */
+struct wood_source {
+	int cx, cy, cz, r, rmax;
+	double e, t; /* t: its share per unit weight this round */
 };
 
 static bool wood_grows(const struct wood_grid *g, size_t i)
@@ -110,35 +117,37 @@ static void wood_add_own(struct wood_grid *g, struct wood_grow *v, size_t n, siz
 	}
 }
 
-static void wood_visit(struct wood_grid *g, size_t i, int d2, enum wood_pass pass, double t,
-		       struct wood_ring_acc *acc)
+static void wood_visit(struct wood_grid *g, double *demand, size_t i, int d2,
+		       enum wood_pass pass, double t, struct wood_ring_acc *acc)
 {
-	double *d = &g->density[i], w, nv;
+	double *d = &g->density[i], w, room;
 
 	if (!(*d < 1.0))
 		return;
 	w = 1.0 / sqrt((double)d2);
+	room = 1.0 - *d;
 	switch (pass) {
 	case WOOD_PASS_WEIGH:
 		acc->weight += w;
 		acc->open++;
 		return;
-	case WOOD_PASS_FILL:
-		nv = *d + t * w;
-		if (nv >= 1.0) {
-			acc->placed += 1.0 - *d;
+	case WOOD_PASS_DEMAND:
+		demand[i] += t * w;
+		return;
+	case WOOD_PASS_TAKE:
+		/* a voxel asked for more than its room shares it out in proportion */
+		acc->placed += demand[i] > room ? t * w * (room / demand[i]) : t * w;
+		return;
+	case WOOD_PASS_APPLY:
+		if (!(demand[i] > 0.0))
+			return; /* none asked, or applied already from another ring */
+		if (demand[i] >= room) {
 			*d = 1.0;
 			acc->open++;
+		} else {
+			*d += demand[i];
 		}
-		return;
-	case WOOD_PASS_ADD:
-		nv = *d + t * w;
-		/* below 1.0 by the FILL pass before; the clamp only guards rounding */
-		if (nv >= 1.0) {
-			nv = 1.0;
-			acc->open++;
-		}
-		*d = nv;
+		demand[i] = 0.0;
 		return;
 	}
 }
@@ -147,9 +156,10 @@ static void wood_visit(struct wood_grid *g, size_t i, int d2, enum wood_pass pas
  * One pass over ring r about (cx, cy, cz): the voxels inside the grid at Chebyshev
  * distance r, z then y then x ascending (a fixed order, so sums repeat bit for bit).
  */
-static void wood_ring_pass(struct wood_grid *g, int cx, int cy, int cz, int r,
-			   enum wood_pass pass, double t, struct wood_ring_acc *acc)
+static void wood_ring_pass(struct wood_grid *g, double *demand, const struct wood_source *s,
+			   enum wood_pass pass, struct wood_ring_acc *acc)
 {
+	int cx = s->cx, cy = s->cy, cz = s->cz, r = s->r;
 	int x0 = cx - r < 0 ? 0 : cx - r, x1 = cx + r >= g->nx ? g->nx - 1 : cx + r;
 	int y0 = cy - r < 0 ? 0 : cy - r, y1 = cy + r >= g->ny ? g->ny - 1 : cy + r;
 	int z0 = cz - r < 0 ? 0 : cz - r, z1 = cz + r >= g->nz ? g->nz - 1 : cz + r;
@@ -163,78 +173,118 @@ static void wood_ring_pass(struct wood_grid *g, int cx, int cy, int cz, int r,
 			if (abs(dz) == r || abs(dy) == r) {
 				/* a face of the ring's cube: the whole row */
 				for (int x = x0; x <= x1; x++)
-					wood_visit(g, wood_index(g, x, y, z),
-						   dyz + (x - cx) * (x - cx), pass, t, acc);
+					wood_visit(g, demand, wood_index(g, x, y, z),
+						   dyz + (x - cx) * (x - cx), pass, s->t, acc);
 				continue;
 			}
 			/* inside the cube's z and y: only its two ends in x */
 			if (cx - r >= 0)
-				wood_visit(g, wood_index(g, cx - r, y, z), dyz + r * r, pass, t,
-					   acc);
+				wood_visit(g, demand, wood_index(g, cx - r, y, z), dyz + r * r,
+					   pass, s->t, acc);
 			if (cx + r < g->nx)
-				wood_visit(g, wood_index(g, cx + r, y, z), dyz + r * r, pass, t,
-					   acc);
+				wood_visit(g, demand, wood_index(g, cx + r, y, z), dyz + r * r,
+					   pass, s->t, acc);
 		}
 	}
 }
 
-/*
- * Places e in ring r, among its voxels below 1.0 in proportion to 1 / distance: those
- * whose share would reach 1.0 are filled to exactly 1.0 and the split repeated among the
- * rest (filling them only raises the others' shares, so every voxel filled in a round
- * would be filled in the end), until a round fills none and every share is added. What
- * the ring had no room for is returned.
- */
-static double wood_ring_place(struct wood_grid *g, int cx, int cy, int cz, int r, double e,
-			      size_t *open)
+/* A source at voxel i with excess e, on ring 1; rmax its farthest ring inside the grid. */
+static struct wood_source wood_source_at(const struct wood_grid *g, size_t i, double e)
 {
-	for (;;) {
-		struct wood_ring_acc acc = { 0 };
-		double t;
+	struct wood_source s = { 0 };
 
-		wood_ring_pass(g, cx, cy, cz, r, WOOD_PASS_WEIGH, 0.0, &acc);
-		if (acc.open == 0)
-			return e;
-		t = e / acc.weight;
-		acc.open = 0;
-		wood_ring_pass(g, cx, cy, cz, r, WOOD_PASS_FILL, t, &acc);
-		if (acc.open == 0) {
-			wood_ring_pass(g, cx, cy, cz, r, WOOD_PASS_ADD, t, &acc);
-			*open -= acc.open;
-			return 0.0;
-		}
-		*open -= acc.open;
-		e -= acc.placed;
-		if (!(e > 0.0))
-			return 0.0; /* all placed (below 0 only by rounding) */
-	}
+	s.cx = (int)(i % (size_t)g->nx);
+	s.cy = (int)(i / (size_t)g->nx % (size_t)g->ny);
+	s.cz = (int)(i / ((size_t)g->nx * (size_t)g->ny));
+	s.rmax = s.cx;
+	s.rmax = g->nx - 1 - s.cx > s.rmax ? g->nx - 1 - s.cx : s.rmax;
+	s.rmax = s.cy > s.rmax ? s.cy : s.rmax;
+	s.rmax = g->ny - 1 - s.cy > s.rmax ? g->ny - 1 - s.cy : s.rmax;
+	s.rmax = s.cz > s.rmax ? s.cz : s.rmax;
+	s.rmax = g->nz - 1 - s.cz > s.rmax ? g->nz - 1 - s.cz : s.rmax;
+	s.r = 1;
+	s.e = e;
+	return s;
 }
 
 /*
- * Spreads e from voxel i outwards, ring 1, 2, ... up to the farthest ring with a voxel
- * inside the grid (so it ends); returns what found no room (the grid full about it).
+ * Every source's excess spread at once, each outward ring by ring about its voxel (no
+ * source first: the result does not depend on the order of the sources, up to rounding).
+ * A round: each source with excess offers it to the voxels below 1.0 in its ring in
+ * proportion to 1 / distance; a voxel offered no more than its room takes it all, one
+ * offered more fills to exactly 1.0 and its room is shared among its offers in their
+ * proportion; each source keeps what was not taken for the next round, on the same ring
+ * while it has voxels below 1.0, else the next. A round that fills no voxel places
+ * everything offered. Returns what found no room (the grid full about its sources).
  */
-static double wood_spill(struct wood_grid *g, size_t i, double e, size_t *open)
+static double wood_spread(struct wood_grid *g, double *demand, struct wood_source *src,
+			  size_t n, size_t *open)
 {
-	int cx = (int)(i % (size_t)g->nx), cy = (int)(i / (size_t)g->nx % (size_t)g->ny);
-	int cz = (int)(i / ((size_t)g->nx * (size_t)g->ny));
-	int rmax = cx;
+	double lost = 0.0;
+	size_t active = n;
 
-	rmax = g->nx - 1 - cx > rmax ? g->nx - 1 - cx : rmax;
-	rmax = cy > rmax ? cy : rmax;
-	rmax = g->ny - 1 - cy > rmax ? g->ny - 1 - cy : rmax;
-	rmax = cz > rmax ? cz : rmax;
-	rmax = g->nz - 1 - cz > rmax ? g->nz - 1 - cz : rmax;
-	/* no voxel anywhere below 1.0: no ring need be looked at */
-	for (int r = 1; r <= rmax && e > 0.0 && *open > 0; r++)
-		e = wood_ring_place(g, cx, cy, cz, r, e, open);
-	return e;
+	while (active > 0 && *open > 0) {
+		size_t filled = 0;
+
+		active = 0;
+		for (size_t k = 0; k < n; k++) {
+			struct wood_source *s = &src[k];
+
+			if (!(s->e > 0.0))
+				continue;
+			for (; s->r <= s->rmax; s->r++) {
+				struct wood_ring_acc acc = { 0 };
+
+				wood_ring_pass(g, demand, s, WOOD_PASS_WEIGH, &acc);
+				if (acc.open > 0) {
+					s->t = s->e / acc.weight;
+					break;
+				}
+			}
+			if (s->r > s->rmax) {
+				lost += s->e;
+				s->e = 0.0;
+				continue;
+			}
+			wood_ring_pass(g, demand, s, WOOD_PASS_DEMAND, NULL);
+			active++;
+		}
+		if (active == 0)
+			break;
+		for (size_t k = 0; k < n; k++) {
+			struct wood_ring_acc acc = { 0 };
+
+			if (!(src[k].e > 0.0))
+				continue;
+			wood_ring_pass(g, demand, &src[k], WOOD_PASS_TAKE, &acc);
+			src[k].e -= acc.placed;
+		}
+		for (size_t k = 0; k < n; k++) {
+			struct wood_ring_acc acc = { 0 };
+
+			/* a source that placed all still lists its ring's demands: apply them */
+			if (src[k].t > 0.0) {
+				wood_ring_pass(g, demand, &src[k], WOOD_PASS_APPLY, &acc);
+				filled += acc.open;
+			}
+			src[k].t = 0.0;
+		}
+		*open -= filled;
+		for (size_t k = 0; k < n; k++)
+			if (filled == 0 || !(src[k].e > 0.0))
+				src[k].e = 0.0; /* all offered was taken (below 0 only by rounding) */
+	}
+	for (size_t k = 0; k < n; k++)
+		lost += src[k].e > 0.0 ? src[k].e : 0.0;
+	return lost;
 }
 
 int wood_thicken(struct wood_grid *g, const struct wood_params *p, double *added, double *lost)
 {
 	struct wood_grow *v;
-	size_t n, open;
+	struct wood_source *src = NULL;
+	double *demand = NULL;
+	size_t n, open, nsrc = 0;
 	double sum = 0.0, gone = 0.0;
 	int rc;
 
@@ -247,14 +297,29 @@ int wood_thicken(struct wood_grid *g, const struct wood_params *p, double *added
 	rc = wood_collect(g, p, &v, &n);
 	if (rc < 0 || n == 0)
 		return rc;
+	src = malloc(n * sizeof(*src));
+	demand = calloc(wood_cells(g), sizeof(*demand));
+	if (!src || !demand) {
+		free(v);
+		free(src);
+		free(demand);
+		return -ENOMEM;
+	}
 	open = wood_open_count(g);
 	wood_add_own(g, v, n, &open);
 	for (size_t k = 0; k < n; k++) {
 		sum += v[k].csi;
 		if (v[k].excess > 0.0)
-			gone += wood_spill(g, v[k].i, v[k].excess, &open);
+			src[nsrc++] = wood_source_at(g, v[k].i, v[k].excess);
 	}
+	if (nsrc > 0 && open > 0)
+		gone = wood_spread(g, demand, src, nsrc, &open);
+	else
+		for (size_t k = 0; k < nsrc; k++)
+			gone += src[k].e;
 	free(v);
+	free(src);
+	free(demand);
 	if (added)
 		*added = sum;
 	if (lost)

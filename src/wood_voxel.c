@@ -57,7 +57,8 @@ static void box_union(struct wood_box *b, const struct wood_box *c)
 }
 
 /*
- * The grid about a box: padded by WOOD_PAD of its longest side, `cells` along that side.
+ * The grid about a box: padded by WOOD_PAD of its longest side, `cells` along that side,
+ * centred on the box across and from its pad below upward.
  * wood_prisms (to choose the branches) and wood_grid_for (to make the grid) share it, so
  * both see the same h bit for bit. 0 or -EINVAL (an empty, flat or non-finite box).
  */
@@ -80,8 +81,11 @@ static int grid_frame(const struct wood_box *b, int cells, struct vec3 *origin, 
 	for (int a = 0; a < 3; a++) {
 		double n = ceil((b->hi[a] - b->lo[a] + 2.0 * pad) / *h - WOOD_DIMS_SLACK);
 
-		lo[a] = b->lo[a] - pad;
 		dims[a] = n < 1.0 ? 1 : n > cells ? cells : (int)n;
+		/* across (x, z) the grid is centred on the box, so that a tree symmetric about
+		 * a vertical plane through its middle meets its voxels the same way on both
+		 * sides; upward it starts at the pad below the box, where the ground is */
+		lo[a] = a == 1 ? b->lo[a] - pad : 0.5 * (b->lo[a] + b->hi[a]) - 0.5 * dims[a] * *h;
 	}
 	*origin = vec3(lo[0], lo[1], lo[2]);
 	return 0;

@@ -165,7 +165,9 @@ static void test_y(void)
 				worst = fmax(worst, fabs(mx[0] / m[0] + mx[1] / m[1]) / g->h);
 		}
 	printf("Y: the two sides' rows mirror each other within %.3g voxels\n", worst);
-	CHECK(worst <= 0.5);
+	/* the issue asks half a voxel; the grid centred across the tree makes it exact but
+	 * for the rays' tie-breaking nudge (docs/wood.md) */
+	CHECK(worst <= 1e-3);
 	/* the arms grow as a leaning trunk does: more below (conifer) */
 	sides(&w, vec3(0, 1, 0), vec3(s, s, 0), vec3(s, -s, 0), sqrt(0.5), 0.15, 0.6, &below[0],
 	      &above[0]);
@@ -173,10 +175,11 @@ static void test_y(void)
 	      &above[1]);
 	printf("Y arms: below %.4g / %.4g, above %.4g / %.4g\n", below[0], below[1], above[0],
 	       above[1]);
-	/* as the leaning trunk: at least twice below what grows above, on each arm (their
-	 * amounts differ a little: the overflow is placed in scan order, and an arm's
-	 * octagons are not quite its mirror's) */
+	/* as the leaning trunk: at least twice below what grows above, on each arm; and the
+	 * two arms the same (every overflow spread at once, the grid centred) */
 	CHECK(below[0] >= 2.0 * above[0] && below[1] >= 2.0 * above[1]);
+	CHECK(fabs(below[0] - below[1]) <= 1e-3 * below[0]);
+	CHECK(fabs(above[0] - above[1]) <= 1e-3 * above[0]);
 	check_bark(&w, "Y");
 	wood_finish(&w);
 	tree_finish(&t);

@@ -423,7 +423,8 @@ static void test_fork(int cells, double want)
 	tree_finish(&t);
 }
 
-/* The box about a mesh, padded by 15% of its longest side; dims ceil(extent / h). */
+/* The box about a mesh, padded by 15% of its longest side; dims ceil(extent / h); the grid
+ * centred on the box in x and z. */
 static void test_grid_for(void)
 {
 	struct mesh m;
@@ -436,12 +437,14 @@ static void test_grid_for(void)
 	CHECK_INT(wood_grid_for(&m, 1025, &g), -EINVAL);
 	CHECK_INT(wood_grid_for(&m, 64, &g), 0);
 	CHECK_NEAR(g.h, 2.6 / 64, 1e-15);
-	CHECK_NEAR(g.origin.x, -0.3, 1e-15);
-	CHECK_NEAR(g.origin.y, -0.3, 1e-15);
-	CHECK_NEAR(g.origin.z, -0.3, 1e-15);
 	CHECK_INT(g.nx, 64);
 	CHECK_INT(g.ny, 40); /* ceil(1.6 / (2.6 / 64)) = ceil(39.4) */
 	CHECK_INT(g.nz, 28); /* ceil(1.1 / (2.6 / 64)) = ceil(27.1) */
+	/* centred across (x: exactly the padded box; z: 28 cells about its middle 0.25),
+	 * from the pad below upward */
+	CHECK_NEAR(g.origin.x, -0.3, 1e-15);
+	CHECK_NEAR(g.origin.y, -0.3, 1e-15);
+	CHECK_NEAR(g.origin.z, 0.25 - 14 * 2.6 / 64, 1e-15);
 	for (size_t i = 0; i < wood_cells(&g); i++)
 		CHECK(g.density[i] == 0.0 && g.flags[i] == 0);
 	wood_grid_finish(&g);
