@@ -200,8 +200,9 @@ int wood_rest_euler(struct wood_grid *g, const struct wood_params *p, double gro
  * outwards until all of it is placed (a voxel at 1.0 takes no more). Every density stays
  * within 0..1 and none decreases. *added: the wood added (sum of Csi), *lost: what found
  * no room inside the grid (its edge); either may be NULL. Each Csi goes into its own voxel
- * first, then the excesses spread in the scan order of their voxels; a ring's share is
- * split among its voxels inside the grid (docs/wood.md "Step 6: thickening"). Flags,
+ * first, then the excesses spread all at once, in rounds (no source before another: a
+ * voxel offered more than its room shares it among its offers); a ring's share is split
+ * among its voxels inside the grid (docs/wood.md "Step 6: thickening"). Flags,
  * compression and tension are left as they were. 0, -EINVAL (mode unknown, or a Csi not
  * finite: alpha, beta or a force out of range) or -ENOMEM; on an error the field is
  * unchanged.

@@ -3,7 +3,8 @@
  * Step 6 of growing wood (wood.h, docs/wood.md "Step 6: thickening") on fields built by
  * hand: the growth exactly (beta 1 and not), conifers by compression and broadleaf trees
  * by tension, who does not grow, the overflow's 1 / distance shares, a full neighbour and
- * a full ring, the grid's edge, every Csi from the field before, and on seeded random
+ * a full ring, the grid's edge, every Csi from the field before, two sources at once
+ * (mirror images stay mirrored), and on seeded random
  * fields with many overflows: conservation, 0 <= density <= 1, nothing decreases, the
  * other fields untouched, the same result twice.
  */
@@ -368,6 +369,48 @@ static void test_previous_field(void)
 	wood_grid_finish(&g);
 }
 
+/*
+ * Two sources whose rings meet, mirror images about x = 3, each with more than its ring 1
+ * can take: neither goes first, so the field is its own mirror image (bit for bit but for
+ * the sums' rounding), what they share is split between them, and both spill into ring
+ * 2. Taking them one after another, the first would have filled the voxels between them
+ * and pushed the second's excess further out on its side.
+ */
+static void test_two_sources(void)
+{
+	struct wood_grid g;
+	struct wood_params p = params(WOOD_CONIFER, 1.0, 1.0);
+	double added, lost, worst = 0.0;
+	size_t a, b;
+
+	grid(&g, 9, 7, 7);
+	a = mass(&g, 3, 3, 3, 0.5, 60.0, 0.0); /* Csi 30, excess 29.5: the rings 1 hold 43 */
+	b = mass(&g, 5, 3, 3, 0.5, 60.0, 0.0);
+	CHECK_INT(wood_thicken(&g, &p, &added, &lost), 0);
+	CHECK(g.density[a] == 1.0 && g.density[b] == 1.0);
+	CHECK(added == 60.0 && lost == 0.0);
+	for (int z = 0; z < 7; z++)
+		for (int y = 0; y < 7; y++)
+			for (int x = 0; x < 9; x++) {
+				double d = g.density[wood_index(&g, x, y, z)];
+				double m = g.density[wood_index(&g, 8 - x, y, z)];
+
+				CHECK(d >= 0.0 && d <= 1.0);
+				worst = fmax(worst, fabs(d - m));
+			}
+	printf("two sources: the field mirrors itself within %.2g\n", worst);
+	CHECK(worst <= 1e-14);
+	/* the column between them (x = 4) is in both rings 1: full; so is each ring 1 */
+	for (int z = 2; z <= 4; z++)
+		for (int y = 2; y <= 4; y++)
+			CHECK(g.density[wood_index(&g, 4, y, z)] == 1.0);
+	/* both spilled beyond ring 1 by the same amount: the outer columns alike */
+	CHECK(g.density[wood_index(&g, 1, 3, 3)] > 0.0);
+	CHECK(g.density[wood_index(&g, 1, 3, 3)] == g.density[wood_index(&g, 7, 3, 3)]);
+	CHECK_NEAR(density_sum(&g), 1.0 + 60.0, 1e-12);
+	wood_grid_finish(&g);
+}
+
 /* A random field: a few blobs of 1.0 with fractional rims, mass points where above 0,
  * forces up to fmax. */
 static void random_field(struct wood_grid *g, struct rng *r, double fmax)
@@ -528,6 +571,7 @@ int main(void)
 	test_ring_spill();
 	test_edge();
 	test_previous_field();
+	test_two_sources();
 	test_random();
 	test_errors();
 	return 0;
