@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include <xf86drm.h>
 
+#include "display.h"
 #include "drm_hotplug.h"
 #include "drm_kms.h"
 #include "offscreen.h"
@@ -25,6 +26,7 @@
 #define DRAIN_MS 500
 
 struct drm_display {
+	struct display base; /* first: the kiosk loop sees a struct display */
 	struct seat *seat;
 	struct drm_kms *kms;
 	struct drm_hotplug *hotplug; /* NULL: no monitor (said at create) */
@@ -696,4 +698,55 @@ int drm_display_present(struct drm_display *d)
 	d->next = bo;
 	d->flip_pending = true;
 	return 0;
+}
+
+/* The kiosk loop's view of it (display.h). */
+#define DRM(d) ((struct drm_display *)(d))
+#define CDRM(d) ((const struct drm_display *)(d))
+
+static void op_destroy(struct display *d) { drm_display_destroy(DRM(d)); }
+static size_t op_pollfds(const struct display *d, struct pollfd *out, size_t max)
+{
+	return drm_display_pollfds(CDRM(d), out, max);
+}
+static int op_dispatch(struct display *d, const struct pollfd *fds, size_t n)
+{
+	return drm_display_dispatch(DRM(d), fds, n);
+}
+static void op_size(const struct display *d, int *w, int *h) { drm_display_size(CDRM(d), w, h); }
+static const char *op_describe(const struct display *d) { return drm_display_describe(CDRM(d)); }
+static bool op_gles3(const struct display *d) { return drm_display_gles3(CDRM(d)); }
+static bool op_seat_active(const struct display *d) { return drm_display_seat_active(CDRM(d)); }
+static bool op_can_draw(const struct display *d) { return drm_display_can_draw(CDRM(d)); }
+static bool op_needs_frame(const struct display *d) { return drm_display_needs_frame(CDRM(d)); }
+static int op_read_rgba(struct display *d, uint8_t *rgba) { return drm_display_read_rgba(DRM(d), rgba); }
+static int op_present(struct display *d) { return drm_display_present(DRM(d)); }
+static bool op_flip_pending(const struct display *d) { return drm_display_flip_pending(CDRM(d)); }
+static int op_flip_timeout(struct display *d) { return drm_display_flip_timeout(DRM(d)); }
+
+static const struct display_ops drm_ops = {
+	.destroy = op_destroy,
+	.pollfds = op_pollfds,
+	.dispatch = op_dispatch,
+	.size = op_size,
+	.describe = op_describe,
+	.gles3 = op_gles3,
+	.seat_active = op_seat_active,
+	.can_draw = op_can_draw,
+	.needs_frame = op_needs_frame,
+	.read_rgba = op_read_rgba,
+	.present = op_present,
+	.flip_pending = op_flip_pending,
+	.flip_timeout = op_flip_timeout,
+	.set_input = NULL, /* the pen and buttons come through libinput and the GPIO lines */
+};
+
+struct display *drm_display_open(const struct drm_display_config *cfg, struct error *err)
+{
+	struct drm_display *d = drm_display_create(cfg, err);
+
+	if (!d)
+		return NULL;
+	d->base.ops = &drm_ops;
+	return &d->base;
 }

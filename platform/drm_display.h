@@ -29,6 +29,7 @@
  * drm_display_needs_frame() asks for a frame although the app did not change.
  */
 struct drm_display;
+struct display;
 
 /* What a configuration may force; NULL / 0 fields are chosen automatically. */
 struct drm_display_config {
@@ -44,6 +45,8 @@ struct drm_display_config {
 
 /* Sets nothing on screen yet (the first present does the modeset). NULL, err says why. */
 struct drm_display *drm_display_create(const struct drm_display_config *cfg, struct error *err);
+/* The same as the kiosk loop's display (display.h). */
+struct display *drm_display_open(const struct drm_display_config *cfg, struct error *err);
 /* Puts back the CRTC's previous framebuffer and mode (a console, another program). */
 void drm_display_destroy(struct drm_display *d);
 

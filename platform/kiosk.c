@@ -78,7 +78,7 @@ struct kiosk_pending {
 
 struct kiosk {
 	struct kiosk_config cfg;
-	struct drm_display *display;
+	struct display *display;
 	struct render *render;
 	struct app *app;
 	struct trace_writer *rec;
@@ -251,10 +251,15 @@ static bool frame_due(const struct kiosk *k)
 
 	/* the display asks for one when it came back (VT switch, replug) */
 	if (k->cfg.frames || !k->drawn_valid || k->animating || k->export_asked ||
-	    drm_display_needs_frame(k->display))
+	    display_needs_frame(k->display))
 		return true;
 	look_of(k->app, now_us(), &now);
 	return !look_equal(&now, &k->drawn);
+}
+
+static void feed_from_display(void *data, const struct event *ev)
+{
+	kiosk_feed(data, ev);
 }
 
 static int open_signals(struct kiosk *k)
@@ -422,14 +427,17 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 		fprintf(stderr, "edaha: no timerfd for the watchdog: %s\n", strerror(errno));
 		goto fail;
 	}
-	k->display = drm_display_create(&cfg->display, &err);
+	k->display = display_create(&cfg->display, &err);
 	if (!k->display) {
 		fprintf(stderr, "edaha: no display: %s\n", err.msg);
 		goto fail;
 	}
-	drm_display_size(k->display, &w, &h);
-	fprintf(stderr, "edaha: kiosk on %s, GLES %d\n", drm_display_describe(k->display),
-		drm_display_gles3(k->display) ? 3 : 2);
+	display_size(k->display, &w, &h);
+	fprintf(stderr, "edaha: %s on %s, GLES %d\n",
+		cfg->display.kind == DISPLAY_WINDOW ? "window" : "kiosk",
+		display_describe(k->display), display_gles3(k->display) ? 3 : 2);
+	/* a window's mouse and keys are the pen and the buttons */
+	display_set_input(k->display, feed_from_display, k);
 	k->render = render_create();
 	if (k->render && render_set_text(k->render, cfg->font, cfg->font_len, cfg->language) < 0)
 		fputs("edaha: warning: the labels' font cannot be used: icons only\n", stderr);
@@ -491,7 +499,7 @@ void kiosk_destroy(struct kiosk *k)
 	grow_worker_destroy(k->grow); /* and for a press under way */
 	/* GL objects go while the display's context is still current */
 	render_destroy(k->render);
-	drm_display_destroy(k->display);
+	display_destroy(k->display);
 	app_destroy(k->app);
 	autosave_destroy(k->autosave);
 	if (k->cfg.doc)
@@ -532,7 +540,7 @@ void kiosk_set_mode_listener(struct kiosk *k, void (*fn)(void *data, enum button
 
 void kiosk_size(const struct kiosk *k, int *width, int *height)
 {
-	drm_display_size(k->display, width, height);
+	display_size(k->display, width, height);
 }
 
 static bool is_pen(const struct event *ev)
@@ -554,7 +562,7 @@ void kiosk_feed(struct kiosk *k, const struct event *ev)
 {
 	/* libinput and the GPIO lines stay open across a VT switch: the pen must not draw on
 	 * a screen the visitor cannot see */
-	if (!drm_display_seat_active(k->display) && !ends_something(ev))
+	if (!display_seat_active(k->display) && !ends_something(ev))
 		return;
 	if (is_pen(ev) && k->npending < KIOSK_MAX_PENDING)
 		k->pending[k->npending++] = (struct kiosk_pending){ ev->time_us, k->shown };
@@ -622,7 +630,7 @@ static void draw_frame(struct kiosk *k)
 	k->drawn_valid = true;
 	ret = render_frame_at(k->render, k->app, t);
 	if (ret == 0 && last && k->shot)
-		ret = drm_display_read_rgba(k->display, k->shot);
+		ret = display_read_rgba(k->display, k->shot);
 	if (ret == 0 && k->export_asked) {
 		int w, h;
 
@@ -630,7 +638,7 @@ static void draw_frame(struct kiosk *k)
 		kiosk_size(k, &w, &h);
 		if (!k->pixels)
 			k->pixels = malloc((size_t)w * (size_t)h * 4);
-		if (k->pixels && drm_display_read_rgba(k->display, k->pixels) < 0) {
+		if (k->pixels && display_read_rgba(k->display, k->pixels) < 0) {
 			fputs("edaha: export: cannot read the screen back; no picture\n", stderr);
 			free(k->pixels);
 			k->pixels = NULL;
@@ -639,10 +647,10 @@ static void draw_frame(struct kiosk *k)
 		k->export_ready = true;
 	}
 	if (ret == 0)
-		ret = drm_display_present(k->display);
+		ret = display_present(k->display);
 	if (ret == -ENODEV)
 		return; /* not shown: the display said why; it asks for a frame when back */
-	if (ret == 0 && drm_display_flip_pending(k->display))
+	if (ret == 0 && display_flip_pending(k->display))
 		ret = set_timer(k, KIOSK_FLIP_TIMEOUT_MS);
 	if (ret < 0) {
 		fail(k, "cannot show a frame", ret);
@@ -656,7 +664,7 @@ static void draw_frame(struct kiosk *k)
 	k->npending = 0;
 	k->frames++;
 	/* a modeset shows its frame at once, with no flip event */
-	if (!drm_display_flip_pending(k->display))
+	if (!display_flip_pending(k->display))
 		frame_shown(k, now_us());
 	if (k->frames == 1) {
 		k->first_frame_us = now_us();
@@ -669,14 +677,14 @@ static void draw_frame(struct kiosk *k)
 /* Page flips, seat switches and hotplug events on the display's fds. */
 static void on_display(struct kiosk *k, const struct pollfd *fds, size_t n)
 {
-	bool pending = drm_display_flip_pending(k->display);
-	int ret = drm_display_dispatch(k->display, fds, n);
+	bool pending = display_flip_pending(k->display);
+	int ret = display_dispatch(k->display, fds, n);
 
 	if (ret < 0) {
 		fail(k, "display", ret);
 		return;
 	}
-	if (pending && !drm_display_flip_pending(k->display)) {
+	if (pending && !display_flip_pending(k->display)) {
 		frame_shown(k, now_us());
 		ret = set_timer(k, 0); /* disarms the flip watchdog */
 		if (ret < 0)
@@ -699,8 +707,8 @@ static void on_timer(struct kiosk *k)
 
 	if (read(k->timer_fd, &expirations, sizeof(expirations)) < 0)
 		return; /* spurious wake-up (EAGAIN): nothing expired */
-	if (drm_display_flip_pending(k->display)) {
-		int ret = drm_display_flip_timeout(k->display);
+	if (display_flip_pending(k->display)) {
+		int ret = display_flip_timeout(k->display);
 
 		if (ret < 0)
 			fail(k, "display", ret);
@@ -960,7 +968,7 @@ static int take_final_shot(struct kiosk *k)
 	int ret = render_frame_at(k->render, k->app, now_us());
 
 	if (ret == 0)
-		ret = drm_display_read_rgba(k->display, k->shot);
+		ret = display_read_rgba(k->display, k->shot);
 	if (ret < 0)
 		fprintf(stderr, "edaha: screenshot: cannot read the screen: %s\n", strerror(-ret));
 	return ret;
@@ -968,7 +976,7 @@ static int take_final_shot(struct kiosk *k)
 
 int kiosk_run(struct kiosk *k)
 {
-	struct pollfd fds[DRM_DISPLAY_MAX_POLLFDS + 5 + KIOSK_MAX_SOURCES];
+	struct pollfd fds[DISPLAY_MAX_POLLFDS + 5 + KIOSK_MAX_SOURCES];
 
 	take_requests(k); /* the LEDs show the first mode */
 	while (!k->quit) {
@@ -976,7 +984,7 @@ int kiosk_run(struct kiosk *k)
 
 		/* nothing is drawn while a flip is in flight, the seat is away or the
 		 * display unplugged */
-		if (drm_display_can_draw(k->display)) {
+		if (display_can_draw(k->display)) {
 			if (k->cfg.frames && k->frames >= k->cfg.frames)
 				break;
 			if (frame_due(k))
@@ -988,19 +996,19 @@ int kiosk_run(struct kiosk *k)
 			if (k->quit)
 				break;
 			/* a modeset shows its frame at once: go round for the next one */
-			if (drm_display_can_draw(k->display) && (k->cfg.frames || frame_due(k)))
+			if (display_can_draw(k->display) && (k->cfg.frames || frame_due(k)))
 				continue;
 		}
 		/* an export while the display is away goes without its picture */
-		if (k->export_asked && !drm_display_can_draw(k->display) &&
-		    !drm_display_flip_pending(k->display)) {
+		if (k->export_asked && !display_can_draw(k->display) &&
+		    !display_flip_pending(k->display)) {
 			k->export_asked = false;
 			free(k->pixels);
 			k->pixels = NULL;
 			run_export(k);
 		}
 		arm_ui_timer(k);
-		n = nd = drm_display_pollfds(k->display, fds, DRM_DISPLAY_MAX_POLLFDS);
+		n = nd = display_pollfds(k->display, fds, DISPLAY_MAX_POLLFDS);
 		fds[n++] = (struct pollfd){ .fd = k->signal_fd, .events = POLLIN };
 		fds[n++] = (struct pollfd){ .fd = k->timer_fd, .events = POLLIN };
 		fds[n++] = (struct pollfd){ .fd = k->ui_timer_fd, .events = POLLIN };

@@ -5,13 +5,14 @@
 #include <stdint.h>
 
 #include "doc.h"
-#include "drm_display.h"
+#include "display.h"
 #include "event.h"
 #include "kiosk_source.h"
 #include "render.h"
 
 /*
- * The kiosk's main loop: one poll() over the display's fds (DRM, seat, hotplug), the
+ * The kiosk's main loop: one poll() over the display's fds (DRM, seat, hotplug; or a
+ * desktop window's connection: display.h), the
  * input sources, a timerfd and a signalfd (SIGINT, SIGTERM). A frame is drawn only when
  * what the app shows changed (or the 3D turn animates, or the display came back from a
  * VT switch or a replug) and only when the display can take one: at most one frame a
@@ -20,7 +21,7 @@
 struct kiosk;
 
 struct kiosk_config {
-	struct drm_display_config display;
+	struct display_config display; /* which display, and its settings */
 	uint64_t seed;          /* of a new drawing */
 	struct doc *doc;        /* a drawing to continue, taken (even on failure); NULL: new */
 	const char *record;     /* write every event fed as an edaha trace; NULL: no */

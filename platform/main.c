@@ -6,7 +6,7 @@
 #include "config.h"
 #include "headless.h"
 #include "options.h"
-#if HAVE_DRM
+#if HAVE_DRM || HAVE_WINDOW
 #include <errno.h>
 #include <stdint.h>
 
@@ -17,10 +17,12 @@
 #include "kiosk_input.h"
 #endif
 
-/* The kiosk needs the DRM/GBM display back-end; a build without it is headless only. */
+/* The kiosk needs a display back-end: DRM/GBM, or SDL2's window on a desktop; a build
+ * without either is headless only. */
 #define KIOSK_AVAILABLE HAVE_DRM
+#define WINDOW_AVAILABLE HAVE_WINDOW
 
-#if HAVE_DRM
+#if HAVE_DRM || HAVE_WINDOW
 /* The labels' font: the configured one, else the defaults; without one the kiosk still
  * runs, its buttons showing their icons. NULL then. */
 static char *kiosk_font(const struct config *conf, size_t *len)
@@ -35,11 +37,26 @@ static char *kiosk_font(const struct config *conf, size_t *len)
 		fprintf(stderr, "edaha: warning: %s: the buttons show icons alone\n", err.msg);
 	return font;
 }
+
+/* A window when asked, or under a desktop session (whose display the DRM path could
+ * not become the master of) if this build has one; else the DRM screen. */
+static enum display_kind display_kind(const struct options *o)
+{
+	const char *wayland = getenv("WAYLAND_DISPLAY"), *x11 = getenv("DISPLAY");
+
+	if (o->window)
+		return DISPLAY_WINDOW;
+	if (o->kiosk)
+		return DISPLAY_DRM;
+	if (display_available(DISPLAY_WINDOW) && ((wayland && wayland[0]) || (x11 && x11[0])))
+		return DISPLAY_WINDOW;
+	return DISPLAY_DRM;
+}
 #endif
 
 static int kiosk_main(const struct options *o)
 {
-#if HAVE_DRM
+#if HAVE_DRM || HAVE_WINDOW
 	struct kiosk_config cfg = {
 		.seed = o->seed,
 		.record = o->record,
@@ -79,12 +96,24 @@ static int kiosk_main(const struct options *o)
 				(unsigned long long)doc.seed);
 		cfg.doc = &doc;
 	}
-	cfg.display.card = conf.display.card[0] ? conf.display.card : NULL;
-	cfg.display.connector = conf.display.connector[0] ? conf.display.connector : NULL;
-	cfg.display.width = conf.display.mode_w;
-	cfg.display.height = conf.display.mode_h;
-	cfg.display.refresh = conf.display.mode_hz;
-	cfg.display.rotation = conf.display.rotation;
+	cfg.display.kind = display_kind(o);
+	if (!display_available(cfg.display.kind)) {
+		fprintf(stderr, "edaha: this build has no %s; see --version\n",
+			cfg.display.kind == DISPLAY_WINDOW ? "window (SDL2)" :
+							   "kiosk display (libdrm/gbm)");
+		if (cfg.doc)
+			doc_finish(cfg.doc);
+		return 1;
+	}
+	cfg.display.drm.card = conf.display.card[0] ? conf.display.card : NULL;
+	cfg.display.drm.connector = conf.display.connector[0] ? conf.display.connector : NULL;
+	cfg.display.drm.width = conf.display.mode_w;
+	cfg.display.drm.height = conf.display.mode_h;
+	cfg.display.drm.refresh = conf.display.mode_hz;
+	cfg.display.drm.rotation = conf.display.rotation;
+	/* the window's first size, and the app's for good (--size) */
+	cfg.display.window.width = o->width;
+	cfg.display.window.height = o->height;
 	/* --lang over the configuration's */
 	if (o->lang)
 		cfg.language = strcmp(o->lang, "ja") == 0 ? RENDER_LANG_JA : RENDER_LANG_EN;
@@ -99,15 +128,17 @@ static int kiosk_main(const struct options *o)
 	}
 	/* the renderer has its own copy */
 	free(font);
-	in = kiosk_input_create(&conf, k);
-	if (in)
+	/* a window brings its own mouse and keys (display.h); the kiosk's tablet and GPIO
+	 * buttons are the desktop's, not ours, there */
+	in = NULL;
+	if (cfg.display.kind == DISPLAY_WINDOW || (in = kiosk_input_create(&conf, k)))
 		status = kiosk_run(k);
 	kiosk_input_destroy(in);
 	kiosk_destroy(k);
 	return status;
 #else
 	(void)o;
-	fputs("edaha: this build has no kiosk display (no libdrm/gbm); use --headless (see --help)\n",
+	fputs("edaha: this build has no kiosk display (no libdrm/gbm, no SDL2); use --headless (see --help)\n",
 	      stderr);
 	return 1;
 #endif
@@ -122,7 +153,8 @@ int main(int argc, char **argv)
 		if (o.help)
 			options_usage(stdout);
 		else if (o.version)
-			printf("edaha %s\nkiosk: %s\n", EDAHA_VERSION, KIOSK_AVAILABLE ? "yes" : "no");
+			printf("edaha %s\nkiosk: %s\nwindow: %s\n", EDAHA_VERSION,
+			       KIOSK_AVAILABLE ? "yes" : "no", WINDOW_AVAILABLE ? "yes" : "no");
 		else if (o.headless && o.support)
 			status = headless_vine_run(&o);
 		else if (o.headless && o.leaf)

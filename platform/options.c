@@ -25,7 +25,8 @@ void options_usage(FILE *f)
 	      "  --headless          run without a display and write results to --out\n"
 	      "  --out DIR           where to write screen.png, model.glb, model.obj, model.mtl,\n"
 	      "                      skeleton.json and drawing.edaha (created if missing)\n"
-	      "  --size WxH          screen size in pixels (default 1280x800)\n"
+	      "  --size WxH          screen size in pixels (default 1280x800); a --window's\n"
+	      "                      first size, the picture's for good\n"
 	      "  --seed N            random seed of a new drawing (default 1); a loaded\n"
 	      "                      drawing keeps its own seed\n"
 	      "  --load FILE         continue a saved drawing (a drawing.edaha file)\n"
@@ -81,6 +82,11 @@ void options_usage(FILE *f)
 	      "                      or the screen as it is when the kiosk stops\n"
 	      "\n"
 	      "Kiosk:\n"
+	      "  --window            a resizable window on the desktop (SDL2): the mouse or a\n"
+	      "                      tablet is the pen, keys 1-9 and letters the buttons\n"
+	      "                      (docs/window.md); the default when WAYLAND_DISPLAY or\n"
+	      "                      DISPLAY is set and this build has the window\n"
+	      "  --kiosk             fullscreen on DRM/KMS even under a desktop session\n"
 	      "  --config FILE       the configuration (default /etc/edaha/edaha.conf)\n"
 	      "  --stats             on exit, print how long pen input took to reach the\n"
 	      "                      screen (percentiles) and the frame rate\n"
@@ -221,7 +227,8 @@ int options_parse(struct options *o, int argc, char **argv)
 	enum { OPT_HEADLESS = 256, OPT_SIZE, OPT_SEED, OPT_OUT, OPT_LOAD, OPT_REPLAY, OPT_PRESS,
 	       OPT_VIEW, OPT_RECORD, OPT_HELP, OPT_VERSION, OPT_KIOSK_FRAMES, OPT_SCREENSHOT,
 	       OPT_CONFIG, OPT_STATS, OPT_LANG, OPT_IDLE, OPT_GENERATE, OPT_LEAF, OPT_OPENING,
-	       OPT_SUPPORT, OPT_VINE, OPT_PLANT, OPT_WOOD, OPT_DUMP_VOXELS, OPT_SKELETON };
+	       OPT_SUPPORT, OPT_VINE, OPT_PLANT, OPT_WOOD, OPT_DUMP_VOXELS, OPT_SKELETON,
+	       OPT_WINDOW, OPT_KIOSK };
 	static const struct option longopts[] = {
 		{ "headless", no_argument, NULL, OPT_HEADLESS },
 		{ "size", required_argument, NULL, OPT_SIZE },
@@ -238,6 +245,8 @@ int options_parse(struct options *o, int argc, char **argv)
 		{ "screenshot", required_argument, NULL, OPT_SCREENSHOT },
 		{ "config", required_argument, NULL, OPT_CONFIG },
 		{ "stats", no_argument, NULL, OPT_STATS },
+		{ "window", no_argument, NULL, OPT_WINDOW },
+		{ "kiosk", no_argument, NULL, OPT_KIOSK },
 		{ "lang", required_argument, NULL, OPT_LANG },
 		{ "idle", required_argument, NULL, OPT_IDLE },
 		{ "leaf", required_argument, NULL, OPT_LEAF },
@@ -332,6 +341,12 @@ int options_parse(struct options *o, int argc, char **argv)
 		case OPT_STATS:
 			o->stats = true;
 			break;
+		case OPT_WINDOW:
+			o->window = true;
+			break;
+		case OPT_KIOSK:
+			o->kiosk = true;
+			break;
 		case OPT_LANG:
 			if (strcmp(optarg, "en") != 0 && strcmp(optarg, "ja") != 0)
 				return usage_error("bad --lang \"%s\" (expected en or ja)", optarg);
@@ -411,6 +426,10 @@ int options_parse(struct options *o, int argc, char **argv)
 		return usage_error("%s does not go with --skeleton",
 				   o->load ? "--load" : o->generate ? "--generate" :
 				   o->leaf ? "--leaf" : "--support");
+	if (o->window && o->kiosk)
+		return usage_error("%s does not go with --kiosk", "--window");
+	if (o->headless && (o->window || o->kiosk))
+		return usage_error("%s is not --headless", o->window ? "--window" : "--kiosk");
 	if (o->headless && (o->kiosk_frames || o->screenshot || o->config || o->stats))
 		return usage_error("%s is for the kiosk, not --headless",
 				   o->kiosk_frames ? "--kiosk-frames" : o->screenshot ? "--screenshot" :

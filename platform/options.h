@@ -39,6 +39,8 @@ struct options {
 	const char *screenshot; /* ...and write the last one here */
 	const char *config;     /* kiosk: the configuration file (default CONFIG_PATH) */
 	bool stats;             /* kiosk: print the responsiveness figures on exit */
+	/* --window, --kiosk: the display forced (else a window under a desktop session) */
+	bool window, kiosk;
 	const char *lang;       /* "en", "ja", or NULL: the configuration's (kiosk), en */
 	bool idle_given;        /* headless: render this long after the last input */
 	double idle_s;
