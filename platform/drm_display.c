@@ -701,6 +701,7 @@ int drm_display_present(struct drm_display *d)
 }
 
 /* The kiosk loop's view of it (display.h). */
+_Static_assert(DRM_DISPLAY_MAX_POLLFDS <= DISPLAY_MAX_POLLFDS, "the loop's room for the display's fds");
 #define DRM(d) ((struct drm_display *)(d))
 #define CDRM(d) ((const struct drm_display *)(d))
 

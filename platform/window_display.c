@@ -323,7 +323,8 @@ struct display *window_display_create(const struct window_display_config *cfg,
 	/* a desktop's screensaver may blank a window nobody types at: staff draw with it */
 	SDL_SetHint(SDL_HINT_VIDEO_ALLOW_SCREENSAVER, "1");
 	if (SDL_Init(SDL_INIT_VIDEO) < 0) {
-		(void)error_set(err, -ENODEV, "no desktop session for a window: %s", SDL_GetError());
+		(void)error_set(err, -ENODEV, "no desktop session for a window (%s); --kiosk for the DRM screen",
+				SDL_GetError());
 		goto fail;
 	}
 	w->sdl_up = true;

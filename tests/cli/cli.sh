@@ -26,7 +26,7 @@ same_files() { # dir1 dir2 files...
 t_help() {
 	edaha --help >"$T/help" || fail "--help exited $?"
 	for o in --headless --size --seed --out --replay --press --view --load --record --help \
-		--idle --lang --config --stats --kiosk-frames --screenshot; do
+		--idle --lang --config --stats --kiosk-frames --screenshot --window --kiosk; do
 		grep -q -- "$o" "$T/help" || fail "--help does not mention $o"
 	done
 	edaha --version | grep -q '^edaha ' || fail "--version"
@@ -40,7 +40,8 @@ t_usage() {
 		"--headless --out $T/x --view 10,x" "--view 90" "--lang fr" "--idle 5" \
 		"--headless --out $T/x --lang fr" "--headless --out $T/x --idle -1" \
 		"--headless --out $T/x --idle nan" "--headless --out $T/x --idle soon" \
-		"--headless --out $T/x --stats" "--headless --out $T/x --config /etc/edaha.conf"; do
+		"--headless --out $T/x --stats" "--headless --out $T/x --config /etc/edaha.conf" \
+		"--window --kiosk" "--headless --out $T/x --window" "--headless --out $T/x --kiosk"; do
 		# shellcheck disable=SC2086
 		edaha $args >/dev/null 2>"$T/err"; rc=$?
 		[ $rc -eq 2 ] || fail "edaha $args: exit $rc, wanted 2"

@@ -16,7 +16,7 @@ done
 "$EDAHA" --version | grep -q "^window: yes" ||
 	{ echo "SKIP: this build has no window (no libsdl2-dev)"; exit 77; }
 T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-window.XXXXXX")
-XVFB= APP=
+XVFB='' APP=''
 cleanup() {
 	[ -n "$APP" ] && kill "$APP" 2>/dev/null
 	[ -n "$XVFB" ] && kill "$XVFB" 2>/dev/null
@@ -32,7 +32,8 @@ XVFB=$!
 for _ in $(seq 100); do [ -s "$T/display" ] && break; sleep 0.1; done
 exec 3>&-
 [ -s "$T/display" ] || { cat "$T/xvfb.log" >&2; fail "Xvfb did not start"; }
-export DISPLAY=:$(cat "$T/display")
+DISPLAY=:$(cat "$T/display")
+export DISPLAY
 unset WAYLAND_DISPLAY
 export SDL_VIDEODRIVER=x11
 
