@@ -5,11 +5,11 @@
 BUILD_PKGS="meson ninja-build pkg-config gcc libc6-dev libjson-c-dev libyaml-dev libpng-dev
  libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libinput-dev libevdev-dev libgpiod-dev
  libdrm-dev libgbm-dev libudev-dev libseat-dev libfreetype-dev fonts-vlgothic libsystemd-dev
- libassimp-dev"
+ libassimp-dev libsdl2-dev"
 TEST_PKGS="clang libclang-rt-14-dev assimp-utils
  qemu-system-x86 linux-image-amd64 busybox-static cpio kmod udev seatd
  linux-source-6.1 linux-headers-amd64 make xz-utils bc systemd
- mtools dosfstools exfatprogs e2fsprogs python3"
+ mtools dosfstools exfatprogs e2fsprogs python3 xvfb xauth xdotool"
 
 deps_install() {
 	local missing=() p
