@@ -41,6 +41,7 @@ static void light_mode(void *data, enum button mode)
 }
 #endif
 
+#if HAVE_LIBINPUT || HAVE_GPIOD
 static int add(struct kiosk_input *ki, struct kiosk_source src)
 {
 	int ret = input_thread_add(ki->thread, &src);
@@ -49,6 +50,7 @@ static int add(struct kiosk_input *ki, struct kiosk_source src)
 		fputs("edaha: input: too many input sources\n", stderr);
 	return ret;
 }
+#endif
 
 struct kiosk_input *kiosk_input_create(const struct config *conf, struct kiosk *k)
 {
