@@ -320,7 +320,7 @@ struct display *window_display_create(const struct window_display_config *cfg,
 	SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
 	SDL_SetHint(SDL_HINT_VIDEO_X11_FORCE_EGL, "1");
 	SDL_SetHint(SDL_HINT_OPENGL_ES_DRIVER, "1");
-	/* a desktop's screensaver may blank a window nobody types at: staff draw with it */
+	/* SDL holds the screensaver off by default; a desk's lock must still work */
 	SDL_SetHint(SDL_HINT_VIDEO_ALLOW_SCREENSAVER, "1");
 	if (SDL_Init(SDL_INIT_VIDEO) < 0) {
 		(void)error_set(err, -ENODEV, "no desktop session for a window (%s); --kiosk for the DRM screen",
