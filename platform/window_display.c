@@ -271,6 +271,18 @@ static int connection_fd(SDL_Window *win, const char **system)
 	}
 }
 
+/* SDL fell back on a driver that shows nothing (offscreen, dummy) where the desktop
+ * cannot be reached: not a window, unless SDL_VIDEODRIVER asked for it. */
+static bool desktop_driver(void)
+{
+	const char *driver = SDL_GetCurrentVideoDriver(), *asked = SDL_getenv("SDL_VIDEODRIVER");
+
+	if (!driver)
+		return false;
+	return strcmp(driver, "x11") == 0 || strcmp(driver, "wayland") == 0 ||
+	       (asked && asked[0] && strstr(asked, driver));
+}
+
 /* A GLES context, 3.0 if there is one (multisampled offscreen, as headless), else 2.0. */
 static int make_context(struct window_display *w, struct error *err)
 {
@@ -328,6 +340,12 @@ struct display *window_display_create(const struct window_display_config *cfg,
 		goto fail;
 	}
 	w->sdl_up = true;
+	if (!desktop_driver()) {
+		(void)error_set(err, -ENODEV,
+				"no desktop session for a window (SDL found only its \"%s\" video driver); --kiosk for the DRM screen",
+				SDL_GetCurrentVideoDriver());
+		goto fail;
+	}
 	/* strokes are antialiased offscreen; the window's own framebuffer needs none */
 	SDL_GL_SetAttribute(SDL_GL_RED_SIZE, 8);
 	SDL_GL_SetAttribute(SDL_GL_GREEN_SIZE, 8);
