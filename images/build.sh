@@ -24,7 +24,8 @@
 # from files (mkfs.ext4 -d, mkfs.vfat + mtools, sfdisk): no loop device, nothing mounted.
 # Runs as root (mmdebstrap's chroots). arm64 on another machine runs the packages'
 # scripts through qemu-user (images/foreign.sh).
-# Packages: mmdebstrap e2fsprogs git; arm64: dosfstools mtools fdisk qemu-user-static arch-test.
+# Packages: mmdebstrap e2fsprogs git dpkg-dev; arm64: dosfstools mtools fdisk qemu-user-static
+# arch-test (PACKAGE_ONLY=1: mmdebstrap git dpkg-dev).
 set -euo pipefail
 START=$(date +%s)
 HERE=$(cd "$(dirname "$0")" && pwd)
@@ -44,9 +45,10 @@ need() { # program package
 }
 [ "$(id -u)" = 0 ] || die "run as root (sudo): mmdebstrap makes chroots"
 need mmdebstrap mmdebstrap
-need mkfs.ext4 e2fsprogs
 need git git
-if [ "$ARCH" = arm64 ]; then
+need dpkg-parsechangelog dpkg-dev
+[ "${PACKAGE_ONLY:-0}" = 1 ] || need mkfs.ext4 e2fsprogs
+if [ "$ARCH" = arm64 ] && [ "${PACKAGE_ONLY:-0}" != 1 ]; then
 	need mkfs.vfat dosfstools
 	need mcopy mtools
 	need sfdisk fdisk
@@ -105,7 +107,7 @@ step "edaha $VERSION, Debian $SUITE $ARCH from $MIRROR, SOURCE_DATE_EPOCH=$SOURC
 # dpkg-buildpackage checks them against debian/control's Build-Depends.
 # shellcheck source=../tools/deps.sh
 . "$REPO/tools/deps.sh"
-build_pkgs=(dpkg-dev debhelper)
+build_pkgs=(dpkg-dev debhelper build-essential)
 for p in $BUILD_PKGS; do
 	case $p in
 	*-dev) [ "$ARCH" = "$HOST_ARCH" ] && build_pkgs+=("$p") || build_pkgs+=("$p:$ARCH") ;;
