@@ -1,6 +1,6 @@
 #!/bin/bash
-# Builds the kiosk OS: Debian 12 (bookworm) from Debian packages, plus edaha built from this
-# checkout, booting straight into the kiosk. See images/README.md.
+# Builds the kiosk OS: Debian 12 (bookworm) from Debian packages, plus edaha's own package
+# built from this checkout (debian/), booting straight into the kiosk. See images/README.md.
 #
 #   images/build.sh ARCH OUT
 #     ARCH  amd64: root.img (ext4) + vmlinuz + initrd.img for QEMU (images/boot-test.sh)
@@ -15,14 +15,17 @@
 #                     checkout's last commit)
 #     IMAGE_CACHE     keeps downloaded packages between builds (default /tmp/edaha-image-cache)
 #     IMAGE_SIZE_MB   the root filesystem's size (default: what it holds plus 512 MiB)
+#     PACKAGE_ONLY=1  only build edaha_VERSION_ARCH.deb into OUT (step 1), no image
 #
 # Two mmdebstrap runs: a build chroot (the machine's architecture, with ARCH's -dev
-# packages, a cross compiler when ARCH is another) where meson builds and installs edaha,
-# then the image's root, where images/customize.sh makes it a kiosk. The disk image is made
+# packages, a cross compiler when ARCH is another) where dpkg-buildpackage builds
+# edaha_VERSION_ARCH.deb, then the image's root, which installs it with the other packages
+# and where images/customize.sh makes it a kiosk. The .deb is kept in OUT. The disk image is made
 # from files (mkfs.ext4 -d, mkfs.vfat + mtools, sfdisk): no loop device, nothing mounted.
 # Runs as root (mmdebstrap's chroots). arm64 on another machine runs the packages'
 # scripts through qemu-user (images/foreign.sh).
-# Packages: mmdebstrap e2fsprogs git; arm64: dosfstools mtools fdisk qemu-user-static arch-test.
+# Packages: mmdebstrap e2fsprogs git dpkg-dev; arm64: dosfstools mtools fdisk qemu-user-static
+# arch-test (PACKAGE_ONLY=1: mmdebstrap git dpkg-dev).
 set -euo pipefail
 START=$(date +%s)
 HERE=$(cd "$(dirname "$0")" && pwd)
@@ -42,9 +45,10 @@ need() { # program package
 }
 [ "$(id -u)" = 0 ] || die "run as root (sudo): mmdebstrap makes chroots"
 need mmdebstrap mmdebstrap
-need mkfs.ext4 e2fsprogs
 need git git
-if [ "$ARCH" = arm64 ]; then
+need dpkg-parsechangelog dpkg-dev
+[ "${PACKAGE_ONLY:-0}" = 1 ] || need mkfs.ext4 e2fsprogs
+if [ "$ARCH" = arm64 ] && [ "${PACKAGE_ONLY:-0}" != 1 ]; then
 	need mkfs.vfat dosfstools
 	need mcopy mtools
 	need sfdisk fdisk
@@ -97,12 +101,13 @@ packages() {
 
 step "edaha $VERSION, Debian $SUITE $ARCH from $MIRROR, SOURCE_DATE_EPOCH=$SOURCE_DATE_EPOCH"
 
-# --- 1. edaha, built by meson in a chroot of the same Debian -------------------------------
+# --- 1. edaha's package, built in a chroot of the same Debian ------------------------------
 # The build packages are tools/deps.sh's BUILD_PKGS (one list for the project): the -dev
 # packages for ARCH, the tools for this machine; a cross compiler when ARCH is not ours.
+# dpkg-buildpackage checks them against debian/control's Build-Depends.
 # shellcheck source=../tools/deps.sh
 . "$REPO/tools/deps.sh"
-build_pkgs=(dpkg-dev)
+build_pkgs=(dpkg-dev debhelper build-essential)
 for p in $BUILD_PKGS; do
 	case $p in
 	*-dev) [ "$ARCH" = "$HOST_ARCH" ] && build_pkgs+=("$p") || build_pkgs+=("$p:$ARCH") ;;
@@ -110,30 +115,27 @@ for p in $BUILD_PKGS; do
 	*) ;; # runtime and test packages (Mesa's drivers, the font): not needed to build
 	esac
 done
-cross=()
+cross="" profiles=""
 if [ "$ARCH" != "$HOST_ARCH" ]; then
-	gnu=$(dpkg-architecture -a "$ARCH" -q DEB_HOST_GNU_TYPE 2>/dev/null) ||
-		case $ARCH in arm64) gnu=aarch64-linux-gnu ;; amd64) gnu=x86_64-linux-gnu ;; esac
-	# pkgconf:ARCH is the $gnu-pkg-config wrapper that finds ARCH's .pc files
-	build_pkgs+=("gcc-$gnu" "pkgconf:$ARCH")
-	cross=(--cross-file /tmp/cross.ini)
+	# crossbuild-essential-ARCH: the cross compilers (meson's debcrossgen, which writes
+	# debhelper's cross file, wants gcc and g++); pkgconf:ARCH is the
+	# pkg-config wrapper (aarch64-linux-gnu-pkg-config) for ARCH's .pc files; no tests cross-run
+	build_pkgs+=("crossbuild-essential-$ARCH" "pkgconf:$ARCH")
+	cross=" (cross-compiled for $ARCH)" profiles="-Pcross,nocheck"
 fi
 # tracked files as they are in the working tree (so a local change is built); the
 # manifest says "-dirty" then
 git -C "$REPO" ls-files -z | tar -C "$REPO" --null -T - -cf "$WORK/src.tar"
-setup=(meson setup /build /src --prefix=/usr --buildtype=release --wrap-mode=nodownload
-	-Ddrm=enabled -Dlibinput=enabled -Dgpio=enabled -Dsystemd=enabled "${cross[@]}")
+# debian/rules configures with every kiosk feature enabled; the .deb lands in /src
 cat > "$WORK/build-edaha.sh" <<EOF
 set -e
-mkdir /src /dest && tar -C /src -xf /tmp/src.tar
-$([ ${#cross[@]} -gt 0 ] && echo "meson env2mfile --cross --debarch $ARCH -o /tmp/cross.ini 2>/dev/null")
-${setup[*]} >/tmp/setup.log 2>&1 || { cat /tmp/setup.log; exit 1; }
-grep -A6 "^  Features" /tmp/setup.log
-meson compile -C /build >/tmp/compile.log 2>&1 || { tail -40 /tmp/compile.log; exit 1; }
-meson install -C /build --no-rebuild --destdir /dest >/tmp/install.log 2>&1 || { cat /tmp/install.log; exit 1; }
-sed -n 's|^Installing .* to /dest|  installs /|p' /tmp/install.log | sort -u
+mkdir -p /src/edaha && tar -C /src/edaha -xf /tmp/src.tar
+cd /src/edaha
+DEB_BUILD_OPTIONS=${profiles:+nocheck} dpkg-buildpackage -b -us -uc -a $ARCH $profiles >/tmp/build.log 2>&1 || { tail -40 /tmp/build.log; exit 1; }
+grep -A6 "^  Features" /tmp/build.log
 EOF
-step "building edaha in a $SUITE $HOST_ARCH chroot${cross:+ (cross-compiled for $ARCH)}"
+deb=edaha_$(dpkg-parsechangelog -l "$REPO/debian/changelog" -S Version)_$ARCH.deb
+step "building $deb in a $SUITE $HOST_ARCH chroot$cross"
 mapfile -t cache_opts < <(apt_cache "$CACHE/apt-build-$HOST_ARCH")
 # shellcheck disable=SC2016
 mmdebstrap --variant=apt --architectures="$HOST_ARCH$([ "$ARCH" != "$HOST_ARCH" ] && echo ",$ARCH")" \
@@ -141,11 +143,16 @@ mmdebstrap --variant=apt --architectures="$HOST_ARCH$([ "$ARCH" != "$HOST_ARCH" 
 	"${cache_opts[@]}" \
 	--customize-hook='cp "$WORK/src.tar" "$WORK/build-edaha.sh" "$1/tmp/"' \
 	--customize-hook='chroot "$1" sh /tmp/build-edaha.sh' \
-	--customize-hook='tar -C "$1/dest" --sort=name --owner=0 --group=0 --numeric-owner -cf "$WORK/edaha.tar" .' \
+	--customize-hook="copy-out /src/$deb $WORK/" \
 	"$SUITE" /dev/null "${SOURCES[@]}" 2> >(grep -v '^I: ' >&2)
-# everything edaha installs goes under /usr, /etc or /var (the image's /lib is /usr/lib)
-bad=$(tar -tf "$WORK/edaha.tar" | grep -Ev '^\./$|^\./(usr|etc|var)(/|$)' || true)
-[ -z "$bad" ] || die "meson install puts files outside /usr, /etc and /var: $bad"
+[ -f "$WORK/$deb" ] || die "dpkg-buildpackage made no $deb"
+dpkg-deb -f "$WORK/$deb" Package Version Architecture Installed-Size | paste -sd' ' | sed 's/^/build: /'
+rm -f "$OUT"/edaha_*.deb
+cp "$WORK/$deb" "$OUT/"
+if [ "${PACKAGE_ONLY:-0}" = 1 ]; then
+	step "done: $OUT/$deb"
+	exit 0
+fi
 
 # --- 2. the image's root filesystem -------------------------------------------------------
 step "making the $ARCH root filesystem"
@@ -164,7 +171,7 @@ slim+=("--dpkgopt=path-include=/usr/share/doc/*/copyright" "--dpkgopt=path-inclu
 	--include="$(packages "$HERE/packages-common.txt" "$HERE/packages-$ARCH.txt")" \
 	"${APTOPTS[@]}" "${cache_opts[@]}" "${slim[@]}" \
 	--essential-hook='mkdir -p "$1/boot/firmware"' \
-	--customize-hook='tar -C "$1" --keep-directory-symlink --no-overwrite-dir -xpf "$WORK/edaha.tar"' \
+	--include="$WORK/$deb" --hook-dir=/usr/share/mmdebstrap/hooks/file-mirror-automount \
 	--customize-hook="$HERE/customize.sh" \
 	"$SUITE" "$ROOT" "${SOURCES[@]}" 2> >(grep -v '^I: ' >&2)
 
@@ -252,5 +259,5 @@ cp "$WORK/reference-1280x800.png" "$OUT/"
 	echo "# package	version	architecture"
 	cat "$WORK/packages.tsv"
 } > "$OUT/manifest.txt"
-(cd "$OUT" && sha256sum "${images[@]}" cmdline.txt manifest.txt reference-1280x800.png > SHA256SUMS)
+(cd "$OUT" && sha256sum "${images[@]}" "$deb" cmdline.txt manifest.txt reference-1280x800.png > SHA256SUMS)
 step "done: $OUT ($(cd "$OUT" && du -sh --apparent-size "${images[@]}" | awk '{printf "%s%s %s", sep, $2, $1; sep=", "}'); $(wc -l < "$WORK/packages.tsv") packages)"

@@ -1,6 +1,6 @@
 #!/bin/sh
-# mmdebstrap --customize-hook of images/build.sh: makes the Debian root filesystem $1 (edaha
-# already installed by meson into it) a kiosk that boots straight into edaha.
+# mmdebstrap --customize-hook of images/build.sh: makes the Debian root filesystem $1 (edaha's
+# package already installed into it, debian/) a kiosk that boots straight into edaha.
 # Environment from build.sh: ARCH, HERE (images/), WORK (where the reference render and
 # the kernel command line go), SOURCE_DATE_EPOCH.
 set -eu
@@ -10,10 +10,13 @@ in_root() { chroot "$root" "$@"; }
 # the language of the image's configuration, for the reference render below
 lang=$(sed -n 's/^language: *\([a-z]*\).*/\1/p' "$HERE/edaha-$ARCH.conf")
 
+# shellcheck disable=SC2016 # dpkg-query's own ${Status}
+in_root dpkg-query -W -f='${Status}\n' edaha | grep -qx 'install ok installed' ||
+	{ echo "customize: the edaha package is not installed" >&2; exit 1; }
 [ -x "$root/usr/bin/edaha" ] || { echo "customize: no /usr/bin/edaha in the root" >&2; exit 1; }
 for unit in edaha.service edaha-usb.socket edaha-usb@.service; do
-	[ -f "$root/usr/lib/systemd/system/$unit" ] ||
-		{ echo "customize: meson installed no $unit" >&2; exit 1; }
+	[ -f "$root/lib/systemd/system/$unit" ] ||
+		{ echo "customize: the package installed no $unit" >&2; exit 1; }
 done
 
 # --- who and where ---
@@ -34,14 +37,15 @@ rm -f "$root/var/lib/dbus/machine-id"
 	[ "$ARCH" = arm64 ] && echo "LABEL=EDAHA-BOOT /boot/firmware vfat defaults,noatime,umask=0077 0 2"
 } > "$root/etc/fstab"
 
-# --- the kiosk's configuration (docs/config.md) ---
-mkdir -p "$root/etc/edaha"
-cp "$HERE/edaha-$ARCH.conf" "$root/etc/edaha/edaha.conf"
-chmod 0644 "$root/etc/edaha/edaha.conf"
+# --- the kiosk's configuration (docs/config.md): the package's conffile is this
+# directory's edaha-ARCH.conf (debian/rules), unchanged ---
+cmp -s "$HERE/edaha-$ARCH.conf" "$root/etc/edaha/edaha.conf" ||
+	{ echo "customize: /etc/edaha/edaha.conf is not images/edaha-$ARCH.conf" >&2; exit 1; }
 
-# --- users: the kiosk's own (systemd/edaha.sysusers); nobody logs in ---
-in_root systemd-sysusers
-in_root systemd-tmpfiles --create /usr/lib/tmpfiles.d/edaha.conf
+# --- users: the kiosk's own, made by the package's postinst (systemd/edaha.sysusers,
+# edaha.tmpfiles); nobody logs in ---
+in_root getent passwd edaha >/dev/null || { echo "customize: no user edaha" >&2; exit 1; }
+[ -d "$root/var/lib/edaha/archive" ] || { echo "customize: no /var/lib/edaha/archive" >&2; exit 1; }
 # root's password is locked: no login on the serial console or anywhere else. To look
 # inside, take out the SD card (README.md).
 in_root usermod --lock root

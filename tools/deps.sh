@@ -29,3 +29,5 @@ deps_install() {
 	DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends \
 		"${missing[@]}" >/dev/null
 }
+# tools/deb-test.sh: the Debian package (debian/), lintian, a throw-away bookworm root
+TEST_PKGS+=" debhelper dpkg-dev fakeroot lintian mmdebstrap git"
