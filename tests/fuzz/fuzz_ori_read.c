@@ -11,46 +11,17 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fuzz_refusal.h"
 #include "ori.h"
 #include "ori_design.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-static bool line_break(uint8_t c)
-{
-	return c == '\n' || c == '\r' || c == 0x85 || c == 0xa8 || c == 0xa9;
-}
-
-/* A bound on the input's lines: YAML breaks lines at \n, \r and three Unicode breaks
- * (U+0085, U+2028, U+2029, whose UTF-8 ends in one of these bytes). */
-static unsigned long lines_of(const uint8_t *data, size_t size)
-{
-	unsigned long n = 1;
-
-	for (size_t i = 0; i < size; i++)
-		n += line_break(data[i]);
-	return n;
-}
-
+/* The message and code by the shared rule; the struct as it was. */
 static void check_refusal(int ret, const struct error *err, const struct ori_design *d,
 			  const struct ori_design *before, unsigned long lines)
 {
-	const char *s = err->msg + strlen("fuzz:");
-	unsigned long line = 0;
-
-	if (ret != -EINVAL && ret != -ENOMEM)
-		abort();
-	if (strncmp(err->msg, "fuzz:", 5) != 0 || !memchr(err->msg, '\0', sizeof(err->msg)))
-		abort();
-	/* "fuzz:LINE: what", LINE from 1, a line of the input; "fuzz: out of memory" */
-	if (!(*s == ' ' && ret == -ENOMEM)) {
-		if (*s < '1' || *s > '9')
-			abort();
-		while (*s >= '0' && *s <= '9' && line <= lines)
-			line = line * 10 + (unsigned long)(*s++ - '0');
-		if (s[0] != ':' || s[1] != ' ' || line > lines)
-			abort();
-	}
+	fuzz_check_refusal(ret, err, lines);
 	if (memcmp(d, before, sizeof(*d)) != 0)
 		abort();
 }
@@ -139,7 +110,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	struct ori_design d, before, again;
 	struct error err = { { 0 } };
 	struct ori_fault at;
-	unsigned long lines = lines_of(data, size);
+	unsigned long lines = fuzz_lines_of(data, size);
 	int ret;
 
 	memset(&d, 0x5a, sizeof(d));
