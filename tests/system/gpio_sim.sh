@@ -3,7 +3,7 @@
 # built by build_kmods.sh when the kernel lacks it).
 #   gpio_sim.sh setup KMOD_DIR   loads gpio-sim, makes chip "kiosk-buttons": lines 0..4 are
 #                                btn-3d btn-clone btn-leaf btn-export btn-propagate, 5 and 6
-#                                led-3d led-clone, 7 btn-grow
+#                                led-3d led-clone, 7 btn-grow, 8 btn-vine
 #   gpio_sim.sh press N | release N   pulls button line N down (pressed, active-low) or up
 #   gpio_sim.sh bounce N         press, release, press at once (a bouncing contact)
 #   gpio_sim.sh value N          prints line N's value (an LED the kiosk drives)
@@ -17,10 +17,10 @@ setup)
 	[ -d /sys/kernel/config/gpio-sim ] || modprobe gpio-sim 2>/dev/null ||
 		insmod "$2/gpio-sim/gpio-sim-oot.ko"
 	mkdir $C $C/bank0
-	echo 8 > $C/bank0/num_lines
+	echo 9 > $C/bank0/num_lines
 	echo kiosk-buttons > $C/bank0/label
 	n=0
-	for name in btn-3d btn-clone btn-leaf btn-export btn-propagate led-3d led-clone btn-grow; do
+	for name in btn-3d btn-clone btn-leaf btn-export btn-propagate led-3d led-clone btn-grow btn-vine; do
 		if [ "$name" != - ]; then mkdir $C/bank0/line$n; echo $name > $C/bank0/line$n/name; fi
 		n=$((n + 1))
 	done

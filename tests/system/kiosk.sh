@@ -4,7 +4,7 @@
 # libevdev's uinput API) and the mode buttons on a gpio-sim chip (the module built from
 # Debian's linux-source by build_kmods.sh, as Debian's kernel lacks it). A visitor's
 # session (kiosk.script) draws a tree, has the tablet pulled out and plugged back in,
-# presses 3D, clone, leaf, propagate, grow and export through gpio-sim, with pen taps
+# presses 3D, clone, leaf, propagate, vine, grow and export through gpio-sim, with pen taps
 # between.
 # Checks on the host:
 #   - the kiosk ran through it: the tablet came back after the replug, the mode LEDs
@@ -58,7 +58,7 @@ grep -q "edaha: Terminated, stopping" "$log" || fail "the kiosk did not stop on 
 grow=$(grep -m1 'edaha: grew a year' "$log") || fail "the grow press did not land"
 shown=$(echo "$grow" | sed -n 's/.*, \([0-9]*\) frames shown meanwhile$/\1/p')
 [ -n "$shown" ] && [ "$shown" -gt 0 ] || fail "no frame was shown while the tree grew: $grow"
-for b in 3d clone leaf propagate grow export; do
+for b in 3d clone leaf propagate vine grow export; do
 	grep -q " button $b pressed$" "$T/vm/session.edaha-trace" || fail "the recording has no $b press"
 done
 
@@ -81,6 +81,18 @@ for o in clone arrange propagate; do
 done
 grep -q '^grow ' "$ex/tree-0001.edaha" || fail "the exported drawing has no grow op"
 grep -q '"wood": *{' "$T/loaded/skeleton.json" || fail "the exported tree has no wood"
+grep -q '^vine ' "$ex/tree-0001.edaha" || fail "the exported drawing has no vine op (the tap planted nothing)"
+# the vine planted at the trunk's foot found the trunk and wound up it
+python3 - "$T/loaded/skeleton.json" <<'PY' || fail "the exported tree's vine does not climb the trunk"
+import json, sys
+vines = json.load(open(sys.argv[1])).get("vines", [])
+assert len(vines) == 1, "%d vines" % len(vines)
+main = vines[0]["shoots"][0]
+assert main["parent"] == -1 and len(main["contacts"]) >= 8, main["contacts"]
+climb = main["axis"][-1][1] - main["axis"][0][1]
+print("vine in the VM: %d shoots, %d of %d main-axis points touching, climbed %.2f m"
+      % (len(vines[0]["shoots"]), len(main["contacts"]), len(main["axis"]), climb))
+PY
 
 # the recording is the session: the same tree, the same screen
 env "${host_env[@]}" "$EDAHA" --headless --size 640x400 --replay "$T/vm/session.edaha-trace" --out "$T/replay" \
