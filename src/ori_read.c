@@ -13,17 +13,14 @@
 #include <yaml.h>
 
 #include "ori_design.h"
+#include "yaml_in.h"
 #include "yaml_node.h"
 
 /* the most nodes or side parts: a row of ori_fault's lines */
 #define ITEMS (ORI_MAX_NODES > ORI_MAX_SIDES ? ORI_MAX_NODES : ORI_MAX_SIDES)
 
 struct reader {
-	const char *name;
-	struct error *err;
-	const char *data; /* the text read, for its lines */
-	size_t len;
-	yaml_document_t doc;
+	struct yaml_in in;
 	struct ori_design *d;
 	/* the line of each value read, by ori_design_check's names and node or side part:
 	 * ori_design_check's refusal is told there */
@@ -34,75 +31,10 @@ struct reader {
 	unsigned seen;
 };
 
-static unsigned long line_of(const struct reader *r, const yaml_node_t *n)
-{
-	return n ? yaml_node_line(&n->start_mark, r->data, r->len) : 0;
-}
-
-static int fail(struct reader *r, const yaml_node_t *n, const char *fmt, ...)
-	__attribute__((format(printf, 3, 4)));
-
-static int fail(struct reader *r, const yaml_node_t *n, const char *fmt, ...)
-{
-	char msg[sizeof(r->err->msg)];
-	va_list ap;
-
-	va_start(ap, fmt);
-	vsnprintf(msg, sizeof(msg), fmt, ap);
-	va_end(ap);
-	return error_at(r->err, -EINVAL, r->name, line_of(r, n), "%s", msg);
-}
-
 /* Where a value was read, for ori_design_check's refusal. */
 static void note(struct reader *r, enum ori_value v, const yaml_node_t *n)
 {
-	r->value_line[v][r->item] = line_of(r, n);
-}
-
-/* The user's text in a message (yaml_node_shown). */
-static const char *shown(const char *s, char out[24])
-{
-	return yaml_node_shown(s, out);
-}
-
-/* A decimal number: digits with an optional sign, point and exponent; finite. */
-static int get_number(struct reader *r, const yaml_node_t *n, const char *what, double *v)
-{
-	const char *s = yaml_node_text(n);
-	char buf[24];
-	double x;
-
-	if (!s || !yaml_node_plain(n))
-		return fail(r, n, "%s: expected a number, got %s", what,
-			    n->type == YAML_SCALAR_NODE ? "a quoted string" : yaml_node_kind(n));
-	if (!yaml_node_number(s, &x))
-		return fail(r, n, "%s: \"%s\" is not a number", what, shown(s, buf));
-	*v = x;
-	return 0;
-}
-
-static int get_int(struct reader *r, const yaml_node_t *n, const char *what, int *v)
-{
-	double x;
-	int ret = get_number(r, n, what, &x);
-
-	if (ret < 0)
-		return ret;
-	if (x != floor(x) || fabs(x) > 1e6)
-		return fail(r, n, "%s: expected a whole number, got %g", what, x);
-	*v = (int)x;
-	return 0;
-}
-
-static int get_word(struct reader *r, const yaml_node_t *n, const char *what, const char **w)
-{
-	const char *s = yaml_node_text(n);
-
-	if (!s || !yaml_node_plain(n))
-		return fail(r, n, "%s: expected a word, got %s", what,
-			    n->type == YAML_SCALAR_NODE ? "a quoted string" : yaml_node_kind(n));
-	*w = s;
-	return 0;
+	r->value_line[v][r->item] = yaml_in_line(&r->in, n);
 }
 
 /* One number for both sides of the midrib, or [right, left]; a number is halved when it
@@ -113,7 +45,7 @@ static int get_pair(struct reader *r, const yaml_node_t *n, const char *what, bo
 	int ret;
 
 	if (n->type != YAML_SEQUENCE_NODE) {
-		if ((ret = get_number(r, n, what, &v[0])) < 0)
+		if ((ret = yaml_in_number(&r->in, n, what, &v[0])) < 0)
 			return ret;
 		if (sum)
 			v[0] /= 2;
@@ -121,64 +53,18 @@ static int get_pair(struct reader *r, const yaml_node_t *n, const char *what, bo
 		return 0;
 	}
 	if (n->data.sequence.items.top - n->data.sequence.items.start != 2)
-		return fail(r, n, "%s: expected a number or [right, left], two numbers", what);
+		return yaml_in_fail(&r->in, n,
+				    "%s: expected a number or [right, left], two numbers", what);
 	for (int i = 0; i < 2; i++) {
 		const yaml_node_t *item =
-			yaml_document_get_node(&r->doc, n->data.sequence.items.start[i]);
+			yaml_document_get_node(&r->in.doc, n->data.sequence.items.start[i]);
 
 		if (!item)
-			return fail(r, n, "%s: broken YAML node", what);
-		if ((ret = get_number(r, item, what, &v[i])) < 0)
+			return yaml_in_fail(&r->in, n, "%s: broken YAML node", what);
+		if ((ret = yaml_in_number(&r->in, item, what, &v[i])) < 0)
 			return ret;
 	}
 	return 0;
-}
-
-typedef int (*pair_fn)(struct reader *r, const yaml_node_t *key, const char *k,
-		       const yaml_node_t *value);
-
-static int for_each_pair(struct reader *r, const yaml_node_t *n, const char *what, pair_fn fn)
-{
-	yaml_node_pair_t *start, *top;
-
-	if (n->type != YAML_MAPPING_NODE)
-		return fail(r, n, "%s: expected a mapping, got %s", what, yaml_node_kind(n));
-	start = n->data.mapping.pairs.start;
-	top = n->data.mapping.pairs.top;
-	for (yaml_node_pair_t *pair = start; pair < top; pair++) {
-		const yaml_node_t *key = yaml_document_get_node(&r->doc, pair->key);
-		const yaml_node_t *value = yaml_document_get_node(&r->doc, pair->value), *other;
-		const char *k;
-		char buf[24];
-		int ret;
-
-		if (!key || !value)
-			return fail(r, n, "%s: broken YAML node", what);
-		k = yaml_node_text(key);
-		if (!k || !yaml_node_plain(key))
-			return fail(r, key, "%s: expected a plain key, got %s", what, yaml_node_kind(key));
-		other = yaml_node_earlier_key(&r->doc, n, pair, k);
-		if (other)
-			return fail(r, key, "duplicate key \"%s\" (first on line %lu)", shown(k, buf),
-				    line_of(r, other));
-		if ((ret = fn(r, key, k, value)) < 0)
-			return ret;
-	}
-	return 0;
-}
-
-/* The value of key k in mapping n, or NULL. */
-static const yaml_node_t *lookup(struct reader *r, const yaml_node_t *n, const char *k,
-				 const yaml_node_t **key)
-{
-	return yaml_node_lookup(&r->doc, n, k, key);
-}
-
-static int unknown(struct reader *r, const yaml_node_t *key, const char *k, const char *in)
-{
-	char buf[24];
-
-	return fail(r, key, "unknown key \"%s\"%s%s", shown(k, buf), in ? " in " : "", in ? in : "");
 }
 
 /* "middle.nodes: node 2: at", the item's key named in a message. */
@@ -199,15 +85,16 @@ static const struct {
 	{ SEEN_AT, "at" }, { SEEN_PHI, "phi" }, { SEEN_PSI, "psi" }, { SEEN_ANGLE, "angle" },
 };
 
-static int node_pair(struct reader *r, const yaml_node_t *key, const char *k, const yaml_node_t *v)
+static int node_pair(void *ctx, const yaml_node_t *key, const char *k, const yaml_node_t *v)
 {
+	struct reader *r = ctx;
 	struct ori_node *n = &r->d->nodes[r->item];
 	char what[64];
 
 	if (!strcmp(k, "at")) {
 		r->seen |= SEEN_AT;
 		note(r, ORI_VALUE_NODE_AT, v);
-		return get_number(r, v, item_key(r, k, what), &n->at);
+		return yaml_in_number(&r->in, v, item_key(r, k, what), &n->at);
 	}
 	if (!strcmp(k, "phi")) {
 		r->seen |= SEEN_PHI;
@@ -219,78 +106,85 @@ static int node_pair(struct reader *r, const yaml_node_t *key, const char *k, co
 		note(r, ORI_VALUE_NODE_PSI, v);
 		return get_pair(r, v, item_key(r, k, what), false, n->psi);
 	}
-	return unknown(r, key, k, "a node (at, phi, psi)");
+	return yaml_in_unknown(&r->in, key, k, "a node (at, phi, psi)");
 }
 
-static int fork_pair(struct reader *r, const yaml_node_t *key, const char *k, const yaml_node_t *v)
+static int fork_pair(void *ctx, const yaml_node_t *key, const char *k, const yaml_node_t *v)
 {
+	struct reader *r = ctx;
 	struct ori_side *s = &r->d->sides[r->item];
 	char what[64];
 
 	if (!strcmp(k, "at")) {
 		note(r, ORI_VALUE_FORK_AT, v);
-		return get_number(r, v, item_key(r, "fork.at", what), &s->fork_at);
+		return yaml_in_number(&r->in, v, item_key(r, "fork.at", what), &s->fork_at);
 	}
 	if (!strcmp(k, "a")) {
 		note(r, ORI_VALUE_FORK_A, v);
-		return get_number(r, v, item_key(r, "fork.a", what), &s->fork_a);
+		return yaml_in_number(&r->in, v, item_key(r, "fork.a", what), &s->fork_a);
 	}
 	if (!strcmp(k, "b")) {
 		note(r, ORI_VALUE_FORK_B, v);
-		return get_number(r, v, item_key(r, "fork.b", what), &s->fork_b);
+		return yaml_in_number(&r->in, v, item_key(r, "fork.b", what), &s->fork_b);
 	}
-	return unknown(r, key, k, "fork (at, a, b)");
+	return yaml_in_unknown(&r->in, key, k, "fork (at, a, b)");
 }
 
-static int side_pair(struct reader *r, const yaml_node_t *key, const char *k, const yaml_node_t *v)
+static int side_pair(void *ctx, const yaml_node_t *key, const char *k, const yaml_node_t *v)
 {
+	struct reader *r = ctx;
 	struct ori_side *s = &r->d->sides[r->item];
 	char what[64];
 
 	if (!strcmp(k, "angle")) {
 		r->seen |= SEEN_ANGLE;
 		note(r, ORI_VALUE_SIDE_ANGLE, v);
-		return get_number(r, v, item_key(r, k, what), &s->angle);
+		return yaml_in_number(&r->in, v, item_key(r, k, what), &s->angle);
 	}
 	if (!strcmp(k, "forks")) {
 		note(r, ORI_VALUE_SIDE_FORKS, v);
-		return get_int(r, v, item_key(r, k, what), &s->forks);
+		return yaml_in_int(&r->in, v, item_key(r, k, what), &s->forks);
 	}
 	if (!strcmp(k, "fork"))
-		return for_each_pair(r, v, item_key(r, k, what), fork_pair);
-	return unknown(r, key, k, "a side part (angle, forks, fork)");
+		return yaml_in_pairs(&r->in, v, item_key(r, k, what), fork_pair, r);
+	return yaml_in_unknown(&r->in, key, k, "a side part (angle, forks, fork)");
 }
 
 /* A list of at most max mappings, each read by fn into item i: the list's entries all
  * replace the defaults'. */
 static int read_list(struct reader *r, const yaml_node_t *v, const char *what, const char *one,
-		     size_t max, size_t *n, pair_fn fn, unsigned required, unsigned long *lines)
+		     size_t max, size_t *n, yaml_in_pair_fn fn, unsigned required,
+		     unsigned long *lines)
 {
 	size_t count;
 
 	if (v->type != YAML_SEQUENCE_NODE)
-		return fail(r, v, "%s: expected a list, got %s", what, yaml_node_kind(v));
+		return yaml_in_fail(&r->in, v, "%s: expected a list, got %s", what,
+				    yaml_node_kind(v));
 	count = (size_t)(v->data.sequence.items.top - v->data.sequence.items.start);
 	if (count > max)
-		return fail(r, yaml_document_get_node(&r->doc, v->data.sequence.items.start[max]),
-			    "%s: %zu %ss given; at most %zu", what, count, one, max);
+		return yaml_in_fail(&r->in,
+				    yaml_document_get_node(&r->in.doc,
+							   v->data.sequence.items.start[max]),
+				    "%s: %zu %ss given; at most %zu", what, count, one, max);
 	*n = count;
 	for (size_t i = 0; i < count; i++) {
 		const yaml_node_t *item =
-			yaml_document_get_node(&r->doc, v->data.sequence.items.start[i]);
+			yaml_document_get_node(&r->in.doc, v->data.sequence.items.start[i]);
 		int ret;
 
 		if (!item)
-			return fail(r, v, "%s: broken YAML node", what);
+			return yaml_in_fail(&r->in, v, "%s: broken YAML node", what);
 		r->item = i;
 		r->seen = 0;
 		snprintf(r->item_name, sizeof(r->item_name), "%s: %s %zu", what, one, i + 1);
-		lines[i] = line_of(r, item);
-		if ((ret = for_each_pair(r, item, r->item_name, fn)) < 0)
+		lines[i] = yaml_in_line(&r->in, item);
+		if ((ret = yaml_in_pairs(&r->in, item, r->item_name, fn, r)) < 0)
 			return ret;
 		for (size_t j = 0; j < sizeof(needed) / sizeof(needed[0]); j++)
 			if ((required & needed[j].bit) && !(r->seen & needed[j].bit))
-				return fail(r, item, "%s: %s is missing", r->item_name, needed[j].key);
+				return yaml_in_fail(&r->in, item, "%s: %s is missing", r->item_name,
+						    needed[j].key);
 	}
 	r->item = 0;
 	return 0;
@@ -331,48 +225,55 @@ static int read_sides(struct reader *r, const yaml_node_t *v)
 	return 0;
 }
 
-static int middle_pair(struct reader *r, const yaml_node_t *key, const char *k, const yaml_node_t *v)
+static int middle_pair(void *ctx, const yaml_node_t *key, const char *k, const yaml_node_t *v)
 {
+	struct reader *r = ctx;
 	if (!strcmp(k, "angle")) {
 		note(r, ORI_VALUE_MIDDLE, v);
 		return get_pair(r, v, "middle.angle", true, r->d->middle);
 	}
 	if (!strcmp(k, "nodes")) {
 		if (r->d->fold != ORI_FOLD_FAN)
-			return fail(r, key, "middle.nodes: only a fan's midrib has nodes (a half fold's "
-				    "is its one crease)");
+			return yaml_in_fail(&r->in, key,
+					    "middle.nodes: only a fan's midrib has nodes (a half fold's "
+					    "is its one crease)");
 		return read_nodes(r, v);
 	}
-	return unknown(r, key, k, "middle");
+	return yaml_in_unknown(&r->in, key, k, "middle");
 }
 
-static int cut_pair(struct reader *r, const yaml_node_t *key, const char *k, const yaml_node_t *v)
+static int cut_pair(void *ctx, const yaml_node_t *key, const char *k, const yaml_node_t *v)
 {
+	struct reader *r = ctx;
 	bool fan = r->d->fold == ORI_FOLD_FAN;
 
 	if (!strcmp(k, "junction") || !strcmp(k, "theta0")) {
 		if (!fan)
-			return fail(r, key, "cut.%s: only a fan's straight cuts have a %s (a half fold's "
-				    "curved cut has width and power)", k, k);
+			return yaml_in_fail(&r->in, key,
+					    "cut.%s: only a fan's straight cuts have a %s (a half fold's "
+					    "curved cut has width and power)",
+					    k, k);
 		if (!strcmp(k, "junction")) {
 			note(r, ORI_VALUE_JUNCTION, v);
-			return get_number(r, v, "cut.junction", &r->d->junction);
+			return yaml_in_number(&r->in, v, "cut.junction", &r->d->junction);
 		}
 		note(r, ORI_VALUE_THETA0, v);
-		return get_number(r, v, "cut.theta0", &r->d->theta0);
+		return yaml_in_number(&r->in, v, "cut.theta0", &r->d->theta0);
 	}
 	if (!strcmp(k, "width") || !strcmp(k, "power")) {
 		if (fan)
-			return fail(r, key, "cut.%s: only a half fold's curved cut has a %s (a fan's "
-				    "straight cuts have junction and theta0)", k, k);
+			return yaml_in_fail(&r->in, key,
+					    "cut.%s: only a half fold's curved cut has a %s (a fan's "
+					    "straight cuts have junction and theta0)",
+					    k, k);
 		if (!strcmp(k, "width")) {
 			note(r, ORI_VALUE_WIDTH, v);
-			return get_number(r, v, "cut.width", &r->d->width);
+			return yaml_in_number(&r->in, v, "cut.width", &r->d->width);
 		}
 		note(r, ORI_VALUE_POWER, v);
-		return get_number(r, v, "cut.power", &r->d->power);
+		return yaml_in_number(&r->in, v, "cut.power", &r->d->power);
 	}
-	return unknown(r, key, k, "cut");
+	return yaml_in_unknown(&r->in, key, k, "cut");
 }
 
 static int read_name(struct reader *r, const yaml_node_t *v)
@@ -382,23 +283,25 @@ static int read_name(struct reader *r, const yaml_node_t *v)
 	int ret;
 
 	note(r, ORI_VALUE_NAME, v);
-	if ((ret = get_word(r, v, "name", &w)) < 0)
+	if ((ret = yaml_in_word(&r->in, v, "name", &w)) < 0)
 		return ret;
 	if (strlen(w) >= ORI_NAME_MAX)
-		return fail(r, v, "name: \"%s\" is longer than %d characters", shown(w, buf),
-			    ORI_NAME_MAX - 1);
+		return yaml_in_fail(&r->in, v, "name: \"%s\" is longer than %d characters",
+				    yaml_node_shown(w, buf), ORI_NAME_MAX - 1);
 	for (const char *c = w; *c; c++)
 		if (!((*c >= 'a' && *c <= 'z') || (*c >= '0' && *c <= '9') || *c == '-'))
-			return fail(r, v, "name: \"%s\" is not made of a-z, 0-9 and -", shown(w, buf));
+			return yaml_in_fail(&r->in, v, "name: \"%s\" is not made of a-z, 0-9 and -",
+					    yaml_node_shown(w, buf));
 	if (!*w)
-		return fail(r, v, "name: empty");
+		return yaml_in_fail(&r->in, v, "name: empty");
 	memset(r->d->name, 0, sizeof(r->d->name));
 	memcpy(r->d->name, w, strlen(w));
 	return 0;
 }
 
-static int top_pair(struct reader *r, const yaml_node_t *key, const char *k, const yaml_node_t *v)
+static int top_pair(void *ctx, const yaml_node_t *key, const char *k, const yaml_node_t *v)
 {
+	struct reader *r = ctx;
 	/* read before the rest */
 	if (!strcmp(k, "edaha-leaf") || !strcmp(k, "fold"))
 		return 0;
@@ -406,61 +309,66 @@ static int top_pair(struct reader *r, const yaml_node_t *key, const char *k, con
 		return read_name(r, v);
 	if (!strcmp(k, "size")) {
 		note(r, ORI_VALUE_SIZE, v);
-		return get_number(r, v, "size", &r->d->size);
+		return yaml_in_number(&r->in, v, "size", &r->d->size);
 	}
 	if (!strcmp(k, "rest")) {
 		note(r, ORI_VALUE_REST, v);
-		return get_number(r, v, "rest", &r->d->rest);
+		return yaml_in_number(&r->in, v, "rest", &r->d->rest);
 	}
 	if (!strcmp(k, "middle")) {
-		r->d->line_middle = line_of(r, key);
-		return for_each_pair(r, v, "middle", middle_pair);
+		r->d->line_middle = yaml_in_line(&r->in, key);
+		return yaml_in_pairs(&r->in, v, "middle", middle_pair, r);
 	}
 	if (!strcmp(k, "sides")) {
 		if (r->d->fold != ORI_FOLD_FAN)
-			return fail(r, key, "sides: only a fan has side parts (a half fold is one "
-				    "entire leaf)");
+			return yaml_in_fail(&r->in, key,
+					    "sides: only a fan has side parts (a half fold is one "
+					    "entire leaf)");
 		return read_sides(r, v);
 	}
 	if (!strcmp(k, "cut")) {
-		r->d->line_cut = line_of(r, key);
-		return for_each_pair(r, v, "cut", cut_pair);
+		r->d->line_cut = yaml_in_line(&r->in, key);
+		return yaml_in_pairs(&r->in, v, "cut", cut_pair, r);
 	}
-	return unknown(r, key, k, NULL);
+	return yaml_in_unknown(&r->in, key, k, NULL);
 }
 
 /* The version comes first, then the fold: it decides the defaults and which keys exist. */
 static int read_head(struct reader *r, const yaml_node_t *root)
 {
-	const yaml_node_t *key = NULL, *first, *v = lookup(r, root, "edaha-leaf", &key);
+	const yaml_node_t *key = NULL, *first,
+			  *v = yaml_in_lookup(&r->in, root, "edaha-leaf", &key);
 	enum ori_fold fold = ORI_FOLD_FAN;
 	const char *w;
 	char buf[24];
 	int version, ret;
 
 	if (!v)
-		return fail(r, root, "not a leaf design file: \"edaha-leaf: %d\" is missing",
-			    ORI_DESIGN_VERSION);
-	first = yaml_document_get_node(&r->doc, root->data.mapping.pairs.start->key);
-	if ((ret = get_int(r, v, "edaha-leaf", &version)) < 0)
+		return yaml_in_fail(&r->in, root,
+				    "not a leaf design file: \"edaha-leaf: %d\" is missing",
+				    ORI_DESIGN_VERSION);
+	first = yaml_document_get_node(&r->in.doc, root->data.mapping.pairs.start->key);
+	if ((ret = yaml_in_int(&r->in, v, "edaha-leaf", &version)) < 0)
 		return ret;
 	if (version != ORI_DESIGN_VERSION)
-		return fail(r, v, "edaha-leaf: version %d: this edaha reads %d", version,
-			    ORI_DESIGN_VERSION);
+		return yaml_in_fail(&r->in, v, "edaha-leaf: version %d: this edaha reads %d",
+				    version, ORI_DESIGN_VERSION);
 	if (key != first)
-		return fail(r, key, "edaha-leaf: not the first key: it says how to read the rest");
-	if ((v = lookup(r, root, "fold", NULL))) {
-		if ((ret = get_word(r, v, "fold", &w)) < 0)
+		return yaml_in_fail(&r->in, key,
+				    "edaha-leaf: not the first key: it says how to read the rest");
+	if ((v = yaml_in_lookup(&r->in, root, "fold", NULL))) {
+		if ((ret = yaml_in_word(&r->in, v, "fold", &w)) < 0)
 			return ret;
 		if (!strcmp(w, "fan"))
 			fold = ORI_FOLD_FAN;
 		else if (!strcmp(w, "half"))
 			fold = ORI_FOLD_HALF;
 		else
-			return fail(r, v, "fold: \"%s\" is none of fan, half", shown(w, buf));
+			return yaml_in_fail(&r->in, v, "fold: \"%s\" is none of fan, half",
+					    yaml_node_shown(w, buf));
 	}
 	ori_design_default(r->d, fold);
-	r->d->line = line_of(r, key);
+	r->d->line = yaml_in_line(&r->in, key);
 	return 0;
 }
 
@@ -502,37 +410,20 @@ static unsigned long fault_line(const struct reader *r, const struct ori_fault *
 	return line ? line : d->line;
 }
 
-static int yaml_fail(struct reader *r, const yaml_parser_t *y, const char *data, size_t len)
-{
-	return yaml_node_parse_error(r->err, r->name, 0, y, data, len);
-}
+static const struct yaml_in_kind kind = {
+	.what = "leaf design file", .version_key = "edaha-leaf", .version = ORI_DESIGN_VERSION,
+	.second_key = "fold", .max_bytes = ORI_READ_MAX_BYTES, .max_depth = ORI_READ_MAX_DEPTH,
+};
 
-static int read_root(struct reader *r, yaml_parser_t *y, const char *data, size_t len)
+static int read_root(struct reader *r, const yaml_node_t *root)
 {
-	yaml_node_t *root = yaml_document_get_root_node(&r->doc);
 	struct ori_design *d = r->d;
-	yaml_document_t second;
 	struct ori_fault fault;
 	struct error why;
-	unsigned long second_at;
-	bool more;
 	int ret;
 
-	if (!root)
-		return error_at(r->err, -EINVAL, r->name, 1,
-				"empty: a leaf design file starts \"edaha-leaf: %d\"", ORI_DESIGN_VERSION);
-	if (root->type != YAML_MAPPING_NODE)
-		return fail(r, root, "expected a mapping (edaha-leaf:, fold:, ...) at the top, got %s",
-			    yaml_node_kind(root));
-	if (!yaml_parser_load(y, &second))
-		return yaml_fail(r, y, data, len);
-	more = yaml_document_get_root_node(&second) != NULL;
-	second_at = more ? line_of(r, yaml_document_get_root_node(&second)) : 0;
-	yaml_document_delete(&second);
-	if (more)
-		return error_at(r->err, -EINVAL, r->name, second_at,
-				"a second YAML document; one is expected");
-	if ((ret = read_head(r, root)) < 0 || (ret = for_each_pair(r, root, "the top level", top_pair)) < 0)
+	if ((ret = read_head(r, root)) < 0 ||
+	    (ret = yaml_in_pairs(&r->in, root, "the top level", top_pair, r)) < 0)
 		return ret;
 	/* what the file leaves out is the file's: refusals of it are told at its first line */
 	if (!d->line_middle)
@@ -546,49 +437,24 @@ static int read_root(struct reader *r, yaml_parser_t *y, const char *data, size_
 		if (!d->sides[i].line)
 			d->sides[i].line = d->line;
 	if ((ret = ori_design_check(d, &fault, &why)) < 0)
-		return error_at(r->err, ret, r->name, fault_line(r, &fault), "%s", why.msg);
+		return error_at(r->in.err, ret, r->in.name, fault_line(r, &fault), "%s", why.msg);
 	return 0;
-}
-
-/*
- * What the loader is not shown. A design file has no use for YAML's aliases (*name), and
- * the loaded document shares an aliased node with its anchor, so a bad value there would be
- * told at the anchor's line: they are refused where they are. Nor for deep nesting, which
- * libyaml's loader takes seconds over. A syntax error is left to the loader to tell.
- */
-static int prescan(struct reader *r, const char *data, size_t len)
-{
-	return yaml_node_prescan(data, len, r->name, 0, ORI_READ_MAX_DEPTH, "leaf design file",
-				 r->err);
 }
 
 int ori_read(const char *data, size_t len, const char *name, struct ori_design *d,
 	     struct error *err)
 {
-	struct reader r = { .name = name, .err = err, .data = data, .len = len };
 	struct ori_design tmp;
+	struct reader r = { .d = &tmp };
+	const yaml_node_t *root;
 	struct ori_leaf leaf;
-	yaml_parser_t y;
 	int ret;
 
-	if (len > ORI_READ_MAX_BYTES)
-		return error_at(err, -EINVAL, name, 1, "larger than %d bytes: not a leaf design file",
-				ORI_READ_MAX_BYTES);
-	if ((ret = prescan(&r, data, len)) < 0)
-		return ret;
 	ori_design_default(&tmp, ORI_FOLD_FAN);
-	r.d = &tmp;
-	if (!yaml_parser_initialize(&y))
-		return error_at(err, -ENOMEM, name, 0, "out of memory");
-	yaml_parser_set_input_string(&y, (const unsigned char *)data, len);
-	if (!yaml_parser_load(&y, &r.doc)) {
-		ret = yaml_fail(&r, &y, data, len);
-		yaml_parser_delete(&y);
+	if ((ret = yaml_in_open(&r.in, &kind, data, len, name, 0, err, &root)) < 0)
 		return ret;
-	}
-	ret = read_root(&r, &y, data, len);
-	yaml_document_delete(&r.doc);
-	yaml_parser_delete(&y);
+	ret = read_root(&r, root);
+	yaml_in_close(&r.in);
 	if (ret < 0)
 		return ret;
 	/* a design that cannot fold is refused here, at its element's line */

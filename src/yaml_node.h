@@ -8,9 +8,9 @@
 #include "error.h"
 
 /*
- * What the YAML files read with libyaml's document loader share (the tree parameter files,
- * gen_read.c; the kiosk's configuration, platform/config_file.c): a node's kind and text,
- * and a parser's error told at FILE:LINE.
+ * What the YAML files read with libyaml's document loader share (the tree, leaf and
+ * settings files through yaml_in.c; the kiosk's configuration, platform/config_file.c): a
+ * node's kind and text, and a parser's error told at FILE:LINE.
  */
 
 /* A plain scalar's text as a number, strictly: decimal digits with an optional sign,
