@@ -4,6 +4,7 @@
 /* Reading back a GLB the exporter wrote, for the export tests (header-only, static). */
 
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -131,6 +132,65 @@ static inline struct json_object *glb_prim_of(const struct glb *g, const char *n
 			return p;
 	}
 	return NULL;
+}
+
+/* The model's primitives (its one mesh's). */
+static inline struct json_object *glb_prims(const struct glb *g)
+{
+	return get(at(get(g->json, "meshes"), 0), "primitives");
+}
+
+/* The primitive whose POSITION accessor is named "NAME.POSITION", or NULL. */
+static inline struct json_object *glb_prim_named(const struct glb *g, const char *name)
+{
+	struct json_object *ps = glb_prims(g), *accessors = get(g->json, "accessors");
+	char want[64];
+
+	snprintf(want, sizeof(want), "%s.POSITION", name);
+	for (size_t i = 0; i < json_object_array_length(ps); i++) {
+		int64_t pos = get_int(get(at(ps, i), "attributes"), "POSITION");
+
+		if (!strcmp(get_str(at(accessors, (size_t)pos), "name"), want))
+			return at(ps, i);
+	}
+	return NULL;
+}
+
+/* How many indices a primitive has. */
+static inline int64_t glb_prim_indices(const struct glb *g, struct json_object *prim)
+{
+	return get_int(at(get(g->json, "accessors"), (size_t)get_int(prim, "indices")), "count");
+}
+
+/* How many indices all the primitives have. */
+static inline int64_t glb_indices(const struct glb *g)
+{
+	int64_t n = 0;
+
+	for (size_t i = 0; i < json_object_array_length(glb_prims(g)); i++)
+		n += glb_prim_indices(g, at(glb_prims(g), i));
+	return n;
+}
+
+/* A JSON number, integer or not. */
+static inline double json_num(struct json_object *v)
+{
+	CHECK(json_object_is_type(v, json_type_double) || json_object_is_type(v, json_type_int));
+	return json_object_get_double(v);
+}
+
+/* A JSON file the exporter wrote (one line end at its end), parsed; b's text is left
+ * NUL-terminated. */
+static inline struct json_object *json_text(struct buf *b)
+{
+	struct json_object *root;
+
+	CHECK(b->len > 0 && b->data[b->len - 1] == '\n');
+	CHECK_INT(buf_append(b, "", 1), 0);
+	b->len--;
+	root = json_tokener_parse((const char *)b->data);
+	CHECK(root);
+	return root;
 }
 
 /* Whether two accessors hold the same bytes and say the same of them (but their names). */

@@ -63,38 +63,19 @@ static void set_season(struct pair *p, enum season s)
 	p->vines.season = s;
 }
 
-/* The text NUL-terminated, parsed. */
-static struct json_object *parse_text(struct buf *b)
-{
-	struct json_object *root;
-
-	CHECK(b->len > 0 && b->data[b->len - 1] == '\n');
-	CHECK_INT(buf_append(b, "", 1), 0);
-	b->len--;
-	root = json_tokener_parse((const char *)b->data);
-	CHECK(root);
-	return root;
-}
-
 static struct json_object *skeleton(const struct tree *t, struct buf *b)
 {
 	buf_reset(b);
 	CHECK_INT(export_skeleton(t, b), 0);
-	return parse_text(b);
-}
-
-static double num(struct json_object *v)
-{
-	CHECK(json_object_is_type(v, json_type_double) || json_object_is_type(v, json_type_int));
-	return json_object_get_double(v);
+	return json_text(b);
 }
 
 static void check_point(struct json_object *xyz, struct vec3 p)
 {
 	CHECK_INT(json_object_array_length(xyz), 3);
-	CHECK_NEAR(num(at(xyz, 0)), p.x, 5.0001e-7);
-	CHECK_NEAR(num(at(xyz, 1)), p.y, 5.0001e-7);
-	CHECK_NEAR(num(at(xyz, 2)), p.z, 5.0001e-7);
+	CHECK_NEAR(json_num(at(xyz, 0)), p.x, 5.0001e-7);
+	CHECK_NEAR(json_num(at(xyz, 1)), p.y, 5.0001e-7);
+	CHECK_NEAR(json_num(at(xyz, 2)), p.z, 5.0001e-7);
 }
 
 static void check_shoot(struct json_object *o, const struct vine *v, size_t i)
@@ -131,8 +112,8 @@ static void check_vine(struct json_object *o, const struct vine *v, size_t i)
 
 	synth_vine_params(i, &p, &plant);
 	CHECK_INT(get_int(o, "edaha-vine"), VINE_PARAMS_VERSION);
-	CHECK_NEAR(num(get(o, "internode")), p.internode, 1e-9);
-	CHECK_NEAR(num(get(o, "radius")), p.radius, 1e-9);
+	CHECK_NEAR(json_num(get(o, "internode")), p.internode, 1e-9);
+	CHECK_NEAR(json_num(get(o, "radius")), p.radius, 1e-9);
 	CHECK_INT(get_int(o, "leaves_per_node"), p.leaves_per_node);
 	CHECK(!strcmp(get_str(o, "twining"), p.twining == VINE_RIGHT ? "right" : "left"));
 	CHECK_INT(get_int(o, "seed"), p.seed);
@@ -147,7 +128,7 @@ static void check_vine(struct json_object *o, const struct vine *v, size_t i)
 	for (size_t k = 0; k < json_object_array_length(get(at(shoots, 0), "contacts")); k++) {
 		size_t j = (size_t)json_object_get_int64(at(get(at(shoots, 0), "contacts"), k));
 		struct json_object *xyz = at(main_axis, j);
-		double x = num(at(xyz, 0)), z = num(at(xyz, 2));
+		double x = json_num(at(xyz, 0)), z = json_num(at(xyz, 2));
 
 		CHECK_NEAR(sqrt(x * x + z * z), SYNTH_VINE_RADIUS + p.radius, 0.012);
 		touching++;
@@ -252,41 +233,6 @@ static void glb_of(const struct tree *t, struct buf *b)
 	meshes_finish(&m);
 }
 
-static struct json_object *prims(const struct glb *g)
-{
-	return get(at(get(g->json, "meshes"), 0), "primitives");
-}
-
-/* The primitive whose POSITION accessor is named "NAME.POSITION", or NULL. */
-static struct json_object *prim_named(const struct glb *g, const char *name)
-{
-	struct json_object *ps = prims(g), *accessors = get(g->json, "accessors");
-	char want[64];
-
-	snprintf(want, sizeof(want), "%s.POSITION", name);
-	for (size_t i = 0; i < json_object_array_length(ps); i++) {
-		int64_t pos = get_int(get(at(ps, i), "attributes"), "POSITION");
-
-		if (!strcmp(get_str(at(accessors, (size_t)pos), "name"), want))
-			return at(ps, i);
-	}
-	return NULL;
-}
-
-static int64_t prim_indices(const struct glb *g, struct json_object *prim)
-{
-	return get_int(at(get(g->json, "accessors"), (size_t)get_int(prim, "indices")), "count");
-}
-
-static int64_t glb_indices(const struct glb *g)
-{
-	int64_t n = 0;
-
-	for (size_t i = 0; i < json_object_array_length(prims(g)); i++)
-		n += prim_indices(g, at(prims(g), i));
-	return n;
-}
-
 static struct json_object *material_of(const struct glb *g, struct json_object *prim)
 {
 	return at(get(g->json, "materials"), (size_t)get_int(prim, "material"));
@@ -295,7 +241,7 @@ static struct json_object *material_of(const struct glb *g, struct json_object *
 /* The tree's own primitive is the same in both files. */
 static void check_same_prim(const struct glb *a, const struct glb *b, const char *name)
 {
-	struct json_object *pa = prim_named(a, name), *pb = prim_named(b, name);
+	struct json_object *pa = glb_prim_named(a, name), *pb = glb_prim_named(b, name);
 
 	CHECK(pa && pb);
 	CHECK(glb_same_accessor(a, get_int(get(pa, "attributes"), "POSITION"), b,
@@ -361,27 +307,27 @@ static void test_glb(enum season s)
 	check_accessors(&gb);
 
 	/* the tree's own parts as they were, then the vines' */
-	CHECK_INT(json_object_array_length(prims(&ga)), leaves ? 2 : 1);
-	CHECK_INT(json_object_array_length(prims(&gb)), leaves ? 4 : 2);
+	CHECK_INT(json_object_array_length(glb_prims(&ga)), leaves ? 2 : 1);
+	CHECK_INT(json_object_array_length(glb_prims(&gb)), leaves ? 4 : 2);
 	check_same_prim(&ga, &gb, "bark");
 	if (leaves)
 		check_same_prim(&ga, &gb, "leaves");
-	CHECK(!prim_named(&ga, "vine") && !prim_named(&ga, "vine-leaves"));
-	vine = prim_named(&gb, "vine");
+	CHECK(!glb_prim_named(&ga, "vine") && !glb_prim_named(&ga, "vine-leaves"));
+	vine = glb_prim_named(&gb, "vine");
 	CHECK(vine);
-	CHECK_INT(prim_indices(&gb, vine), p.stem_indices);
+	CHECK_INT(glb_prim_indices(&gb, vine), p.stem_indices);
 	check_vine_material(&gb, vine);
 
 	/* exactly the vines' triangles more; in winter no leaves at all */
-	vleaves = prim_named(&gb, "vine-leaves");
+	vleaves = glb_prim_named(&gb, "vine-leaves");
 	CHECK(!vleaves == !leaves);
 	CHECK_INT(glb_indices(&gb) - glb_indices(&ga),
 		  p.stem_indices + (leaves ? p.leaf_indices : 0));
 	CHECK_INT(count(gb.json, "materials"), leaves ? 3 : 2);
 	if (vleaves) {
-		CHECK_INT(prim_indices(&gb, vleaves), p.leaf_indices);
+		CHECK_INT(glb_prim_indices(&gb, vleaves), p.leaf_indices);
 		/* the tree's leaves' material, shared */
-		CHECK_INT(get_int(vleaves, "material"), get_int(prim_named(&gb, "leaves"), "material"));
+		CHECK_INT(get_int(vleaves, "material"), get_int(glb_prim_named(&gb, "leaves"), "material"));
 		CHECK(json_object_get_boolean(get(material_of(&gb, vleaves), "doubleSided")));
 		CHECK(json_object_object_get_ex(get(vleaves, "attributes"), "COLOR_0", NULL) ==
 		      (s != SEASON_SUMMER));

@@ -107,43 +107,6 @@ static void grown_finish(struct grown *g)
 		(g)->t.wood = kept_;                 \
 	} while (0)
 
-/* ---- glb ---- */
-
-static struct json_object *prims(const struct glb *g)
-{
-	return get(at(get(g->json, "meshes"), 0), "primitives");
-}
-
-/* The primitive whose POSITION accessor is named "NAME.POSITION", or NULL. */
-static struct json_object *prim_named(const struct glb *g, const char *name)
-{
-	struct json_object *ps = prims(g), *accessors = get(g->json, "accessors");
-	char want[64];
-
-	snprintf(want, sizeof(want), "%s.POSITION", name);
-	for (size_t i = 0; i < json_object_array_length(ps); i++) {
-		int64_t pos = get_int(get(at(ps, i), "attributes"), "POSITION");
-
-		if (!strcmp(get_str(at(accessors, (size_t)pos), "name"), want))
-			return at(ps, i);
-	}
-	return NULL;
-}
-
-static int64_t prim_indices(const struct glb *g, struct json_object *prim)
-{
-	return get_int(at(get(g->json, "accessors"), (size_t)get_int(prim, "indices")), "count");
-}
-
-static int64_t glb_indices(const struct glb *g)
-{
-	int64_t n = 0;
-
-	for (size_t i = 0; i < json_object_array_length(prims(g)); i++)
-		n += prim_indices(g, at(prims(g), i));
-	return n;
-}
-
 /* Accessor i holds exactly these 4-byte words (floats or indices), little-endian. */
 static void check_words(const struct glb *g, int64_t i, const void *want, size_t n)
 {
@@ -191,20 +154,20 @@ static void test_glb(enum season s)
 	check_accessors(&gb);
 
 	/* without wood: no wood primitive */
-	CHECK_INT(json_object_array_length(prims(&ga)), leaves ? 2 : 1);
-	CHECK(!prim_named(&ga, "wood"));
+	CHECK_INT(json_object_array_length(glb_prims(&ga)), leaves ? 2 : 1);
+	CHECK(!glb_prim_named(&ga, "wood"));
 	CHECK(!strstr((const char *)a.data + 20, "\"wood"));
 
 	/* grown: bark (the twigs), wood, leaves; the wood in the bark's material */
-	CHECK_INT(json_object_array_length(prims(&gb)), leaves ? 3 : 2);
-	bark = prim_named(&gb, "bark");
-	wood = prim_named(&gb, "wood");
+	CHECK_INT(json_object_array_length(glb_prims(&gb)), leaves ? 3 : 2);
+	bark = glb_prim_named(&gb, "bark");
+	wood = glb_prim_named(&gb, "wood");
 	CHECK(bark && wood);
-	CHECK(at(prims(&gb), 0) == bark && at(prims(&gb), 1) == wood);
+	CHECK(at(glb_prims(&gb), 0) == bark && at(glb_prims(&gb), 1) == wood);
 	CHECK_INT(get_int(wood, "material"), get_int(bark, "material"));
 	CHECK_INT(count(gb.json, "materials"), leaves ? 2 : 1);
-	CHECK_INT(prim_indices(&gb, bark), g.tm.bark.nindices);
-	CHECK_INT(prim_indices(&gb, wood), wb->nindices);
+	CHECK_INT(glb_prim_indices(&gb, bark), g.tm.bark.nindices);
+	CHECK_INT(glb_prim_indices(&gb, wood), wb->nindices);
 	check_words(&gb, get_int(get(wood, "attributes"), "POSITION"), wb->positions,
 		    3 * wb->nvertices);
 	check_words(&gb, get_int(get(wood, "attributes"), "NORMAL"), wb->normals,
@@ -338,26 +301,6 @@ static void test_obj(enum season s)
 	grown_finish(&g);
 }
 
-/* ---- skeleton.json ---- */
-
-static struct json_object *parse_text(struct buf *b)
-{
-	struct json_object *root;
-
-	CHECK(b->len > 0 && b->data[b->len - 1] == '\n');
-	CHECK_INT(buf_append(b, "", 1), 0);
-	b->len--;
-	root = json_tokener_parse((const char *)b->data);
-	CHECK(root);
-	return root;
-}
-
-static double num(struct json_object *v)
-{
-	CHECK(json_object_is_type(v, json_type_double) || json_object_is_type(v, json_type_int));
-	return json_object_get_double(v);
-}
-
 /* Each branch's radii are the tree's: the power law's, the wood's begin applied. */
 static void check_radii(struct json_object *root, const struct tree *t)
 {
@@ -369,7 +312,7 @@ static void check_radii(struct json_object *root, const struct tree *t)
 
 		CHECK_INT(json_object_array_length(radii), t->branches[i].npoints);
 		for (size_t k = 0; k < t->branches[i].npoints; k++)
-			CHECK_NEAR(num(at(radii, k)), t->branches[i].radii[k], 5.0001e-7);
+			CHECK_NEAR(json_num(at(radii, k)), t->branches[i].radii[k], 5.0001e-7);
 	}
 }
 
@@ -386,11 +329,11 @@ static void check_wood(struct json_object *o, const struct wood *w, const char *
 	CHECK_INT(json_object_get_int(at(grid, 1)), w->g.ny);
 	CHECK_INT(json_object_get_int(at(grid, 2)), w->g.nz);
 	CHECK(w->g.nx == 64 || w->g.ny == 64 || w->g.nz == 64);
-	CHECK_NEAR(num(get(o, "voxel")), w->g.h, 5.0001e-7);
+	CHECK_NEAR(json_num(get(o, "voxel")), w->g.h, 5.0001e-7);
 	CHECK_INT(json_object_array_length(origin), 3);
-	CHECK_NEAR(num(at(origin, 0)), w->g.origin.x, 5.0001e-7);
-	CHECK_NEAR(num(at(origin, 1)), w->g.origin.y, 5.0001e-7);
-	CHECK_NEAR(num(at(origin, 2)), w->g.origin.z, 5.0001e-7);
+	CHECK_NEAR(json_num(at(origin, 0)), w->g.origin.x, 5.0001e-7);
+	CHECK_NEAR(json_num(at(origin, 1)), w->g.origin.y, 5.0001e-7);
+	CHECK_NEAR(json_num(at(origin, 2)), w->g.origin.z, 5.0001e-7);
 	/* the trunk and the limb */
 	CHECK_INT(json_object_array_length(ids), 2);
 	CHECK_INT(json_object_get_int(at(ids, 0)), 0);
@@ -419,14 +362,14 @@ static void test_skeleton(int presses, enum wood_mode mode)
 		CHECK_INT(export_skeleton(&t, &a), 0);
 		t.wood = w;
 	}
-	bare = parse_text(&a);
+	bare = json_text(&a);
 	CHECK(!json_object_object_get_ex(bare, "wood", NULL));
 	check_radii(bare, &t);
 	json_object_put(bare);
 
 	/* with it: the same text up to the leaves, then the wood */
 	CHECK_INT(export_skeleton(&t, &b), 0);
-	root = parse_text(&b);
+	root = json_text(&b);
 	CHECK(b.len > a.len && !memcmp(a.data, b.data, a.len - 2)); /* a ends in "}\n" */
 	CHECK(!memcmp(b.data + a.len - 2, ",\"wood\":{\"presses\":", 19));
 	CHECK_INT(get_int(root, "version"), SKELETON_VERSION);
