@@ -7,42 +7,20 @@
 
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <yaml.h>
 
 #include "fileio.h"
+#include "yaml_in.h"
 #include "yaml_node.h"
 
 struct cfg_parser {
-	const char *name;
-	struct error *err;
-	const char *data; /* the text read, for its lines */
-	size_t len;
+	struct yaml_in in; /* its parser and document are config_parse's own */
 	FILE *warn;
-	yaml_document_t doc;
 	struct config *c;
 };
 
-static int fail(struct cfg_parser *p, const yaml_node_t *n, const char *fmt, ...)
-	__attribute__((format(printf, 3, 4)));
-
-static unsigned long line_of(const struct cfg_parser *p, const yaml_node_t *n)
-{
-	return n ? yaml_node_line(&n->start_mark, p->data, p->len) : 0;
-}
-
-static int fail(struct cfg_parser *p, const yaml_node_t *n, const char *fmt, ...)
-{
-	char msg[sizeof(p->err->msg)];
-	va_list ap;
-
-	va_start(ap, fmt);
-	vsnprintf(msg, sizeof(msg), fmt, ap);
-	va_end(ap);
-	return error_at(p->err, -EINVAL, p->name, line_of(p, n), "%s", msg);
-}
 
 static void warn_unknown(struct cfg_parser *p, const yaml_node_t *key, const char *section)
 {
@@ -59,8 +37,8 @@ static void warn_unknown(struct cfg_parser *p, const yaml_node_t *key, const cha
 	}
 	k[n] = '\0';
 	/* a failed warning is no reason to stop the kiosk */
-	(void)fprintf(p->warn, "%s:%lu: warning: unknown key \"%s\" in %s, ignored\n", p->name,
-		      line_of(p, key), k, section);
+	(void)fprintf(p->warn, "%s:%lu: warning: unknown key \"%s\" in %s, ignored\n", p->in.name,
+		      yaml_in_line(&p->in, key), k, section);
 }
 
 static bool is_null(const yaml_node_t *n)
@@ -77,15 +55,15 @@ static int get_string(struct cfg_parser *p, const yaml_node_t *n, const char *wh
 
 	if (!s)
 		return n->type == YAML_SCALAR_NODE
-			       ? fail(p, n, "%s holds a NUL byte", what)
-			       : fail(p, n, "expected a string for %s, got %s", what, yaml_node_kind(n));
+			       ? yaml_in_fail(&p->in, n, "%s holds a NUL byte", what)
+			       : yaml_in_fail(&p->in, n, "expected a string for %s, got %s", what, yaml_node_kind(n));
 	if (!*s)
-		return fail(p, n, "%s is empty", what);
+		return yaml_in_fail(&p->in, n, "%s is empty", what);
 	if (strlen(s) >= size)
-		return fail(p, n, "%s is longer than %zu characters", what, size - 1);
+		return yaml_in_fail(&p->in, n, "%s is longer than %zu characters", what, size - 1);
 	for (const char *q = s; *q; q++)
 		if ((unsigned char)*q < 0x20 || *q == 0x7f)
-			return fail(p, n, "%s holds a control character", what);
+			return yaml_in_fail(&p->in, n, "%s holds a control character", what);
 	memcpy(out, s, strlen(s) + 1);
 	return 0;
 }
@@ -99,16 +77,16 @@ static int get_int(struct cfg_parser *p, const yaml_node_t *n, const char *what,
 	long x;
 
 	if (!s || !yaml_node_plain(n))
-		return fail(p, n, "expected an integer for %s, got %s", what,
+		return yaml_in_fail(&p->in, n, "expected an integer for %s, got %s", what,
 			    n->type == YAML_SCALAR_NODE ? "a quoted string" : yaml_node_kind(n));
 	if (!((s[0] >= '0' && s[0] <= '9') || (s[0] == '-' && s[1] >= '0' && s[1] <= '9')))
-		return fail(p, n, "%s \"%.40s\" is not an integer", what, s);
+		return yaml_in_fail(&p->in, n, "%s \"%.40s\" is not an integer", what, s);
 	errno = 0;
 	x = strtol(s, &end, 10);
 	if (*end)
-		return fail(p, n, "%s \"%.40s\" is not an integer", what, s);
+		return yaml_in_fail(&p->in, n, "%s \"%.40s\" is not an integer", what, s);
 	if (errno == ERANGE || x < lo || x > hi)
-		return fail(p, n, "%s %.40s out of range %ld..%ld", what, s, lo, hi);
+		return yaml_in_fail(&p->in, n, "%s %.40s out of range %ld..%ld", what, s, lo, hi);
 	*v = x;
 	return 0;
 }
@@ -127,7 +105,7 @@ static int get_bool(struct cfg_parser *p, const yaml_node_t *n, const char *what
 			return 0;
 		}
 	}
-	return fail(p, n, "expected true or false for %s", what);
+	return yaml_in_fail(&p->in, n, "expected true or false for %s", what);
 }
 
 static int get_rotation(struct cfg_parser *p, const yaml_node_t *n, const char *what, int *v)
@@ -138,7 +116,7 @@ static int get_rotation(struct cfg_parser *p, const yaml_node_t *n, const char *
 	if (r < 0)
 		return r;
 	if (x != 0 && x != 90 && x != 180 && x != 270)
-		return fail(p, n, "%s must be 0, 90, 180 or 270, not %ld", what, x);
+		return yaml_in_fail(&p->in, n, "%s must be 0, 90, 180 or 270, not %ld", what, x);
 	*v = (int)x;
 	return 0;
 }
@@ -150,14 +128,14 @@ static int get_fraction(struct cfg_parser *p, const yaml_node_t *n, const char *
 	double x;
 
 	if (!s || !yaml_node_plain(n) || !*s)
-		return fail(p, n, "expected a number for %s", what);
+		return yaml_in_fail(&p->in, n, "expected a number for %s", what);
 	errno = 0;
 	x = strtod(s, &end);
 	if (*end || errno == ERANGE || !isfinite(x) ||
 	    !((s[0] >= '0' && s[0] <= '9') || s[0] == '.' || s[0] == '-'))
-		return fail(p, n, "%s \"%.40s\" is not a number", what, s);
+		return yaml_in_fail(&p->in, n, "%s \"%.40s\" is not a number", what, s);
 	if (x < 0.0 || x > 1.0)
-		return fail(p, n, "%s %.40s out of range 0..1", what, s);
+		return yaml_in_fail(&p->in, n, "%s %.40s out of range 0..1", what, s);
 	*v = x;
 	return 0;
 }
@@ -177,24 +155,24 @@ static int for_each_pair(struct cfg_parser *p, const yaml_node_t *n, const char 
 	if (is_null(n))
 		return 0;
 	if (n->type != YAML_MAPPING_NODE)
-		return fail(p, n, "expected a mapping for %s, got %s", what, yaml_node_kind(n));
+		return yaml_in_fail(&p->in, n, "expected a mapping for %s, got %s", what, yaml_node_kind(n));
 	start = n->data.mapping.pairs.start;
 	top = n->data.mapping.pairs.top;
 	for (yaml_node_pair_t *pair = start; pair < top; pair++) {
-		const yaml_node_t *key = yaml_document_get_node(&p->doc, pair->key);
-		const yaml_node_t *value = yaml_document_get_node(&p->doc, pair->value), *other;
+		const yaml_node_t *key = yaml_document_get_node(&p->in.doc, pair->key);
+		const yaml_node_t *value = yaml_document_get_node(&p->in.doc, pair->value), *other;
 		const char *k;
 		int r;
 
 		if (!key || !value)
-			return fail(p, n, "broken YAML node in %s", what);
+			return yaml_in_fail(&p->in, n, "broken YAML node in %s", what);
 		k = yaml_node_text(key);
 		if (!k)
-			return fail(p, key, "expected a plain key in %s, got %s", what, yaml_node_kind(key));
-		other = yaml_node_earlier_key(&p->doc, n, pair, k);
+			return yaml_in_fail(&p->in, key, "expected a plain key in %s, got %s", what, yaml_node_kind(key));
+		other = yaml_node_earlier_key(&p->in.doc, n, pair, k);
 		if (other)
-			return fail(p, key, "duplicate key \"%.40s\" in %s (first on line %lu)", k,
-				    what, line_of(p, other));
+			return yaml_in_fail(&p->in, key, "duplicate key \"%.40s\" in %s (first on line %lu)", k,
+				    what, yaml_in_line(&p->in, other));
 		if ((r = fn(p, key, k, value, data)) < 0)
 			return r;
 	}
@@ -224,7 +202,7 @@ static int parse_mode(struct cfg_parser *p, const yaml_node_t *n)
 	unsigned w, h, hz = 0;
 
 	if (!s)
-		return fail(p, n, "expected a mode like 1920x1080 or 1920x1080@60, got %s", yaml_node_kind(n));
+		return yaml_in_fail(&p->in, n, "expected a mode like 1920x1080 or 1920x1080@60, got %s", yaml_node_kind(n));
 	if (strcmp(s, "preferred") == 0 || strcmp(s, "auto") == 0) {
 		p->c->display.mode_w = p->c->display.mode_h = p->c->display.mode_hz = 0;
 		return 0;
@@ -232,9 +210,9 @@ static int parse_mode(struct cfg_parser *p, const yaml_node_t *n)
 	q = s;
 	if (!digits(&q, &w) || *q++ != 'x' || !digits(&q, &h) ||
 	    (*q == '@' && (q++, !digits(&q, &hz))) || *q)
-		return fail(p, n, "display mode \"%.40s\" is not WIDTHxHEIGHT[@HZ]", s);
+		return yaml_in_fail(&p->in, n, "display mode \"%.40s\" is not WIDTHxHEIGHT[@HZ]", s);
 	if (w < 1 || w > 16384 || h < 1 || h > 16384 || hz > 1000)
-		return fail(p, n, "display mode \"%.40s\" out of range", s);
+		return yaml_in_fail(&p->in, n, "display mode \"%.40s\" out of range", s);
 	p->c->display.mode_w = (int)w;
 	p->c->display.mode_h = (int)h;
 	p->c->display.mode_hz = (int)hz;
@@ -289,23 +267,23 @@ static int parse_area(struct cfg_parser *p, const yaml_node_t *n)
 		return 0;
 	}
 	if (n->type != YAML_SEQUENCE_NODE)
-		return fail(p, n, "input.area must be fit, stretch or [left, top, right, bottom]");
+		return yaml_in_fail(&p->in, n, "input.area must be fit, stretch or [left, top, right, bottom]");
 	count = (size_t)(n->data.sequence.items.top - n->data.sequence.items.start);
 	if (count != 4)
-		return fail(p, n, "input.area: expected 4 numbers [left, top, right, bottom], got %zu",
+		return yaml_in_fail(&p->in, n, "input.area: expected 4 numbers [left, top, right, bottom], got %zu",
 			    count);
 	for (size_t i = 0; i < 4; i++) {
 		const yaml_node_t *item =
-			yaml_document_get_node(&p->doc, n->data.sequence.items.start[i]);
+			yaml_document_get_node(&p->in.doc, n->data.sequence.items.start[i]);
 		int r;
 
 		if (!item)
-			return fail(p, n, "broken YAML node in input.area");
+			return yaml_in_fail(&p->in, n, "broken YAML node in input.area");
 		if ((r = get_fraction(p, item, "input.area", &v[i])) < 0)
 			return r;
 	}
 	if (!(v[2] - v[0] >= 0.01) || !(v[3] - v[1] >= 0.01))
-		return fail(p, n, "input.area: right must exceed left and bottom top (by 0.01 at least)");
+		return yaml_in_fail(&p->in, n, "input.area: right must exceed left and bottom top (by 0.01 at least)");
 	p->c->input.area = CONFIG_AREA_RECT;
 	memcpy(p->c->input.area_rect, v, sizeof(v));
 	return 0;
@@ -382,9 +360,9 @@ static int lines_pair(struct cfg_parser *p, const yaml_node_t *key, const char *
 	int r;
 
 	if (!button_from_name(k, &b))
-		return fail(p, key, "unknown button \"%.40s\" in %s", k, ls->section);
+		return yaml_in_fail(&p->in, key, "unknown button \"%.40s\" in %s", k, ls->section);
 	if (ls->output && !config_button_is_mode(b))
-		return fail(p, key, "%s: only the modes 3d, clone, leaf, propagate and vine have LEDs, "
+		return yaml_in_fail(&p->in, key, "%s: only the modes 3d, clone, leaf, propagate and vine have LEDs, "
 			    "not %s", ls->section, k);
 	snprintf(what, sizeof(what), "%s.%s", ls->section, k);
 	struct config_gpio_line *line = &ls->lines[b];
@@ -392,16 +370,16 @@ static int lines_pair(struct cfg_parser *p, const yaml_node_t *key, const char *
 
 	memset(line, 0, sizeof(*line));
 	line->offset = -1;
-	line->conf_line = line_of(p, key);
+	line->conf_line = yaml_in_line(&p->in, key);
 	if (v->type != YAML_MAPPING_NODE)
-		return fail(p, v, "expected a mapping {chip, line, ...} for %s, got %s", what,
+		return yaml_in_fail(&p->in, v, "expected a mapping {chip, line, ...} for %s, got %s", what,
 			    yaml_node_kind(v));
 	if ((r = for_each_pair(p, v, what, line_pair, &l)) < 0)
 		return r;
 	if (!l.have_chip)
-		return fail(p, v, "%s has no chip", what);
+		return yaml_in_fail(&p->in, v, "%s has no chip", what);
 	if (!l.have_line)
-		return fail(p, v, "%s has no line", what);
+		return yaml_in_fail(&p->in, v, "%s has no line", what);
 	line->set = true;
 	return 0;
 }
@@ -460,7 +438,7 @@ static int kiosk_pair(struct cfg_parser *p, const yaml_node_t *key, const char *
 
 		/* relative to what? the service's working directory is no place for a visitor's tree */
 		if (r == 0 && p->c->kiosk.export_dir[0] != '/')
-			return fail(p, v, "kiosk.export_dir must be an absolute path");
+			return yaml_in_fail(&p->in, v, "kiosk.export_dir must be an absolute path");
 		return r;
 	}
 	if (strcmp(k, "state_dir") == 0) {
@@ -468,7 +446,7 @@ static int kiosk_pair(struct cfg_parser *p, const yaml_node_t *key, const char *
 				   sizeof(p->c->kiosk.state_dir));
 
 		if (r == 0 && p->c->kiosk.state_dir[0] != '/')
-			return fail(p, v, "kiosk.state_dir must be an absolute path");
+			return yaml_in_fail(&p->in, v, "kiosk.state_dir must be an absolute path");
 		return r;
 	}
 	if (strcmp(k, "autosave") == 0)
@@ -506,7 +484,7 @@ static int usb_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
 				   sizeof(p->c->usb.helper_socket));
 
 		if (r == 0 && p->c->usb.helper_socket[0] != '/')
-			return fail(p, v, "usb.helper_socket must be an absolute path");
+			return yaml_in_fail(&p->in, v, "usb.helper_socket must be an absolute path");
 		return r;
 	}
 	warn_unknown(p, key, "usb");
@@ -539,7 +517,7 @@ static int top_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
 		else if (s && yaml_node_plain(v) && strcmp(s, "ja") == 0)
 			p->c->language = CONFIG_LANG_JA;
 		else
-			return fail(p, v, "language must be en or ja");
+			return yaml_in_fail(&p->in, v, "language must be en or ja");
 		return 0;
 	}
 	warn_unknown(p, key, "the top level");
@@ -574,14 +552,14 @@ void config_defaults(struct config *c)
 static int yaml_fail(struct cfg_parser *p, const yaml_parser_t *y, const char *data,
 		     size_t len)
 {
-	return yaml_node_parse_error(p->err, p->name, 0, y, data, len);
+	return yaml_node_parse_error(p->in.err, p->in.name, 0, y, data, len);
 }
 
 int config_parse(const char *data, size_t len, const char *name, struct config *c, FILE *warn,
 		 struct error *err)
 {
 	struct cfg_parser p = {
-		.name = name, .err = err, .data = data, .len = len, .warn = warn
+		.in = { .name = name, .err = err, .data = data, .len = len }, .warn = warn
 	};
 	struct config tmp;
 	yaml_parser_t y;
@@ -596,12 +574,12 @@ int config_parse(const char *data, size_t len, const char *name, struct config *
 	if (!yaml_parser_initialize(&y))
 		return error_at(err, -ENOMEM, name, 0, "out of memory");
 	yaml_parser_set_input_string(&y, (const unsigned char *)data, len);
-	if (!yaml_parser_load(&y, &p.doc)) {
+	if (!yaml_parser_load(&y, &p.in.doc)) {
 		r = yaml_fail(&p, &y, data, len);
 		yaml_parser_delete(&y);
 		return r;
 	}
-	root = yaml_document_get_root_node(&p.doc);
+	root = yaml_document_get_root_node(&p.in.doc);
 	if (root) { /* no root: an empty file, the defaults */
 		yaml_document_t second;
 
@@ -611,7 +589,7 @@ int config_parse(const char *data, size_t len, const char *name, struct config *
 			goto out;
 		}
 		bool more = yaml_document_get_root_node(&second) != NULL;
-		unsigned long at = more ? line_of(&p, yaml_document_get_root_node(&second)) : 0;
+		unsigned long at = more ? yaml_in_line(&p.in, yaml_document_get_root_node(&second)) : 0;
 
 		yaml_document_delete(&second);
 		if (more) {
@@ -621,7 +599,7 @@ int config_parse(const char *data, size_t len, const char *name, struct config *
 		if (is_null(root))
 			r = 0;
 		else if (root->type != YAML_MAPPING_NODE)
-			r = fail(&p, root, "expected a mapping (display:, input:, gpio:, ...) at the top, got %s",
+			r = yaml_in_fail(&p.in, root, "expected a mapping (display:, input:, gpio:, ...) at the top, got %s",
 				 yaml_node_kind(root));
 		else
 			r = for_each_pair(&p, root, "the top level", top_pair, NULL);
@@ -629,7 +607,7 @@ int config_parse(const char *data, size_t len, const char *name, struct config *
 		r = 0;
 	}
 out:
-	yaml_document_delete(&p.doc);
+	yaml_document_delete(&p.in.doc);
 	yaml_parser_delete(&y);
 	if (r == 0)
 		*c = tmp;
