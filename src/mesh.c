@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "frame.h"
 #include "ori_kinds.h"
 #include "view.h"
 
@@ -257,21 +258,6 @@ static int scratch_reserve(struct scratch *s, size_t n)
 	SCRATCH_GROW(live, cap);
 	s->cap = cap;
 	return 0;
-}
-
-/* A unit vector perpendicular to unit t, a fixed function of t: the frame's starting normal. */
-static struct vec3 perpendicular(struct vec3 t)
-{
-	/* Prefer the viewing axis: sketched branches lie in z = 0, so rings face the viewer. */
-	struct vec3 ref = fabs(t.z) < 0.9 ? vec3(0, 0, 1) : vec3(1, 0, 0);
-
-	return vec3_norm_or(vec3_sub(ref, vec3_scale(t, vec3_dot(ref, t))), vec3(0, 1, 0));
-}
-
-/* Reflects v in the plane through the origin with normal a (|a|^2 = aa). */
-static struct vec3 reflect(struct vec3 v, struct vec3 a, double aa)
-{
-	return vec3_sub(v, vec3_scale(a, 2.0 * vec3_dot(v, a) / aa));
 }
 
 /*
@@ -652,40 +638,6 @@ static size_t tube_simplify(struct scratch *s, size_t k, double cos_turn)
 	return kept;
 }
 
-/*
- * Tangents (averaged segment directions) and rotation-minimising normals, carried along by
- * the double reflection method (Wang, Juettler, Zheng, Liu 2008).
- */
-static void tube_frames(struct scratch *s, size_t k)
-{
-	struct vec3 *p = s->p, *t = s->t, *n = s->n;
-
-	for (size_t i = 0; i < k; i++) {
-		struct vec3 in = i > 0 ? vec3_sub(p[i], p[i - 1]) : vec3_sub(p[1], p[0]);
-		struct vec3 out = i + 1 < k ? vec3_sub(p[i + 1], p[i]) : in;
-		struct vec3 din = vec3_norm_or(in, vec3(0, 1, 0));
-		struct vec3 dout = vec3_norm_or(out, din);
-
-		/* A hairpin turn averages to zero: fall back to the outgoing direction. */
-		t[i] = vec3_norm_or(vec3_add(din, dout), dout);
-	}
-
-	n[0] = perpendicular(t[0]);
-	for (size_t i = 0; i + 1 < k; i++) {
-		struct vec3 v1 = vec3_sub(p[i + 1], p[i]);
-		double c1 = vec3_dot(v1, v1);
-		struct vec3 rl = reflect(n[i], v1, c1);
-		struct vec3 tl = reflect(t[i], v1, c1);
-		struct vec3 v2 = vec3_sub(t[i + 1], tl);
-		double c2 = vec3_dot(v2, v2);
-		struct vec3 r = c2 > 1e-20 ? reflect(rl, v2, c2) : rl;
-
-		/* Re-orthonormalise against the tangent so rounding cannot accumulate. */
-		r = vec3_sub(r, vec3_scale(t[i + 1], vec3_dot(r, t[i + 1])));
-		n[i + 1] = vec3_norm_or(r, perpendicular(t[i + 1]));
-	}
-}
-
 /* dr/ds at point i, clamped: tilts the normals of a tapering tube. */
 static double tube_slope(const struct scratch *s, size_t k, size_t i)
 {
@@ -834,7 +786,7 @@ static int tube_build(struct mesh *m, const struct tree *tr, size_t index, struc
 	for (size_t i = 0; i < k; i++)
 		sc->sides[i] = lod_sides(&sc->lod, sc->r[i]);
 	k = tube_simplify(sc, k, sc->lod.cos_turn);
-	tube_frames(sc, k);
+	frame_build(sc->p, k, sc->t, sc->n);
 
 	for (size_t i = 0; i < k; i++)
 		nv += (size_t)sc->sides[i];
@@ -1017,7 +969,7 @@ static int leaf_build(struct mesh *m, const struct leaf *l, struct scratch *s)
 		return 0; /* no area, or a figure eight that cancels out */
 	normal = vec3_scale(nn, 1.0 / area2);
 
-	u = perpendicular(normal);
+	u = frame_perpendicular(normal);
 	v = vec3_cross(normal, u);
 	for (size_t i = 0; i < k; i++) {
 		struct vec3 d = vec3_sub(s->p[i], c);

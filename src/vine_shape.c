@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "frame.h"
 #include "mesh.h"
 #include "rng.h"
 #include "vine.h"
@@ -254,17 +255,6 @@ static void free_all(const struct vine *v, struct vec3 **axes)
 	free(axes);
 }
 
-/* The unit tangent of a polyline at point i: the mean of the directions in and out. */
-static struct vec3 tangent(const struct vec3 *p, size_t n, size_t i)
-{
-	struct vec3 in = i > 0 ? vec3_sub(p[i], p[i - 1]) : vec3_sub(p[1], p[0]);
-	struct vec3 out = i + 1 < n ? vec3_sub(p[i + 1], p[i]) : in;
-	struct vec3 din = vec3_norm_or(in, vec3(0, 1, 0)), dout = vec3_norm_or(out, din);
-
-	/* a hairpin averages to nothing: the way out then */
-	return vec3_norm_or(vec3_add(din, dout), dout);
-}
-
 /* u turned by angle a about unit t (u perpendicular to t). */
 static struct vec3 turn(struct vec3 u, struct vec3 t, double a)
 {
@@ -312,7 +302,7 @@ static size_t node_build(const struct vine *v, size_t s, size_t k, const struct 
 	double g = v->p.leaf_size;
 	bool cot, gone[64] = { false };
 	int count = node_leaves(v, s, k, &cot);
-	struct vec3 t = tangent(a, sh->n, at), ref = leaf_ref(t), o[64];
+	struct vec3 t = frame_tangent(a, sh->n, at), ref = leaf_ref(t), o[64];
 
 	if (count > 64)
 		count = 64; /* vine_params_check keeps it to 2 */
@@ -412,48 +402,6 @@ static void push_tri(struct mesh *m, size_t a, size_t b, size_t c)
 	m->nindices += 3;
 }
 
-/* A unit vector perpendicular to unit t, a fixed function of t: the first frame's normal. */
-static struct vec3 perpendicular(struct vec3 t)
-{
-	struct vec3 ref = fabs(t.z) < 0.9 ? vec3(0, 0, 1) : vec3(1, 0, 0);
-
-	return vec3_norm_or(vec3_sub(ref, vec3_scale(t, vec3_dot(ref, t))), vec3(0, 1, 0));
-}
-
-/* Reflects u in the plane through the origin with normal a (|a|^2 = aa). */
-static struct vec3 reflect(struct vec3 u, struct vec3 a, double aa)
-{
-	return vec3_sub(u, vec3_scale(a, 2.0 * vec3_dot(u, a) / aa));
-}
-
-/*
- * Tangents and rotation-minimising normals along p (as mesh.c's tubes: the double
- * reflection method, Wang, Juettler, Zheng, Liu 2008), so the rings do not twist.
- */
-static void frames(const struct vec3 *p, size_t n, struct vec3 *t, struct vec3 *nr)
-{
-	for (size_t i = 0; i < n; i++)
-		t[i] = tangent(p, n, i);
-	nr[0] = perpendicular(t[0]);
-	for (size_t i = 0; i + 1 < n; i++) {
-		struct vec3 v1 = vec3_sub(p[i + 1], p[i]), r;
-		double c1 = vec3_dot(v1, v1);
-
-		if (c1 > 1e-30) {
-			struct vec3 rl = reflect(nr[i], v1, c1), tl = reflect(t[i], v1, c1);
-			struct vec3 v2 = vec3_sub(t[i + 1], tl);
-			double c2 = vec3_dot(v2, v2);
-
-			r = c2 > 1e-20 ? reflect(rl, v2, c2) : rl;
-		} else {
-			r = nr[i]; /* the same point twice: carry the frame over */
-		}
-		/* back to perpendicular, so rounding cannot build up */
-		r = vec3_sub(r, vec3_scale(t[i + 1], vec3_dot(r, t[i + 1])));
-		nr[i + 1] = vec3_norm_or(r, perpendicular(t[i + 1]));
-	}
-}
-
 static int ring_sides(const struct vine *v)
 {
 	return v->p.ring_sides >= 3 ? v->p.ring_sides : 3;
@@ -471,7 +419,8 @@ static void tube(const struct vine *v, const struct vec3 *a, size_t n, struct ve
 	size_t sides = (size_t)ring_sides(v), base = m->nvertices, cone, apex;
 	double r = v->p.radius, h = VINE_TIP_LENGTH * r;
 
-	frames(a, n, t, nr);
+	/* rotation-minimising: the rings do not twist */
+	frame_build(a, n, t, nr);
 	for (size_t i = 0; i < n; i++) {
 		struct vec3 b = vec3_cross(t[i], nr[i]);
 

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "frame.h"
 #include "wood.h"
 
 _Static_assert(WOOD_PRISM_SIDES == 8, "the prisms are octagons (the corner tables below)");
@@ -149,51 +150,6 @@ static bool vec3_finite(struct vec3 a)
 	return isfinite(a.x) && isfinite(a.y) && isfinite(a.z);
 }
 
-/* A unit vector perpendicular to unit t, a fixed function of t (as mesh.c starts its
- * frames: towards the viewer, so a vertical trunk has its corners on x and z). */
-static struct vec3 perpendicular(struct vec3 t)
-{
-	struct vec3 ref = fabs(t.z) < 0.9 ? vec3(0, 0, 1) : vec3(1, 0, 0);
-
-	return vec3_norm_or(vec3_sub(ref, vec3_scale(t, vec3_dot(ref, t))), vec3(0, 1, 0));
-}
-
-/* Reflects v in the plane through the origin with normal a (|a|^2 = aa). */
-static struct vec3 reflect(struct vec3 v, struct vec3 a, double aa)
-{
-	return vec3_sub(v, vec3_scale(a, 2.0 * vec3_dot(v, a) / aa));
-}
-
-/* Tangents (the segments' directions averaged, so consecutive prisms share the octagon
- * between them) and rotation-minimising normals by double reflection, as mesh.c. */
-static void rings_frames(struct rings *s)
-{
-	struct vec3 *p = s->p, *t = s->t, *n = s->n;
-	size_t k = s->k;
-
-	for (size_t i = 0; i < k; i++) {
-		struct vec3 din = vec3_norm_or(vec3_sub(p[i > 0 ? i : 1], p[i > 0 ? i - 1 : 0]),
-					       vec3(0, 1, 0));
-		struct vec3 dout = i + 1 < k ? vec3_norm_or(vec3_sub(p[i + 1], p[i]), din) : din;
-
-		/* a hairpin averages to nothing: the outgoing direction then */
-		t[i] = vec3_norm_or(vec3_add(din, dout), dout);
-	}
-	n[0] = perpendicular(t[0]);
-	for (size_t i = 0; i + 1 < k; i++) {
-		struct vec3 v1 = vec3_sub(p[i + 1], p[i]);
-		double c1 = vec3_dot(v1, v1);
-		struct vec3 rl = reflect(n[i], v1, c1);
-		struct vec3 tl = reflect(t[i], v1, c1);
-		struct vec3 v2 = vec3_sub(t[i + 1], tl);
-		double c2 = vec3_dot(v2, v2);
-		struct vec3 r = c2 > 1e-20 ? reflect(rl, v2, c2) : rl;
-
-		r = vec3_sub(r, vec3_scale(t[i + 1], vec3_dot(r, t[i + 1])));
-		n[i + 1] = vec3_norm_or(r, perpendicular(t[i + 1]));
-	}
-}
-
 /* Corner j of ring i's octagon: in the plane across the ring's tangent. */
 static struct vec3 ring_dir(const struct rings *s, size_t i, int j)
 {
@@ -243,7 +199,7 @@ static int branch_rings(const struct branch *b, struct rings *s)
 		s->r[s->k] = s->r[s->k - 1];
 		s->k++;
 	}
-	rings_frames(s);
+	frame_build(s->p, s->k, s->t, s->n);
 	for (size_t i = 0; i < s->k; i++)
 		for (int j = 0; j < WOOD_PRISM_SIDES; j++) {
 			struct vec3 q = vec3_add(s->p[i], vec3_scale(ring_dir(s, i, j), s->r[i]));
