@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * libFuzzer: the tree parameter reader (gen_read, docs/tree-params.md) on arbitrary bytes.
- * A refusal names the file and a line of it ("fuzz:LINE: " or, for the file as a whole,
- * "fuzz: ") and changes nothing. What is accepted is within every limit, is written by gen_write as one
- * line that reads back to the same parameters (a drawing's generate line), and, when the
- * tree is small, builds: every element its generator's, no more than the limits said.
+ * A refusal names the file and a line of it (fuzz_refusal.h) and changes nothing. What is
+ * accepted is within every limit, is written by gen_write as one line that reads back to
+ * the same parameters (a drawing's generate line), and, when the tree is small, builds:
+ * every element its generator's, no more than the limits said.
  */
 #include <errno.h>
 #include <stdint.h>
@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "buf.h"
+#include "fuzz_refusal.h"
 #include "gen.h"
 #include "tree.h"
 
@@ -44,42 +45,11 @@ static bool same(const struct gen_params *a, const struct gen_params *b)
 	return ok;
 }
 
-static bool line_break(uint8_t c)
-{
-	return c == '\n' || c == '\r' || c == 0x85 || c == 0xa8 || c == 0xa9;
-}
-
-/* A bound on the input's lines: YAML breaks lines at \n, \r and three Unicode breaks
- * (U+0085, U+2028, U+2029, whose UTF-8 ends in one of these bytes). */
-static unsigned long lines_of(const uint8_t *data, size_t size)
-{
-	unsigned long n = 1;
-
-	for (size_t i = 0; i < size; i++)
-		n += line_break(data[i]);
-	return n;
-}
-
+/* fuzz_refusal.h's rule, and the parameters left as they were */
 static void check_refusal(int ret, const struct error *err, const struct gen_params *p,
 			  const struct gen_params *before, unsigned long lines)
 {
-	const char *s = err->msg + strlen("fuzz:");
-	unsigned long line = 0;
-
-	if (ret != -EINVAL && ret != -ENOMEM)
-		abort();
-	if (strncmp(err->msg, "fuzz:", 5) != 0 || !memchr(err->msg, '\0', sizeof(err->msg)))
-		abort();
-	/* "fuzz: what" or "fuzz:LINE: what", LINE from 1 */
-	if (*s != ' ') {
-		if (*s < '1' || *s > '9')
-			abort();
-		while (*s >= '0' && *s <= '9' && line < lines)
-			line = line * 10 + (unsigned long)(*s++ - '0');
-		/* a line of the input */
-		if (s[0] != ':' || s[1] != ' ' || line > lines)
-			abort();
-	}
+	fuzz_check_refusal(ret, err, lines);
 	if (memcmp(p, before, sizeof(*p)) != 0)
 		abort();
 }
@@ -117,7 +87,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	memcpy(&before, &p, sizeof(p)); /* padding too: a refusal leaves every byte */
 	ret = gen_read((const char *)data, size, "fuzz", 0, &p, &err);
 	if (ret < 0) {
-		check_refusal(ret, &err, &p, &before, lines_of(data, size));
+		check_refusal(ret, &err, &p, &before, fuzz_lines_of(data, size));
 		return 0;
 	}
 	if (gen_params_check(&p, &key, &why) != 0)
