@@ -190,6 +190,7 @@ int main(void)
 	/* 1k and 100k triangles: 16 x 31 and 200 x 250 quads, the pole tall enough for 1,000
 	 * internodes of climbing */
 	static const int tess[][2] = { { 16, 31 }, { 200, 250 } };
+	double grown[2][2], indexed[2], tris[2];
 
 	printf("bench_vine: a vine planted 15 mm from a pole (R = 20 mm, 70 m), d = 8, median "
 	       "ms; the support's index built each time\n");
@@ -208,10 +209,13 @@ int main(void)
 			j.p.internodes = internodes[i];
 			mesh_init(&j.stem);
 			mesh_init(&j.leaves);
-			if (i == 0)
+			tris[k] = (double)j.pole.nt;
+			if (i == 0) {
+				indexed[k] = bench_run(index_only, &j, reps);
 				printf("  the index of %zu triangles alone: %.3f ms\n", j.pole.nt,
-				       1e3 * bench_run(index_only, &j, reps));
-			t = bench_run(grow, &j, reps);
+				       1e3 * indexed[k]);
+			}
+			t = grown[k][i] = bench_run(grow, &j, reps);
 			snprintf(name, sizeof(name), "grow, %zu triangles, internodes", j.pole.nt);
 			bench_row(name, internodes[i], t, &pn, &pt);
 			t = bench_run(shape, &j, reps);
@@ -222,6 +226,15 @@ int main(void)
 			free(j.pole.p);
 			free(j.pole.t);
 		}
+	}
+	printf("how it grows with the support, x%.0f triangles:\n", tris[1] / tris[0]);
+	for (size_t i = 0; i < 2; i++) {
+		double with = grown[1][i] / grown[0][i];
+		double alone = (grown[1][i] - indexed[1]) / (grown[0][i] - indexed[0]);
+
+		printf("  %d internodes: x%.2f with the index (~n^%.2f), the growth alone x%.2f "
+		       "(~n^%.2f)\n", internodes[i], with, log(with) / log(tris[1] / tris[0]),
+		       alone, log(alone) / log(tris[1] / tris[0]));
 	}
 	kiosk();
 	return 0;
