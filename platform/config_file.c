@@ -16,7 +16,8 @@
 #include "yaml_node.h"
 
 struct cfg_parser {
-	struct yaml_in in; /* its parser and document are config_parse's own */
+	struct yaml_in in; /* the file, its text and document (config_parse loads it: an empty
+			    * file and null values are allowed here, unlike yaml_in_open) */
 	FILE *warn;
 	struct config *c;
 };
