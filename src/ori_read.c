@@ -332,29 +332,22 @@ static int top_pair(void *ctx, const yaml_node_t *key, const char *k, const yaml
 	return yaml_in_unknown(&r->in, key, k, NULL);
 }
 
+static const struct yaml_in_kind kind = {
+	.what = "leaf design file", .version_key = "edaha-leaf", .version = ORI_DESIGN_VERSION,
+	.second_key = "fold", .max_bytes = ORI_READ_MAX_BYTES, .max_depth = ORI_READ_MAX_DEPTH,
+};
+
 /* The version comes first, then the fold: it decides the defaults and which keys exist. */
 static int read_head(struct reader *r, const yaml_node_t *root)
 {
-	const yaml_node_t *key = NULL, *first,
-			  *v = yaml_in_lookup(&r->in, root, "edaha-leaf", &key);
+	const yaml_node_t *key = NULL, *v;
 	enum ori_fold fold = ORI_FOLD_FAN;
 	const char *w;
 	char buf[24];
-	int version, ret;
+	int ret;
 
-	if (!v)
-		return yaml_in_fail(&r->in, root,
-				    "not a leaf design file: \"edaha-leaf: %d\" is missing",
-				    ORI_DESIGN_VERSION);
-	first = yaml_document_get_node(&r->in.doc, root->data.mapping.pairs.start->key);
-	if ((ret = yaml_in_int(&r->in, v, "edaha-leaf", &version)) < 0)
+	if ((ret = yaml_in_version_first(&r->in, &kind, root, &key)) < 0)
 		return ret;
-	if (version != ORI_DESIGN_VERSION)
-		return yaml_in_fail(&r->in, v, "edaha-leaf: version %d: this edaha reads %d",
-				    version, ORI_DESIGN_VERSION);
-	if (key != first)
-		return yaml_in_fail(&r->in, key,
-				    "edaha-leaf: not the first key: it says how to read the rest");
 	if ((v = yaml_in_lookup(&r->in, root, "fold", NULL))) {
 		if ((ret = yaml_in_word(&r->in, v, "fold", &w)) < 0)
 			return ret;
@@ -408,11 +401,6 @@ static unsigned long fault_line(const struct reader *r, const struct ori_fault *
 	}
 	return line ? line : d->line;
 }
-
-static const struct yaml_in_kind kind = {
-	.what = "leaf design file", .version_key = "edaha-leaf", .version = ORI_DESIGN_VERSION,
-	.second_key = "fold", .max_bytes = ORI_READ_MAX_BYTES, .max_depth = ORI_READ_MAX_DEPTH,
-};
 
 static int read_root(struct reader *r, const yaml_node_t *root)
 {

@@ -20,6 +20,7 @@
 
 struct reader {
 	struct yaml_in in;
+	struct yaml_in_kind kind;
 	const struct yaml_flat_format *f;
 	void *p;
 };
@@ -113,26 +114,12 @@ static int top_pair(void *ctx, const yaml_node_t *key, const char *k, const yaml
 /* The version comes first: it says how to read the rest. Its key's line, in *line. */
 static int read_head(struct reader *r, const yaml_node_t *root, unsigned long *line)
 {
-	const struct yaml_flat_format *f = r->f;
-	const yaml_node_t *key = NULL, *first,
-			  *v = yaml_in_lookup(&r->in, root, f->version_key, &key);
-	int version, ret;
+	const yaml_node_t *key = NULL;
+	int ret = yaml_in_version_first(&r->in, &r->kind, root, &key);
 
-	if (!v)
-		return yaml_in_fail(&r->in, root, "not a %s: \"%s: %d\" is missing", f->what,
-				    f->version_key, f->version);
-	first = yaml_document_get_node(&r->in.doc, root->data.mapping.pairs.start->key);
-	if ((ret = yaml_in_int(&r->in, v, f->version_key, &version)) < 0)
-		return ret;
-	if (version != f->version)
-		return yaml_in_fail(&r->in, v, "%s: version %d: this edaha reads %d",
-				    f->version_key, version, f->version);
-	if (key != first)
-		return yaml_in_fail(&r->in, key,
-				    "%s: not the first key: it says how to read the rest",
-				    f->version_key);
-	*line = yaml_in_line(&r->in, key);
-	return 0;
+	if (ret == 0)
+		*line = yaml_in_line(&r->in, key);
+	return ret;
 }
 
 /* The line the format's check's refusal of key is told at: its value's; else (a default
@@ -167,16 +154,17 @@ static int read_root(struct reader *r, const yaml_node_t *root)
 int yaml_flat_read(const struct yaml_flat_format *f, const char *data, size_t len,
 		   const char *name, unsigned long line_offset, void *out, struct error *err)
 {
-	const struct yaml_in_kind kind = {
-		.what = f->what, .version_key = f->version_key, .version = f->version,
-		.second_key = f->keys[0].key, .max_bytes = f->max_bytes, .max_depth = f->max_depth,
+	struct reader r = {
+		.kind = { .what = f->what, .version_key = f->version_key, .version = f->version,
+			  .second_key = f->keys[0].key, .max_bytes = f->max_bytes,
+			  .max_depth = f->max_depth },
+		.f = f,
 	};
-	struct reader r = { .f = f };
 	const yaml_node_t *root;
 	void *tmp;
 	int ret;
 
-	if ((ret = yaml_in_open(&r.in, &kind, data, len, name, line_offset, err, &root)) < 0)
+	if ((ret = yaml_in_open(&r.in, &r.kind, data, len, name, line_offset, err, &root)) < 0)
 		return ret;
 	tmp = malloc(f->size);
 	if (!tmp) {

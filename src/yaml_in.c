@@ -175,6 +175,27 @@ int yaml_in_seed(struct yaml_in *in, const yaml_node_t *n, const char *what, uin
 	return 0;
 }
 
+int yaml_in_version_first(struct yaml_in *in, const struct yaml_in_kind *k,
+			  const yaml_node_t *root, const yaml_node_t **key)
+{
+	const yaml_node_t *first, *v = yaml_in_lookup(in, root, k->version_key, key);
+	int version, ret;
+
+	if (!v)
+		return yaml_in_fail(in, root, "not a %s: \"%s: %d\" is missing", k->what,
+				    k->version_key, k->version);
+	first = yaml_document_get_node(&in->doc, root->data.mapping.pairs.start->key);
+	if ((ret = yaml_in_int(in, v, k->version_key, &version)) < 0)
+		return ret;
+	if (version != k->version)
+		return yaml_in_fail(in, v, "%s: version %d: this edaha reads %d", k->version_key,
+				    version, k->version);
+	if (*key != first)
+		return yaml_in_fail(in, *key, "%s: not the first key: it says how to read the rest",
+				    k->version_key);
+	return 0;
+}
+
 const yaml_node_t *yaml_in_lookup(struct yaml_in *in, const yaml_node_t *n, const char *k,
 				  const yaml_node_t **key)
 {

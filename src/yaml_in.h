@@ -64,6 +64,14 @@ int yaml_in_word(struct yaml_in *in, const yaml_node_t *n, const char *what, con
 /* Any 64-bit seed, exactly: decimal digits read as an integer (a double rounds above 2^53). */
 int yaml_in_seed(struct yaml_in *in, const yaml_node_t *n, const char *what, uint64_t *v);
 
+/*
+ * The version key of kind k, first in the top mapping root (it says how to read the
+ * rest), holding k->version: 0 with its key node in *key, or a refusal (missing, not a
+ * whole number, another version, not first).
+ */
+int yaml_in_version_first(struct yaml_in *in, const struct yaml_in_kind *k,
+			  const yaml_node_t *root, const yaml_node_t **key);
+
 /* The value of key k in mapping n (and its key node in *key, may be NULL), or NULL. */
 const yaml_node_t *yaml_in_lookup(struct yaml_in *in, const yaml_node_t *n, const char *k,
 				  const yaml_node_t **key);
