@@ -47,16 +47,13 @@ static void copy_doc(struct doc *d, const struct doc *src)
 {
 	doc_init(d, src->seed);
 	d->ops = calloc(src->nops + 1, sizeof(*d->ops));
-	d->cap = src->nops + 1;
+	d->cap = d->ops ? src->nops + 1 : 0;
 	for (size_t i = 0; i < src->nops && d->ops; i++) {
-		d->ops[i] = src->ops[i];
-		d->ops[i].points = malloc((src->ops[i].npoints + 1) * sizeof(*d->ops[i].points));
-		if (d->ops[i].points)
-			memcpy(d->ops[i].points, src->ops[i].points,
-			       src->ops[i].npoints * sizeof(*d->ops[i].points));
+		if (doc_op_copy(&d->ops[i], &src->ops[i]) < 0)
+			break;
 		d->nops++;
 	}
-	d->cursor = src->cursor;
+	d->cursor = src->cursor < d->nops ? src->cursor : d->nops;
 	d->view = src->view;
 }
 
