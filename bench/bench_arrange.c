@@ -127,20 +127,24 @@ static double run(enum what w, double len, size_t *before, size_t *after)
 	return ret < 0 ? ret : dt;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
 	static const double lengths[] = { 1, 2, 5, 10, 20 };
+	int reps;
 
+	if (bench_init(&argc, argv, NULL))
+		return 1;
+	reps = bench_reps(REPS);
 	printf("branch length in metres; leaves are 40-point outlines\n");
 	for (int w = 0; w < NWHAT; w++) {
 		double pn = 0, pt = 0, first = 0;
 
-		for (size_t l = 0; l < sizeof(lengths) / sizeof(lengths[0]); l++) {
+		for (size_t l = 0; l < BENCH_COUNT(lengths); l++) {
 			double times[REPS];
 			size_t before = 0, after = 0;
 			char name[64];
 
-			for (int r = 0; r < REPS; r++) {
+			for (int r = 0; r < reps; r++) {
 				times[r] = run((enum what)w, lengths[l], &before, &after);
 				if (times[r] < 0) {
 					fprintf(stderr, "%s on %g m: %d\n", what_names[w],
@@ -150,12 +154,12 @@ int main(void)
 			}
 			snprintf(name, sizeof(name), "%s %zu -> %zu leaves", what_names[w], before,
 				 after);
-			bench_row(name, lengths[l], bench_median(times, REPS), &pn, &pt);
+			bench_row(name, lengths[l], bench_median(times, (size_t)reps), &pn, &pt);
 			if (l == 0)
 				first = pt;
 		}
-		printf("growth %s 1 -> 20 m: ~L^%.2f\n\n", what_names[w],
-		       log(pt / first) / log(pn));
+		printf("growth %s 1 -> %g m: ~L^%.2f\n\n", what_names[w],
+		       pn, log(pt / first) / log(pn));
 	}
 	return 0;
 }

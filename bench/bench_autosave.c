@@ -37,19 +37,24 @@ static void restart(void *arg)
 	autosave_destroy(a);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
 	const char *tmp = getenv("TMPDIR");
 	char dir[512], cmd[600], name[64];
 	double cs = 0, ct = 0, rs = 0, rt = 0, as = 0, at = 0;
+	int reps, last;
 
+	if (bench_init(&argc, argv, NULL))
+		return 1;
+	reps = bench_reps(REPS);
+	last = bench_quick ? 124 : 500;
 	snprintf(dir, sizeof(dir), "%s/edaha-bench-autosave-XXXXXX", tmp ? tmp : "/tmp");
 	if (!mkdtemp(dir)) {
 		perror("mkdtemp");
 		return 1;
 	}
 	printf("commit = one stroke appended and fsync'ed; restart = read, replay, rewrite the journal\n");
-	for (int n = 62; n <= 500; n *= 2) {
+	for (int n = 62; n <= last; n *= 2) {
 		struct bench_pen pen = { .pen.now_us = 1000 };
 		struct app *app = bench_draw_tree(&pen, n);
 		struct error err;
@@ -61,7 +66,7 @@ int main(void)
 			fprintf(stderr, "bench_autosave: %s\n", err.msg);
 			return 1;
 		}
-		for (int i = 0; i < REPS; i++) {
+		for (int i = 0; i < reps; i++) {
 			double t0;
 
 			bench_draw_stroke(app, &pen, 560, 400 + 20 * i, 700, 300, 32, NULL);
@@ -80,11 +85,11 @@ int main(void)
 		}
 		autosave_destroy(a);
 		snprintf(name, sizeof(name), "commit 1 stroke (%zu ops)", app->doc.nops);
-		bench_row(name, n, bench_median(commit, REPS), &cs, &ct);
+		bench_row(name, n, bench_median(commit, (size_t)reps), &cs, &ct);
 		snprintf(name, sizeof(name), "restart (%zu ops)", app->doc.nops);
-		bench_row(name, n, bench_run(restart, &r, REPS), &rs, &rt);
+		bench_row(name, n, bench_run(restart, &r, reps), &rs, &rt);
 		snprintf(name, sizeof(name), "archive (%zu ops)", app->doc.nops);
-		bench_row(name, n, bench_median(arch, REPS), &as, &at);
+		bench_row(name, n, bench_median(arch, (size_t)reps), &as, &at);
 		app_destroy(app);
 	}
 	snprintf(cmd, sizeof(cmd), "rm -rf '%s'", dir);

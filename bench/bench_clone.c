@@ -79,10 +79,11 @@ static int most_children(const struct tree *t, int *count)
 static int time_clone(struct tree *t, int parent, double *add_s, double *remove_s)
 {
 	double add[REPS], rem[REPS];
+	int reps = bench_reps(REPS);
 	struct rng rng;
 
 	rng_seed(&rng, SEED);
-	for (int r = 0; r < REPS; r++) {
+	for (int r = 0; r < reps; r++) {
 		double t0 = bench_now(), t1, t2;
 
 		if (clone_add(t, parent, &rng) < 0)
@@ -94,8 +95,8 @@ static int time_clone(struct tree *t, int parent, double *add_s, double *remove_
 		add[r] = t1 - t0;
 		rem[r] = t2 - t1;
 	}
-	*add_s = bench_median(add, REPS);
-	*remove_s = bench_median(rem, REPS);
+	*add_s = bench_median(add, (size_t)reps);
+	*remove_s = bench_median(rem, (size_t)reps);
 	return 0;
 }
 
@@ -105,7 +106,7 @@ static int by_children(void)
 	double pn = 0, pt = 0;
 
 	printf("clone_add on a trunk with k children (the tree is only those)\n");
-	for (size_t s = 0; s < sizeof(sizes) / sizeof(sizes[0]); s++) {
+	for (size_t s = 0; s < BENCH_COUNT(sizes); s++) {
 		struct tree t;
 		struct rng rng;
 		double add, rem;
@@ -127,7 +128,7 @@ static int by_tree_size(void)
 	double pn = 0, pt = 0, rn = 0, rt = 0;
 
 	printf("synthetic trees of n branches, on the branch with the most children\n");
-	for (size_t s = 0; s < sizeof(sizes) / sizeof(sizes[0]); s++) {
+	for (size_t s = 0; s < BENCH_COUNT(sizes); s++) {
 		struct tree t;
 		double add, rem;
 		char name[64];
@@ -154,7 +155,7 @@ static int drawn_lifted(void)
 	double pn = 0, pt = 0;
 
 	printf("drawn trees lifted to 3D (with the merge), on the trunk\n");
-	for (size_t s = 0; s < sizeof(sizes) / sizeof(sizes[0]); s++) {
+	for (size_t s = 0; s < BENCH_COUNT(sizes); s++) {
 		struct bench_pen pen = { .pen.now_us = 1000 };
 		struct app *app = bench_draw_tree(&pen, sizes[s]);
 		struct tree t;
@@ -184,10 +185,12 @@ static int drawn_lifted(void)
 	return 0;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+	if (bench_init(&argc, argv, NULL))
+		return 1;
 	printf("median of %d: one clone_add (each undone by clone_remove); size, ms, growth\n",
-	       REPS);
+	       bench_reps(REPS));
 	if (by_children() || by_tree_size() || drawn_lifted())
 		return 1;
 	return 0;

@@ -49,7 +49,7 @@ static int run_size(int nbranches, struct result *res)
 	struct tree t;
 	struct tree_mesh tm;
 	struct buf glb, obj, mtl, skel;
-	int r;
+	int r, reps = bench_reps(REPS);
 
 	tree_init(&t);
 	tree_mesh_init(&tm);
@@ -58,7 +58,7 @@ static int run_size(int nbranches, struct result *res)
 	buf_init(&mtl);
 	buf_init(&skel);
 	r = synth_tree(&t, nbranches, LEAVES_PER_BRANCH, SEED);
-	for (int rep = 0; rep < REPS && r >= 0; rep++) {
+	for (int rep = 0; rep < reps && r >= 0; rep++) {
 		double t0, t1, t2, t3, t4;
 
 		/* Fresh buffers each time, as for one visitor's export. */
@@ -88,7 +88,7 @@ static int run_size(int nbranches, struct result *res)
 	}
 	if (r >= 0) {
 		for (int s = 0; s < NSTAGES; s++)
-			res->median[s] = bench_median(times[s], REPS);
+			res->median[s] = bench_median(times[s], (size_t)reps);
 		res->points = tree_points(&t);
 		res->bark_tris = tm.bark.nindices / 3;
 		res->bark_verts = tm.bark.nvertices;
@@ -114,19 +114,19 @@ static int run_drawn(int nbranches, struct result *res)
 	struct app *app = bench_draw_tree(&pen, nbranches);
 	struct tree_mesh tm;
 	double times[REPS];
-	int r = 0;
+	int r = 0, reps = bench_reps(REPS);
 
 	if (!app)
 		return -1;
 	tree_mesh_init(&tm);
-	for (int rep = 0; rep < REPS && r >= 0; rep++) {
+	for (int rep = 0; rep < reps && r >= 0; rep++) {
 		double t0 = bench_now();
 
 		r = tree_mesh_build(&tm, &app->tree);
 		times[rep] = bench_now() - t0;
 	}
 	if (r >= 0) {
-		res->median[MESH] = bench_median(times, REPS);
+		res->median[MESH] = bench_median(times, (size_t)reps);
 		res->points = tree_points(&app->tree);
 		res->bark_tris = tm.bark.nindices / 3;
 		res->bark_verts = tm.bark.nvertices;
@@ -139,14 +139,20 @@ static int run_drawn(int nbranches, struct result *res)
 	return r;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
 	static const int sizes[NSIZES] = { 100, 250, 500, 1000 };
 	static const int drawn_sizes[NDRAWN] = { 250, 500, 1000 };
 	struct result res[NSIZES], drawn[NDRAWN];
 	double prev_size = 0, prev_s = 0;
+	int nsizes, ndrawn;
 
-	for (int i = 0; i < NSIZES; i++) {
+	if (bench_init(&argc, argv, NULL))
+		return 1;
+	nsizes = (int)BENCH_COUNT(sizes);
+	ndrawn = (int)BENCH_COUNT(drawn_sizes);
+
+	for (int i = 0; i < nsizes; i++) {
 		int r = run_size(sizes[i], &res[i]);
 
 		if (r < 0) {
@@ -157,11 +163,11 @@ int main(void)
 
 	printf("bench_export: synth_tree(n branches, %d leaves each), median of %d runs;"
 	       " size = branches\n\n",
-	       LEAVES_PER_BRANCH, REPS);
+	       LEAVES_PER_BRANCH, bench_reps(REPS));
 	for (int s = 0; s < NSTAGES; s++) {
 		prev_size = 0;
 		prev_s = 0;
-		for (int i = 0; i < NSIZES; i++)
+		for (int i = 0; i < nsizes; i++)
 			bench_row(stage_names[s], sizes[i], res[i].median[s], &prev_size, &prev_s);
 		printf("\n");
 	}
@@ -169,13 +175,13 @@ int main(void)
 	printf("%8s %8s %8s %10s %10s %9s %10s %11s %11s %10s\n", "branches", "points", "leaves",
 	       "bark tris", "bark verts", "tris/br.", "leaf tris", "glb bytes", "obj bytes",
 	       "skel bytes");
-	for (int i = 0; i < NSIZES; i++)
+	for (int i = 0; i < nsizes; i++)
 		printf("%8d %8zu %8d %10zu %10zu %9.1f %10zu %11zu %11zu %10zu\n", sizes[i],
 		       res[i].points, sizes[i] * LEAVES_PER_BRANCH, res[i].bark_tris,
 		       res[i].bark_verts, (double)res[i].bark_tris / sizes[i], res[i].leaf_tris,
 		       res[i].glb_bytes, res[i].obj_bytes + res[i].mtl_bytes, res[i].skel_bytes);
 
-	for (int i = 0; i < NDRAWN; i++) {
+	for (int i = 0; i < ndrawn; i++) {
 		int r = run_drawn(drawn_sizes[i], &drawn[i]);
 
 		if (r < 0) {
@@ -186,15 +192,15 @@ int main(void)
 	}
 	printf("\nbench_export: drawn trees (bench_draw: 1 + n strokes through pen events),"
 	       " median of %d runs\n\n",
-	       REPS);
+	       bench_reps(REPS));
 	prev_size = 0;
 	prev_s = 0;
-	for (int i = 0; i < NDRAWN; i++)
+	for (int i = 0; i < ndrawn; i++)
 		bench_row("tree_mesh_build (drawn)", drawn_sizes[i], drawn[i].median[MESH],
 			  &prev_size, &prev_s);
 	printf("\n%8s %8s %10s %10s %9s %10s\n", "branches", "points", "bark tris", "bark verts",
 	       "tris/br.", "leaf tris");
-	for (int i = 0; i < NDRAWN; i++)
+	for (int i = 0; i < ndrawn; i++)
 		printf("%8zu %8zu %10zu %10zu %9.1f %10zu\n", drawn[i].branches, drawn[i].points,
 		       drawn[i].bark_tris, drawn[i].bark_verts,
 		       (double)drawn[i].bark_tris / (double)drawn[i].branches, drawn[i].leaf_tris);

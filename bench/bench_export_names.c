@@ -92,15 +92,20 @@ static void classify_many(void *data)
 	sink = v;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
 	static const int sizes[] = { 10, 1000, 10000 };
 	const char *tmp = getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp";
 	double prev_n = 0, prev_s = 0, prev_n2 = 0, prev_s2 = 0;
 	char dir[512], cmd[600];
+	int reps;
+
+	if (bench_init(&argc, argv, NULL))
+		return 1;
+	reps = bench_reps(REPS);
 
 	printf("%-28s %10s %12s\n", "stage", "files", "median");
-	for (size_t k = 0; k < sizeof(sizes) / sizeof(sizes[0]); k++) {
+	for (size_t k = 0; k < BENCH_COUNT(sizes); k++) {
 		struct pick_arg a = { 0 };
 		double t_readdir, t_stat;
 
@@ -110,11 +115,13 @@ int main(void)
 			perror("bench_export_names");
 			return 1;
 		}
-		t_readdir = bench_run(pick_readdir, &a, REPS);
-		if (a.number != (unsigned)(sizes[k] + 4) / 5 + 1)
-			fprintf(stderr, "bench_export_names: picked %u\n", a.number);
+		t_readdir = bench_run(pick_readdir, &a, reps);
+		if (a.number != (unsigned)(sizes[k] + 4) / 5 + 1) {
+			fprintf(stderr, "bench_export_names: picked %u in %s\n", a.number, dir);
+			return 1;
+		}
 		bench_row("pick, one readdir", sizes[k], t_readdir, &prev_n, &prev_s);
-		t_stat = bench_run(pick_stat, &a, REPS);
+		t_stat = bench_run(pick_stat, &a, reps);
 		bench_row("pick, fstatat each (before)", sizes[k], t_stat, &prev_n2, &prev_s2);
 		close(a.dirfd);
 		snprintf(cmd, sizeof(cmd), "rm -rf '%s'", dir);
@@ -122,8 +129,8 @@ int main(void)
 			return 1;
 	}
 	{
-		int count = 100000;
-		double t = bench_run(classify_many, &count, REPS);
+		int count = bench_quick ? 1000 : 100000;
+		double t = bench_run(classify_many, &count, reps);
 
 		printf("export_names_classify: %.1f ns a name (with its snprintf)\n", t / count * 1e9);
 	}

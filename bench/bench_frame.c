@@ -5,7 +5,7 @@
  * platform/font_file.c finds; the glyphs go into the UI's one draw call). For each tree:
  * a frame that uploads the meshes (what follows a finished stroke), a steady frame with
  * nothing to upload (what the pen's hover costs), and reading the frame back (what
- * --headless and the golden tests pay). Medians of FRAMES frames; glFinish() so the time
+ * --headless and the golden tests pay). Medians of FRAMES_MAX frames; glFinish() so the time
  * is the work done, not the work queued.
  * Then the tree propagation makes: 20 leaves on one branch propagated (fixed count) onto
  * every branch of 250..1,000-branch trees, up to 20,000 leaves: the propagation's time,
@@ -39,9 +39,11 @@
 
 #define WIDTH 1280
 #define HEIGHT 800
-#define FRAMES 7
+#define FRAMES_MAX 7
 #define LEAVES_PER_BRANCH 10
 #define SEED 7
+
+static int frames = FRAMES_MAX; /* bench_reps(FRAMES_MAX) */
 
 static const int sizes[] = { 62, 125, 250, 500 };
 #define NSIZES (sizeof(sizes) / sizeof(sizes[0]))
@@ -55,7 +57,7 @@ struct result {
 struct bench {
 	struct egl_headless *egl;
 	struct render *render;
-	struct app app;
+	struct app *app;
 	uint8_t *rgba;
 	int failed;
 	const char *font; /* the labels' font file */
@@ -65,7 +67,7 @@ struct bench {
 
 static void frame(struct bench *b)
 {
-	int r = render_frame_at(b->render, &b->app, b->now_us);
+	int r = render_frame_at(b->render, b->app, b->now_us);
 
 	if (r < 0 && !b->failed) {
 		fprintf(stderr, "bench_frame: render_frame: %s\n", strerror(-r));
@@ -78,7 +80,7 @@ static void upload_frame(void *arg)
 {
 	struct bench *b = arg;
 
-	b->app.mesh_serial++;
+	b->app->mesh_serial++;
 	frame(b);
 }
 
@@ -93,8 +95,8 @@ static void upload_only(void *arg)
 	struct bench *b = arg;
 	int r;
 
-	b->app.mesh_serial++;
-	r = render_upload_tree(b->render, &b->app);
+	b->app->mesh_serial++;
+	r = render_upload_tree(b->render, b->app);
 	if (r < 0 && !b->failed) {
 		fprintf(stderr, "bench_frame: upload: %s\n", strerror(-r));
 		b->failed = r;
@@ -102,14 +104,10 @@ static void upload_only(void *arg)
 	glFinish();
 }
 
-/* Replaces the app's tree (taking t's contents) and builds its meshes. */
+/* Shows t (taking its contents) with its meshes. */
 static int set_tree(struct bench *b, struct tree *t)
 {
-	tree_finish(&b->app.tree);
-	b->app.tree = *t;
-	tree_init(t);
-	b->app.mesh_serial++;
-	return tree_mesh_build(&b->app.mesh, &b->app.tree);
+	return app_show_tree(b->app, t);
 }
 
 static void readback(void *arg)
@@ -139,13 +137,13 @@ static int measure(struct bench *b, int nbranches, struct result *res)
 			strerror(-r));
 		return r;
 	}
-	res->upload_s = bench_run(upload_frame, b, FRAMES);
-	res->steady_s = bench_run(steady_frame, b, FRAMES);
+	res->upload_s = bench_run(upload_frame, b, frames);
+	res->steady_s = bench_run(steady_frame, b, frames);
 	render_get_stats(b->render, &st);
 	res->triangles = st.triangles;
 	res->tree_triangles = st.tree_triangles;
 	res->draw_calls = st.draw_calls;
-	res->readback_s = bench_run(readback, b, FRAMES);
+	res->readback_s = bench_run(readback, b, frames);
 	return b->failed;
 }
 
@@ -170,21 +168,21 @@ static double thread_cpu_s(void)
  * interleaved so that the machine's load falls on both alike. */
 static int labels_cost(struct bench *b)
 {
-	double cpu[2][FRAMES], wall[2][FRAMES];
+	double cpu[2][FRAMES_MAX], wall[2][FRAMES_MAX];
 	struct render_stats st[2];
 
-	for (int k = 0; k < FRAMES; k++) {
+	for (int k = 0; k < frames; k++) {
 		for (int labelled = 1; labelled >= 0; labelled--) {
 			double t0, w0;
 
 			if (render_set_text(b->render, labelled ? b->font : NULL, b->font_len,
 					    RENDER_LANG_EN) < 0 ||
-			    render_frame(b->render, &b->app) < 0) /* the glyphs rasterised again */
+			    render_frame(b->render, b->app) < 0) /* the glyphs rasterised again */
 				return -EIO;
 			glFinish();
 			w0 = bench_now();
 			t0 = thread_cpu_s();
-			if (render_frame(b->render, &b->app) < 0)
+			if (render_frame(b->render, b->app) < 0)
 				return -EIO;
 			cpu[labelled][k] = thread_cpu_s() - t0;
 			glFinish();
@@ -195,17 +193,17 @@ static int labels_cost(struct bench *b)
 	printf("  labels on/off: %u/%u draw calls, %zu/%zu triangles; steady frame CPU %.3f/%.3f ms,"
 	       " with the rasteriser %.3f/%.3f ms\n",
 	       st[1].draw_calls, st[0].draw_calls, st[1].triangles, st[0].triangles,
-	       1e3 * bench_median(cpu[1], FRAMES), 1e3 * bench_median(cpu[0], FRAMES),
-	       1e3 * bench_median(wall[1], FRAMES), 1e3 * bench_median(wall[0], FRAMES));
+	       1e3 * bench_median(cpu[1], frames), 1e3 * bench_median(cpu[0], frames),
+	       1e3 * bench_median(wall[1], frames), 1e3 * bench_median(wall[0], frames));
 	return render_set_text(b->render, b->font, b->font_len, RENDER_LANG_EN);
 }
 
 static int frame_cpu(struct bench *b)
 {
-	double up[FRAMES], steady[FRAMES], prev_n = 0, prev_s = 0, prev_n2 = 0, prev_s2 = 0;
+	double up[FRAMES_MAX], steady[FRAMES_MAX], prev_n = 0, prev_s = 0, prev_n2 = 0, prev_s2 = 0;
 
 	printf("\nframe CPU time (main thread, render_frame before glFinish) by leaf count\n");
-	for (size_t i = 0; i < NLEAF_TREES; i++) {
+	for (size_t i = 0; i < BENCH_COUNT(leaf_trees); i++) {
 		struct render_stats st;
 		struct tree t;
 		int n = leaf_trees[i][0] * leaf_trees[i][1];
@@ -218,17 +216,17 @@ static int frame_cpu(struct bench *b)
 		tree_finish(&t);
 		if (r < 0)
 			return r;
-		for (int k = 0; k < FRAMES; k++) {
+		for (int k = 0; k < frames; k++) {
 			double t0;
 
-			b->app.mesh_serial++;
+			b->app->mesh_serial++;
 			t0 = thread_cpu_s();
-			if (render_frame(b->render, &b->app) < 0)
+			if (render_frame(b->render, b->app) < 0)
 				return -EIO;
 			up[k] = thread_cpu_s() - t0;
 			glFinish();
 			t0 = thread_cpu_s();
-			if (render_frame(b->render, &b->app) < 0)
+			if (render_frame(b->render, b->app) < 0)
 				return -EIO;
 			steady[k] = thread_cpu_s() - t0;
 			glFinish();
@@ -236,8 +234,8 @@ static int frame_cpu(struct bench *b)
 		render_get_stats(b->render, &st);
 		printf("  %6d leaves on %4d branches: %u draw calls a frame, %zu tree triangles\n", n,
 		       leaf_trees[i][0], st.draw_calls, st.tree_triangles);
-		bench_row("frame CPU, with upload", n, bench_median(up, FRAMES), &prev_n, &prev_s);
-		bench_row("frame CPU, steady", n, bench_median(steady, FRAMES), &prev_n2, &prev_s2);
+		bench_row("frame CPU, with upload", n, bench_median(up, frames), &prev_n, &prev_s);
+		bench_row("frame CPU, steady", n, bench_median(steady, frames), &prev_n2, &prev_s2);
 		/* on the smallest tree, where the labels are the largest share */
 		if (i == 0 && labels_cost(b) < 0)
 			return -EIO;
@@ -256,15 +254,15 @@ static int measure_mode(struct bench *b, bool instanced, struct result *res)
 	struct render_stats st;
 
 	b->render->instanced = could && instanced;
-	res->upload_s = bench_run(upload_frame, b, FRAMES);
+	res->upload_s = bench_run(upload_frame, b, frames);
 	res->upload_bytes = b->render->upload_bytes;
 	res->leaf_bytes = res->upload_bytes - b->render->bark.bytes;
-	res->steady_s = bench_run(steady_frame, b, FRAMES);
+	res->steady_s = bench_run(steady_frame, b, frames);
 	render_get_stats(b->render, &st);
 	res->triangles = st.triangles;
 	res->tree_triangles = st.tree_triangles;
 	res->draw_calls = st.draw_calls;
-	res->upload_only_s = bench_run(upload_only, b, FRAMES);
+	res->upload_only_s = bench_run(upload_only, b, frames);
 	b->render->instanced = could;
 	return b->failed;
 }
@@ -301,7 +299,7 @@ static int measure_propagated(struct bench *b, int n, struct result res[2], doub
 	tree_finish(&t);
 	leaf_instances_init(&li);
 	if (r >= 0)
-		r = leaf_instances_build(&li, &b->app.tree);
+		r = leaf_instances_build(&li, &b->app->tree);
 	*nshapes = li.ninstanced_shapes;
 	leaf_instances_finish(&li);
 	if (r < 0) {
@@ -318,7 +316,7 @@ static void rows(const char *name, const struct result res[][2], int mode,
 {
 	double prev_size = 0, prev_s = 0;
 
-	for (size_t i = 0; i < NPROP; i++)
+	for (size_t i = 0; i < BENCH_COUNT(prop_sizes); i++)
 		bench_row(name, prop_sizes[i], get(&res[i][mode]), &prev_size, &prev_s);
 }
 
@@ -343,14 +341,14 @@ static int propagated(struct bench *b)
 	double prop_s[NPROP], prev_size = 0, prev_s = 0;
 	size_t nleaves[NPROP], nshapes[NPROP];
 
-	for (size_t i = 0; i < NPROP; i++)
+	for (size_t i = 0; i < BENCH_COUNT(prop_sizes); i++)
 		if (measure_propagated(b, prop_sizes[i], res[i], &prop_s[i], &nleaves[i],
 				       &nshapes[i]) < 0)
 			return -1;
 	printf("\npropagated: %d leaves on one branch copied onto every branch (fixed count); "
 	       "leaves instanced (%s) and merged\n",
 	       PROP_LEAVES, b->render->instanced ? "GLES 3" : "not on this GLES 2 context");
-	for (size_t i = 0; i < NPROP; i++) {
+	for (size_t i = 0; i < BENCH_COUNT(prop_sizes); i++) {
 		printf("  %4d branches: %6zu leaves, %8zu tree triangles\n", prop_sizes[i],
 		       nleaves[i], res[i][0].tree_triangles);
 		printf("      instanced: %2zu leaf shapes, %3u draw calls a frame, %9zu bytes "
@@ -361,7 +359,7 @@ static int propagated(struct bench *b)
 		       "uploaded (leaves %9zu)\n",
 		       res[i][1].draw_calls, res[i][1].upload_bytes, res[i][1].leaf_bytes);
 	}
-	for (size_t i = 0; i < NPROP; i++)
+	for (size_t i = 0; i < BENCH_COUNT(prop_sizes); i++)
 		bench_row("propagate (one run)", prop_sizes[i], prop_s[i], &prev_size, &prev_s);
 	rows("upload, instanced", res, 0, get_upload_only);
 	rows("upload, merged", res, 1, get_upload_only);
@@ -383,8 +381,8 @@ static int presets(struct bench *b)
 	static const enum season seasons[] = { SEASON_SUMMER, SEASON_AUTUMN };
 
 	printf("the presets (the New strip's trees), median of %d frames: upload frame, steady "
-	       "frame, its main-thread CPU; draw calls\n", FRAMES);
-	for (int i = 0; i < GEN_PRESET_COUNT; i++) {
+	       "frame, its main-thread CPU; draw calls\n", frames);
+	for (int i = 0; i < (int)bench_count(GEN_PRESET_COUNT); i++) {
 		struct gen_params p;
 		struct error err;
 		struct render_stats st;
@@ -401,18 +399,16 @@ static int presets(struct bench *b)
 			tree_finish(&t);
 			return r;
 		}
-		tree_finish(&b->app.tree);
-		b->app.tree = t;
-		r = tree_mesh_build_marked(&b->app.mesh, &b->app.tree, &b->app.mesh_marks);
+		r = set_tree(b, &t);
 		if (r < 0)
 			return r;
 		for (size_t k = 0; k < sizeof(seasons) / sizeof(*seasons); k++) {
-			double up, steady, cpu[FRAMES];
+			double up, steady, cpu[FRAMES_MAX];
 
-			b->app.tree.season = seasons[k];
-			up = bench_run(upload_frame, b, FRAMES);
-			steady = bench_run(steady_frame, b, FRAMES);
-			for (int f = 0; f < FRAMES; f++) {
+			b->app->tree.season = seasons[k];
+			up = bench_run(upload_frame, b, frames);
+			steady = bench_run(steady_frame, b, frames);
+			for (int f = 0; f < frames; f++) {
 				double t0 = thread_cpu_s();
 
 				frame(b);
@@ -421,13 +417,13 @@ static int presets(struct bench *b)
 			render_get_stats(b->render, &st);
 			printf("  %-8s %-6s %7zu triangles: %7.3f ms, %7.3f ms, CPU %6.3f ms; %u draw calls\n",
 			       gen_preset_name((enum gen_preset)i), season_name(seasons[k]),
-			       st.tree_triangles, 1e3 * up, 1e3 * steady, 1e3 * bench_median(cpu, FRAMES),
+			       st.tree_triangles, 1e3 * up, 1e3 * steady, 1e3 * bench_median(cpu, frames),
 			       st.draw_calls);
 		}
 		if (b->failed)
 			return b->failed;
 	}
-	tree_clear(&b->app.tree);
+	tree_clear(&b->app->tree);
 	return 0;
 }
 
@@ -439,15 +435,18 @@ static int presets(struct bench *b)
  */
 static int origami(struct bench *b)
 {
-	printf("20,000 origami leaves (1,000 branches x 20), median of %d frames: upload frame, "
-	       "steady frame, its main-thread CPU; triangles; draw calls\n", FRAMES);
+	int nbranches = bench_quick ? 50 : 1000;
+
+	printf("%d origami leaves (%d branches x 20), median of %d frames: upload frame, "
+	       "steady frame, its main-thread CPU; triangles; draw calls\n", 20 * nbranches,
+	       nbranches, frames);
 	for (int k = 0; k < ORI_KIND_COUNT; k++) {
 		struct render_stats st;
 		struct tree t;
 		int r;
 
 		tree_init(&t);
-		r = synth_tree(&t, 1000, 20, SEED);
+		r = synth_tree(&t, nbranches, 20, SEED);
 		for (size_t i = 0; r == 0 && i < t.nleaves; i++)
 			r = ori_place_leaf(&t, i, k);
 		if (r == 0)
@@ -458,15 +457,15 @@ static int origami(struct bench *b)
 			return r;
 		}
 		for (int unfolding = 0; unfolding < 2; unfolding++) {
-			double up, steady, cpu[FRAMES];
+			double up, steady, cpu[FRAMES_MAX];
 
 			/* every leaf half way through its second, as after a propagation */
-			b->app.nunfold = (size_t)unfolding;
-			b->app.unfold[0] = (struct app_unfold){ .first = 0, .start_us = 0 };
+			b->app->nunfold = (size_t)unfolding;
+			b->app->unfold[0] = (struct app_unfold){ .first = 0, .start_us = 0 };
 			b->now_us = unfolding ? APP_UNFOLD_US / 2 : UINT64_MAX;
-			up = bench_run(upload_frame, b, FRAMES);
-			steady = bench_run(steady_frame, b, FRAMES);
-			for (int f = 0; f < FRAMES; f++) {
+			up = bench_run(upload_frame, b, frames);
+			steady = bench_run(steady_frame, b, frames);
+			for (int f = 0; f < frames; f++) {
 				double t0 = thread_cpu_s();
 
 				frame(b);
@@ -475,19 +474,19 @@ static int origami(struct bench *b)
 			render_get_stats(b->render, &st);
 			printf("  %-7s %-9s %8zu triangles: %7.3f ms, %7.3f ms, CPU %6.3f ms; %u draw "
 			       "calls\n", ori_kind_name(k), unfolding ? "unfolding" : "at rest",
-			       st.tree_triangles, 1e3 * up, 1e3 * steady, 1e3 * bench_median(cpu, FRAMES),
+			       st.tree_triangles, 1e3 * up, 1e3 * steady, 1e3 * bench_median(cpu, frames),
 			       st.draw_calls);
 		}
-		b->app.nunfold = 0;
+		b->app->nunfold = 0;
 		b->now_us = UINT64_MAX;
 		if (b->failed)
 			return b->failed;
 	}
-	tree_clear(&b->app.tree);
+	tree_clear(&b->app->tree);
 	return 0;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
 	struct bench b = { .now_us = UINT64_MAX };
 	struct result res[NSIZES];
@@ -498,6 +497,9 @@ int main(void)
 	size_t font_len;
 	int status = 1;
 
+	if (bench_init(&argc, argv, NULL))
+		return 1;
+	frames = bench_reps(FRAMES_MAX);
 	b.egl = egl_headless_create(WIDTH, HEIGHT, &err);
 	if (!b.egl) {
 		fprintf(stderr, "bench_frame: %s\n", err.msg);
@@ -507,13 +509,15 @@ int main(void)
 	if (!b.rgba)
 		goto out;
 	/* what the kiosk shows while a child hovers: the tree, the buttons, the pen's ring */
-	view_init(&b.app.view, WIDTH, HEIGHT);
-	tree_init(&b.app.tree);
-	tree_mesh_init(&b.app.mesh);
-	tree_mesh_marks_init(&b.app.mesh_marks);
-	b.app.pen.in_proximity = true;
-	b.app.pen.x = 400;
-	b.app.pen.y = 300;
+	b.app = app_create(WIDTH, HEIGHT, SEED);
+	if (!b.app)
+		goto out;
+	app_handle_event(b.app, &(struct event){ .type = EVENT_PROXIMITY_IN, .time_us = 1000,
+						 .tool = EVENT_TOOL_PEN, .x = 400, .y = 300 });
+	if (!b.app->pen.in_proximity) {
+		fprintf(stderr, "bench_frame: the pen's proximity was not taken\n");
+		goto out;
+	}
 
 	if (font_file_read(NULL, &font, &font_len, &font_name, &err) < 0) {
 		fprintf(stderr, "bench_frame: %s\n", err.msg);
@@ -536,28 +540,28 @@ int main(void)
 	frame(&b);
 	first_s = bench_now() - t0;
 
-	for (size_t i = 0; i < NSIZES; i++) {
+	for (size_t i = 0; i < BENCH_COUNT(sizes); i++) {
 		if (measure(&b, sizes[i], &res[i]) < 0)
 			goto out;
 	}
 
 	printf("bench_frame: %dx%d, llvmpipe, median of %d frames; size = branches "
 	       "(%d leaves each, every one its own shape)\n",
-	       WIDTH, HEIGHT, FRAMES, LEAVES_PER_BRANCH);
+	       WIDTH, HEIGHT, frames, LEAVES_PER_BRANCH);
 	printf("first frame (render_create, shader compile, labels' glyphs, empty tree): %.3f ms\n",
 	       first_s * 1e3);
-	for (size_t i = 0; i < NSIZES; i++)
+	for (size_t i = 0; i < BENCH_COUNT(sizes); i++)
 		printf("  %4d branches: %8zu tree triangles, %8zu triangles, %u draw calls a frame\n",
 		       sizes[i], res[i].tree_triangles, res[i].triangles, res[i].draw_calls);
 
 	prev_size = prev_s = 0;
-	for (size_t i = 0; i < NSIZES; i++)
+	for (size_t i = 0; i < BENCH_COUNT(sizes); i++)
 		bench_row("frame with upload", sizes[i], res[i].upload_s, &prev_size, &prev_s);
 	prev_size = prev_s = 0;
-	for (size_t i = 0; i < NSIZES; i++)
+	for (size_t i = 0; i < BENCH_COUNT(sizes); i++)
 		bench_row("frame, steady", sizes[i], res[i].steady_s, &prev_size, &prev_s);
 	prev_size = prev_s = 0;
-	for (size_t i = 0; i < NSIZES; i++)
+	for (size_t i = 0; i < BENCH_COUNT(sizes); i++)
 		bench_row("read back (resolve + read)", sizes[i], res[i].readback_s, &prev_size,
 			  &prev_s);
 	if (propagated(&b) < 0)
@@ -571,9 +575,8 @@ int main(void)
 	status = 0;
 out:
 	render_destroy(b.render);
-	tree_mesh_finish(&b.app.mesh);
-	tree_mesh_marks_finish(&b.app.mesh_marks);
-	tree_finish(&b.app.tree);
+	if (b.app)
+		app_destroy(b.app);
 	free(b.rgba);
 	free(font);
 	egl_headless_destroy(b.egl);

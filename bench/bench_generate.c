@@ -189,13 +189,13 @@ static int by_size(struct figures *out)
 
 	printf("cherry-like trees (presets/cherry.yaml, precision %d, seed %d), median of %d runs "
 	       "each from an empty tree and mesh;\ngrowth: time vs the size before, in triangles\n",
-	       PRECISION, SEED, REPS);
-	for (size_t s = 0; s < NSIZES; s++) {
+	       PRECISION, SEED, bench_reps(REPS));
+	for (size_t s = 0; s < BENCH_COUNT(sizes); s++) {
 		struct gen_params p;
 		struct figures *f = &out[s];
 		int ret = cherry(sizes[s].levels, sizes[s].leaves, &p);
 
-		if (ret < 0 || (ret = measure(&p, REPS, f)) < 0) {
+		if (ret < 0 || (ret = measure(&p, bench_reps(REPS), f)) < 0) {
 			fprintf(stderr, "bench_generate: ~%s: %s\n", sizes[s].label, strerror(-ret));
 			return ret;
 		}
@@ -223,8 +223,9 @@ static const struct gen_preset_text *preset_text(enum gen_preset which)
 static double time_read(const struct gen_preset_text *text)
 {
 	double t[PRESET_READS];
+	int reps = bench_reps(PRESET_READS);
 
-	for (int i = 0; i < PRESET_READS; i++) {
+	for (int i = 0; i < reps; i++) {
 		struct gen_params p;
 		struct error err;
 		double t0 = bench_now();
@@ -236,14 +237,14 @@ static double time_read(const struct gen_preset_text *text)
 			return -1;
 		}
 	}
-	return bench_median(t, PRESET_READS);
+	return bench_median(t, (size_t)reps);
 }
 
 static int presets(void)
 {
 	printf("\nthe presets as the kiosk builds them, once each; gen_read of the file: median of "
 	       "%d\n%-8s %-8s %4s %8s %7s %9s %10s %10s %10s %10s %8s\n",
-	       PRESET_READS, "preset", "type", "prec", "branches", "leaves", "triangles", "read us",
+	       bench_reps(PRESET_READS), "preset", "type", "prec", "branches", "leaves", "triangles", "read us",
 	       "gen ms", "mesh ms", "both ms", "ns/tri");
 	for (int i = 0; i < GEN_PRESET_COUNT; i++) {
 		const struct gen_preset_text *text = preset_text((enum gen_preset)i);
@@ -277,8 +278,9 @@ static int templates(void)
 	double fresh[APP_REPS], tap[APP_REPS];
 	size_t nb = 0, nl = 0;
 	char what[96];
+	int reps = bench_reps(APP_REPS);
 
-	for (int i = 0; i < APP_REPS; i++) {
+	for (int i = 0; i < reps; i++) {
 		struct app *app = app_create(1280, 800, SEED);
 
 		if (!app)
@@ -295,13 +297,13 @@ static int templates(void)
 		nl = app->tree.nleaves;
 		app_destroy(app);
 	}
-	printf("\nthe kiosk (app_handle_event), median of %d fresh apps\n", APP_REPS);
+	printf("\nthe kiosk (app_handle_event), median of %d fresh apps\n", reps);
 	snprintf(what, sizeof(what), "New: the %d template thumbnails (app_templates_build)",
 		 GEN_PRESET_COUNT);
-	printf("  %-70s %9.3f ms\n", what, 1e3 * bench_median(fresh, APP_REPS));
+	printf("  %-70s %9.3f ms\n", what, 1e3 * bench_median(fresh, (size_t)reps));
 	snprintf(what, sizeof(what),
 		 "then tpl-cherry: the preset on the canvas (%zu branches, %zu leaves)", nb, nl);
-	printf("  %-70s %9.3f ms\n", what, 1e3 * bench_median(tap, APP_REPS));
+	printf("  %-70s %9.3f ms\n", what, 1e3 * bench_median(tap, (size_t)reps));
 	return 0;
 }
 
@@ -344,11 +346,15 @@ static int eztree(const struct figures *ours)
 	return 0;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
 	struct figures ours[NSIZES];
 
-	if (by_size(ours) < 0 || presets() < 0 || templates() < 0 || eztree(ours) < 0)
+	if (bench_init(&argc, argv, NULL))
+		return 1;
+	/* --quick leaves ez-tree out: node, and not edaha's code */
+	if (by_size(ours) < 0 || presets() < 0 || templates() < 0 ||
+	    (!bench_quick && eztree(ours) < 0))
 		return 1;
 	return 0;
 }

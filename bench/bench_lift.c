@@ -15,12 +15,16 @@
 
 #define REPS 9
 
-int main(void)
+int main(int argc, char **argv)
 {
 	static const int sizes[] = { 30, 100, 300, 1000 };
 	double pn = 0, pt = 0, first = 0;
+	int reps;
 
-	for (size_t s = 0; s < sizeof(sizes) / sizeof(sizes[0]); s++) {
+	if (bench_init(&argc, argv, NULL))
+		return 1;
+	reps = bench_reps(REPS);
+	for (size_t s = 0; s < BENCH_COUNT(sizes); s++) {
 		struct bench_pen pen = { .pen.now_us = 1000 };
 		struct app *app = bench_draw_tree(&pen, sizes[s]);
 		double t[REPS];
@@ -28,7 +32,7 @@ int main(void)
 
 		if (!app)
 			return 1;
-		for (int r = 0; r < REPS; r++) {
+		for (int r = 0; r < reps; r++) {
 			struct tree tree;
 			struct rng rng;
 			double t0;
@@ -48,7 +52,7 @@ int main(void)
 					 tree.nbranches);
 			tree_finish(&tree);
 		}
-		bench_row(name, sizes[s], bench_median(t, REPS), &pn, &pt);
+		bench_row(name, sizes[s], bench_median(t, (size_t)reps), &pn, &pt);
 		if (s == 0)
 			first = pt;
 		app_destroy(app);

@@ -103,9 +103,9 @@ static void presets(void)
 		}
 		prepare(&j);
 		printf("%-8s %8zu %6zu %6zu %9.4f %9.4f %11.4f %9.4f\n", names[i], j.l.ncreases,
-		       j.l.nfaces, ori_mesh_triangles(&j.l), 1e3 * bench_run(build, &j, 2001),
-		       1e3 * bench_run(open_half, &j, 2001), 1e3 * bench_run(keyframes, &j, 501),
-		       1e3 * bench_run(mesh, &j, 2001));
+		       j.l.nfaces, ori_mesh_triangles(&j.l), 1e3 * bench_run(build, &j, bench_reps(2001)),
+		       1e3 * bench_run(open_half, &j, bench_reps(2001)), 1e3 * bench_run(keyframes, &j, bench_reps(501)),
+		       1e3 * bench_run(mesh, &j, bench_reps(2001)));
 		release(&j);
 	}
 }
@@ -118,7 +118,7 @@ static void growth(void)
 	for (size_t nodes = 0; nodes <= 2; nodes += 2) {
 		double ps = 0, pt = 0, po = 0, pot = 0;
 
-		for (int forks = 0; forks <= 3; forks++) {
+		for (int forks = 0; forks <= (bench_quick ? 1 : 3); forks++) {
 			struct job j;
 			char name[64];
 			double t;
@@ -140,18 +140,20 @@ static void growth(void)
 								  .psi = { 32, 32 } };
 			prepare(&j);
 			snprintf(name, sizeof(name), "forks %d, nodes %zu, creases", forks, nodes);
-			t = bench_run(build, &j, 1001);
+			t = bench_run(build, &j, bench_reps(1001));
 			bench_row(name, (double)j.l.ncreases, t, &ps, &pt);
 			snprintf(name, sizeof(name), "  keyframes, creases");
-			t = bench_run(keyframes, &j, 201);
+			t = bench_run(keyframes, &j, bench_reps(201));
 			bench_row(name, (double)j.l.ncreases, t, &po, &pot);
 			release(&j);
 		}
 	}
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+	if (bench_init(&argc, argv, NULL))
+		return 1;
 	presets();
 	growth();
 	return 0;

@@ -88,12 +88,12 @@ static int bench(enum example e, enum propagate_pattern p, const char *label)
 	static const int sizes[] = { 250, 500, 1000 };
 	double pn = 0, pt = 0;
 
-	for (size_t s = 0; s < sizeof(sizes) / sizeof(sizes[0]); s++) {
+	for (size_t s = 0; s < BENCH_COUNT(sizes); s++) {
 		double t[REPS];
 		char name[64];
 		int added = 0;
 
-		for (int r = 0; r < REPS; r++) {
+		for (int r = 0; r < bench_reps(REPS); r++) {
 			struct tree tree;
 			int src;
 			double t0;
@@ -110,13 +110,15 @@ static int bench(enum example e, enum propagate_pattern p, const char *label)
 			tree_finish(&tree);
 		}
 		snprintf(name, sizeof(name), "%s (+%d)", label, added);
-		bench_row(name, sizes[s], bench_median(t, REPS), &pn, &pt);
+		bench_row(name, sizes[s], bench_median(t, (size_t)bench_reps(REPS)), &pn, &pt);
 	}
 	return 0;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+	if (bench_init(&argc, argv, NULL))
+		return 1;
 	printf("%-28s %10s %12s\n", "propagate", "branches", "median");
 	if (bench(LEAVES, PROPAGATE_FIXED_COUNT, "20 leaves, count") ||
 	    bench(LEAVES, PROPAGATE_FIXED_SIZE, "20 leaves, size") ||

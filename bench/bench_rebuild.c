@@ -168,53 +168,66 @@ static void print_walk(const char *what, double size, const struct walk *w, cons
 	}
 }
 
-static void strokes(void)
+static int strokes(void)
 {
 	struct series reb = { 0 }, ld = { 0 }, com = { 0 }, un[2] = { { 0 } }, re[2] = { { 0 } };
 
+	int reps = bench_reps(REPS);
+
 	printf("%-40s %8s %12s\n", "drawn strokes", "strokes", "median");
-	for (int n = 62; n <= 1000; n *= 2) {
+	for (int n = 62; n <= (bench_quick ? 124 : 1000); n *= 2) {
 		struct bench_pen pen = { .pen.now_us = 1000 };
 		struct app *app = bench_draw_tree(&pen, n), *loaded;
 		double t_rebuild, last[REPS];
 		struct walk undo, redo;
 		char name[64];
 
+		if (!app)
+			return 1;
 		/* REPS more strokes onto a tree of about n branches */
-		for (int i = 0; i < REPS; i++) {
+		for (int i = 0; i < reps; i++) {
 			bench_draw_stroke(app, &pen, 560, 400 + 20 * i, 700, 300, 32, NULL);
 			last[i] = pen.last_commit_s;
 		}
-		t_rebuild = bench_run(rebuild, app, REPS);
+		t_rebuild = bench_run(rebuild, app, reps);
 		snprintf(name, sizeof(name), "rebuild %zu strokes", app->doc.nops);
 		row(name, n, t_rebuild, &reb);
 		snprintf(name, sizeof(name), "commit 1 stroke (%zu branches)", app->tree.nbranches);
-		row(name, n, bench_median(last, REPS), &com);
+		row(name, n, bench_median(last, (size_t)reps), &com);
 		/* then REPS cuts, each after a stroke */
-		for (int i = 0; i < REPS; i++) {
+		for (int i = 0; i < reps; i++) {
 			bench_draw_stroke(app, &pen, 620, 380 + 20 * i, 500, 280, 32, NULL);
 			cut(app, &pen, 3 * i);
 		}
 		snprintf(name, sizeof(name), "load %zu strokes", app->doc.nops);
-		row(name, n, load(app, REPS, &loaded), &ld);
+		row(name, n, load(app, reps, &loaded), &ld);
 		/* stepping through the loaded drawing, as after --load */
-		walk(loaded, 2 * REPS, &undo, &redo);
+		walk(loaded, 2 * (size_t)reps, &undo, &redo);
 		print_walk("undo", n, &undo, "a stroke", "a cut", un);
 		print_walk("redo", n, &redo, "a stroke", "a cut", re);
 		app_destroy(loaded);
 		app_destroy(app);
 	}
+	return 0;
 }
 
-static void session(void)
+static int session(void)
 {
 	struct series reb = { 0 }, ld = { 0 }, any[4] = { { 0 } };
 	struct bench_pen pen = { .pen.now_us = 1000 };
-	struct app *app = bench_draw_edited(&pen, 500, 2000, 2), *loaded;
+	struct app *app = bench_quick ? bench_draw_edited(&pen, 62, 200, 1)
+				       : bench_draw_edited(&pen, 500, 2000, 2);
+	struct app *loaded;
 	struct walk undo, redo;
 	char name[64];
-	size_t kinds[DOC_OP_LEAFTYPE + 1] = { 0 };
+	size_t kinds[DOC_OP_IMPORT + 1] = { 0 };
 
+	if (!app)
+		return 1;
+	/* the long session's taps press grow once (its button is under the tree); the short
+	 * one's do not: a press, so that --quick copies and frees an op that owns memory */
+	if (bench_quick)
+		(void)bench_press(app, BUTTON_GROW);
 	for (size_t i = 0; i < app->doc.nops; i++)
 		kinds[app->doc.ops[i].kind]++;
 	printf("\n%zu edits: %zu strokes, 3D, %zu clones added, %zu removed, %zu propagations; "
@@ -231,13 +244,14 @@ static void session(void)
 	print_walk("redo", (double)app->doc.nops, &redo, "appended", "changed", any + 2);
 	app_destroy(loaded);
 	app_destroy(app);
+	return 0;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+	if (bench_init(&argc, argv, NULL))
+		return 1;
 	printf("rebuild = replay the whole history; load = --load; undo/redo = one press, "
 	       "walking back from the end and forth again (ms)\n");
-	strokes();
-	session();
-	return 0;
+	return strokes() || session();
 }

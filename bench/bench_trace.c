@@ -140,18 +140,19 @@ static void bench(const char *name, void (*make)(struct buf *b, size_t n), struc
 	double prev_size = 0, prev_s = 0, last_s = 0;
 	size_t last_events = 0, last_bytes = 0;
 
-	for (size_t i = 0; i < sizeof(sizes) / sizeof(sizes[0]); i++) {
+	for (size_t i = 0; i < BENCH_COUNT(sizes); i++) {
+		size_t n = bench_quick ? sizes[i] / 10 : sizes[i];
 		struct buf b;
 		char label[64];
 		double s;
 
 		buf_init(&b);
-		make(&b, sizes[i]);
+		make(&b, n);
 		job->data = (const char *)b.data;
 		job->len = b.len;
 		s = bench_run(run, job, job->reps);
 		snprintf(label, sizeof(label), "%s (%.1f MB)", name, (double)b.len / 1e6);
-		bench_row(label, (double)sizes[i], s, &prev_size, &prev_s);
+		bench_row(label, (double)n, s, &prev_size, &prev_s);
 		last_s = s;
 		last_events = job->nevents;
 		last_bytes = b.len;
@@ -161,13 +162,17 @@ static void bench(const char *name, void (*make)(struct buf *b, size_t n), struc
 	       (double)last_events / last_s / 1e6, (double)last_bytes / last_s / 1e6);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
 	struct job edaha = { .parse = trace_parse_edaha, .reps = REPS_EDAHA };
 	struct job libinput = { .parse = trace_parse_libinput, .reps = REPS_LIBINPUT };
 
+	if (bench_init(&argc, argv, NULL))
+		return 1;
+	edaha.reps = bench_reps(REPS_EDAHA);
+	libinput.reps = bench_reps(REPS_LIBINPUT);
 	printf("# size: events (edaha) or evdev frames (libinput); median of %d and %d parses\n",
-	       REPS_EDAHA, REPS_LIBINPUT);
+	       edaha.reps, libinput.reps);
 	bench("edaha trace", make_edaha, &edaha);
 	bench("libinput record", make_libinput, &libinput);
 	return 0;

@@ -4,7 +4,45 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
+
+bool bench_quick;
+
+int bench_init(int *argc, char **argv, const char *operands)
+{
+	int kept = 1;
+
+	for (int i = 1; i < *argc; i++) {
+		if (strcmp(argv[i], "--quick") == 0)
+			bench_quick = true;
+		else if (argv[i][0] == '-' || !operands)
+			goto usage;
+		else
+			argv[kept++] = argv[i];
+	}
+	*argc = kept;
+	argv[kept] = NULL;
+	if (bench_quick)
+		printf("(--quick: the smallest sizes, %d repetitions at most: a test, not figures "
+		       "to quote)\n", bench_reps(1000));
+	return 0;
+usage:
+	fprintf(stderr, "usage: %s [--quick]%s%s\n"
+		"  --quick  the smallest sizes, one or two repetitions (a test, not figures)\n",
+		argv[0], operands ? " " : "", operands ? operands : "");
+	return 1;
+}
+
+int bench_reps(int reps)
+{
+	return bench_quick && reps > 2 ? 2 : reps;
+}
+
+size_t bench_count(size_t n)
+{
+	return bench_quick && n > 2 ? 2 : n;
+}
 
 double bench_now(void)
 {

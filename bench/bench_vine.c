@@ -143,17 +143,20 @@ static void kiosk(void)
 
 	printf("the vine mode on a drawn 3D tree: a tap planting a vine (the kiosk's preset "
 	       "scaled, 40 internodes), median of 5, ms\n");
-	for (size_t i = 0; i < sizeof(branches) / sizeof(*branches); i++) {
+	for (size_t i = 0; i < BENCH_COUNT(branches); i++) {
 		static double frames[2000];
 		double taps[5], worst = 0.0;
 		size_t nframes = 0, bark = 0;
+		int reps = bench_reps(5);
 		uint64_t t0;
 
-		for (int r = 0; r < 5; r++) {
+		for (int r = 0; r < reps; r++) {
 			struct bench_pen bp = { .pen = { .now_us = 1000, .steps = 8,
 							 .pause_us = PEN_PAUSE_US } };
 			struct app *app = bench_draw_tree(&bp, branches[i]);
 
+			if (!app)
+				exit(1);
 			(void)bench_press(app, BUTTON_3D);
 			bark = app->mesh.bark.nindices / 3;
 			taps[r] = plant(app, &bp);
@@ -177,31 +180,36 @@ static void kiosk(void)
 		}
 		for (size_t f = 0; f < nframes; f++)
 			worst = frames[f] > worst ? frames[f] : worst;
-		bench_row("  plant, tree branches", branches[i], bench_median(taps, 5), &pn, &pt);
+		bench_row("  plant, tree branches", branches[i], bench_median(taps, (size_t)reps), &pn, &pt);
 		printf("    (bark %zu triangles) growth on screen: %zu frames, median %.3f ms, "
 		       "worst %.3f ms a frame\n", bark, nframes,
 		       1e3 * bench_median(frames, nframes), 1e3 * worst);
 	}
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
 	static const int internodes[] = { 100, 1000 };
 	/* 1k and 100k triangles: 16 x 31 and 200 x 250 quads, the pole tall enough for 1,000
 	 * internodes of climbing */
 	static const int tess[][2] = { { 16, 31 }, { 200, 250 } };
 	double grown[2][2], indexed[2], tris[2];
+	/* --quick: the small support only */
+	size_t ntess;
 
+	if (bench_init(&argc, argv, NULL))
+		return 1;
+	ntess = bench_quick ? 1 : 2;
 	printf("bench_vine: a vine planted 15 mm from a pole (R = 20 mm, 70 m), d = 8, median "
 	       "ms; the support's index built each time\n");
-	for (size_t k = 0; k < 2; k++) {
+	for (size_t k = 0; k < ntess; k++) {
 		double pn = 0, pt = 0;
 
 		for (size_t i = 0; i < 2; i++) {
 			struct job j;
 			char name[64];
 			double t;
-			int reps = internodes[i] > 100 || k ? 5 : 21;
+			int reps = bench_reps(internodes[i] > 100 || k ? 5 : 21);
 
 			memset(&j, 0, sizeof(j));
 			pole_make(&j.pole, 0.02, 70, tess[k][0], tess[k][1]);
@@ -227,8 +235,9 @@ int main(void)
 			free(j.pole.t);
 		}
 	}
-	printf("how it grows with the support, x%.0f triangles:\n", tris[1] / tris[0]);
-	for (size_t i = 0; i < 2; i++) {
+	if (ntess > 1)
+		printf("how it grows with the support, x%.0f triangles:\n", tris[1] / tris[0]);
+	for (size_t i = 0; ntess > 1 && i < 2; i++) {
 		double with = grown[1][i] / grown[0][i];
 		double alone = (grown[1][i] - indexed[1]) / (grown[0][i] - indexed[0]);
 

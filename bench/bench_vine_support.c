@@ -220,13 +220,13 @@ static void shape(const char *name, void (*make)(struct mesh *, size_t), struct 
 
 	printf("# %s: the build (ms), and %d queries with max 4 r (ms; = us a query)\n", name,
 	       QUERIES);
-	for (size_t k = 0; k < sizeof(sizes) / sizeof(sizes[0]); k++) {
+	for (size_t k = 0; k < BENCH_COUNT(sizes); k++) {
 		struct job j = { .max = 4 * R };
 		char row[64];
 
 		make(&j.m, sizes[k]);
 		snprintf(row, sizeof(row), "%s build, triangles", name);
-		bench_row(row, (double)j.m.nt, bench_run(build, &j, sizes[k] > 10000 ? 11 : 31),
+		bench_row(row, (double)j.m.nt, bench_run(build, &j, bench_reps(sizes[k] > 10000 ? 11 : 31)),
 			  &pb, &ptb);
 		if (vine_support_create(j.m.pos, j.m.nv, j.m.idx, j.m.nt, &j.s) < 0)
 			exit(1);
@@ -234,7 +234,7 @@ static void shape(const char *name, void (*make)(struct mesh *, size_t), struct 
 			j.pool = query_pool(&j.m, offs[o], centre, 16 + (uint64_t)o);
 			j.next = 0;
 			snprintf(row, sizeof(row), "  query at %g r", offs[o] / R);
-			bench_row(row, (double)j.m.nt, bench_run(queries, &j, 3 * POOL / QUERIES),
+			bench_row(row, (double)j.m.nt, bench_run(queries, &j, bench_reps(3 * POOL / QUERIES)),
 				  &pq[o], &ptq[o]);
 			free(j.pool);
 		}
@@ -273,7 +273,7 @@ static void growth_run(void)
 	struct rng r;
 	double t;
 
-	pole(&m, 100000);
+	pole(&m, bench_quick ? 10000 : 100000);
 	if (vine_support_create(m.pos, m.nv, m.idx, m.nt, &g.s) < 0)
 		exit(1);
 	g.axis = calloc(AXIS_POINTS, sizeof(*g.axis));
@@ -291,7 +291,7 @@ static void growth_run(void)
 	for (size_t k = 0; k < PROBES; k++)
 		g.probe[k] = vec3(rng_range(&r, -2 * R, 2 * R), rng_range(&r, -2 * R, 2 * R),
 				  rng_range(&r, -2 * R, 2 * R));
-	t = bench_run(growth, &g, 7);
+	t = bench_run(growth, &g, bench_reps(7));
 	printf("# a growth's queries around the %zu-triangle pole: %d axis points x %d queries, "
 	       "max 4 r\n", m.nt, AXIS_POINTS, PROBES);
 	printf("%-28s %10d %12.3f ms   (%.3f us a query)\n", "growth queries", AXIS_POINTS * PROBES,
@@ -303,8 +303,10 @@ static void growth_run(void)
 	free(m.idx);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+	if (bench_init(&argc, argv, NULL))
+		return 1;
 	shape("pole", pole, vec3(0, 0.5 * POLE_H, 0));
 	shape("bumpy sphere", bumpy_sphere, vec3(0, 0, 0));
 	growth_run();

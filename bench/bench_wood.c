@@ -131,12 +131,15 @@ static void bench_grid(const struct tree *t, int grid, int reps)
 
 int main(int argc, char **argv)
 {
-	const char *path = argc > 1 ? argv[1] : BENCH_WOOD_TREE;
+	const char *path;
 	struct error err = { { 0 } };
 	struct tree t;
 	size_t len;
 	char *data;
 
+	if (bench_init(&argc, argv, "[TREE.json]"))
+		return 1;
+	path = argc > 1 ? argv[1] : BENCH_WOOD_TREE;
 	tree_init(&t);
 	if (fileio_read_all(path, SKELETON_READ_MAX_BYTES, &data, &len, &err) < 0 ||
 	    skeleton_read(data, len, path, &t, &err) < 0) {
@@ -146,8 +149,13 @@ int main(int argc, char **argv)
 	free(data);
 	printf("bench_wood: %s, %zu branches; one core; targets 1 s (64), 10 s (128)\n", path,
 	       t.nbranches);
-	bench_grid(&t, 64, 7);
-	bench_grid(&t, 128, 3);
+	if (bench_quick) {
+		bench_grid(&t, 16, 1);
+		bench_grid(&t, 24, 1);
+	} else {
+		bench_grid(&t, 64, 7);
+		bench_grid(&t, 128, 3);
+	}
 	tree_finish(&t);
 	return 0;
 }

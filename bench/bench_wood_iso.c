@@ -121,11 +121,13 @@ static double mesh_volume(const struct mesh *m)
 	return v;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-	static const int sizes[] = { 64, 128 };
+	static const int sizes[] = { 64, 128 }, quick[] = { 16, 32 };
 	double pn = 0, pt = 0;
 
+	if (bench_init(&argc, argv, NULL))
+		return 1;
 	printf("bench_wood_iso: the bark as the iso-surface at 0.5 of a tree of 6 capsules, "
 	       "median ms (growth against the grid's cells)\n");
 	for (size_t s = 0; s < sizeof(sizes) / sizeof(sizes[0]); s++) {
@@ -133,12 +135,12 @@ int main(void)
 		double t, wood = 0, raw;
 		char name[64];
 
-		make_field(&j.g, sizes[s]);
+		make_field(&j.g, bench_quick ? quick[s] : sizes[s]);
 		mesh_init(&j.m);
 		for (size_t i = 0; i < wood_cells(&j.g); i++)
 			wood += j.g.density[i];
 		wood *= j.g.h * j.g.h * j.g.h;
-		t = bench_run(run, &j, sizes[s] > 64 ? 7 : 15);
+		t = bench_run(run, &j, bench_reps(sizes[s] > 64 ? 7 : 15));
 		snprintf(name, sizeof(name), "wood_iso %d x %d x %d, cells", j.g.nx, j.g.ny, j.g.nz);
 		bench_row(name, (double)wood_cells(&j.g), t, &pn, &pt);
 		printf("    %zu triangles, %zu vertices, h %.1f mm; volume %+.2f%% of the wood "
@@ -146,7 +148,7 @@ int main(void)
 		       100 * (mesh_volume(&j.m) / wood - 1), wood);
 		raw = t;
 		j.wood = wood;
-		t = bench_run(run_kept, &j, sizes[s] > 64 ? 7 : 15);
+		t = bench_run(run_kept, &j, bench_reps(sizes[s] > 64 ? 7 : 15));
 		printf("  and kept to the wood (wood_iso_keep_volume): %.2f ms more; volume %+.3f%% "
 		       "of the wood\n", 1e3 * (t - raw), 100 * (mesh_volume(&j.m) / wood - 1));
 		mesh_finish(&j.m);

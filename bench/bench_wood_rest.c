@@ -159,7 +159,7 @@ static void rods(void)
 	double pn = 0, pt = 0;
 
 	printf("vertical rods, radius 3 voxels, on the ground: median of 3\n");
-	for (size_t i = 0; i < sizeof(len) / sizeof(*len); i++) {
+	for (size_t i = 0; i < BENCH_COUNT(len); i++) {
 		struct job j;
 		struct capsule c = cap(5, -5, 5, 5, len[i], 5, 3.2, 3.2);
 		char name[64];
@@ -167,7 +167,7 @@ static void rods(void)
 		grid(&j, 11, len[i], 11);
 		fill(&j.g, &c, 1, 0.0);
 		snprintf(name, sizeof(name), "  rod, %d voxels, points", len[i]);
-		run(name, &j, 3, &pn, &pt);
+		run(name, &j, bench_reps(3), &pn, &pt);
 		wood_grid_finish(&j.g);
 	}
 }
@@ -179,7 +179,7 @@ static void cantilevers(void)
 	double pn = 0, pt = 0;
 
 	printf("horizontal cantilevers, radius 3 voxels, from a post 12 high: median of 3\n");
-	for (size_t i = 0; i < sizeof(len) / sizeof(*len); i++) {
+	for (size_t i = 0; i < BENCH_COUNT(len); i++) {
 		struct job j;
 		struct capsule c[2] = { cap(5, -5, 5, 5, 12, 5, 3.2, 3.2),
 					cap(5, 8, 5, 5 + len[i], 8, 5, 3.2, 3.2) };
@@ -188,7 +188,7 @@ static void cantilevers(void)
 		grid(&j, len[i] + 10, 13, 11);
 		fill(&j.g, c, 2, 0.0);
 		snprintf(name, sizeof(name), "  arm, %d voxels, points", len[i]);
-		run(name, &j, 3, &pn, &pt);
+		run(name, &j, bench_reps(3), &pn, &pt);
 		wood_grid_finish(&j.g);
 	}
 }
@@ -201,7 +201,7 @@ static void trees(double thick)
 	printf("a procedural tree (trunk r = %.3g n, leader, 4 branches with a side branch each) "
 	       "in a grid of n^3 cells: median of 5 (3 at 128)\n",
 	       0.05 * thick);
-	for (size_t i = 0; i < sizeof(cells) / sizeof(*cells); i++) {
+	for (size_t i = 0; i < BENCH_COUNT(cells); i++) {
 		struct job j;
 		struct capsule c[16];
 		size_t nc = tree(cells[i], thick, c);
@@ -211,13 +211,15 @@ static void trees(double thick)
 		j.ground_y = 0.15 * cells[i];
 		fill(&j.g, c, nc, j.ground_y);
 		snprintf(name, sizeof(name), "  tree, grid %d, points", cells[i]);
-		run(name, &j, cells[i] >= 128 ? 3 : 5, &pn, &pt);
+		run(name, &j, bench_reps(cells[i] >= 128 ? 3 : 5), &pn, &pt);
 		wood_grid_finish(&j.g);
 	}
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+	if (bench_init(&argc, argv, NULL))
+		return 1;
 	printf("bench_wood_rest: the springs' rest state (wood_rest: build, preconditioned CG "
 	       "to 1e-6, forces), gravity 1e-6 (the forces and displacements in proportion to it), one core\n");
 	rods();

@@ -90,7 +90,7 @@ static void one(int n, double *prev_n, double *prev_t)
 		exit(1);
 	memcpy(start, g.density, cells * sizeof(*start));
 	k = count(&g, &p);
-	for (int r = 0; r < REPS; r++) {
+	for (int r = 0; r < bench_reps(REPS); r++) {
 		double t0;
 
 		memcpy(g.density, start, cells * sizeof(*start));
@@ -100,7 +100,7 @@ static void one(int n, double *prev_n, double *prev_t)
 		t[r] = bench_now() - t0;
 	}
 	snprintf(name, sizeof(name), "  thicken %d^3, cells", n);
-	bench_row(name, (double)cells, bench_median(t, REPS), prev_n, prev_t);
+	bench_row(name, (double)cells, bench_median(t, (size_t)bench_reps(REPS)), prev_n, prev_t);
 	printf("    surface %zu voxels, %zu overflow, %zu voxels grew, added %.1f, lost %.1f\n",
 	       k.surface, k.overflow, grown(start, g.density, cells), added, lost);
 
@@ -125,13 +125,15 @@ static void one(int n, double *prev_n, double *prev_t)
 	wood_grid_finish(&g);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
 	double pn = 0, pt = 0;
 
+	if (bench_init(&argc, argv, NULL))
+		return 1;
 	printf("growing wood, step 6: thickening a cylinder (radius n/6, a one-voxel rim, random "
-	       "forces 0..2, conifer, alpha = beta = 1), median of %d, ms\n", REPS);
-	one(64, &pn, &pt);
-	one(128, &pn, &pt);
+	       "forces 0..2, conifer, alpha = beta = 1), median of %d, ms\n", bench_reps(REPS));
+	one(bench_quick ? 16 : 64, &pn, &pt);
+	one(bench_quick ? 32 : 128, &pn, &pt);
 	return 0;
 }

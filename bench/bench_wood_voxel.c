@@ -119,8 +119,8 @@ static int cmp(const void *a, const void *b)
 
 static double median(double *v)
 {
-	qsort(v, REPS, sizeof(*v), cmp);
-	return v[REPS / 2];
+	qsort(v, (size_t)bench_reps(REPS), sizeof(*v), cmp);
+	return v[bench_reps(REPS) / 2];
 }
 
 static void run(const struct tree *t, int cells, struct result *res)
@@ -133,7 +133,7 @@ static void run(const struct tree *t, int cells, struct result *res)
 	if (!vox)
 		exit(1);
 	mesh_init(&m);
-	for (int k = 0; k < REPS; k++) {
+	for (int k = 0; k < bench_reps(REPS); k++) {
 		double t0 = cpu_now(), t1, t2, t3;
 
 		mesh_clear(&m);
@@ -151,7 +151,7 @@ static void run(const struct tree *t, int cells, struct result *res)
 		tp[k] = t1 - t0;
 		tg[k] = t2 - t1;
 		tv[k] = t3 - t2;
-		if (k + 1 < REPS)
+		if (k + 1 < bench_reps(REPS))
 			wood_grid_finish(&g);
 	}
 	memset(res, 0, sizeof(*res));
@@ -178,7 +178,7 @@ static void print(int n, double tip, int cells, const struct result *r)
 	       r->voxelise_s * 1e3, (r->prisms_s + r->voxelise_s) * 1e3);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
 	static const struct {
 		int n;
@@ -187,20 +187,22 @@ int main(void)
 	static const int grids[] = { 32, 64, 128, 256 };
 	struct tree t;
 
+	if (bench_init(&argc, argv, NULL))
+		return 1;
 	tree_init(&t);
-	printf("binary-fork trees (power law d^2.5), medians of %d, CPU ms\n", REPS);
+	printf("binary-fork trees (power law d^2.5), medians of %d, CPU ms\n", bench_reps(REPS));
 	printf("%5s %5s %5s %6s %7s %10s %9s %8s %9s %8s %9s %9s\n", "tree", "tips", "grid", "voxd",
 	       "tris", "cells", "occupied", "full", "prisms", "grid", "voxelise", "p+v");
-	for (size_t s = 0; s < sizeof(trees) / sizeof(*trees); s++) {
+	for (size_t s = 0; s < BENCH_COUNT(trees); s++) {
 		double prev_n = 0, prev_s = 0;
 		struct result res[4];
 
 		make_tree(&t, trees[s].n, trees[s].tip);
-		for (size_t k = 0; k < 4; k++) {
+		for (size_t k = 0; k < BENCH_COUNT(grids); k++) {
 			run(&t, grids[k], &res[k]);
 			print(trees[s].n, trees[s].tip, grids[k], &res[k]);
 		}
-		for (size_t k = 0; k < 4; k++) {
+		for (size_t k = 0; k < BENCH_COUNT(grids); k++) {
 			char name[64];
 
 			snprintf(name, sizeof(name), "%d/%.2f, p+v by grid", trees[s].n, trees[s].tip);

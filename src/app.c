@@ -181,6 +181,17 @@ int app_reset(struct app *app, uint64_t seed)
 	return app_load_doc(app, &fresh);
 }
 
+int app_show_tree(struct app *app, struct tree *t)
+{
+	tree_finish(&app->tree);
+	app->tree = *t;
+	tree_init(t);
+	app_unfold_clear(app);
+	app_vine_growth_clear(app);
+	app->mesh_serial++;
+	return tree_mesh_build_marked(&app->mesh, &app->tree, &app->mesh_marks);
+}
+
 /* Records an edit and applies it on top of the current tree (same result as a rebuild).
  * When the tree only grew, only the new elements are meshed: a stroke's cost does not
  * grow with the drawing. */

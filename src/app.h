@@ -232,6 +232,10 @@ int app_load_doc(struct app *app, struct doc *doc);
 /* A new visitor: an empty drawing with this seed, sketch mode, the front view; not
  * undoable (the kiosk archives the old drawing first). 0 or -ENOMEM. */
 int app_reset(struct app *app, uint64_t seed);
+/* Shows t (taken: t is left empty) on the canvas with its meshes, outside the history:
+ * for the benchmarks, whose trees (synthetic, up to 20,000 leaves) no drawing makes. The
+ * drawing is left as it was; app_rebuild or a load shows its tree again. 0 or -ENOMEM. */
+int app_show_tree(struct app *app, struct tree *t);
 void app_handle_event(struct app *app, const struct event *ev);
 uint32_t app_take_requests(struct app *app);
 /* The camera to show at now_us: the settled one, or a step of the animated turn into 3D
