@@ -266,6 +266,15 @@ static void check_rigid(const struct ori_leaf *l, double (*p)[3])
 	CHECK(fabs(p[0][0]) + fabs(p[0][1]) + fabs(p[0][2]) < 1e-12);
 }
 
+static size_t midrib_nodes(const struct ori_leaf *l)
+{
+	size_t n = 0;
+
+	for (size_t k = 0; k < l->nnodes; k++)
+		n += l->nodes[k].midrib;
+	return n;
+}
+
 static void check_opening(const struct ori_leaf *l)
 {
 	double (*p)[3] = calloc(l->nvertices, sizeof(*p)), (*q)[3] = calloc(l->nvertices, sizeof(*q));
@@ -291,8 +300,9 @@ static void check_opening(const struct ori_leaf *l)
 	}
 	(void)last;
 	/* with nodes, the folded midrib is a polyline (bent at its nodes) that straightens as
-	 * the leaf opens: its nodes' distance from the line O-tip shrinks to 0 */
-	if (l->nnodes) {
+	 * the leaf opens: its nodes' distance from the line O-tip shrinks to 0 (the side
+	 * parts' veins' nodes bend their veins alike, off the plane of symmetry) */
+	if (midrib_nodes(l)) {
 		double prev = INFINITY;
 
 		for (int i = 1; i <= 4; i++) {
@@ -303,6 +313,9 @@ static void check_opening(const struct ori_leaf *l)
 			tip = p[l->tip];
 			for (size_t k = 0; k < l->nnodes; k++) {
 				const double *n = p[l->creases[l->nodes[k].in].b];
+
+				if (!l->nodes[k].midrib)
+					continue;
 				double u[3] = { tip[0] - o[0], tip[1] - o[1], tip[2] - o[2] };
 				double w[3] = { n[0] - o[0], n[1] - o[1], n[2] - o[2] };
 				double c[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
