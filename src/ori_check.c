@@ -161,7 +161,7 @@ int ori_check_design(const struct ori_design *d, const char *name, struct error 
 		return ret;
 	for (size_t j = 0; j < d->nsides; j++) {
 		const struct ori_side *p = &d->sides[j];
-		char where[32];
+		char where[40];
 
 		snprintf(where, sizeof(where), "sides: part %zu", j + 1);
 		if (p->nnodes > 0 && p->forks > 0)

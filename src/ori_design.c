@@ -130,7 +130,7 @@ static int check_sides(const struct ori_design *d, struct ori_fault *at, struct 
 					"forks or has nodes", p->forks);
 	}
 	for (size_t j = 0; j < d->nsides; j++) {
-		char where[32];
+		char where[40];
 		int ret;
 
 		snprintf(where, sizeof(where), "sides: part %zu", j + 1);
