@@ -26,8 +26,9 @@
 
 #define ORI_NAME_MAX 32
 #define ORI_MAX_SIDES 4 /* side parts on each side of the middle one */
-#define ORI_MAX_NODES 4 /* nodes on the midrib */
+#define ORI_MAX_NODES 4 /* nodes on the midrib, or on one side part's vein */
 #define ORI_MAX_FORKS 3 /* times a side part's vein forks on its way to the margin */
+#define ORI_MAX_LEAF_NODES (ORI_MAX_NODES * (2 * ORI_MAX_SIDES + 1)) /* in a whole leaf */
 #define ORI_CURVE_POINTS 12 /* points of a curved cut between O and the tip */
 
 enum ori_fold {
@@ -35,23 +36,28 @@ enum ori_fold {
 	ORI_FOLD_HALF,    /* an entire leaf folded in two on its midrib, a curved cut */
 };
 
-/* A node of the midrib: a pair of side veins (valleys) at phi from the midrib's direction
- * and, between each and the midrib, an extra mountain at psi < phi. [0] right, [1] left;
- * the pattern is symmetric, so they must be equal. */
+/* A node of the midrib or of a side part's vein: a pair of side veins (valleys) at phi from
+ * the vein's direction and, between each and the vein, an extra mountain at psi < phi. [0]
+ * right (clockwise of the vein), [1] left; the pattern is symmetric, so they must be
+ * equal. */
 struct ori_node {
-	double at; /* along the midrib, fraction of its length, increasing from O */
+	double at; /* along the vein, fraction of its length to its tip, increasing from O */
 	double phi[2], psi[2]; /* degrees */
 	unsigned long line;    /* where the design says it (0: not from a file) */
 };
 
 /* A part beside the middle one, counted from the middle outwards; the left side mirrors
  * the right. Its vein bisects its angle at O; each fork splits a vein into children at +a
- * and -b degrees from its direction with an extra mountain at a - b between them. */
+ * and -b degrees from its direction with an extra mountain at a - b between them. A vein
+ * without forks may have nodes, as the midrib does: each a tooth on either edge of the
+ * lobe. */
 struct ori_side {
 	double angle;   /* the part's angle at O, degrees */
 	int forks;      /* 0..ORI_MAX_FORKS */
 	double fork_at; /* where a vein forks: fraction of its length to the cut */
 	double fork_a, fork_b; /* degrees */
+	size_t nnodes;  /* nodes on the vein (not with forks) */
+	struct ori_node nodes[ORI_MAX_NODES];
 	unsigned long line;
 };
 
@@ -135,12 +141,14 @@ struct ori_leaf {
 	int *face_from;   /* [f]: the face it is placed from (-1: the root) */
 	int *face_across; /* [f]: the crease crossed */
 	int root_face;
-	/* The midrib's nodes, from O: their creases and angles (radians), for ori_open's
-	 * closure. */
+	/* The veins' nodes, in the walk's order (along each vein from O): their creases and
+	 * angles (radians), for ori_open's closure. */
 	size_t nnodes;
 	struct ori_node_geo {
 		int in, out, vein[2], mountain[2]; /* creases; [0] right, [1] left */
 		double phi, psi;
+		int part; /* the part whose vein it is on, right to left (the midrib's: nsides) */
+		bool midrib;
 	} *nodes;
 	/* The lobes' tips against the spiral's targets (fan only): for a report. */
 	size_t nlobes;

@@ -236,52 +236,108 @@ static int vein(struct ori_builder *b, const struct ori_side *p, bool mirror, in
 	return inner_end(b, s, c, &before);
 }
 
-/* The midrib from s (O or node i - 1), up +y; parent the crease entering s. */
-static int midrib(struct ori_builder *b, int s, size_t i, int parent)
+/* A vein with nodes: the midrib, or a side part's vein without forks. */
+struct ori_axis {
+	double dir[2]; /* from O */
+	double len;    /* from O to its tip on the cut */
+	const struct ori_node *nodes;
+	size_t nnodes;
+	int part;
+	const char *what; /* "middle.nodes", "sides: part 2" */
+	unsigned long line;
+};
+
+/* The axis from s (O, or node i - 1 of the axis, the leaf's node snode) on; parent the
+ * crease entering s. Each node sends out its right side vein and mountain, the axis goes
+ * on, then its left mountain and vein. */
+static int axis(struct ori_builder *b, const struct ori_axis *x, int s, size_t i, int parent,
+		int snode)
 {
-	const struct ori_design *d = b->d;
 	enum ori_rule rule = i == 0 ? ORI_RULE_BASE : ORI_RULE_NODE_MIDRIB;
-	int node = i == 0 ? -1 : (int)i - 1;
-	double up[2] = { 0, 1 }, dc[2];
+	int node = i == 0 ? -1 : snode;
+	const struct ori_node *n = &x->nodes[i];
+	double dc[2];
 	struct ori_node_geo *g;
 	struct iso before;
-	int v, c, ret;
+	int v, c, ret, gi;
 
-	if (i == d->nnodes)
-		return ray(b, s, up, ORI_VALLEY, rule, parent, 0, node, NULL);
-	b->part_line = d->nodes[i].line ? d->nodes[i].line : d->line_middle;
-	snprintf(b->what, sizeof(b->what), "middle.nodes: node %zu", i + 1);
+	if (i == x->nnodes)
+		return ray(b, s, x->dir, ORI_VALLEY, rule, parent, 0, node, NULL);
+	if (b->nnodes == ORI_MAX_LEAF_NODES)
+		return full(b);
+	b->part_line = n->line ? n->line : x->line;
+	snprintf(b->what, sizeof(b->what), "%s: node %zu", x->what, i + 1);
 	b->part_what = b->what;
-	ret = inner_begin(b, s, 0, d->nodes[i].at * d->size, ORI_VALLEY, rule, parent, 0, node, &v,
-			  &c, &before);
+	ret = inner_begin(b, s, n->at * x->len * x->dir[0], n->at * x->len * x->dir[1], ORI_VALLEY,
+			  rule, parent, 0, node, &v, &c, &before);
 	if (ret < 0)
 		return ret;
-	g = &b->nodes[b->nnodes++];
+	gi = (int)b->nnodes++;
+	g = &b->nodes[gi];
 	g->in = c;
-	g->phi = d->nodes[i].phi[0] * VEC_PI / 180.0;
-	g->psi = d->nodes[i].psi[0] * VEC_PI / 180.0;
-	dir_turn(up, -d->nodes[i].phi[0], dc);
-	if ((ret = ray(b, v, dc, ORI_VALLEY, ORI_RULE_NODE_VEIN, c, 0, (int)i, &g->vein[0])) < 0)
+	g->phi = n->phi[0] * VEC_PI / 180.0;
+	g->psi = n->psi[0] * VEC_PI / 180.0;
+	g->part = x->part;
+	g->midrib = x->part == (int)b->d->nsides;
+	dir_turn(x->dir, -n->phi[0], dc);
+	if ((ret = ray(b, v, dc, ORI_VALLEY, ORI_RULE_NODE_VEIN, c, 0, gi, &g->vein[0])) < 0)
 		return ret;
-	dir_turn(up, -d->nodes[i].psi[0], dc);
-	if ((ret = ray(b, v, dc, ORI_MOUNTAIN, ORI_RULE_NODE_MOUNTAIN, c, 0, (int)i,
-		       &g->mountain[0])) < 0)
+	dir_turn(x->dir, -n->psi[0], dc);
+	if ((ret = ray(b, v, dc, ORI_MOUNTAIN, ORI_RULE_NODE_MOUNTAIN, c, 0, gi, &g->mountain[0])) < 0)
 		return ret;
-	g->out = (int)b->nc; /* the next crease made is the midrib leaving v */
-	if ((ret = midrib(b, v, i + 1, c)) < 0)
+	g->out = (int)b->nc; /* the next crease made is the axis leaving v */
+	if ((ret = axis(b, x, v, i + 1, c, gi)) < 0)
 		return ret;
-	dir_turn(up, d->nodes[i].psi[1], dc);
-	if ((ret = ray(b, v, dc, ORI_MOUNTAIN, ORI_RULE_NODE_MOUNTAIN, c, 0, (int)i,
-		       &g->mountain[1])) < 0)
+	g = &b->nodes[gi];
+	dir_turn(x->dir, n->psi[1], dc);
+	if ((ret = ray(b, v, dc, ORI_MOUNTAIN, ORI_RULE_NODE_MOUNTAIN, c, 0, gi, &g->mountain[1])) < 0)
 		return ret;
-	dir_turn(up, d->nodes[i].phi[1], dc);
-	if ((ret = ray(b, v, dc, ORI_VALLEY, ORI_RULE_NODE_VEIN, c, 0, (int)i, &g->vein[1])) < 0)
+	dir_turn(x->dir, n->phi[1], dc);
+	if ((ret = ray(b, v, dc, ORI_VALLEY, ORI_RULE_NODE_VEIN, c, 0, gi, &g->vein[1])) < 0)
 		return ret;
 	return inner_end(b, s, c, &before);
 }
 
-/* Side part j (right or left): its cut, then its vein from O. edge: its edge on the
- * walk's side of it (the one already walked). */
+/*
+ * Where the axis's tip lies folded, by the map of the face the walk is in at O: the nodes'
+ * side veins and mountains turn the folded axis, but their reflections do not depend on
+ * the cut, so the tip's folded place is known before the walk (the face right of the last
+ * segment maps it: each node's right vein and mountain, in the walk's order).
+ */
+static void axis_folded_tip(const struct ori_builder *b, const struct ori_axis *x, double out[2])
+{
+	double tip[2] = { x->len * x->dir[0], x->len * x->dir[1] };
+	struct iso M = b->M;
+
+	for (size_t i = 0; i < x->nnodes; i++) {
+		double n[2] = { x->nodes[i].at * x->len * x->dir[0], x->nodes[i].at * x->len * x->dir[1] };
+		double dv[2], dm[2];
+		struct iso rv, rm;
+
+		dir_turn(x->dir, -x->nodes[i].phi[0], dv);
+		dir_turn(x->dir, -x->nodes[i].psi[0], dm);
+		rv = iso_reflect(n, dv);
+		rm = iso_reflect(n, dm);
+		M = iso_mul(&M, &rv);
+		M = iso_mul(&M, &rm);
+	}
+	iso_apply(&M, tip, out);
+}
+
+/* Sets the cut of the part the walk is at (the face at O, its edge along edge): through its
+ * junction on that edge and the axis's tip, as both lie folded. */
+static void set_cut_axis(struct ori_builder *b, const double edge[2], const struct ori_axis *x)
+{
+	double m = b->d->junction * b->d->size, j[2] = { m * edge[0], m * edge[1] };
+	double o[2] = { 0, 0 }, oo[2];
+
+	iso_apply(&b->M, j, b->cut_a);
+	axis_folded_tip(b, x, b->cut_b);
+	b->inside = 1.0;
+	iso_apply(&b->M, o, oo);
+	b->inside = cut_side(b, oo) >= 0 ? 1.0 : -1.0;
+}
+
 /* What a side part's walk may undo: the builder's lengths and the face being walked. */
 struct ori_mark {
 	size_t nv, nc, nf, nfi, nmargin, ncur, nnodes;
@@ -411,6 +467,16 @@ static int side_part(struct ori_builder *b, size_t j, bool left, const double ed
 				"the midrib by the spiral (theta0 %.4g), not past the junction (%.3g)",
 				j + 1, theta, target / d->size, d->theta0, d->junction);
 	dir_at(90.0 + (left ? theta : -theta), dv);
+	if (p->nnodes > 0) { /* a vein with nodes ends on the cut at r, as the midrib does */
+		char what[sizeof(b->what)];
+		struct ori_axis x = { .dir = { dv[0], dv[1] }, .len = target, .nodes = p->nodes,
+				      .nnodes = p->nnodes, .part = b->part, .what = what,
+				      .line = b->part_line };
+
+		memcpy(what, b->what, sizeof(what));
+		set_cut_axis(b, edge, &x);
+		return axis(b, &x, 0, 0, -1, -1);
+	}
 	if (p->forks == 0)
 		return walk_side(b, p, left, edge, dv, r, &tip);
 	if (left && b->fitted[j])
@@ -446,37 +512,17 @@ static int boundary(struct ori_builder *b, double deg)
 	return 0;
 }
 
-/*
- * The middle part. Its cut runs through its junction and the midrib's tip at (0, size) as
- * the tip lies folded: the nodes' side veins and mountains turn the folded midrib, but
- * their reflections do not depend on the cut, so the tip's folded place is known before
- * the walk (the face right of the last midrib segment maps it: the root face's map and
- * each node's right vein and mountain, in the walk's order).
- */
+/* The middle part: its cut runs through its junction and the midrib's tip at (0, size) as
+ * the tip lies folded. */
 static int walk_middle(struct ori_builder *b, const double edge[2])
 {
 	const struct ori_design *d = b->d;
-	double m = d->junction * d->size, j[2] = { m * edge[0], m * edge[1] };
-	double tip[2] = { 0, d->size }, o[2] = { 0, 0 }, oo[2];
-	struct iso M = b->M;
+	struct ori_axis x = { .dir = { 0, 1 }, .len = d->size, .nodes = d->nodes,
+			      .nnodes = d->nnodes, .part = (int)d->nsides, .what = "middle.nodes",
+			      .line = d->line_middle ? d->line_middle : d->line };
 
-	for (size_t i = 0; i < d->nnodes; i++) {
-		double n[2] = { 0, d->nodes[i].at * d->size }, up[2] = { 0, 1 }, dv[2], dm[2];
-		struct iso rv, rm;
-
-		dir_turn(up, -d->nodes[i].phi[0], dv);
-		dir_turn(up, -d->nodes[i].psi[0], dm);
-		rv = iso_reflect(n, dv);
-		rm = iso_reflect(n, dm);
-		M = iso_mul(&M, &rv);
-		M = iso_mul(&M, &rm);
-	}
-	iso_apply(&b->M, j, b->cut_a);
-	iso_apply(&M, tip, b->cut_b);
-	b->inside = 1.0;
-	iso_apply(&b->M, o, oo);
-	b->inside = cut_side(b, oo) >= 0 ? 1.0 : -1.0;
-	return midrib(b, 0, 0, -1);
+	set_cut_axis(b, edge, &x);
+	return axis(b, &x, 0, 0, -1, -1);
 }
 
 static int walk_fan(struct ori_builder *b)

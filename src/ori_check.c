@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "ori_private.h"
 
@@ -62,8 +63,8 @@ int ori_check_pattern(struct ori_builder *b)
 			if (segments_cross(b->v[x->a], b->v[x->b], b->v[y->a], b->v[y->b])) {
 				line = part_where(d, b->part_of[y->b], what);
 				return error_at(b->err, -EINVAL, b->name, line,
-						"%s: creases cross: its forks' angles send a vein or "
-						"a mountain over another", what);
+						"%s: creases cross: its forks' or nodes' angles send a vein "
+						"or a mountain over another", what);
 			}
 		}
 	for (size_t i = 0; i < b->nmargin; i++) {
@@ -115,8 +116,39 @@ int ori_check_pattern(struct ori_builder *b)
 	return 0;
 }
 
+/* A vein's nodes (the midrib's or a side part's, named where, told at line if a node has
+ * none): symmetric, the extra mountain between the vein and the side vein, outwards. */
+static int check_nodes(const struct ori_node *nodes, size_t nn, const char *where,
+		       unsigned long line, const char *name, struct error *err)
+{
+	if (nn > ORI_MAX_NODES)
+		return error_at(err, -EINVAL, name, line, "%s: %zu nodes, over %d", where, nn,
+				ORI_MAX_NODES);
+	for (size_t i = 0; i < nn; i++) {
+		const struct ori_node *n = &nodes[i];
+		unsigned long at = n->line ? n->line : line;
+
+		if (n->phi[0] != n->phi[1] || n->psi[0] != n->psi[1])
+			return error_at(err, -EINVAL, name, at,
+					"%s: node %zu is not symmetric: its right and left angles "
+					"differ (the pattern mirrors about %s)", where, i + 1,
+					strcmp(where, "middle.nodes") ? "each vein" : "the midrib");
+		if (!(n->psi[0] > 0 && n->psi[0] < n->phi[0] && n->phi[0] < 90))
+			return error_at(err, -EINVAL, name, at,
+					"%s: node %zu: the extra mountain must lie between the %s "
+					"and the side vein, 0 < psi < phi < 90", where, i + 1,
+					strcmp(where, "middle.nodes") ? "vein" : "midrib");
+		if (n->at <= (i ? nodes[i - 1].at : 0.0) || n->at >= 1)
+			return error_at(err, -EINVAL, name, at,
+					"%s: node %zu: `at` must grow from O and stay below 1", where,
+					i + 1);
+	}
+	return 0;
+}
+
 int ori_check_design(const struct ori_design *d, const char *name, struct error *err)
 {
+	int ret;
 	double span = d->middle[0] + d->middle[1] + 2.0 * ori_sides_angle(d, d->nsides);
 	unsigned long line = d->line_middle ? d->line_middle : d->line;
 
@@ -125,23 +157,19 @@ int ori_check_design(const struct ori_design *d, const char *name, struct error 
 				"the middle part is not symmetric: %.4g degrees right of the midrib, "
 				"%.4g left (the pattern mirrors about the midrib)",
 				d->middle[0], d->middle[1]);
-	for (size_t i = 0; i < d->nnodes; i++) {
-		const struct ori_node *n = &d->nodes[i];
-		unsigned long at = n->line ? n->line : line;
+	if ((ret = check_nodes(d->nodes, d->nnodes, "middle.nodes", line, name, err)) < 0)
+		return ret;
+	for (size_t j = 0; j < d->nsides; j++) {
+		const struct ori_side *p = &d->sides[j];
+		char where[40];
 
-		if (n->phi[0] != n->phi[1] || n->psi[0] != n->psi[1])
-			return error_at(err, -EINVAL, name, at,
-					"middle.nodes: node %zu is not symmetric: its right and "
-					"left angles differ (the pattern mirrors about the midrib)",
-					i + 1);
-		if (!(n->psi[0] > 0 && n->psi[0] < n->phi[0] && n->phi[0] < 90))
-			return error_at(err, -EINVAL, name, at,
-					"middle.nodes: node %zu: the extra mountain must lie between "
-					"the midrib and the side vein, 0 < psi < phi < 90", i + 1);
-		if (n->at <= (i ? d->nodes[i - 1].at : 0.0) || n->at >= 1)
-			return error_at(err, -EINVAL, name, at,
-					"middle.nodes: node %zu: `at` must grow from O and stay below "
-					"1", i + 1);
+		snprintf(where, sizeof(where), "sides: part %zu", j + 1);
+		if (p->nnodes > 0 && p->forks > 0)
+			return error_at(err, -EINVAL, name, p->line ? p->line : d->line,
+					"%s: a vein either forks or has nodes, not both", where);
+		if ((ret = check_nodes(p->nodes, p->nnodes, where, p->line ? p->line : d->line,
+				       name, err)) < 0)
+			return ret;
 	}
 	if (span >= 360.0)
 		return error_at(err, -EINVAL, name, line,

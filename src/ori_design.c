@@ -2,6 +2,7 @@
 /* An origami leaf's design: its defaults and its limits. docs/leaf-format.md is the
  * contract for both. */
 #include <errno.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "ori_design.h"
@@ -14,6 +15,7 @@ void ori_side_default(struct ori_side *s)
 	s->fork_at = 0.5;
 	s->fork_a = 30;
 	s->fork_b = 30;
+	s->nnodes = 0;
 }
 
 void ori_design_default(struct ori_design *d, enum ori_fold fold)
@@ -42,7 +44,8 @@ static bool in(double v, double lo, double hi)
 }
 
 /* Names the value at fault and says what is wrong with it. */
-#define BAD(v, i, ...) (at->value = (v), at->index = (i), error_set(why, -EINVAL, __VA_ARGS__))
+#define BAD(v, i, ...)                                                                \
+	(at->value = (v), at->index = (i), at->side = -1, error_set(why, -EINVAL, __VA_ARGS__))
 
 static bool name_ok(const char *s)
 {
@@ -65,20 +68,23 @@ static const char *which(const double pair[2], int i)
 }
 
 /* A node's or side part's value at fault, i its index, named from 1. */
-#define BAD_NODE(v, fmt, ...) BAD(v, i, "middle.nodes: node %zu: " fmt, i + 1, __VA_ARGS__)
+#define BAD_NODE(v, fmt, ...)                                                         \
+	(BAD(v, i, "%s: node %zu: " fmt, where, i + 1, __VA_ARGS__), at->side = side, -EINVAL)
 #define BAD_SIDE(v, fmt, ...) BAD(v, i, "sides: part %zu: " fmt, i + 1, __VA_ARGS__)
 
-static int check_nodes(const struct ori_design *d, struct ori_fault *at, struct error *why)
+/* The nodes of the midrib (side -1, where "middle.nodes") or of side part side's vein. */
+static int check_nodes(const struct ori_node *nodes, size_t nn, int side, const char *where,
+		       struct ori_fault *at, struct error *why)
 {
-	for (size_t i = 0; i < d->nnodes; i++) {
-		const struct ori_node *n = &d->nodes[i];
+	for (size_t i = 0; i < nn; i++) {
+		const struct ori_node *n = &nodes[i];
 
 		if (!(n->at > 0 && n->at < 1))
 			return BAD_NODE(ORI_VALUE_NODE_AT, "at %g is not strictly between 0 and 1",
 					n->at);
-		if (i > 0 && !(n->at > d->nodes[i - 1].at))
+		if (i > 0 && !(n->at > nodes[i - 1].at))
 			return BAD_NODE(ORI_VALUE_NODE_AT, "at %g is not beyond node %zu's %g: nodes "
-					"go outwards from O", n->at, i, d->nodes[i - 1].at);
+					"go outwards from O", n->at, i, nodes[i - 1].at);
 		for (int s = 0; s < 2; s++) {
 			if (!(n->phi[s] > 0 && n->phi[s] < 90))
 				return BAD_NODE(ORI_VALUE_NODE_PHI, "phi %g%s is not strictly between 0 "
@@ -89,7 +95,8 @@ static int check_nodes(const struct ori_design *d, struct ori_fault *at, struct 
 			if (!(n->psi[s] < n->phi[s]))
 				return BAD_NODE(ORI_VALUE_NODE_PSI, "psi %g%s is not below phi %g: the "
 						"extra mountain lies between the side vein and the "
-						"midrib", n->psi[s], which(n->psi, s), n->phi[s]);
+						"%s", n->psi[s], which(n->psi, s), n->phi[s],
+						side < 0 ? "midrib" : "vein");
 		}
 	}
 	return 0;
@@ -115,6 +122,21 @@ static int check_sides(const struct ori_design *d, struct ori_fault *at, struct 
 		if (!in(p->fork_b, 1, 80))
 			return BAD_SIDE(ORI_VALUE_FORK_B, "fork.b %g is not within 1..80 degrees",
 					p->fork_b);
+		if (p->nnodes > ORI_MAX_NODES)
+			return BAD_SIDE(ORI_VALUE_SIDE_NODES, "nodes: %zu, over %d", p->nnodes,
+					ORI_MAX_NODES);
+		if (p->nnodes > 0 && p->forks > 0)
+			return BAD_SIDE(ORI_VALUE_SIDE_NODES, "nodes with forks %d: a vein either "
+					"forks or has nodes", p->forks);
+	}
+	for (size_t j = 0; j < d->nsides; j++) {
+		char where[40];
+		int ret;
+
+		snprintf(where, sizeof(where), "sides: part %zu", j + 1);
+		if ((ret = check_nodes(d->sides[j].nodes, d->sides[j].nnodes, (int)j, where, at,
+				       why)) < 0)
+			return ret;
 	}
 	return 0;
 }
@@ -146,7 +168,8 @@ int ori_design_check(const struct ori_design *d, struct ori_fault *at, struct er
 		return BAD(ORI_VALUE_DESIGN, 0, "middle.nodes: only a fan's midrib has nodes");
 	if (d->fold == ORI_FOLD_HALF && d->nsides > 0)
 		return BAD(ORI_VALUE_DESIGN, 0, "sides: only a fan has side parts");
-	if ((ret = check_nodes(d, at, why)) < 0 || (ret = check_sides(d, at, why)) < 0)
+	if ((ret = check_nodes(d->nodes, d->nnodes, -1, "middle.nodes", at, why)) < 0 ||
+	    (ret = check_sides(d, at, why)) < 0)
 		return ret;
 	/* a fold's own keys; the other fold's keep their defaults, in range too */
 	if (!in(d->junction, 0.05, 0.95))

@@ -22,7 +22,7 @@ enum ori_value {
 	ORI_VALUE_SIZE,
 	ORI_VALUE_REST,
 	ORI_VALUE_MIDDLE, /* middle.angle */
-	ORI_VALUE_NODE_AT, /* these three: a node's, its index in nodes */
+	ORI_VALUE_NODE_AT, /* these three: a node's, its index in nodes (a side part's: side) */
 	ORI_VALUE_NODE_PHI,
 	ORI_VALUE_NODE_PSI,
 	ORI_VALUE_SIDE_ANGLE, /* these five: a side part's, its index in sides */
@@ -30,6 +30,7 @@ enum ori_value {
 	ORI_VALUE_FORK_AT,
 	ORI_VALUE_FORK_A,
 	ORI_VALUE_FORK_B,
+	ORI_VALUE_SIDE_NODES, /* a side part's nodes as a whole */
 	ORI_VALUE_JUNCTION,
 	ORI_VALUE_THETA0,
 	ORI_VALUE_WIDTH,
@@ -40,6 +41,7 @@ enum ori_value {
 struct ori_fault {
 	enum ori_value value;
 	size_t index; /* the node or side part; 0 for the others */
+	int side;     /* a side part's node: the part's index; else -1 */
 };
 
 /*

@@ -265,18 +265,19 @@ static int place(const struct ori_leaf *l, double t, const double *rho, double (
 
 static bool fits(const struct ori_leaf *l)
 {
-	return l->ncreases <= 1024 && l->nfaces <= 512 && l->nvertices <= 1024 && l->root_face >= 0;
+	return l->ncreases <= 1024 && l->nfaces <= 512 && l->nvertices <= 1024 && l->root_face >= 0 &&
+	       l->nnodes <= ORI_MAX_LEAF_NODES;
 }
 
 static void start(double (*x)[2])
 {
-	for (size_t i = 0; i < ORI_MAX_NODES; i++)
+	for (size_t i = 0; i < ORI_MAX_LEAF_NODES; i++)
 		x[i][0] = x[i][1] = VEC_PI;
 }
 
 int ori_open(const struct ori_leaf *l, double t, double (*out)[3])
 {
-	double rho[1024], x[ORI_MAX_NODES][2];
+	double rho[1024], x[ORI_MAX_LEAF_NODES][2];
 	int ret;
 
 	if (!fits(l))
@@ -290,7 +291,7 @@ int ori_open(const struct ori_leaf *l, double t, double (*out)[3])
 
 int ori_open_frames(const struct ori_leaf *l, size_t n, double (*out)[3])
 {
-	double rho[1024], x[ORI_MAX_NODES][2], t0 = 0;
+	double rho[1024], x[ORI_MAX_LEAF_NODES][2], t0 = 0;
 	int ret;
 
 	if (!fits(l) || n < 2)

@@ -111,7 +111,7 @@ struct ori_builder {
 	size_t nv;
 	struct ori_crease c[ORI_MAX_C];
 	size_t nc;
-	struct ori_node_geo nodes[ORI_MAX_NODES];
+	struct ori_node_geo nodes[ORI_MAX_LEAF_NODES];
 	size_t nnodes;
 
 	int fidx[ORI_MAX_FI];

@@ -24,16 +24,24 @@ struct reader {
 	/* the line of each value read, by ori_design_check's names and node or side part:
 	 * ori_design_check's refusal is told there */
 	unsigned long value_line[ORI_VALUE_COUNT][ITEMS];
+	/* a side part's nodes' values: [part][node][at, phi, psi] */
+	unsigned long side_node_line[ORI_MAX_SIDES][ORI_MAX_NODES][3];
 	/* the node or side part being read: its index, its name in messages, its keys seen */
 	size_t item;
-	char item_name[40];
+	char item_name[64];
 	unsigned seen;
+	/* the nodes being read: the midrib's, or side part side's (-1: the midrib's) */
+	struct ori_node *nodes;
+	int side;
 };
 
 /* Where a value was read, for ori_design_check's refusal. */
 static void note(struct reader *r, enum ori_value v, const yaml_node_t *n)
 {
-	r->value_line[v][r->item] = yaml_in_line(&r->in, n);
+	if (r->side >= 0 && v >= ORI_VALUE_NODE_AT && v <= ORI_VALUE_NODE_PSI)
+		r->side_node_line[r->side][r->item][v - ORI_VALUE_NODE_AT] = yaml_in_line(&r->in, n);
+	else
+		r->value_line[v][r->item] = yaml_in_line(&r->in, n);
 }
 
 /* One number for both sides of the midrib, or [right, left]; a number is halved when it
@@ -67,9 +75,9 @@ static int get_pair(struct reader *r, const yaml_node_t *n, const char *what, bo
 }
 
 /* "middle.nodes: node 2: at", the item's key named in a message. */
-static const char *item_key(struct reader *r, const char *k, char out[64])
+static const char *item_key(struct reader *r, const char *k, char out[96])
 {
-	snprintf(out, 64, "%s: %s", r->item_name, k);
+	snprintf(out, 96, "%s: %s", r->item_name, k);
 	return out;
 }
 
@@ -87,8 +95,8 @@ static const struct {
 static int node_pair(void *ctx, const yaml_node_t *key, const char *k, const yaml_node_t *v)
 {
 	struct reader *r = ctx;
-	struct ori_node *n = &r->d->nodes[r->item];
-	char what[64];
+	struct ori_node *n = &r->nodes[r->item];
+	char what[96];
 
 	if (!strcmp(k, "at")) {
 		r->seen |= SEEN_AT;
@@ -112,7 +120,7 @@ static int fork_pair(void *ctx, const yaml_node_t *key, const char *k, const yam
 {
 	struct reader *r = ctx;
 	struct ori_side *s = &r->d->sides[r->item];
-	char what[64];
+	char what[96];
 
 	if (!strcmp(k, "at")) {
 		note(r, ORI_VALUE_FORK_AT, v);
@@ -129,11 +137,13 @@ static int fork_pair(void *ctx, const yaml_node_t *key, const char *k, const yam
 	return yaml_in_unknown(&r->in, key, k, "fork (at, a, b)");
 }
 
+static int read_side_nodes(struct reader *r, const yaml_node_t *v);
+
 static int side_pair(void *ctx, const yaml_node_t *key, const char *k, const yaml_node_t *v)
 {
 	struct reader *r = ctx;
 	struct ori_side *s = &r->d->sides[r->item];
-	char what[64];
+	char what[96];
 
 	if (!strcmp(k, "angle")) {
 		r->seen |= SEEN_ANGLE;
@@ -146,7 +156,9 @@ static int side_pair(void *ctx, const yaml_node_t *key, const char *k, const yam
 	}
 	if (!strcmp(k, "fork"))
 		return yaml_in_pairs(&r->in, v, item_key(r, k, what), fork_pair, r);
-	return yaml_in_unknown(&r->in, key, k, "a side part (angle, forks, fork)");
+	if (!strcmp(k, "nodes"))
+		return read_side_nodes(r, v);
+	return yaml_in_unknown(&r->in, key, k, "a side part (angle, forks, fork, nodes)");
 }
 
 /* A list of at most max mappings, each read by fn into item i: the list's entries all
@@ -195,11 +207,41 @@ static int read_nodes(struct reader *r, const yaml_node_t *v)
 	int ret;
 
 	memset(r->d->nodes, 0, sizeof(r->d->nodes));
+	r->nodes = r->d->nodes;
+	r->side = -1;
 	if ((ret = read_list(r, v, "middle.nodes", "node", ORI_MAX_NODES, &r->d->nnodes, node_pair,
 			     SEEN_AT | SEEN_PHI | SEEN_PSI, lines)) < 0)
 		return ret;
 	for (size_t i = 0; i < r->d->nnodes; i++)
 		r->d->nodes[i].line = lines[i];
+	return 0;
+}
+
+/* A side part's nodes, read inside the part's own mapping: the part's place kept. */
+static int read_side_nodes(struct reader *r, const yaml_node_t *v)
+{
+	struct ori_side *p = &r->d->sides[r->item];
+	unsigned long lines[ORI_MAX_NODES] = { 0 };
+	size_t part = r->item;
+	unsigned seen = r->seen;
+	char what[80], name[64];
+	int ret;
+
+	memcpy(name, r->item_name, sizeof(name));
+	snprintf(what, sizeof(what), "%s: nodes", r->item_name);
+	memset(p->nodes, 0, sizeof(p->nodes));
+	r->nodes = p->nodes;
+	r->side = (int)part;
+	ret = read_list(r, v, what, "node", ORI_MAX_NODES, &p->nnodes, node_pair,
+			SEEN_AT | SEEN_PHI | SEEN_PSI, lines);
+	r->side = -1;
+	r->item = part;
+	r->seen = seen;
+	memcpy(r->item_name, name, sizeof(name));
+	if (ret < 0)
+		return ret;
+	for (size_t i = 0; i < p->nnodes; i++)
+		p->nodes[i].line = lines[i];
 	return 0;
 }
 
@@ -372,6 +414,17 @@ static unsigned long fault_line(const struct reader *r, const struct ori_fault *
 	size_t i = f->index < ITEMS ? f->index : 0;
 	unsigned long line = (unsigned)f->value < ORI_VALUE_COUNT ? r->value_line[f->value][i] : 0;
 
+	if (f->side >= 0 && f->side < ORI_MAX_SIDES) { /* a side part's node: its value, its item */
+		const struct ori_side *p = &d->sides[f->side];
+
+		line = 0;
+		if (i < ORI_MAX_NODES && f->value >= ORI_VALUE_NODE_AT && f->value <= ORI_VALUE_NODE_PSI)
+			line = r->side_node_line[f->side][i][f->value - ORI_VALUE_NODE_AT];
+		if (!line && i < ORI_MAX_NODES)
+			line = p->nodes[i].line;
+		if (!line)
+			line = p->line;
+	}
 	if (line)
 		return line;
 	switch (f->value) {
@@ -383,6 +436,7 @@ static unsigned long fault_line(const struct reader *r, const struct ori_fault *
 	case ORI_VALUE_NODE_PSI:
 		line = i < ORI_MAX_NODES ? d->nodes[i].line : 0;
 		break;
+	case ORI_VALUE_SIDE_NODES:
 	case ORI_VALUE_SIDE_ANGLE:
 	case ORI_VALUE_SIDE_FORKS:
 	case ORI_VALUE_FORK_AT:
@@ -420,9 +474,13 @@ static int read_root(struct reader *r, const yaml_node_t *root)
 	for (size_t i = 0; i < d->nnodes; i++)
 		if (!d->nodes[i].line)
 			d->nodes[i].line = d->line;
-	for (size_t i = 0; i < d->nsides; i++)
+	for (size_t i = 0; i < d->nsides; i++) {
 		if (!d->sides[i].line)
 			d->sides[i].line = d->line;
+		for (size_t k = 0; k < d->sides[i].nnodes; k++)
+			if (!d->sides[i].nodes[k].line)
+				d->sides[i].nodes[k].line = d->sides[i].line;
+	}
 	if ((ret = ori_design_check(d, &fault, &why)) < 0)
 		return error_at(r->in.err, ret, r->in.name, fault_line(r, &fault), "%s", why.msg);
 	return 0;
@@ -432,7 +490,7 @@ int ori_read(const char *data, size_t len, const char *name, struct ori_design *
 	     struct error *err)
 {
 	struct ori_design tmp;
-	struct reader r = { .d = &tmp };
+	struct reader r = { .d = &tmp, .side = -1 };
 	const yaml_node_t *root;
 	struct ori_leaf leaf;
 	int ret;

@@ -4,9 +4,11 @@
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "mesh.h"
+#include "ori_outline.h"
 #include "ori_kinds.h"
 #include "ori_place.h"
 #include "propagate.h"
@@ -185,12 +187,99 @@ static void test_propagate(void)
 	tree_finish(&t);
 }
 
+/* A placed leaf's outline measured (ori_outline.h): the kind's issue-24 shape, wherever and
+ * however large it is placed. Returns the measure's least slack. */
+static double check_shape(const struct leaf *lf)
+{
+	double (*p)[3] = calloc(lf->npoints, sizeof(*p)), margin = 0;
+	struct ori_outline m;
+	char why[160] = "";
+	bool ok;
+
+	CHECK(p != NULL);
+	for (size_t i = 0; i < lf->npoints; i++) {
+		p[i][0] = lf->points[i].x;
+		p[i][1] = lf->points[i].y;
+		p[i][2] = lf->points[i].z;
+	}
+	CHECK_INT(ori_outline_measure((const double(*)[3])p, lf->npoints, &m), 0);
+	ok = lf->kind == ORI_KIND_MAPLE ? ori_outline_momiji(&m, &margin, why, sizeof(why)) :
+					  ori_outline_hop(&m, &margin, why, sizeof(why));
+	if (!ok)
+		fprintf(stderr, "%s leaf: %s\n", ori_kind_name(lf->kind), why);
+	CHECK(ok);
+	free(p);
+	return margin;
+}
+
+/* Issue 24: maple and hop leaves placed on a tree keep their shape: on outlines of every
+ * size and turn (ori_place_leaf), and propagated across a tree. */
+static void test_placed_shape(void)
+{
+	static const int kinds[] = { ORI_KIND_MAPLE, ORI_KIND_HOP };
+	double worst = INFINITY;
+	size_t placed = 0;
+
+	for (size_t ki = 0; ki < 2; ki++)
+		for (int i = 0; i < 40; i++) {
+			double a = 0.37 * i, b = 0.53 * i, len = 0.03 + 0.01 * (i % 25);
+			struct vec3 ax = vec3_norm_or(vec3(cos(a) * sin(b), cos(b), sin(a) * sin(b)),
+						      vec3(0, 1, 0));
+			struct vec3 w = vec3_norm_or(vec3_cross(vec3(0.3, 0.2, 1), ax), vec3(1, 0, 0));
+			struct vec3 base = vec3(0.1 * i, 1 + 0.05 * i, -0.02 * i), pts[32];
+			const struct vec3 trunk[2] = { vec3(0, 0, 0), base };
+			const double radii[2] = { 0.05, 0.04 };
+			size_t n = oval(base, ax, w, len, pts);
+			struct tree t;
+
+			tree_init(&t);
+			CHECK_INT(tree_add_branch(&t, -1, 0, ORIGIN_SKETCH, trunk, radii, 2), 0);
+			CHECK_INT(tree_add_leaf(&t, 0, ORIGIN_SKETCH, pts, n), 0);
+			t.leaves[0].branch_t = 1.0;
+			CHECK_INT(ori_place_leaf(&t, 0, kinds[ki]), 0);
+			worst = fmin(worst, check_shape(&t.leaves[0]));
+			placed++;
+			tree_finish(&t);
+		}
+	for (size_t ki = 0; ki < 2; ki++) {
+		struct tree t;
+		const struct vec3 trunk[2] = { vec3(0, 0, 0), vec3(0, 3, 0) };
+		const double radii[2] = { 0.1, 0.05 };
+		struct vec3 pts[32];
+		size_t n;
+
+		tree_init(&t);
+		CHECK_INT(tree_add_branch(&t, -1, 0, ORIGIN_SKETCH, trunk, radii, 2), 0);
+		for (int i = 0; i < 6; i++) {
+			double y = 0.6 + 0.4 * i;
+			const struct vec3 b[2] = { vec3(0, y, 0),
+						   vec3(i % 2 ? 1 : -1, y + 0.5, 0.3 * (i % 3 - 1)) };
+			const double r[2] = { 0.03, 0.01 };
+
+			CHECK(tree_add_branch(&t, 0, y / 3.0, ORIGIN_SKETCH, b, r, 2) > 0);
+		}
+		n = oval(t.branches[1].points[1], vec3(-1, 0.5, 0.2), vec3(0, 0, 1), 0.12, pts);
+		CHECK_INT(tree_add_leaf(&t, 1, ORIGIN_SKETCH, pts, n), 0);
+		t.leaves[0].branch_t = 1.0;
+		t.leaf_kind = kinds[ki];
+		CHECK(propagate_apply(&t, 1, PROPAGATE_FIXED_COUNT) > 0);
+		for (size_t i = 1; i < t.nleaves; i++) {
+			CHECK_INT(t.leaves[i].kind, kinds[ki]);
+			worst = fmin(worst, check_shape(&t.leaves[i]));
+			placed++;
+		}
+		tree_finish(&t);
+	}
+	printf("placed maple and hop leaves: %zu measured, least slack %.3f\n", placed, worst);
+}
+
 int main(void)
 {
 	test_names();
 	test_place();
 	test_mesh();
 	test_propagate();
+	test_placed_shape();
 	ori_kinds_release();
 	return 0;
 }

@@ -57,6 +57,14 @@ static void check_same(const struct ori_design *a, const struct ori_design *b)
 
 		CHECK(p->angle == q->angle && p->forks == q->forks && p->fork_at == q->fork_at);
 		CHECK(p->fork_a == q->fork_a && p->fork_b == q->fork_b);
+		CHECK_INT(p->nnodes, q->nnodes);
+		for (size_t k = 0; k < ORI_MAX_NODES; k++) {
+			const struct ori_node *m = &p->nodes[k], *n = &q->nodes[k];
+
+			CHECK(m->at == n->at);
+			CHECK(m->phi[0] == n->phi[0] && m->phi[1] == n->phi[1]);
+			CHECK(m->psi[0] == n->psi[0] && m->psi[1] == n->psi[1]);
+		}
 	}
 	CHECK(a->junction == b->junction && a->theta0 == b->theta0);
 	CHECK(a->width == b->width && a->power == b->power);
@@ -249,6 +257,28 @@ static void test_forms(void)
 	} else {
 		CHECK(a.nodes[0].phi[0] == 55 && a.nodes[0].phi[1] == 56);
 	}
+	/* a side part's vein with nodes: block and flow, a number or [right, left]; the lines
+	 * of the part and of each node */
+	read_ok("edaha-leaf: 1\n"
+		"sides:\n"
+		"  - angle: 50\n"
+		"    nodes:\n"
+		"      - {at: 0.5, phi: 30, psi: 22}\n"
+		"      -\n"
+		"        at: 0.7\n"
+		"        phi: 28\n"
+		"        psi: 20\n"
+		"  - angle: 40\n", &a);
+	CHECK_INT(a.nsides, 2);
+	CHECK_INT(a.sides[0].nnodes, 2);
+	CHECK_INT(a.sides[1].nnodes, 0);
+	CHECK(a.sides[0].nodes[0].at == 0.5 && a.sides[0].nodes[0].phi[1] == 30);
+	CHECK(a.sides[0].nodes[1].at == 0.7 && a.sides[0].nodes[1].psi[0] == 20);
+	CHECK(a.sides[0].line == 3 && a.sides[0].nodes[0].line == 5 &&
+	      a.sides[0].nodes[1].line == 7 && a.sides[1].line == 10);
+	read_ok("edaha-leaf: 1\nsides: [{angle: 50, nodes: [{at: 0.5, phi: [30, 30], psi: 22}, "
+		"{at: 0.7, phi: 28, psi: [20, 20]}]}, {angle: 40}]\n", &b);
+	check_same(&a, &b);
 	/* no error to fill */
 	CHECK_INT(ori_read("size: 1\n", 8, "t", &a, NULL), -EINVAL);
 }
@@ -282,25 +312,34 @@ static void test_presets(void)
 	CHECK(d.size == 0.06 && d.rest == 0.9 && d.middle[0] == 90 && d.middle[1] == 90);
 	CHECK(d.nnodes == 0 && d.nsides == 0 && d.width == 0.32 && d.power == 0.8);
 
+	/* issue 24: a momiji, seven lobes, two nodes on the five upper lobes' veins and one on
+	 * the outermost pair's: 74 triangles a leaf */
 	CHECK_INT(ori_preset("maple", &d, &err), 0);
 	CHECK_INT(d.fold, ORI_FOLD_FAN);
-	CHECK(d.size == 0.08 && d.middle[0] == 25 && d.middle[1] == 25 && d.nnodes == 0);
-	CHECK_INT(d.nsides, 2);
-	CHECK(d.sides[0].angle == 55 && d.sides[1].angle == 45);
-	CHECK(d.sides[0].forks == 0 && d.sides[1].forks == 0);
-	CHECK(d.junction == 0.38 && d.theta0 == 200);
-	/* 50 + 2 (55 + 45) degrees */
-	CHECK(d.middle[0] + d.middle[1] + 2 * (d.sides[0].angle + d.sides[1].angle) == 250);
+	CHECK(d.size == 0.08 && d.middle[0] == 18 && d.middle[1] == 18);
+	CHECK_INT(d.nnodes, 2);
+	CHECK(d.nodes[0].at == 0.5 && d.nodes[0].phi[0] == 30 && d.nodes[0].psi[0] == 22);
+	CHECK_INT(d.nsides, 3);
+	CHECK(d.sides[0].angle == 38 && d.sides[1].angle == 38 && d.sides[2].angle == 38);
+	CHECK(d.sides[0].nnodes == 2 && d.sides[1].nnodes == 1 && d.sides[2].nnodes == 1);
+	CHECK(d.sides[0].nodes[1].at == 0.72 && d.sides[2].nodes[0].at == 0.6);
+	CHECK(d.sides[0].forks == 0 && d.sides[1].forks == 0 && d.sides[2].forks == 0);
+	CHECK(d.junction == 0.25 && d.theta0 == 400);
+	/* 36 + 2 (38 + 38 + 38) degrees */
+	CHECK(d.middle[0] + d.middle[1] + 2 * (d.sides[0].angle + d.sides[1].angle +
+					       d.sides[2].angle) == 264);
 
 	CHECK_INT(ori_preset("hop", &d, &err), 0);
-	/* one node on the midrib, each side part's vein forked once: 32 triangles a leaf */
+	/* issue 24: three nodes on the midrib, two on the side lobes' veins, one on the base's
+	 * halves': 64 triangles a leaf */
 	CHECK(strcmp(d.name, "hop") == 0 && d.fold == ORI_FOLD_FAN && d.size == 0.09);
-	CHECK_INT(d.nnodes, 1);
-	CHECK(d.nodes[0].at == 0.35 && d.nodes[0].phi[0] == 55 && d.nodes[0].psi[0] == 28);
+	CHECK_INT(d.nnodes, 3);
+	CHECK(d.nodes[0].at == 0.4 && d.nodes[0].phi[0] == 58 && d.nodes[0].psi[0] == 42);
 	CHECK_INT(d.nsides, 2);
-	CHECK(d.sides[0].forks == 1 && d.sides[1].forks == 1);
-	CHECK(d.junction == 0.45 && d.theta0 == 360);
-	CHECK(d.middle[0] + d.middle[1] + 2 * (d.sides[0].angle + d.sides[1].angle) == 310);
+	CHECK(d.sides[0].nnodes == 2 && d.sides[1].nnodes == 1);
+	CHECK(d.sides[0].forks == 0 && d.sides[1].forks == 0);
+	CHECK(d.junction == 0.38 && d.theta0 == 290);
+	CHECK(d.middle[0] + d.middle[1] + 2 * (d.sides[0].angle + d.sides[1].angle) == 350);
 
 	memset(&d, 0x5a, sizeof(d));
 	CHECK_INT(ori_preset("oak", &d, &err), -EINVAL);
