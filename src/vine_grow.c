@@ -11,10 +11,12 @@
  * (sampled so that no point moves more than r / 2 between samples, then bisected to
  * within 0.01 r), the touching point nearest the pivot becomes the pivot, and the sweep
  * goes on about it with the angle left. A new point that would come closer than r to the
- * support is turned back against the twining direction (about the vertical through the
- * tip, the least turn that clears it): the thesis moves only the pivot and lets the stem
- * sink in; edaha keeps every point r clear. On a convex support that lays each point on
- * the surface r out, so the twined stem is a helix leaning theta_p.
+ * support, or that the step to it would reach through the support (l/d may exceed 2r, and
+ * a point deep inside a thick support is r clear too), is turned back against the
+ * twining direction (about the vertical through the tip, the least turn that clears it):
+ * the thesis moves only the pivot and lets the stem sink in; edaha keeps every point r
+ * clear and outside. On a convex support that lays each point on the surface r out, so
+ * the twined stem is a helix leaning theta_p.
  *
  * Apical dominance: an apex whose rod touched nothing for two internodes stops, and the
  * main axis's next bud from the root, at node U + 1, U + 2, ..., grows as the new apex
@@ -63,6 +65,17 @@ static double seg(const struct vine *v)
 static bool clear(const struct vine_support *s, const struct vine *v, struct vec3 p)
 {
 	return !s || vine_support_distance(s, p, v->p.radius, NULL, NULL) >= v->p.radius;
+}
+
+/*
+ * A new point p, l/d from the tip: clear, and the segment to it crosses no triangle. A
+ * point is a step away from the last, more than 2r when l/d is: clear alone would take one
+ * deep inside a thick support (a bar, a trunk) as clear as one outside it.
+ */
+static bool clear_step(const struct vine_support *s, const struct vine *v, struct vec3 tip,
+		       struct vec3 p)
+{
+	return clear(s, v, p) && (!s || !vine_support_crosses(s, tip, p));
 }
 
 void vine_init(struct vine *v, const struct vine_params *p, struct vec3 plant)
@@ -277,6 +290,12 @@ static bool sweep(struct vine *v, const struct vine_support *s, struct vine_shoo
  * underside rather than sinking into it. False when nothing clears.
  */
 #define VINE_SLIDE_DEG 6.0
+/* The point l/d from tip leaning th radians at azimuth az. */
+static struct vec3 step_point(const struct vine *v, struct vec3 tip, double th, double az)
+{
+	return vec3_add(tip, vec3_scale(lean_dir(th, az), seg(v)));
+}
+
 static bool unwind(const struct vine *v, const struct vine_support *s, struct vec3 tip,
 		   double az, struct vec3 *dir, double *az_out)
 {
@@ -291,8 +310,7 @@ static bool unwind(const struct vine *v, const struct vine_support *s, struct ve
 			double sg = way == 0 ? -twist(v) : twist(v), lo = 0, hi = -1;
 
 			for (double a = fmin(step, VEC_PI);; a = fmin(a + step, VEC_PI)) {
-				if (clear(s, v, vec3_add(tip, vec3_scale(lean_dir(th, az + sg * a),
-									 seg(v))))) {
+				if (clear_step(s, v, tip, step_point(v, tip, th, az + sg * a))) {
 					hi = a;
 					break;
 				}
@@ -305,8 +323,7 @@ static bool unwind(const struct vine *v, const struct vine_support *s, struct ve
 			while ((hi - lo) * reach > VINE_CONTACT_PRECISION * r) {
 				double mid = 0.5 * (lo + hi);
 
-				if (clear(s, v, vec3_add(tip, vec3_scale(lean_dir(th, az + sg * mid),
-									 seg(v)))))
+				if (clear_step(s, v, tip, step_point(v, tip, th, az + sg * mid)))
 					hi = mid;
 				else
 					lo = mid;
@@ -363,7 +380,7 @@ static int step(struct vine *v, const struct vine_support *s)
 		return -ENOMEM;
 	if (tip < sh->free_until) {
 		q = vec3_add(sh->axis[tip], vec3(0, seg(v), 0));
-		if (clear(s, v, q)) {
+		if (clear_step(s, v, sh->axis[tip], q)) {
 			sh->axis[sh->n] = q;
 			sh->contact[sh->n++] = 0;
 			v->points++;
@@ -374,7 +391,7 @@ static int step(struct vine *v, const struct vine_support *s)
 		sh->pivot = tip;
 	}
 	q = vec3_add(sh->axis[tip], vec3_scale(rod_dir(v, sh->azimuth), seg(v)));
-	if (!clear(s, v, q)) {
+	if (!clear_step(s, v, sh->axis[tip], q)) {
 		struct vec3 dir;
 		double az;
 

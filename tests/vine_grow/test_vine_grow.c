@@ -127,7 +127,37 @@ static void test_out_of_reach(void)
 	vine_support_destroy(s);
 }
 
-/* A cross (a bar through the pole at 0.5 m) and a T (the bar on top at 0.6 m). */
+/*
+ * Every raw point of v at least r (to rounding) outside the cylinders: a pole of radius R
+ * on the y axis from 0 to H, and a bar of radius rb along x from x0 to x1 at height yb;
+ * returns the least clearance over r. Measured from the cylinders themselves (32 sides:
+ * their faces R cos(pi / 32) out), not the support's index.
+ */
+static double outside_cross(const struct vine *v, double R, double H, double rb, double yb,
+			    double x0, double x1)
+{
+	double r = v->p.radius, worst = INFINITY, face = cos(VEC_PI / 32);
+
+	for (size_t k = 0; k < v->nshoots; k++)
+		for (size_t i = 1; i < v->shoots[k].n; i++) {
+			struct vec3 p = v->shoots[k].axis[i];
+			double dp = p.y >= 0 && p.y <= H ? hypot(p.x, p.z) - R * face : INFINITY;
+			double db = p.x >= x0 && p.x <= x1 ? hypot(p.y - yb, p.z) - rb * face : INFINITY;
+			double d = fmin(dp, db);
+
+			worst = fmin(worst, d / r);
+			if (!(d >= (1 - 1e-6) * r - 0.01 * R))
+				fprintf(stderr, "shoot %zu point %zu (%.5f %.5f %.5f): %.3f r from the "
+					"cylinders' faces\n", k, i, p.x, p.y, p.z, d / r);
+			CHECK(d >= (1 - 1e-6) * r - 0.01 * R);
+		}
+	return worst;
+}
+
+/* A cross (a bar through the pole at 0.5 m) and a T (the bar on top at 0.6 m); the raw
+ * axis never inside either (the command line's cross, its bar as thick as the pole, took a
+ * left-twining stem 3.4 mm into the bar: a step of l/d = 7.5 mm reached through the
+ * surface to a point r clear inside). */
 static void test_cross_and_t(void)
 {
 	struct mesh_build m = { 0 };
@@ -146,8 +176,24 @@ static void test_cross_and_t(void)
 	printf("cross: the main axis reaches %.3f m (the junction at 0.5 m, the pole's top 1.2 m)\n",
 	       top);
 	CHECK(top > 1.0); /* twined past the junction, up the upper arm */
+	outside_cross(&v, 0.02, 1.2, 0.015, 0.5, -0.3, 0.3);
 	vine_finish(&v);
 	vine_support_destroy(s);
+
+	/* the command line's cross, both ways */
+	for (int tw = 0; tw < 2; tw++) {
+		struct vine_params q = params(18, tw ? VINE_RIGHT : VINE_LEFT, 60);
+
+		cylinder(&m, 0.02, 1.0, 32, vec3(0, 0, 0), 1);
+		cylinder(&m, 0.02, 0.6, 32, vec3(-0.3, 0.5, 0), 0);
+		s = support_of(&m);
+		vine_init(&v, &q, vec3(0.023, 0, 0));
+		CHECK_INT(vine_grow(&v, s, 1e9), 0);
+		printf("the command line's cross, %s: the raw axis %.4f r outside it at worst\n",
+		       tw ? "right" : "left", outside_cross(&v, 0.02, 1.0, 0.02, 0.5, -0.3, 0.3));
+		vine_finish(&v);
+		vine_support_destroy(s);
+	}
 
 	cylinder(&m, 0.02, 0.6, 32, vec3(0, 0, 0), 1);
 	cylinder(&m, 0.015, 0.6, 32, vec3(-0.3, 0.615, 0), 0);
@@ -160,6 +206,7 @@ static void test_cross_and_t(void)
 	printf("T: the main axis stops at %.3f m (the bar's top at 0.63 m)\n", top);
 	CHECK(v.shoots[0].stopped);
 	CHECK(top > 0.63 && top < 0.63 + 3 * p.internode);
+	outside_cross(&v, 0.02, 0.6, 0.015, 0.615, -0.3, 0.3);
 	vine_finish(&v);
 	vine_support_destroy(s);
 }
