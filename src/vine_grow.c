@@ -16,7 +16,8 @@
  * twining direction (about the vertical through the tip, the least turn that clears it):
  * the thesis moves only the pivot and lets the stem sink in; edaha keeps every point r
  * clear and outside. On a convex support that lays each point on the surface r out, so
- * the twined stem is a helix leaning theta_p.
+ * the twined stem is a helix leaning theta_p. Then vine_clear (vine_shape.c) keeps the
+ * drawn, smoothed axis clear too.
  *
  * Apical dominance: an apex whose rod touched nothing for two internodes stops, and the
  * main axis's next bud from the root, at node U + 1, U + 2, ..., grows as the new apex
@@ -92,6 +93,8 @@ void vine_finish(struct vine *v)
 	for (size_t i = 0; i < v->nshoots; i++) {
 		free(v->shoots[i].axis);
 		free(v->shoots[i].contact);
+		free(v->shoots[i].smooth);
+		free(v->shoots[i].pull);
 	}
 	free(v->shoots);
 	memset(v, 0, sizeof(*v));
@@ -115,18 +118,29 @@ int vine_copy(struct vine *dst, const struct vine *src)
 		const struct vine_shoot *s = &src->shoots[i];
 		struct vine_shoot *d = &dst->shoots[i];
 
+		bool clears = s->n && s->smooth && s->pull;
+
 		*d = *s;
 		d->cap = s->n;
 		d->axis = s->n ? malloc(s->n * sizeof(*d->axis)) : NULL;
 		d->contact = s->n ? malloc(s->n * sizeof(*d->contact)) : NULL;
+		d->smooth = clears ? malloc(s->n * sizeof(*d->smooth)) : NULL;
+		d->pull = clears ? malloc(s->n * sizeof(*d->pull)) : NULL;
 		dst->nshoots++;
-		if (s->n && (!d->axis || !d->contact)) {
+		if ((s->n && (!d->axis || !d->contact)) || (clears && (!d->smooth || !d->pull))) {
 			vine_finish(dst);
 			return -ENOMEM;
 		}
 		if (s->n) {
 			memcpy(d->axis, s->axis, s->n * sizeof(*d->axis));
 			memcpy(d->contact, s->contact, s->n * sizeof(*d->contact));
+		}
+		if (clears) {
+			/* the rest were never written */
+			memcpy(d->smooth, s->smooth, s->cleared * sizeof(*d->smooth));
+			memcpy(d->pull, s->pull, s->cleared * sizeof(*d->pull));
+		} else {
+			d->cleared = 0;
 		}
 	}
 	return 0;
@@ -136,8 +150,13 @@ size_t vine_bytes(const struct vine *v)
 {
 	size_t n = v->cap * sizeof(*v->shoots);
 
-	for (size_t i = 0; i < v->nshoots; i++)
-		n += v->shoots[i].cap * (sizeof(struct vec3) + 1);
+	for (size_t i = 0; i < v->nshoots; i++) {
+		const struct vine_shoot *sh = &v->shoots[i];
+
+		n += sh->cap * (sizeof(struct vec3) + 1);
+		if (sh->smooth)
+			n += sh->cap * (sizeof(struct vec3) + sizeof(double));
+	}
 	return n;
 }
 
@@ -153,12 +172,13 @@ size_t vine_shoot_nodes(const struct vine *v, size_t shoot)
 	return sh->n ? (sh->n - 1) / (size_t)v->p.points_per_internode : 0;
 }
 
-/* Room for one more point on sh. */
+/* Room for one more point on sh, in every per-point array (cap moves once all have it). */
 static int reserve_point(struct vine_shoot *sh)
 {
 	size_t cap;
 	struct vec3 *a;
 	uint8_t *c;
+	double *w;
 
 	if (sh->n < sh->cap)
 		return 0;
@@ -171,6 +191,14 @@ static int reserve_point(struct vine_shoot *sh)
 	if (!c)
 		return -ENOMEM;
 	sh->contact = c;
+	a = realloc(sh->smooth, cap * sizeof(*a));
+	if (!a)
+		return -ENOMEM;
+	sh->smooth = a;
+	w = realloc(sh->pull, cap * sizeof(*w));
+	if (!w)
+		return -ENOMEM;
+	sh->pull = w;
 	sh->cap = cap;
 	return 0;
 }
@@ -199,6 +227,8 @@ static int add_shoot(struct vine *v, int parent, int node, struct vec3 root, dou
 	if (reserve_point(sh) < 0) {
 		free(sh->axis);
 		free(sh->contact);
+		free(sh->smooth);
+		free(sh->pull);
 		return -ENOMEM;
 	}
 	sh->axis[0] = root;
@@ -453,5 +483,6 @@ int vine_grow(struct vine *v, const struct vine_support *s, double until)
 			return ret;
 		v->steps++;
 	}
-	return 0;
+	/* the smoothing may bring the drawn stem nearer than the raw axis: keep it clear */
+	return vine_clear(v, s);
 }
