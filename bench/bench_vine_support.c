@@ -10,7 +10,10 @@
  * pole, one after the other as a growth asks them: 8,000 axis points of a helix whose
  * axis is 2.5 r from the bark (the stem 1.5 r off it), 30 queries each within 2 r of the
  * axis point (a box of side 4 r about it), against the issue's 100 ms for the whole
- * growth. Prints medians and growth with size.
+ * growth. Then the crossing query (vine_support_crosses): does a step of l/d = 7.5 mm (the
+ * default vine's) from a point 2 r off the surface, in a random direction, meet a
+ * triangle; a growth asks it for each new point, and for each smoothed point it moves.
+ * Prints medians and growth with size.
  */
 #include <math.h>
 #include <stdint.h>
@@ -27,6 +30,8 @@
 #define POLE_R 0.05
 #define POLE_H 2.0
 #define SPHERE_R 0.3
+#define STEP 0.0075 /* l/d: a new axis point's step */
+#define DIRS 64
 
 struct mesh {
 	float *pos;
@@ -40,6 +45,7 @@ struct job {
 	struct vec3 *pool;
 	size_t next;
 	double max;
+	struct vec3 dirs[DIRS]; /* the crossing query's steps */
 };
 
 static volatile double sink;
@@ -212,11 +218,25 @@ static void queries(void *arg)
 	sink = sum;
 }
 
+static void crossings(void *arg)
+{
+	struct job *j = arg;
+	int met = 0;
+
+	for (int i = 0; i < QUERIES; i++) {
+		struct vec3 p = j->pool[j->next];
+
+		met += vine_support_crosses(j->s, p, vec3_add(p, j->dirs[(size_t)i % DIRS]));
+		j->next = (j->next + 1) % POOL;
+	}
+	sink = met;
+}
+
 static void shape(const char *name, void (*make)(struct mesh *, size_t), struct vec3 centre)
 {
 	static const double offs[] = { 0.5 * R, 2 * R, 20 * R };
 	static const size_t sizes[] = { 1000, 10000, 100000 };
-	double pb = 0, ptb = 0, pq[3] = { 0 }, ptq[3] = { 0 };
+	double pb = 0, ptb = 0, pq[4] = { 0 }, ptq[4] = { 0 };
 
 	printf("# %s: the build (ms), and %d queries with max 4 r (ms; = us a query)\n", name,
 	       QUERIES);
@@ -236,6 +256,22 @@ static void shape(const char *name, void (*make)(struct mesh *, size_t), struct 
 			snprintf(row, sizeof(row), "  query at %g r", offs[o] / R);
 			bench_row(row, (double)j.m.nt, bench_run(queries, &j, bench_reps(3 * POOL / QUERIES)),
 				  &pq[o], &ptq[o]);
+			free(j.pool);
+		}
+		{
+			struct rng r;
+
+			rng_seed(&r, 40);
+			for (int d = 0; d < DIRS; d++) {
+				struct vec3 u = vec3(rng_range(&r, -1, 1), rng_range(&r, -1, 1),
+						     rng_range(&r, -1, 1));
+
+				j.dirs[d] = vec3_scale(vec3_norm_or(u, vec3(0, 1, 0)), STEP);
+			}
+			j.pool = query_pool(&j.m, 2 * R, centre, 20);
+			j.next = 0;
+			bench_row("  crossing a step from 2 r", (double)j.m.nt,
+				  bench_run(crossings, &j, 3 * POOL / QUERIES), &pq[3], &ptq[3]);
 			free(j.pool);
 		}
 		vine_support_destroy(j.s);

@@ -88,6 +88,15 @@ struct vine_shoot {
 	size_t since_touch; /* points added since the rod last touched the support */
 	int leaves_lost;    /* a leaf less at node `node` of the parent: this shoot's bud */
 	bool stopped;
+	/* The drawn axis kept clear of the support (vine_grow; docs/vines.md "Clear of the
+	 * support"): point i is drawn at axis[i] + pull[i] (S_i - axis[i]), S_i its smoothed
+	 * point, which smooth[i] holds as it was when pull[i] was found; pull 1 draws it
+	 * smoothed, less pulls it back towards its raw point to stay r clear. Points from
+	 * `cleared` on (all of them on a shoot made by hand: NULL arrays) are drawn smoothed. */
+	struct vec3 *smooth;
+	double *pull;
+	size_t cleared;
+	bool cleared_stopped; /* `stopped` when they were cleared */
 };
 
 /* A vine grown from a planting point around a support (vine_grow.c). */
@@ -113,7 +122,9 @@ size_t vine_bytes(const struct vine *v);
 /*
  * Grows v to simulated time `until` (units of step_time): every whole step not yet taken,
  * in order, so growing to 3.5 steps then to 7 gives what growing to 7 at once does. s may
- * be NULL (nothing to climb). 0 or -ENOMEM (v as it was after the last whole step).
+ * be NULL (nothing to climb). Then keeps the drawn axes clear of s (vine_clear). 0 or
+ * -ENOMEM (v as it was after the last whole step; points not yet cleared are drawn
+ * smoothed until a later call clears them).
  */
 int vine_grow(struct vine *v, const struct vine_support *s, double until);
 /* Whether growth has ended: the budget spent, or no apex nor bud left. */
@@ -126,10 +137,20 @@ size_t vine_shoot_nodes(const struct vine *v, size_t shoot);
  * cubic spline where the direction's azimuth jumps by 45 degrees or more, over +-d/2
  * points; the free parts bent by seeded cubic Bezier offsets within +-5 l/d,
  * horizontally: the cotyledon node, the non-twining internodes, a stopped apex's last 2d
- * points), as many points as the raw axis. *out allocated (the caller frees). 0 or
- * -ENOMEM. The raw axis never depends on the seed; only these do.
+ * points), kept clear of the support it grew on (each point pulled back towards its raw
+ * one as the shoot's `pull` says), as many points as the raw axis. *out allocated (the
+ * caller frees). 0 or -ENOMEM. The raw axis never depends on the seed; only these do.
  */
 int vine_smooth(const struct vine *v, size_t shoot, struct vec3 **out);
+/*
+ * Keeps the drawn axes clear of s (vine_grow does, after growing): every smoothed point
+ * that changed since the last call, but a shoot's root, is drawn where it is if it lies r
+ * or more from s and the way to it from its raw point crosses no triangle of s; else it
+ * is pulled back along that way to the farthest point found so (bisected to 0.01 r): at
+ * worst its raw point, which the growth kept r clear. Sets the shoots' smooth, pull and
+ * cleared. s NULL: nothing to do. 0 or -ENOMEM (what was not cleared stays smoothed).
+ */
+int vine_clear(struct vine *v, const struct vine_support *s);
 
 /* A leaf (or cotyledon): a square of half-diagonal leaf_size, a corner at its node. */
 struct vine_leaf {

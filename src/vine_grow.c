@@ -11,10 +11,13 @@
  * (sampled so that no point moves more than r / 2 between samples, then bisected to
  * within 0.01 r), the touching point nearest the pivot becomes the pivot, and the sweep
  * goes on about it with the angle left. A new point that would come closer than r to the
- * support is turned back against the twining direction (about the vertical through the
- * tip, the least turn that clears it): the thesis moves only the pivot and lets the stem
- * sink in; edaha keeps every point r clear. On a convex support that lays each point on
- * the surface r out, so the twined stem is a helix leaning theta_p.
+ * support, or that the step to it would reach through the support (l/d may exceed 2r, and
+ * a point deep inside a thick support is r clear too), is turned back against the
+ * twining direction (about the vertical through the tip, the least turn that clears it):
+ * the thesis moves only the pivot and lets the stem sink in; edaha keeps every point r
+ * clear and outside. On a convex support that lays each point on the surface r out, so
+ * the twined stem is a helix leaning theta_p. Then vine_clear (vine_shape.c) keeps the
+ * drawn, smoothed axis clear too.
  *
  * Apical dominance: an apex whose rod touched nothing for two internodes stops, and the
  * main axis's next bud from the root, at node U + 1, U + 2, ..., grows as the new apex
@@ -65,6 +68,17 @@ static bool clear(const struct vine_support *s, const struct vine *v, struct vec
 	return !s || vine_support_distance(s, p, v->p.radius, NULL, NULL) >= v->p.radius;
 }
 
+/*
+ * A new point p, l/d from the tip: clear, and the segment to it crosses no triangle. A
+ * point is a step away from the last, more than 2r when l/d is: clear alone would take one
+ * deep inside a thick support (a bar, a trunk) as clear as one outside it.
+ */
+static bool clear_step(const struct vine_support *s, const struct vine *v, struct vec3 tip,
+		       struct vec3 p)
+{
+	return clear(s, v, p) && (!s || !vine_support_crosses(s, tip, p));
+}
+
 void vine_init(struct vine *v, const struct vine_params *p, struct vec3 plant)
 {
 	memset(v, 0, sizeof(*v));
@@ -79,6 +93,8 @@ void vine_finish(struct vine *v)
 	for (size_t i = 0; i < v->nshoots; i++) {
 		free(v->shoots[i].axis);
 		free(v->shoots[i].contact);
+		free(v->shoots[i].smooth);
+		free(v->shoots[i].pull);
 	}
 	free(v->shoots);
 	memset(v, 0, sizeof(*v));
@@ -102,18 +118,29 @@ int vine_copy(struct vine *dst, const struct vine *src)
 		const struct vine_shoot *s = &src->shoots[i];
 		struct vine_shoot *d = &dst->shoots[i];
 
+		bool clears = s->n && s->smooth && s->pull;
+
 		*d = *s;
 		d->cap = s->n;
 		d->axis = s->n ? malloc(s->n * sizeof(*d->axis)) : NULL;
 		d->contact = s->n ? malloc(s->n * sizeof(*d->contact)) : NULL;
+		d->smooth = clears ? malloc(s->n * sizeof(*d->smooth)) : NULL;
+		d->pull = clears ? malloc(s->n * sizeof(*d->pull)) : NULL;
 		dst->nshoots++;
-		if (s->n && (!d->axis || !d->contact)) {
+		if ((s->n && (!d->axis || !d->contact)) || (clears && (!d->smooth || !d->pull))) {
 			vine_finish(dst);
 			return -ENOMEM;
 		}
 		if (s->n) {
 			memcpy(d->axis, s->axis, s->n * sizeof(*d->axis));
 			memcpy(d->contact, s->contact, s->n * sizeof(*d->contact));
+		}
+		if (clears) {
+			/* the rest were never written */
+			memcpy(d->smooth, s->smooth, s->cleared * sizeof(*d->smooth));
+			memcpy(d->pull, s->pull, s->cleared * sizeof(*d->pull));
+		} else {
+			d->cleared = 0;
 		}
 	}
 	return 0;
@@ -123,8 +150,13 @@ size_t vine_bytes(const struct vine *v)
 {
 	size_t n = v->cap * sizeof(*v->shoots);
 
-	for (size_t i = 0; i < v->nshoots; i++)
-		n += v->shoots[i].cap * (sizeof(struct vec3) + 1);
+	for (size_t i = 0; i < v->nshoots; i++) {
+		const struct vine_shoot *sh = &v->shoots[i];
+
+		n += sh->cap * (sizeof(struct vec3) + 1);
+		if (sh->smooth)
+			n += sh->cap * (sizeof(struct vec3) + sizeof(double));
+	}
 	return n;
 }
 
@@ -140,12 +172,13 @@ size_t vine_shoot_nodes(const struct vine *v, size_t shoot)
 	return sh->n ? (sh->n - 1) / (size_t)v->p.points_per_internode : 0;
 }
 
-/* Room for one more point on sh. */
+/* Room for one more point on sh, in every per-point array (cap moves once all have it). */
 static int reserve_point(struct vine_shoot *sh)
 {
 	size_t cap;
 	struct vec3 *a;
 	uint8_t *c;
+	double *w;
 
 	if (sh->n < sh->cap)
 		return 0;
@@ -158,6 +191,14 @@ static int reserve_point(struct vine_shoot *sh)
 	if (!c)
 		return -ENOMEM;
 	sh->contact = c;
+	a = realloc(sh->smooth, cap * sizeof(*a));
+	if (!a)
+		return -ENOMEM;
+	sh->smooth = a;
+	w = realloc(sh->pull, cap * sizeof(*w));
+	if (!w)
+		return -ENOMEM;
+	sh->pull = w;
 	sh->cap = cap;
 	return 0;
 }
@@ -186,6 +227,8 @@ static int add_shoot(struct vine *v, int parent, int node, struct vec3 root, dou
 	if (reserve_point(sh) < 0) {
 		free(sh->axis);
 		free(sh->contact);
+		free(sh->smooth);
+		free(sh->pull);
 		return -ENOMEM;
 	}
 	sh->axis[0] = root;
@@ -277,6 +320,12 @@ static bool sweep(struct vine *v, const struct vine_support *s, struct vine_shoo
  * underside rather than sinking into it. False when nothing clears.
  */
 #define VINE_SLIDE_DEG 6.0
+/* The point l/d from tip leaning th radians at azimuth az. */
+static struct vec3 step_point(const struct vine *v, struct vec3 tip, double th, double az)
+{
+	return vec3_add(tip, vec3_scale(lean_dir(th, az), seg(v)));
+}
+
 static bool unwind(const struct vine *v, const struct vine_support *s, struct vec3 tip,
 		   double az, struct vec3 *dir, double *az_out)
 {
@@ -291,8 +340,7 @@ static bool unwind(const struct vine *v, const struct vine_support *s, struct ve
 			double sg = way == 0 ? -twist(v) : twist(v), lo = 0, hi = -1;
 
 			for (double a = fmin(step, VEC_PI);; a = fmin(a + step, VEC_PI)) {
-				if (clear(s, v, vec3_add(tip, vec3_scale(lean_dir(th, az + sg * a),
-									 seg(v))))) {
+				if (clear_step(s, v, tip, step_point(v, tip, th, az + sg * a))) {
 					hi = a;
 					break;
 				}
@@ -305,8 +353,7 @@ static bool unwind(const struct vine *v, const struct vine_support *s, struct ve
 			while ((hi - lo) * reach > VINE_CONTACT_PRECISION * r) {
 				double mid = 0.5 * (lo + hi);
 
-				if (clear(s, v, vec3_add(tip, vec3_scale(lean_dir(th, az + sg * mid),
-									 seg(v)))))
+				if (clear_step(s, v, tip, step_point(v, tip, th, az + sg * mid)))
 					hi = mid;
 				else
 					lo = mid;
@@ -363,7 +410,7 @@ static int step(struct vine *v, const struct vine_support *s)
 		return -ENOMEM;
 	if (tip < sh->free_until) {
 		q = vec3_add(sh->axis[tip], vec3(0, seg(v), 0));
-		if (clear(s, v, q)) {
+		if (clear_step(s, v, sh->axis[tip], q)) {
 			sh->axis[sh->n] = q;
 			sh->contact[sh->n++] = 0;
 			v->points++;
@@ -374,7 +421,7 @@ static int step(struct vine *v, const struct vine_support *s)
 		sh->pivot = tip;
 	}
 	q = vec3_add(sh->axis[tip], vec3_scale(rod_dir(v, sh->azimuth), seg(v)));
-	if (!clear(s, v, q)) {
+	if (!clear_step(s, v, sh->axis[tip], q)) {
 		struct vec3 dir;
 		double az;
 
@@ -436,5 +483,6 @@ int vine_grow(struct vine *v, const struct vine_support *s, double until)
 			return ret;
 		v->steps++;
 	}
-	return 0;
+	/* the smoothing may bring the drawn stem nearer than the raw axis: keep it clear */
+	return vine_clear(v, s);
 }

@@ -10,6 +10,12 @@
  * tangents. The free parts (the main axis's first, non-twining internodes with the
  * cotyledon node; a stopped apex's last 2d points), straight and vertical or circling in
  * the air, are bent by horizontal cubic Bezier offsets within +-5 l/d, drawn from the seed.
+ *
+ * Neither knows the support, so what is drawn is the smoothed axis kept clear of it
+ * (vine_clear, which vine_grow calls while it has the support): a smoothed point nearer
+ * than r, or beyond the surface from its raw point, is pulled back towards the raw point
+ * (which the growth kept r clear) until it is neither; the shoot keeps how far (`pull`)
+ * with the smoothed point it was found for (`smooth`), and every drawing applies it.
  */
 #include <errno.h>
 #include <math.h>
@@ -20,6 +26,7 @@
 #include "mesh.h"
 #include "rng.h"
 #include "vine.h"
+#include "vine_support.h"
 
 /* The azimuth jump that is smoothed over. */
 #define VINE_SMOOTH_JUMP_DEG 45.0
@@ -29,6 +36,10 @@
 #define VINE_BEND_SEGMENTS 5.0
 /* The tip's cone is this many radii long. */
 #define VINE_TIP_LENGTH 1.0
+/* A smoothed point pulled back clear of the support is found to this fraction of r along
+ * its way, in at most this many halvings. */
+#define VINE_PULL_PRECISION 0.01
+#define VINE_PULL_STEPS 24
 
 static size_t points_per_internode(const struct vine *v)
 {
@@ -161,55 +172,86 @@ static void bend_free(const struct vine *v, size_t shoot, struct vec3 *out)
 	bend(v, shoot, 1, tip, last, true, out);
 }
 
+/* The parent's node point a lateral grows from (its raw index), or none. */
+static bool parent_node(const struct vine *v, size_t shoot, size_t *at)
+{
+	const struct vine_shoot *sh = &v->shoots[shoot];
+
+	if (sh->parent < 0 || (size_t)sh->parent >= shoot || sh->node < 0)
+		return false;
+	*at = (size_t)sh->node * points_per_internode(v);
+	return *at < v->shoots[sh->parent].n;
+}
+
 /*
- * A shoot's smoothed axis into out (sh->n points). parent: the parent's smoothed axis, or
- * NULL: a lateral's root moves with its parent's node point (the parent's bend or spline
- * may have moved it), the move fading out over its first internode, so the lateral still
- * starts on its parent.
+ * A shoot's smoothed axis into out (sh->n points), before it is kept clear. parent_at:
+ * the parent's drawn point at the lateral's node, or NULL: a lateral's root moves with it
+ * (the parent's bend, spline or pull may have moved it), the move fading out over its
+ * first internode, so the lateral still starts on its parent.
  */
-static void smooth_shoot(const struct vine *v, size_t shoot, const struct vec3 *parent,
+static void smooth_shoot(const struct vine *v, size_t shoot, const struct vec3 *parent_at,
 			 struct vec3 *out)
 {
 	const struct vine_shoot *sh = &v->shoots[shoot];
-	size_t d = points_per_internode(v);
+	size_t d = points_per_internode(v), at;
 
 	memcpy(out, sh->axis, sh->n * sizeof(*out));
 	if (sh->n >= 2) {
 		smooth_jumps(v, sh, out);
 		bend_free(v, shoot, out);
 	}
-	if (parent && sh->n > 0 && sh->node >= 0) {
-		size_t at = (size_t)sh->node * d;
+	if (parent_at && sh->n > 0 && parent_node(v, shoot, &at)) {
 		const struct vine_shoot *ps = &v->shoots[sh->parent];
-		struct vec3 moved;
+		struct vec3 moved = vec3_sub(*parent_at, ps->axis[at]);
 
-		if (at >= ps->n)
-			return;
-		moved = vec3_sub(parent[at], ps->axis[at]);
 		/* the root exactly on the parent's point (it is the raw one, never moved itself) */
-		out[0] = vec3_add(parent[at], vec3_sub(out[0], ps->axis[at]));
+		out[0] = vec3_add(*parent_at, vec3_sub(out[0], ps->axis[at]));
 		for (size_t i = 1; i < sh->n && i < d; i++)
 			out[i] = vec3_add(out[i], vec3_scale(moved, 1.0 - (double)i / (double)d));
 	}
 }
 
-/* Has shoot a parent smoothed before it? (vine_grow.c's laterals: always shoot 0.) */
-static bool has_parent(const struct vine *v, size_t shoot)
+/* Point p drawn `pull` of the way from raw to smoothed: exactly the smoothed at 1, the
+ * raw at 0. */
+static struct vec3 pulled(struct vec3 raw, struct vec3 p, double pull)
 {
-	int p = v->shoots[shoot].parent;
+	return pull == 1.0 ? p : vec3_add(raw, vec3_scale(vec3_sub(p, raw), pull));
+}
 
-	return p >= 0 && (size_t)p < shoot;
+/* The smoothed axis out of shoot sh pulled clear as vine_clear found: each pull applies
+ * to the smoothed point it was found for (the smoothing is a function of the raw axes,
+ * the seed and `stopped`, so after vine_grow that is every point). */
+static void pull_shoot(const struct vine_shoot *sh, struct vec3 *out)
+{
+	size_t n = sh->cleared < sh->n ? sh->cleared : sh->n;
+
+	if (!sh->pull || !sh->smooth)
+		return;
+	for (size_t i = 0; i < n; i++)
+		if (memcmp(&sh->smooth[i], &out[i], sizeof(out[i])) == 0)
+			out[i] = pulled(sh->axis[i], out[i], sh->pull[i]);
+}
+
+/* A shoot's drawn axis into out: smoothed, then pulled clear. */
+static void draw_shoot(const struct vine *v, size_t shoot, const struct vec3 *parent_at,
+		       struct vec3 *out)
+{
+	smooth_shoot(v, shoot, parent_at, out);
+	pull_shoot(&v->shoots[shoot], out);
 }
 
 int vine_smooth(const struct vine *v, size_t shoot, struct vec3 **out)
 {
 	const struct vine_shoot *sh = &v->shoots[shoot];
 	struct vec3 *a, *pa = NULL;
+	size_t at = 0;
+	/* a parent drawn before it (vine_grow.c's laterals: always shoot 0) */
+	bool lateral = parent_node(v, shoot, &at);
 
 	a = malloc((sh->n ? sh->n : 1) * sizeof(*a));
 	if (!a)
 		return -ENOMEM;
-	if (has_parent(v, shoot)) {
+	if (lateral) {
 		int ret = vine_smooth(v, (size_t)sh->parent, &pa);
 
 		if (ret < 0) {
@@ -217,7 +259,7 @@ int vine_smooth(const struct vine *v, size_t shoot, struct vec3 **out)
 			return ret;
 		}
 	}
-	smooth_shoot(v, shoot, pa, a);
+	draw_shoot(v, shoot, lateral ? &pa[at] : NULL, a);
 	free(pa);
 	*out = a;
 	return 0;
@@ -232,6 +274,7 @@ static int smooth_all(const struct vine *v, struct vec3 ***out)
 		return -ENOMEM;
 	for (size_t k = 0; k < v->nshoots; k++) {
 		const struct vine_shoot *sh = &v->shoots[k];
+		size_t at = 0;
 
 		axes[k] = malloc((sh->n ? sh->n : 1) * sizeof(**axes));
 		if (!axes[k]) {
@@ -240,7 +283,7 @@ static int smooth_all(const struct vine *v, struct vec3 ***out)
 			free(axes);
 			return -ENOMEM;
 		}
-		smooth_shoot(v, k, has_parent(v, k) ? axes[sh->parent] : NULL, axes[k]);
+		draw_shoot(v, k, parent_node(v, k, &at) ? &axes[sh->parent][at] : NULL, axes[k]);
 	}
 	*out = axes;
 	return 0;
@@ -253,6 +296,115 @@ static void free_all(const struct vine *v, struct vec3 **axes)
 	for (size_t k = 0; k < v->nshoots; k++)
 		free(axes[k]);
 	free(axes);
+}
+
+/* ---- Clear of the support ---- */
+
+/* Drawn at p, is the stem clear: p at least r from s, and p reached from its raw point
+ * without crossing the support (so on the same side of it: outside)? */
+static bool reachable(const struct vine *v, const struct vine_support *s, struct vec3 raw,
+		      struct vec3 p)
+{
+	double r = v->p.radius;
+
+	return vine_support_distance(s, p, r, NULL, NULL) >= r &&
+	       !vine_support_crosses(s, raw, p);
+}
+
+/*
+ * How far from raw towards its smoothed point p the stem may be drawn: 1 when p is clear,
+ * else the farthest pull found clear by bisection, to VINE_PULL_PRECISION r along the
+ * way (VINE_PULL_STEPS halvings at most); 0 (the raw point) when nothing nearer is.
+ */
+static double pull_of(const struct vine *v, const struct vine_support *s, struct vec3 raw,
+		      struct vec3 p)
+{
+	double lo = 0, hi = 1, len = vec3_dist(raw, p), r = v->p.radius;
+
+	if (memcmp(&raw, &p, sizeof(p)) == 0 || reachable(v, s, raw, p))
+		return 1;
+	for (int i = 0; i < VINE_PULL_STEPS && (hi - lo) * len > VINE_PULL_PRECISION * r; i++) {
+		double mid = 0.5 * (lo + hi);
+
+		if (reachable(v, s, raw, pulled(raw, p, mid)))
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return lo;
+}
+
+/*
+ * Shoot k's pulls for its smoothed axis sm (what smooth_shoot gave): found again only for
+ * the points whose smoothed point changed since they were last found (growth changes the
+ * tip's splines and a stopping shoot's bends), so a growth cleared at every frame costs
+ * what one cleared at its end does. The root is never pulled: it is where the shoot was
+ * planted, or its parent's drawn point.
+ */
+static void clear_shoot(struct vine *v, const struct vine_support *s, size_t k,
+			const struct vec3 *sm)
+{
+	struct vine_shoot *sh = &v->shoots[k];
+
+	for (size_t i = 0; i < sh->n; i++) {
+		if (i < sh->cleared && memcmp(&sh->smooth[i], &sm[i], sizeof(sm[i])) == 0)
+			continue;
+		sh->smooth[i] = sm[i];
+		sh->pull[i] = i == 0 ? 1.0 : pull_of(v, s, sh->axis[i], sm[i]);
+	}
+	sh->cleared = sh->n;
+	sh->cleared_stopped = sh->stopped;
+}
+
+int vine_clear(struct vine *v, const struct vine_support *s)
+{
+	size_t longest = 0;
+	struct vec3 *sm;
+	bool *redo, any = false;
+
+	if (!s)
+		return 0;
+	for (size_t k = 0; k < v->nshoots; k++) {
+		const struct vine_shoot *sh = &v->shoots[k];
+
+		longest = sh->n > longest ? sh->n : longest;
+		any = any || sh->cleared != sh->n || sh->cleared_stopped != sh->stopped;
+	}
+	if (!any)
+		return 0; /* nothing grew or stopped since: a frame that added no point */
+	sm = malloc((longest ? longest : 1) * sizeof(*sm));
+	redo = calloc(v->nshoots, sizeof(*redo));
+	if (!sm || !redo) {
+		free(sm);
+		free(redo);
+		return -ENOMEM;
+	}
+	/* parents first: a lateral starts from its parent's drawn node point */
+	for (size_t k = 0; k < v->nshoots; k++) {
+		struct vine_shoot *sh = &v->shoots[k];
+		size_t at = 0;
+		bool lateral = parent_node(v, k, &at);
+		struct vec3 root;
+
+		redo[k] = sh->cleared != sh->n || sh->cleared_stopped != sh->stopped ||
+			  (lateral && redo[sh->parent]);
+		if (!redo[k] || sh->n == 0)
+			continue;
+		if (!sh->smooth || !sh->pull)
+			continue; /* made by hand, not grown: nowhere to keep what is found */
+		if (lateral) {
+			const struct vine_shoot *ps = &v->shoots[sh->parent];
+
+			if (!ps->pull || at >= ps->cleared)
+				continue; /* its parent not cleared: it is drawn smoothed */
+			root = pulled(ps->axis[at], ps->smooth[at], ps->pull[at]);
+		}
+		smooth_shoot(v, k, lateral ? &root : NULL, sm);
+		clear_shoot(v, s, k, sm);
+	}
+	free(sm);
+	free(redo);
+	return 0;
 }
 
 /* u turned by angle a about unit t (u perpendicular to t). */

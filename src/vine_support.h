@@ -37,3 +37,12 @@ void vine_support_bounds(const struct vine_support *s, struct vec3 *lo, struct v
  */
 double vine_support_distance(const struct vine_support *s, struct vec3 p, double max,
 			     struct vec3 *nearest, size_t *triangle);
+
+/*
+ * Whether the segment from a to b meets a triangle of the mesh (one without area never
+ * counts). Conservative: a segment through an edge or a vertex, or touching a triangle,
+ * meets it, so a closed mesh has no gap for a segment to slip through; a segment lying in
+ * a triangle's plane meets it when their boxes overlap. False for a point that is not
+ * finite.
+ */
+bool vine_support_crosses(const struct vine_support *s, struct vec3 a, struct vec3 b);

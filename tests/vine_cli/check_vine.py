@@ -9,6 +9,11 @@ at R + r from the axis, within 0.1 r, and wind the way `twining` says (right: az
 atan2(-z, x) increasing, counter-clockwise seen from above).
 check_vine.py cross SKELETON.JSON: the same fields; the main axis reaches above 0.9 m (past
 the bar at 0.5 m).
+check_vine.py any SKELETON.JSON: the same fields.
+With SUPPORT.OBJ after SKELETON.JSON (issue 24): every point of every shoot's smooth axis
+lies at least 0.95 r from the support's triangles (to the micrometre the file is written
+to) and outside it (outside every closed piece: a winding number below 1/2), measured here
+with the support's triangles.
 Prints what is wrong and exits 1, else prints a summary and exits 0.
 """
 import json
@@ -131,6 +136,94 @@ def check_cross(v):
     print(f"check_vine: cross: the main axis reaches {top:.3f} m")
 
 
+def load_obj(path):
+    """The OBJ's triangles (polygons as fans), grouped into its connected pieces."""
+    verts, faces = [], []
+    with open(path, encoding="ascii") as f:
+        for line in f:
+            w = line.split()
+            if w and w[0] == "v":
+                verts.append(tuple(float(x) for x in w[1:4]))
+            elif w and w[0] == "f":
+                faces.append([int(x.split("/")[0]) - 1 for x in w[1:]])
+    parent = list(range(len(verts)))
+
+    def find(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+    for face in faces:
+        for k in face[1:]:
+            parent[find(k)] = find(face[0])
+    pieces = {}
+    for face in faces:
+        tris = pieces.setdefault(find(face[0]), [])
+        for k in range(1, len(face) - 1):
+            tris.append((verts[face[0]], verts[face[k]], verts[face[k + 1]]))
+    return list(pieces.values())
+
+
+def sub(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def seg_dist(p, a, b):
+    ab = sub(b, a)
+    t = dot(sub(p, a), ab) / dot(ab, ab) if dot(ab, ab) > 0 else 0.0
+    t = min(max(t, 0.0), 1.0)
+    return math.dist(p, (a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]))
+
+
+def tri_dist(p, a, b, c):
+    """The foot on the plane if it falls inside the triangle, else the nearest edge."""
+    n = cross(sub(b, a), sub(c, a))
+    nn = dot(n, n)
+    if nn > 0:
+        h = dot(sub(p, a), n) / nn
+        f = (p[0] - h * n[0], p[1] - h * n[1], p[2] - h * n[2])
+        if (dot(cross(sub(b, a), sub(f, a)), n) >= 0 and dot(cross(sub(c, b), sub(f, b)), n) >= 0
+                and dot(cross(sub(a, c), sub(f, c)), n) >= 0):
+            return abs(h) * math.sqrt(nn)
+    return min(seg_dist(p, a, b), seg_dist(p, b, c), seg_dist(p, c, a))
+
+
+def winding(p, tris):
+    """The winding number of a closed piece about p (Van Oosterom and Strackee)."""
+    w = 0.0
+    for t in tris:
+        a, b, c = sub(t[0], p), sub(t[1], p), sub(t[2], p)
+        la, lb, lc = math.sqrt(dot(a, a)), math.sqrt(dot(b, b)), math.sqrt(dot(c, c))
+        w += 2 * math.atan2(dot(a, cross(b, c)),
+                            la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb)
+    return w / (4 * math.pi)
+
+
+def check_clear(v, support):
+    r = v["radius"]
+    pieces = load_obj(support)
+    worst = (math.inf, None)
+    for i, s in enumerate(v["shoots"]):
+        for k, p in enumerate(s["smooth"]):
+            d = min(tri_dist(p, *t) for tris in pieces for t in tris)
+            if d < worst[0]:
+                worst = (d, (i, k))
+            if d < 0.95 * r - 2 * EPS:
+                fail(f"shoot {i}: smoothed point {k} {p} is {d / r:.3f} r from the support")
+            if any(abs(winding(p, tris)) >= 0.5 for tris in pieces):
+                fail(f"shoot {i}: smoothed point {k} {p} is inside the support")
+    print(f"check_vine: the smoothed axis keeps {worst[0] / r:.4f} r from the support at "
+          f"worst (shoot {worst[1][0]}, point {worst[1][1]}), outside it")
+
+
 def main():
     kind, path = sys.argv[1], sys.argv[2]
     with open(path, encoding="utf-8") as f:
@@ -138,8 +231,10 @@ def main():
     v = check_fields(doc)
     if kind == "pole":
         check_pole(v)
-    else:
+    elif kind == "cross":
         check_cross(v)
+    if len(sys.argv) > 3:
+        check_clear(v, sys.argv[3])
 
 
 main()

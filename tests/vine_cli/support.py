@@ -1,15 +1,18 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Supports for vine.sh, as OBJ files: support.py pole|cross OUT.OBJ.
+"""Supports for vine.sh, as OBJ files: support.py pole|cross|t OUT.OBJ.
 
 pole: a capped cylinder of radius 0.02 m, 1 m tall from the ground, 32 sides, on the y
-axis; cross: the pole and a bar as thick, 0.6 m long, along x through it at y = 0.5 m.
+axis; cross: the pole and a bar as thick, 0.6 m long, along x through it at y = 0.5 m;
+t: issue 24's T, a pole of radius 0.01 m, 0.8 m tall, and a bar as thick, 0.4 m long,
+along x across its top (its axis at y = 0.8 m).
 Quads for the sides and a polygon a cap, as a 3D program writes them (assimp triangulates).
 """
 import math
 import sys
 
 R = 0.02
+T_R = 0.01
 SIDES = 32
 
 
@@ -31,6 +34,10 @@ def main():
     kind, out = sys.argv[1], sys.argv[2]
     with open(out, "w", encoding="ascii") as f:
         f.write(f"# edaha vine test support: {kind}\no {kind}\n")
+        if kind == "t":
+            n = cylinder(f, 0, 0.8, lambda a, t: (T_R * math.cos(a), t, T_R * math.sin(a)))
+            cylinder(f, n, 0.4, lambda a, t: (t - 0.2, 0.8 + T_R * math.cos(a), T_R * math.sin(a)))
+            return
         n = cylinder(f, 0, 1.0, lambda a, t: (R * math.cos(a), t, R * math.sin(a)))
         if kind == "cross":
             cylinder(f, n, 0.6, lambda a, t: (t - 0.3, 0.5 + R * math.cos(a), R * math.sin(a)))

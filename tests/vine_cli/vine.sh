@@ -66,9 +66,11 @@ twice() {
 t_pole() {
 	python3 "$HERE/support.py" pole "$T/pole.obj" || fail "support.py pole"
 	vine "$T/mg" --support "$T/pole.obj" --vine morning-glory --plant "$PLANT"
-	python3 "$HERE/check_vine.py" pole "$T/mg/skeleton.json" || fail "morning-glory on the pole"
+	python3 "$HERE/check_vine.py" pole "$T/mg/skeleton.json" "$T/pole.obj" ||
+		fail "morning-glory on the pole"
 	vine "$T/def" --support "$T/pole.obj" --vine default --plant "$PLANT"
-	python3 "$HERE/check_vine.py" pole "$T/def/skeleton.json" || fail "default on the pole"
+	python3 "$HERE/check_vine.py" pole "$T/def/skeleton.json" "$T/pole.obj" ||
+		fail "default on the pole"
 	grep -q '"twining":"right"' "$T/mg/skeleton.json" || fail "morning-glory does not twine right"
 	grep -q '"twining":"left"' "$T/def/skeleton.json" || fail "default does not twine left"
 	validate "$T/mg/model.glb" "$T/def/model.glb"
@@ -86,11 +88,28 @@ t_pole() {
 t_cross() {
 	python3 "$HERE/support.py" cross "$T/cross.obj" || fail "support.py cross"
 	vine "$T/mg" --support "$T/cross.obj" --vine morning-glory --plant "$PLANT"
-	python3 "$HERE/check_vine.py" cross "$T/mg/skeleton.json" || fail "morning-glory on the cross"
+	python3 "$HERE/check_vine.py" cross "$T/mg/skeleton.json" "$T/cross.obj" ||
+		fail "morning-glory on the cross"
+	vine "$T/def" --support "$T/cross.obj" --vine default --plant "$PLANT"
+	python3 "$HERE/check_vine.py" any "$T/def/skeleton.json" "$T/cross.obj" ||
+		fail "default on the cross"
 	validate "$T/mg/model.glb"
 	twice "$T/mg" --support "$T/cross.obj" --vine morning-glory --plant "$PLANT"
 	golden cross "$T/mg"
-	echo "vine.sh: cross: past the bar, the validator, twice the same, the picture"
+	echo "vine.sh: cross: past the bar, clear of it, the validator, twice the same, the picture"
+}
+
+# Issue 24's T (a pole of 1 cm, a bar as thick across its top): both twinings, planted
+# beside the pole; the smoothed axes keep 0.95 r from it, outside it.
+t_t() {
+	python3 "$HERE/support.py" t "$T/t.obj" || fail "support.py t"
+	vine "$T/mg" --support "$T/t.obj" --vine morning-glory --plant 0.013,0,0
+	python3 "$HERE/check_vine.py" any "$T/mg/skeleton.json" "$T/t.obj" ||
+		fail "morning-glory on the T"
+	vine "$T/def" --support "$T/t.obj" --vine default --plant 0.013,0,0
+	python3 "$HERE/check_vine.py" any "$T/def/skeleton.json" "$T/t.obj" ||
+		fail "default on the T"
+	echo "vine.sh: t: both twinings clear of the T"
 }
 
 # refused TEXT ARGS...: edaha --headless --support ... exits 2 with one line on stderr

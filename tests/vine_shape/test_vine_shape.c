@@ -667,6 +667,70 @@ static void test_grown(enum vine_twining tw, int per_node)
 	vine_support_destroy(s);
 }
 
+/*
+ * Out of memory at every allocation of a growth on issue 24's T (where the drawn axis is
+ * pulled clear at the junction): -ENOMEM, nothing lost, and growing on afterwards gives
+ * the raw and drawn axes of a growth that never failed, bit for bit (what vine_clear had
+ * not cleared is cleared by the next call).
+ */
+static void test_grow_oom(void)
+{
+	struct mesh_build m = { 0 };
+	struct vine_support *s;
+	struct vine_params p;
+	struct vine want, v;
+	long live, failures = 0;
+
+	if (!FAIL_ALLOC_HOOK || !fail_alloc_hooked())
+		return;
+	cylinder(&m, 0.01, 0.8, 32, vec3(0, 0, 0), 1);
+	cylinder(&m, 0.01, 0.4, 32, vec3(-0.2, 0.8, 0), 0);
+	s = support_of(&m);
+	vine_params_default(&p);
+	p.angle = 30;
+	p.twining = VINE_RIGHT;
+	p.internodes = 60;
+	vine_init(&want, &p, vec3(0.013, 0, 0));
+	CHECK_INT(vine_grow(&want, s, INFINITY), 0);
+	live = fail_alloc_live();
+	for (long at = 0;; at++) {
+		int r;
+
+		vine_init(&v, &p, vec3(0.013, 0, 0));
+		fail_alloc_at(at);
+		r = vine_grow(&v, s, INFINITY);
+		fail_alloc_off();
+		if (fail_alloc_calls() <= at) {
+			CHECK_INT(r, 0);
+			vine_finish(&v);
+			break;
+		}
+		CHECK_INT(r, -ENOMEM);
+		failures++;
+		CHECK_INT(vine_grow(&v, s, INFINITY), 0);
+		CHECK_INT(v.nshoots, want.nshoots);
+		for (size_t k = 0; k < v.nshoots; k++) {
+			struct vec3 *a, *b;
+
+			CHECK_INT(v.shoots[k].n, want.shoots[k].n);
+			CHECK(memcmp(v.shoots[k].axis, want.shoots[k].axis,
+				     v.shoots[k].n * sizeof(*v.shoots[k].axis)) == 0);
+			CHECK_INT(vine_smooth(&v, k, &a), 0);
+			CHECK_INT(vine_smooth(&want, k, &b), 0);
+			CHECK(memcmp(a, b, v.shoots[k].n * sizeof(*a)) == 0);
+			free(a);
+			free(b);
+		}
+		vine_finish(&v);
+		CHECK_INT(fail_alloc_live(), live);
+	}
+	printf("grown on the T out of memory at each of %ld allocations: the same vine after\n",
+	       failures);
+	CHECK(failures > 4);
+	vine_finish(&want);
+	vine_support_destroy(s);
+}
+
 int main(void)
 {
 	test_smooth_turns();
@@ -676,6 +740,7 @@ int main(void)
 	test_mesh();
 	test_grown(VINE_LEFT, 1);
 	test_grown(VINE_RIGHT, 2);
+	test_grow_oom();
 	printf("ok\n");
 	return 0;
 }

@@ -597,9 +597,162 @@ static void test_empty(void)
 		CHECK(vine_support_distance(s, vec3(1, 2, 3), 1.0, &q, &t) >= 1.0);
 		CHECK(vine_support_distance(s, vec3(1, 2, 3), INFINITY, &q, &t) >= INFINITY);
 		CHECK(q.x == 4 && t == 4);
+		CHECK(!vine_support_crosses(s, vec3(-5, -5, -5), vec3(5, 5, 5)));
 		vine_support_destroy(s);
 	}
 	vine_support_destroy(NULL);
+}
+
+/* ---- Crossing ---- */
+
+/*
+ * Whether segment a-b meets triangle t, worked out here another way (Cramer's rule for
+ * a + s (b - a) = p0 + u e1 + v e2): 1 it does, with every coordinate at least EDGE inside
+ * its range; 0 it does not, one coordinate EDGE or more outside; -1 too near an edge, an
+ * end or the plane to tell. Triangles without area (exactly) are never met.
+ */
+#define EDGE 1e-6
+static int ref_crosses(const struct mesh *m, size_t t, struct vec3 a, struct vec3 b)
+{
+	struct vec3 p0 = vtx(m, t, 0), e1 = vec3_sub(vtx(m, t, 1), p0), e2 = vec3_sub(vtx(m, t, 2), p0);
+	struct vec3 d = vec3_sub(b, a), n = vec3_cross(e1, e2), w = vec3_sub(a, p0);
+	double det = -vec3_dot(d, n), sc, u, v, scale;
+
+	if (n.x == 0 && n.y == 0 && n.z == 0)
+		return 0;
+	scale = vec3_len(d) * vec3_len(n);
+	if (fabs(det) <= 1e-9 * scale)
+		return -1; /* (nearly) parallel to the plane */
+	sc = vec3_dot(w, n) / det;
+	u = -vec3_dot(d, vec3_cross(w, e2)) / det;
+	v = -vec3_dot(d, vec3_cross(e1, w)) / det;
+	if (sc < -EDGE || sc > 1 + EDGE || u < -EDGE || v < -EDGE || u + v > 1 + EDGE)
+		return 0;
+	if (sc > EDGE && sc < 1 - EDGE && u > EDGE && v > EDGE && u + v < 1 - EDGE)
+		return 1;
+	return -1;
+}
+
+/* The scan: 1 some triangle is met, 0 none is, -1 none clearly is and one may be. */
+static int ref_scan_crosses(const struct mesh *m, struct vec3 a, struct vec3 b)
+{
+	int any = 0;
+
+	for (size_t t = 0; t < m->nt; t++) {
+		int c = ref_crosses(m, t, a, b);
+
+		if (c == 1)
+			return 1;
+		if (c < 0)
+			any = -1;
+	}
+	return any;
+}
+
+/* Random meshes and segments (short, long, from on the surface): the index says what the
+ * scan says, wherever the scan can tell. */
+static void test_crosses_random(void)
+{
+	long told = 0, met = 0;
+
+	for (int i = 0; i < 40; i++) {
+		struct mesh m = { 0 };
+		struct rng r;
+		struct vine_support *s;
+
+		rng_seed(&r, 5000 + (uint64_t)i);
+		random_mesh(&m, &r, i < 20 ? 50 : 2000);
+		s = build(&m);
+		for (int j = 0; j < 400; j++) {
+			struct vec3 a = query_point(&m, &r), b;
+			double kind = rng_uniform(&r);
+			int want;
+
+			if (kind < 0.4)
+				b = vec3_add(a, vec3_scale(rnd_dir(&r), pow(10.0, rng_range(&r, -4, -1))));
+			else if (kind < 0.8)
+				b = rnd_in(&r, 1.5);
+			else
+				b = on_triangle(&m, &r, (size_t)(rng_uniform(&r) * (double)m.nt));
+			want = ref_scan_crosses(&m, a, b);
+			if (want < 0)
+				continue;
+			told++;
+			met += want;
+			CHECK(vine_support_crosses(s, a, b) == (want == 1));
+			CHECK(vine_support_crosses(s, b, a) == (want == 1));
+		}
+		vine_support_destroy(s);
+		mesh_free(&m);
+	}
+	printf("crossing: %ld random segments told by the scan, %ld meeting a triangle\n", told,
+	       met);
+	CHECK(met > told / 10 && met < told - told / 10);
+}
+
+/*
+ * A closed mesh has no gap: every segment from inside the unit cube, or the pole, to
+ * outside it meets it, through a face, an edge, a vertex (exactly), or ending on it; a
+ * segment outside that passes it by does not; a point not finite meets nothing.
+ */
+static void test_crosses_closed(void)
+{
+	static const uint32_t faces[6][4] = {
+		{ 0, 1, 3, 2 }, { 4, 6, 7, 5 }, { 0, 4, 5, 1 },
+		{ 2, 3, 7, 6 }, { 0, 2, 6, 4 }, { 1, 5, 7, 3 },
+	};
+	struct mesh m = { 0 };
+	struct vine_support *s;
+	struct rng r;
+	struct vec3 c = vec3(0.5, 0.5, 0.5);
+
+	for (int i = 0; i < 8; i++)
+		mesh_vertex(&m, vec3(i >> 2 & 1, i >> 1 & 1, i & 1));
+	for (int f = 0; f < 6; f++) {
+		mesh_triangle(&m, faces[f][0], faces[f][1], faces[f][2]);
+		mesh_triangle(&m, faces[f][0], faces[f][2], faces[f][3]);
+	}
+	s = build(&m);
+	/* through every vertex, every edge's middle and every face's centre, exactly */
+	for (int i = 0; i < 8; i++) {
+		struct vec3 v = vec3(i >> 2 & 1, i >> 1 & 1, i & 1);
+
+		CHECK(vine_support_crosses(s, c, vec3_add(c, vec3_scale(vec3_sub(v, c), 3))));
+		for (int j = 0; j < 8; j++) {
+			struct vec3 e = vec3_scale(vec3_add(v, vec3(j >> 2 & 1, j >> 1 & 1, j & 1)), 0.5);
+
+			if (vec3_dist(e, c) == 0)
+				continue; /* opposite corners: their middle is the centre */
+			CHECK(vine_support_crosses(s, c, vec3_add(c, vec3_scale(vec3_sub(e, c), 2.5))));
+			CHECK(vine_support_crosses(s, vec3_add(c, vec3_scale(vec3_sub(e, c), 2.5)), c));
+		}
+	}
+	CHECK(vine_support_crosses(s, vec3(0.3, 0.4, 2), vec3(0.3, 0.4, 1))); /* ends on it */
+	CHECK(vine_support_crosses(s, vec3(0.3, 0.5, 1.5), vec3(0.3, 1.5, 0.5))); /* grazes an edge */
+	CHECK(!vine_support_crosses(s, vec3(2, 2, 2), vec3(2, -1, 2)));
+	CHECK(!vine_support_crosses(s, vec3(0.5, 1.5, 0.5), vec3(1.5, 1.001, -0.5)));
+	CHECK(!vine_support_crosses(s, c, vec3(0.9, 0.1, 0.2))); /* inside, all of it */
+	CHECK(!vine_support_crosses(s, vec3(NAN, 0, 0), c));
+	CHECK(!vine_support_crosses(s, c, vec3(0, INFINITY, 0)));
+	vine_support_destroy(s);
+	mesh_free(&m);
+
+	/* the pole: from its axis out, at random, thousands of times */
+	cylinder(&m, 7, 0.02, 1.0);
+	s = build(&m);
+	rng_seed(&r, 77);
+	for (int i = 0; i < 20000; i++) {
+		struct vec3 in = vec3(rng_range(&r, -0.009, 0.009), rng_range(&r, 0.01, 0.99),
+				      rng_range(&r, -0.009, 0.009));
+		struct vec3 out = vec3_add(in, vec3_scale(rnd_dir(&r), rng_range(&r, 0.01, 2)));
+
+		if (hypot(out.x, out.z) <= 0.02 && out.y >= 0 && out.y <= 1)
+			continue; /* not outside the circle round it: perhaps inside */
+		CHECK(vine_support_crosses(s, in, out));
+		CHECK(vine_support_crosses(s, out, in));
+	}
+	vine_support_destroy(s);
+	mesh_free(&m);
 }
 
 static void test_refused(void)
@@ -692,6 +845,8 @@ int main(void)
 	test_random(10, 50, 200, 2000);
 	test_random(1000, 4, 2000, 3000);
 	test_random(20000, 1, 600, 4000);
+	test_crosses_closed();
+	test_crosses_random();
 	test_oom();
 	return 0;
 }
