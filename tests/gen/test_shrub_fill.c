@@ -8,9 +8,10 @@
  * - inside: every crown branch with its radius round each point, and every leaf, is inside
  *   the shape within INSIDE_TOL;
  * - reach: REACH_DIRS points spread evenly by area over the shape's whole surface (for a
- *   sphere, that many directions spread evenly over it); a leaf whose centre lies within
- *   two leaf lengths of the surface reaches the point nearest it; at least REACH_WANT of
- *   the points are reached. A bare shrub (leaves.amount 0) is measured by its twigs' ends;
+ *   sphere, that many directions spread evenly over it: reach_points); a leaf whose centre
+ *   lies within two leaf lengths of the surface reaches the nearest of them on that part
+ *   of the surface (reach_at); at least REACH_WANT of the points are reached. A bare shrub
+ *   (leaves.amount 0) is measured by its twigs' ends;
  * - honest counts: no more branches and leaves than gen_count_branches and
  *   gen_count_leaves say (the drawing's and the tree's limits rest on them);
  * - deterministic: every tenth file grown again with the same seed gives the same tree.
