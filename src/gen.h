@@ -110,7 +110,8 @@ bool gen_leaf_from_name(const char *name, enum gen_leaf *l);
 /* The documented defaults of a type (docs/tree-params.md): what missing keys take. */
 void gen_params_default(struct gen_params *p, enum gen_type type);
 
-/* How many branches and leaves p makes. */
+/* How many branches and leaves p makes (a shrub: the most it can, its crown being cut to
+ * its shape). */
 size_t gen_count_branches(const struct gen_params *p);
 size_t gen_count_leaves(const struct gen_params *p);
 

@@ -100,22 +100,22 @@ size_t gen_leaf_outline(enum gen_leaf type, double out[][2], size_t max)
 
 /*
  * The leaf's frame: its axis a (unit) and its width w, chosen so that its front (a x w)
- * faces up as far as it can: leaves turn to the sky.
+ * faces `face` as far as it can: up, as leaves turn to the sky; a clipped shrub's outwards,
+ * to the light at its surface.
  */
-static struct vec3 width_dir(struct vec3 a)
+static struct vec3 width_dir(struct vec3 a, struct vec3 face)
 {
-	struct vec3 up = vec3(0, 1, 0);
-	struct vec3 w = vec3_cross(up, a);
+	struct vec3 w = vec3_cross(face, a);
 
 	if (vec3_len(w) < 1e-9)
 		w = vec3_cross(vec3(0, 0, 1), a);
 	return vec3_norm_or(w, vec3(1, 0, 0));
 }
 
-void gen_leaf_points(const struct gen_ctx *g, struct vec3 base, struct vec3 axis, double size,
-		     struct vec3 *out, size_t *n)
+void gen_leaf_points(const struct gen_ctx *g, struct vec3 base, struct vec3 axis, struct vec3 face,
+		     double size, struct vec3 *out, size_t *n)
 {
-	struct vec3 a = vec3_norm_or(axis, vec3(0, 1, 0)), w = width_dir(a);
+	struct vec3 a = vec3_norm_or(axis, vec3(0, 1, 0)), w = width_dir(a, face);
 
 	*n = g->noutline;
 	for (size_t k = 0; k < *n; k++)

@@ -27,24 +27,13 @@
  * it by the golden angle. */
 #define LEAF_ANGLE_DEG 40.0
 #define GOLDEN_DEG 137.50776405
-/* The leaves of a tip sit along its outer part: the first at the tip. */
-#define LEAF_REACH 0.75
-/* A branch clipped shorter than this many of its radii, or 1 cm, is left out. */
-#define CLIP_MIN_RADII 2.0
-#define CLIP_MIN_M 0.01
-/* A clipped branch is cut this many leaf lengths inside the surface, so that its shoots
- * have room and its leaves reach out to the surface. */
-#define CLIP_SETBACK_LEAVES 0.5
-/* A shoot that keeps less than this of its length is turned back into the shape. */
-#define CLIP_TURN_BACK 0.5
 
-static struct vec3 azimuth(struct vec3 d, struct vec3 e, double phi)
+struct vec3 gen_azimuth(struct vec3 d, struct vec3 e, double phi)
 {
 	return vec3_add(vec3_scale(e, cos(phi)), vec3_scale(vec3_cross(d, e), sin(phi)));
 }
 
-/* e (perpendicular to d) carried onto direction d2 by the rotation taking d to d2. */
-static struct vec3 transport(struct vec3 e, struct vec3 d, struct vec3 d2)
+struct vec3 gen_transport(struct vec3 e, struct vec3 d, struct vec3 d2)
 {
 	struct vec3 k = vec3_cross(d, d2);
 	double s = vec3_len(k), c = vec3_dot(d, d2);
@@ -54,7 +43,8 @@ static struct vec3 transport(struct vec3 e, struct vec3 d, struct vec3 d2)
 	return vec3_norm_or(vec3_sub(e, vec3_scale(d2, vec3_dot(e, d2))), gen_reference(d2));
 }
 
-static int tip_leaves(struct gen_ctx *g, int b, struct vec3 e, const struct gen_clip_shape *clip)
+int gen_tip_leaves(struct gen_ctx *g, int b, struct vec3 e, double reach, struct vec3 face,
+		   const struct gen_clip_shape *clip)
 {
 	const struct gen_params *p = g->p;
 	const struct branch *br = &g->t->branches[b];
@@ -63,14 +53,14 @@ static int tip_leaves(struct gen_ctx *g, int b, struct vec3 e, const struct gen_
 	struct vec3 pts[GEN_LEAF_MAX_POINTS];
 
 	for (int k = 0; k < p->leaf_amount; k++) {
-		double t = 1.0 - LEAF_REACH * k / p->leaf_amount;
-		struct vec3 v = azimuth(d, e, k * GOLDEN_DEG * DEG);
+		double t = 1.0 - reach * k / p->leaf_amount;
+		struct vec3 v = gen_azimuth(d, e, k * GOLDEN_DEG * DEG);
 		struct vec3 axis = vec3_add(vec3_scale(d, cos(LEAF_ANGLE_DEG * DEG)),
 					    vec3_scale(v, sin(LEAF_ANGLE_DEG * DEG)));
 		size_t n;
 		int ret;
 
-		gen_leaf_points(g, vec3_lerp(a, z, t), axis, p->leaf_size, pts, &n);
+		gen_leaf_points(g, vec3_lerp(a, z, t), axis, face, p->leaf_size, pts, &n);
 		if (clip && !gen_clip_leaf(clip, pts, n))
 			continue;
 		if ((ret = gen_add_leaf(g, b, t, pts, n)) < 0)
@@ -79,78 +69,42 @@ static int tip_leaves(struct gen_ctx *g, int b, struct vec3 e, const struct gen_
 	return 0;
 }
 
-int gen_lsystem_grow(struct gen_ctx *g, int b, struct vec3 e, double length,
-		     const struct gen_clip_shape *clip)
+/* The children of branch b, theirs, ... down to level 1; `length` is b's own. */
+static int grow(struct gen_ctx *g, int b, struct vec3 e, double length)
 {
 	const struct gen_params *p = g->p;
 	const struct branch *br = &g->t->branches[b];
 	struct vec3 a = br->points[0], z = br->points[br->npoints - 1];
 	struct vec3 d = vec3_norm_or(vec3_sub(z, a), vec3(0, 1, 0)), turned;
 	double r0 = br->radii[br->npoints - 1], theta[GEN_MAX_CHILDREN];
-	int level = br->level, ids[GEN_MAX_CHILDREN], made = 0;
+	int level = br->level, ids[GEN_MAX_CHILDREN];
 	struct vec3 refs[GEN_MAX_CHILDREN];
 	double lengths[GEN_MAX_CHILDREN];
 	int ret;
 
-	bool br_is_trunk = br->parent < 0;
-
 	if (level <= 1)
-		return clip && br_is_trunk ? 0 : tip_leaves(g, b, e, clip);
+		return gen_tip_leaves(g, b, e, GEN_LEAF_REACH, vec3(0, 1, 0), NULL);
 	for (int i = 0; i < p->children; i++)
 		theta[i] = gen_angle(g);
 	turned = gen_rotate(e, d, p->twist * DEG);
 	for (int i = 0; i < p->children; i++) {
 		double phi = (i - 0.5 * (p->children - 1)) * p->spread * DEG;
 		struct vec3 di = vec3_add(vec3_scale(d, cos(theta[i])),
-					  vec3_scale(azimuth(d, e, phi), sin(theta[i])));
-		double len = p->ratios[i] * length, r1 = r0 * p->thickness_ratio;
-		struct vec3 end = vec3_add(z, vec3_scale(di, len));
-		int id;
+					  vec3_scale(gen_azimuth(d, e, phi), sin(theta[i])));
+		double len = p->ratios[i] * length;
+		int id = gen_add_branch(g, b, z, vec3_add(z, vec3_scale(di, len)), r0,
+					r0 * p->thickness_ratio, level - 1);
 
-		if (clip) {
-			double setback = p->leaf_amount ? CLIP_SETBACK_LEAVES * p->leaf_size : 0.0;
-			double f = gen_clip_segment(clip, z, end, r0, r1, setback);
-
-			/* a shoot that would leave at once is turned back along the surface, as
-			 * clipping makes a hedge grow in on itself */
-			if (f < CLIP_TURN_BACK) {
-				struct vec3 n = gen_clip_normal(clip, z);
-				struct vec3 dr = vec3_sub(di, vec3_scale(n, 2.0 * vec3_dot(di, n)));
-				struct vec3 end_r = vec3_add(z, vec3_scale(dr, len));
-				double fr = gen_clip_segment(clip, z, end_r, r0, r1, setback);
-
-				if (fr > f) {
-					di = dr;
-					end = end_r;
-					f = fr;
-				}
-			}
-			if (f < 1.0) {
-				/* cut at the surface; as a clipped hedge does, it sprouts again just
-				 * inside, where its shoots that run along the surface fill it */
-				double kept = f * len;
-
-				if (f < 0 || kept < CLIP_MIN_M || kept < CLIP_MIN_RADII * r0)
-					continue;
-				r1 = r0 + (r1 - r0) * f;
-				end = vec3_add(z, vec3_scale(di, kept));
-			}
-		}
-		id = gen_add_branch(g, b, z, end, r0, r1, level - 1);
 		if (id < 0)
 			return id;
-		ids[made] = id;
-		refs[made] = transport(turned, d, di);
-		lengths[made] = len;
-		made++;
+		ids[i] = id;
+		refs[i] = gen_transport(turned, d, di);
+		lengths[i] = len;
 	}
-	for (int i = 0; i < made; i++) {
-		if ((ret = gen_lsystem_grow(g, ids[i], refs[i], lengths[i], clip)) < 0)
+	for (int i = 0; i < p->children; i++)
+		if ((ret = grow(g, ids[i], refs[i], lengths[i])) < 0)
 			return ret;
-	}
-	/* every child clipped away: this branch is a tip of the crown (a shrub's trunk is not
-	 * one: it stays bare) */
-	return made || (clip && br_is_trunk) ? 0 : tip_leaves(g, b, e, clip);
+	return 0;
 }
 
 int gen_lsystem(struct gen_ctx *g)
@@ -162,6 +116,5 @@ int gen_lsystem(struct gen_ctx *g)
 
 	if (trunk < 0)
 		return trunk;
-	return gen_lsystem_grow(g, trunk, gen_reference(d), vec3_dist(p->trunk_start, p->trunk_end),
-				NULL);
+	return grow(g, trunk, gen_reference(d), vec3_dist(p->trunk_start, p->trunk_end));
 }

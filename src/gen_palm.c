@@ -46,7 +46,7 @@ static int leaflets(struct gen_ctx *g, int frond, const struct vec3 *pts)
 		double size = p->leaf_size * (0.55 + 0.45 * sin(VEC_PI * t));
 		int ret;
 
-		gen_leaf_points(g, at, axis, size, out, &n);
+		gen_leaf_points(g, at, axis, vec3(0, 1, 0), size, out, &n);
 		/* the midrib's points are evenly spaced: t is its arc-length parameter */
 		if ((ret = gen_add_leaf(g, frond, t, out, n)) < 0)
 			return ret;

@@ -153,7 +153,9 @@ size_t gen_count_branches(const struct gen_params *p)
 {
 	if (p->type == GEN_PALM)
 		return 1 + (size_t)p->fronds;
-	/* a shrub's crown is clipped: this is the most it can have */
+	/* a shrub's crown is cut to its shape: this is the most it can have */
+	if (p->type == GEN_SHRUB)
+		return gen_shrub_branches(p);
 	return full_tree(p->children, p->levels);
 }
 
@@ -161,9 +163,9 @@ size_t gen_count_leaves(const struct gen_params *p)
 {
 	if (p->type == GEN_PALM)
 		return (size_t)p->fronds * (size_t)p->leaf_amount;
-	/* clipping makes tips of branches cut short: at most every branch but the trunk */
+	/* a shrub's leaves are its tips' (a branch cut short of its tips takes their place) */
 	if (p->type == GEN_SHRUB)
-		return (full_tree(p->children, p->levels) - 1) * (size_t)p->leaf_amount;
+		return gen_shrub_tips(p) * (size_t)p->leaf_amount;
 	return tips(p->children, p->levels) * (size_t)p->leaf_amount;
 }
 
@@ -339,10 +341,25 @@ static void scale_shape(struct gen_params *q, double k)
 		q->clip_radius *= k;
 }
 
+/* A shrub grows wider by its shape, about its centre: the shape decides its crown. */
+static void widen_shape(struct gen_params *q, double k)
+{
+	if (q->clip == GEN_CLIP_BOX) {
+		q->clip_size.x *= k;
+		q->clip_size.z *= k;
+	} else {
+		q->clip_radius *= k;
+	}
+}
+
 static bool widen(struct gen_params *q, double sign)
 {
 	if (q->type == GEN_PALM) {
 		q->frond_length *= sign > 0 ? ADJUST_SCALE : 1.0 / ADJUST_SCALE;
+		return true;
+	}
+	if (q->type == GEN_SHRUB) {
+		widen_shape(q, sign > 0 ? ADJUST_SCALE : 1.0 / ADJUST_SCALE);
 		return true;
 	}
 	q->angle_min += sign * ADJUST_ANGLE_DEG;
@@ -369,6 +386,10 @@ bool gen_adjust(const struct gen_params *p, enum gen_adjust what, struct gen_par
 			q->fronds += step * ADJUST_FRONDS;
 		else
 			q->levels += step;
+		/* a shrub has as many tips as its shape needs, and more only with more levels:
+		 * levels that change none change nothing */
+		if (q->type == GEN_SHRUB && q->levels >= 1 && gen_shrub_tips(q) == gen_shrub_tips(p))
+			ok = false;
 		break;
 	}
 	case GEN_WIDER:

@@ -21,10 +21,11 @@ struct gen_ctx {
 /* A leaf of length 1 along +x from (0, 0), its width along y, counter-clockwise: how many
  * points it has (0 when max is too small). */
 size_t gen_leaf_outline(enum gen_leaf type, double out[][2], size_t max);
-/* The outline of a leaf of `size` from `base` along `axis`, its front turned up as far as
- * it goes: g->noutline points into out (GEN_LEAF_MAX_POINTS of room). */
-void gen_leaf_points(const struct gen_ctx *g, struct vec3 base, struct vec3 axis, double size,
-		     struct vec3 *out, size_t *n);
+/* The outline of a leaf of `size` from `base` along `axis`, its front turned towards `face`
+ * (a unit vector: up, but on a clipped shrub) as far as it goes: g->noutline points into
+ * out (GEN_LEAF_MAX_POINTS of room). */
+void gen_leaf_points(const struct gen_ctx *g, struct vec3 base, struct vec3 axis, struct vec3 face,
+		     double size, struct vec3 *out, size_t *n);
 /* Adds a leaf with points p on `branch` at arc-length parameter t, attached (its `local`
  * recorded). Its id, or -ENOMEM. */
 int gen_add_leaf(struct gen_ctx *g, int branch, double t, const struct vec3 *p, size_t n);
@@ -43,24 +44,33 @@ struct vec3 gen_rotate(struct vec3 v, struct vec3 k, double a);
 /* A unit vector perpendicular to unit d: world +x made perpendicular (+z when d is
  * along x): where a trunk's azimuths are measured from. */
 struct vec3 gen_reference(struct vec3 d);
+/* v(phi) = cos(phi) e + sin(phi) (d x e): the direction at azimuth phi round unit d from e
+ * (perpendicular to it). */
+struct vec3 gen_azimuth(struct vec3 d, struct vec3 e, double phi);
+/* e (perpendicular to d) carried onto direction d2 by the rotation taking d to d2. */
+struct vec3 gen_transport(struct vec3 e, struct vec3 d, struct vec3 d2);
 
-/*
- * The recursion of the L-system type (3.1) from a branch already in the tree: its
- * children, theirs, ... down to level 1. `e` is the unit vector perpendicular to the
- * branch that its children's azimuths are measured from; `length` the length the
- * children's ratios apply to (the branch's own, but for a shrub's trunk). A clip (shrub)
- * cuts every branch short where it would leave the shape (NULL: none). Leaves go on every
- * branch left without children.
- */
 struct gen_clip_shape;
-int gen_lsystem_grow(struct gen_ctx *g, int branch, struct vec3 e, double length,
-		     const struct gen_clip_shape *clip);
+
+/* Leaves on a tip branch b: leaves.amount of them, the first at its tip and the others
+ * evenly down the `reach` of it (a fraction of its length: an L-system tree's leaves go
+ * GEN_LEAF_REACH down), round it by the golden angle from e (a unit vector across it),
+ * their fronts towards `face` (gen_leaf_points); each cut to the shape (clip; NULL: none).
+ * 0 or -ENOMEM. */
+#define GEN_LEAF_REACH 0.75
+int gen_tip_leaves(struct gen_ctx *g, int b, struct vec3 e, double reach, struct vec3 face,
+		   const struct gen_clip_shape *clip);
 
 int gen_lsystem(struct gen_ctx *g);
 int gen_shrub(struct gen_ctx *g);
 int gen_palm(struct gen_ctx *g);
 
-/* A shrub's clipping shape (gen_shrub.c). */
+/* A shrub's crown (gen_shrub.c): how many tips it aims at its shape's surface, and the
+ * most branches it has, its trunk's included (gen_count_branches). */
+size_t gen_shrub_tips(const struct gen_params *p);
+size_t gen_shrub_branches(const struct gen_params *p);
+
+/* A shrub's clipping shape. */
 struct gen_clip_shape {
 	enum gen_clip kind;
 	struct vec3 center; /* sphere, box: the centre; cone: the centre of its base */
@@ -71,8 +81,6 @@ void gen_clip_shape_of(const struct gen_params *p, struct gen_clip_shape *s);
 /* The signed distance from x to the shape's surface (< 0 inside): exact inside, and
  * never more than the true distance outside. Convex in x. */
 double gen_clip_distance(const struct gen_clip_shape *s, struct vec3 x);
-/* The outward unit normal of the shape's surface nearest x (the distance's gradient). */
-struct vec3 gen_clip_normal(const struct gen_clip_shape *s, struct vec3 x);
 /*
  * How much of the branch from a (radius r0) to b (radius r1) stays inside the shape with
  * its bark and its tip: the largest f in [0, 1] that keeps every point of a + f' (b - a),

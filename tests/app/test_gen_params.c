@@ -206,6 +206,22 @@ static void test_adjust(void)
 	gen_params_default(&p, GEN_SHRUB);
 	CHECK(gen_adjust(&p, GEN_TALLER, &q) && fabs(q.trunk_height / p.trunk_height - 1.15) < 1e-12 &&
 	      fabs(q.clip_radius / p.clip_radius - 1.15) < 1e-12 && q.trunk_start.y == p.trunk_start.y);
+	/* a shrub's shape decides its crown: wider widens the shape about its centre */
+	CHECK(gen_adjust(&p, GEN_WIDER, &q) && fabs(q.clip_radius / p.clip_radius - 1.15) < 1e-12 &&
+	      q.clip_center.y == p.clip_center.y && q.angle_min == p.angle_min && q.spread == p.spread);
+	CHECK(gen_adjust(&p, GEN_NARROWER, &q) && fabs(p.clip_radius / q.clip_radius - 1.15) < 1e-12);
+	p.clip = GEN_CLIP_BOX; /* [2, 1, 1] round (0, 1.5, 0): the trunk up into it */
+	p.trunk_height = 1.5;
+	CHECK(gen_adjust(&p, GEN_WIDER, &q) && fabs(q.clip_size.x / p.clip_size.x - 1.15) < 1e-12 &&
+	      fabs(q.clip_size.z / p.clip_size.z - 1.15) < 1e-12 && q.clip_size.y == p.clip_size.y);
+	/* levels add tips above what the shape needs (3^6 = 729 > 3^5 = 243 > 256 > 81): below,
+	 * fewer changes nothing and is refused */
+	p.levels = 7;
+	CHECK(gen_adjust(&p, GEN_FEWER, &q) && q.levels == 6);
+	CHECK(gen_count_branches(&q) < gen_count_branches(&p));
+	p.levels = 6;
+	CHECK(!gen_adjust(&p, GEN_FEWER, &q) && !memcmp(&p, &q, sizeof(p)));
+	CHECK(gen_adjust(&p, GEN_MORE, &q) && q.levels == 7);
 }
 
 int main(void)

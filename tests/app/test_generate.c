@@ -329,6 +329,85 @@ static void test_weight(void)
 	buf_finish(&line);
 }
 
+/* The extent of a tree's leaves: up (y) and across (x). */
+static void leaf_extent(const struct tree *t, double *height, double *width)
+{
+	double lo[2] = { INFINITY, INFINITY }, hi[2] = { -INFINITY, -INFINITY };
+
+	for (size_t i = 0; i < t->nleaves; i++)
+		for (size_t k = 0; k < t->leaves[i].npoints; k++) {
+			double v[2] = { t->leaves[i].points[k].y, t->leaves[i].points[k].x };
+
+			for (int j = 0; j < 2; j++) {
+				lo[j] = fmin(lo[j], v[j]);
+				hi[j] = fmax(hi[j], v[j]);
+			}
+		}
+	*height = hi[0] - lo[0];
+	*width = hi[1] - lo[1];
+}
+
+/*
+ * The parameter buttons on a shrub (issue 24): its shape decides its crown, so taller and
+ * wider make the crown itself taller and wider by about their step (1.15), shorter and
+ * narrower smaller, leafier and barer change its leaves; more and fewer change how many
+ * tips it has, or are refused where its shape already decides that (then drawn faded).
+ */
+static void test_shrub_buttons(void)
+{
+	static const enum button templates[] = { BUTTON_TPL_HEDGE, BUTTON_TPL_BALL, BUTTON_TPL_CONE };
+	static const struct {
+		enum button b;
+		double height, width, leaves; /* the least (> 1) or most (< 1) ratio to before */
+	} effects[] = {
+		{ BUTTON_GEN_TALLER, 1.1, 0, 0 },    { BUTTON_GEN_SHORTER, 1 / 1.1, 0, 0 },
+		{ BUTTON_GEN_WIDER, 0, 1.1, 0 },     { BUTTON_GEN_NARROWER, 0, 1 / 1.1, 0 },
+		{ BUTTON_GEN_LEAFIER, 0, 0, 1.25 },  { BUTTON_GEN_BARER, 0, 0, 1 / 1.25 },
+	};
+
+	for (size_t k = 0; k < sizeof(templates) / sizeof(*templates); k++) {
+		struct app *app = app_create(1280, 800, 13);
+		double h0, w0, h, w;
+		size_t n0, nops;
+
+		CHECK(app);
+		pen_button(&pen, app, templates[k]);
+		CHECK(params_of(app) && params_of(app)->type == GEN_SHRUB);
+		leaf_extent(&app->tree, &h0, &w0);
+		n0 = app->tree.nleaves;
+		for (size_t e = 0; e < sizeof(effects) / sizeof(*effects); e++) {
+			CHECK(app_gen_possible(app, effects[e].b));
+			pen_button(&pen, app, effects[e].b);
+			leaf_extent(&app->tree, &h, &w);
+			printf("%s: %-12s height %.3f -> %.3f m, width %.3f -> %.3f m, leaves %zu -> %zu\n",
+			       gen_preset_name((enum gen_preset)(templates[k] - BUTTON_TPL_CHERRY)),
+			       button_name(effects[e].b), h0, h, w0, w, n0, app->tree.nleaves);
+			if (effects[e].height)
+				CHECK(effects[e].height > 1 ? h >= h0 * effects[e].height : h <= h0 * effects[e].height);
+			if (effects[e].width)
+				CHECK(effects[e].width > 1 ? w >= w0 * effects[e].width : w <= w0 * effects[e].width);
+			if (effects[e].leaves)
+				CHECK(effects[e].leaves > 1 ? app->tree.nleaves >= n0 * effects[e].leaves
+							    : app->tree.nleaves <= n0 * effects[e].leaves);
+			pen_button(&pen, app, BUTTON_UNDO);
+			CHECK_INT(app->tree.nleaves, n0);
+		}
+		/* fewer, down to where the shape decides the tips: then refused, and nothing done */
+		while (app_gen_possible(app, BUTTON_GEN_FEWER)) {
+			size_t before = app->tree.nbranches;
+
+			pen_button(&pen, app, BUTTON_GEN_FEWER);
+			CHECK(app->tree.nbranches < before);
+		}
+		nops = app->doc.nops;
+		pen_button(&pen, app, BUTTON_GEN_FEWER);
+		CHECK(app->doc.nops == nops);
+		CHECK(params_of(app)->levels > 1);
+		CHECK(app_gen_possible(app, BUTTON_GEN_MORE));
+		app_destroy(app);
+	}
+}
+
 int main(void)
 {
 	test_weight();
@@ -336,5 +415,6 @@ int main(void)
 	test_parameter_buttons();
 	test_season();
 	test_drawing();
+	test_shrub_buttons();
 	return 0;
 }

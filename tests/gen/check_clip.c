@@ -5,8 +5,8 @@
  * - inside: every crown branch (all but the trunk) with its radius round each point, and
  *   every leaf, is inside the shape; so are model.glb's crown vertices, within 1 mm. The
  *   trunk's vertices are the first of the bark's: a branch's mesh depends on it and its
- *   ancestors only (mesh.h), so the same shrub grown with levels 1 and no leaves (its trunk
- *   alone) gives them, and the test checks they are the same bytes.
+ *   ancestors only (mesh.h), so the same trunk grown alone (an L-system tree of one level:
+ *   gen.sh's trunk_alone) gives them, and the test checks they are the same bytes.
  * - filled: what a gardener looks at is the clipped surface, and it is filled when leaves
  *   come up to it everywhere, without holes. FILL_SAMPLES points spread evenly by area over
  *   the surface; one is covered when a leaf's centre lies within DELTA of it; at least

@@ -208,15 +208,25 @@ shape_of() {
 # fill_delta FILE: a surface point is leafy with a leaf's centre within two leaf lengths
 fill_delta() { awk -v s="$(param "$1" leaves.size 0.15)" 'BEGIN { print 2 * s }'; }
 
-# trunk_alone FILE OUT: the same shrub without its crown (levels 1, no leaves): its mesh is
-# the first part of the shrub's bark (check_clip.c)
+# trunk_alone FILE OUT: the shrub's trunk without its crown: its mesh is the first part of
+# the shrub's bark (check_clip.c). A shrub always grows a crown to its shape, so the trunk is
+# grown alone as an L-system tree of one level with the same trunk, radii and sides.
 trunk_alone() {
-	local name
+	local name start height
 	name=$(basename "$1" .yaml)
+	start=$(param "$1" trunk.start "0 0 0")
+	height=$(param "$1" trunk_height 0.8)
+	# shellcheck disable=SC2086
+	set -- "$1" "$2" $start
 	{
-		grep -v '^levels:' "$1" | sed 's/amount: [0-9]*/amount: 0/'
+		echo "edaha-tree: 1"
+		echo "type: lsystem"
+		echo "precision: $(param "$1" precision 6)"
+		echo "trunk: {start: [$3, $4, $5], end: [$3, $(awk -v y="$4" -v h="$height" 'BEGIN { printf "%.17g", y + h }'), $5]}"
 		echo "levels: 1"
-		grep -q 'amount:' "$1" || echo "leaves: {amount: 0}"
+		echo "thickness: $(param "$1" thickness 0.06)"
+		echo "thickness_ratio: $(param "$1" thickness_ratio 0.75)"
+		echo "leaves: {amount: 0}"
 	} >"$T/$name-trunk.yaml"
 	gen "$T/$name-trunk.yaml" "$2"
 }
@@ -256,6 +266,29 @@ t_shrub_fill_presets() {
 		# shellcheck disable=SC2046
 		"$GEN_CHECK" clip "$T/$name/skeleton.json" $(shape_of "$SRC/$file") \
 			fill "$(fill_delta "$SRC/$file")" 0.9 || status=1
+	done
+	[ $status -eq 0 ] || fail "shrubs that do not fill their shapes (above)"
+}
+
+# Issue 24: a shrub fills its shape whatever its parameters (the property itself, on random
+# files: test_shrub_fill.c). Here end to end: the issue's file (a sparse crown whose trunk's
+# top is near the bottom of its sphere), and the kiosk's buttons on the shape presets: the
+# ball after fewer twice, narrower and shorter, the hedge after fewer twice. Each is inside
+# its shape and fills it by the measure of t_shrubs, with the parameters its drawing ends
+# with (a press that changes nothing is refused: fewer stops where the shape decides).
+t_shrub_kiosk() {
+	local name file status=0
+	gen "$HERE/trees/shrub-issue24.yaml" "$T/issue24"
+	run "$T/ball" --press tpl-ball --press gen-fewer --press gen-fewer --press gen-narrower --press gen-shorter
+	run "$T/hedge" --press tpl-hedge --press gen-fewer --press gen-fewer
+	for name in issue24 ball hedge; do
+		# the last generate op's parameters: one line of YAML (tree-params.md, In a drawing)
+		grep '^generate ' "$T/$name/drawing.edaha" | tail -1 | cut -d' ' -f5- >"$T/$name.yaml"
+		file=$T/$name.yaml
+		echo "== $name: $(grep -c '^generate ' "$T/$name/drawing.edaha") generate ops, levels $(param "$file" levels 7), $(shape_of "$file")"
+		# shellcheck disable=SC2046
+		"$GEN_CHECK" clip "$T/$name/skeleton.json" $(shape_of "$file") fill "$(fill_delta "$file")" 0.9 ||
+			status=1
 	done
 	[ $status -eq 0 ] || fail "shrubs that do not fill their shapes (above)"
 }
