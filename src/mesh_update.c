@@ -76,6 +76,8 @@ static int prepare(struct one *o, struct mesh *m, const struct tree_mesh_mark *o
 
 static void move_vertices(struct mesh *m, size_t to, size_t from, size_t n)
 {
+	if (n == 0)
+		return;
 	memmove(&m->positions[3 * to], &m->positions[3 * from], n * 3 * sizeof(float));
 	memmove(&m->normals[3 * to], &m->normals[3 * from], n * 3 * sizeof(float));
 }
@@ -131,8 +133,8 @@ static void commit(struct one *o)
 		size_t v = o->marks[i].nvertices, x = o->marks[i].nindices;
 		uint32_t shift = (uint32_t)v - (uint32_t)r->v0;
 
-		if (!r->from)
-			continue;
+		if (!r->from || r->nv == 0)
+			continue; /* (no vertices: no indices either) */
 		memcpy(&m->positions[3 * v], &r->from->positions[3 * r->v0], r->nv * 3 * sizeof(float));
 		memcpy(&m->normals[3 * v], &r->from->normals[3 * r->v0], r->nv * 3 * sizeof(float));
 		for (size_t k = 0; k < r->ni; k++)
@@ -294,8 +296,10 @@ static int copy_runs(struct mesh *out, struct tree_mesh_mark **out_marks, size_t
 		uint32_t shift = (uint32_t)v - (uint32_t)r.v0;
 
 		om[k] = (struct tree_mesh_mark){ v, x };
-		memcpy(&out->positions[3 * v], &m->positions[3 * r.v0], r.nv * 3 * sizeof(float));
-		memcpy(&out->normals[3 * v], &m->normals[3 * r.v0], r.nv * 3 * sizeof(float));
+		if (r.nv) {
+			memcpy(&out->positions[3 * v], &m->positions[3 * r.v0], r.nv * 3 * sizeof(float));
+			memcpy(&out->normals[3 * v], &m->normals[3 * r.v0], r.nv * 3 * sizeof(float));
+		}
 		for (size_t i = 0; i < r.ni; i++)
 			out->indices[x + i] = m->indices[r.i0 + i] + shift;
 		v += r.nv;

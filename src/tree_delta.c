@@ -758,8 +758,10 @@ int tree_delta_take_appended(struct tree_delta *d, struct tree *t, size_t nb, si
 	}
 	b1->nb = mb;
 	b1->nl = ml;
-	memcpy(b1->branches, t->branches + nb, mb * sizeof(*b1->branches));
-	memcpy(b1->leaves, t->leaves + nl, ml * sizeof(*b1->leaves));
+	if (mb)
+		memcpy(b1->branches, t->branches + nb, mb * sizeof(*b1->branches));
+	if (ml)
+		memcpy(b1->leaves, t->leaves + nl, ml * sizeof(*b1->leaves));
 	t->nbranches = nb;
 	t->nleaves = nl;
 	tree_index_truncated(t, nb);
@@ -918,7 +920,8 @@ int tree_delta_swap(struct tree_delta *d, struct tree *t, int *branch_from, int 
 	}
 	for (size_t q = 0; q < s->nl; q++)
 		nl[s->leaf_at[q]] = s->leaves[q];
-	memcpy(rv, t->vines + r->vines_from, nrv * sizeof(*rv));
+	if (nrv)
+		memcpy(rv, t->vines + r->vines_from, nrv * sizeof(*rv));
 	if (nsv)
 		memcpy(t->vines + s->vines_from, s->vines, nsv * sizeof(*s->vines));
 	if (d->wood) {
