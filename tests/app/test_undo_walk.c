@@ -423,9 +423,9 @@ static void session(uint64_t seed)
 
 	CHECK(app);
 	rng_seed(&r, seed * 104729 + 7);
-	n = 25 + (int)(rng_next(&r) % 30);
+	n = 16 + (int)(rng_next(&r) % 20);
 	for (int i = 0; i < n; i++)
-		act(app, &r, &propagations, seed % 10 == 3);
+		act(app, &r, &propagations, seed % 20 == 3); /* wood: slow to replay */
 	/* all the way back and forth, then at random */
 	while (doc_can_undo(&app->doc))
 		step(app, BUTTON_UNDO);
