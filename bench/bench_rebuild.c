@@ -8,12 +8,14 @@
  *   rebuild  replaying the whole history (app_rebuild: what undo and redo did before)
  *   load     --load: a document given to the app, replayed, its checkpoints taken
  *   commit   one more stroke
- *   undo     one press of undo, walking back from the end of the history (after a load):
- *            of an edit that only appended elements (a stroke, a leaf, a clone added:
- *            cut back), of one that changed some (a cut, a clone removed: from a
- *            checkpoint)
- *   redo     one press of redo, walking forward again
+ *   undo     one press of undo, walking back from the end of the history to the empty
+ *            canvas (after a load): of an edit that only appended elements (a stroke, a
+ *            leaf, a clone added, a propagation), of one that changed some (a cut, a
+ *            clone removed, 3D, a year of wood)
+ *   redo     one press of redo, walking forward again to the end
  *
+ * The session ends with a few cuts, so that its walk meets every kind of edit; the
+ * worst press of each kind is printed too.
  * Medians, and the worst press of a walk; growth with size.
  */
 #include <math.h>
@@ -21,13 +23,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "app.h"
 #include "bench_draw.h"
 #include "bench_util.h"
 
 #define REPS 7
-#define WALK 200 /* presses of undo, then of redo, on the edited drawing */
+#define CUTS 10 /* on the edited drawing, at its end */
 
 struct series {
 	double size, median; /* of the previous row */
@@ -80,22 +83,79 @@ static double load(const struct app *app, int reps, struct app **out)
 	return bench_median(t, (size_t)reps);
 }
 
-/* Press times sorted by what the op undone or redone had done: only appended (a stroke,
- * a leaf, a clone added) or changed elements (a cut, a clone removed). */
-struct walk {
-	double any[2 * WALK], appended[2 * WALK], changed[2 * WALK];
-	size_t nany, nappended, nchanged;
+/* What the op undone or redone was, for the worst press of each kind. */
+enum press_kind {
+	PRESS_STROKE, /* a branch or a leaf drawn */
+	PRESS_CUT,    /* a stroke that cut or erased */
+	PRESS_CLONE_ADD,
+	PRESS_CLONE_REMOVE,
+	PRESS_PROPAGATE,
+	PRESS_LIFT,
+	PRESS_GROW,
+	PRESS_OTHER,
+	PRESS_KINDS
 };
 
-static void walk_add(struct walk *w, const struct app *app, size_t state, double dt)
+static const char *const press_names[PRESS_KINDS] = {
+	"stroke", "cut", "clone added", "clone removed", "propagation", "3D", "grow", "other",
+};
+
+/* Press times sorted by what the op undone or redone had done: only appended (a stroke,
+ * a leaf, a clone added, a propagation) or changed elements (a cut, a clone removed). */
+struct walk {
+	double *any, *appended, *changed;
+	size_t nany, nappended, nchanged;
+	double worst[PRESS_KINDS], worst_cpu[PRESS_KINDS];
+	size_t count[PRESS_KINDS];
+};
+
+/* This thread's CPU seconds: on a shared machine a press's wall time may include a
+ * time slice given to another process, which this leaves out. */
+static double cpu_now(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static enum press_kind press_kind(const struct app *app, size_t state)
 {
 	const struct history_mark *m = history_mark(&app->history, state);
+
+	switch (app->doc.ops[state - 1].kind) {
+	case DOC_OP_STROKE:
+		return m && !m->grew ? PRESS_CUT : PRESS_STROKE;
+	case DOC_OP_CLONE_ADD:
+		return PRESS_CLONE_ADD;
+	case DOC_OP_CLONE_REMOVE:
+		return PRESS_CLONE_REMOVE;
+	case DOC_OP_PROPAGATE:
+		return PRESS_PROPAGATE;
+	case DOC_OP_LIFT:
+		return PRESS_LIFT;
+	case DOC_OP_GROW:
+		return PRESS_GROW;
+	default:
+		return PRESS_OTHER;
+	}
+}
+
+static void walk_add(struct walk *w, const struct app *app, size_t state, double dt, double cpu)
+{
+	const struct history_mark *m = history_mark(&app->history, state);
+	enum press_kind k = press_kind(app, state);
 
 	w->any[w->nany++] = dt;
 	if (m && m->grew)
 		w->appended[w->nappended++] = dt;
 	else
 		w->changed[w->nchanged++] = dt;
+	w->count[k]++;
+	if (dt > w->worst[k])
+		w->worst[k] = dt;
+	if (cpu > w->worst_cpu[k])
+		w->worst_cpu[k] = cpu;
 }
 
 static double worst(const double *v, size_t n)
@@ -107,21 +167,58 @@ static double worst(const double *v, size_t n)
 	return m;
 }
 
-/* Undo n times from the end, then redo n times. */
-static void walk(struct app *app, size_t n, struct walk *undo, struct walk *redo)
+static void walk_init(struct walk *w, size_t n)
 {
-	memset(undo, 0, sizeof(*undo));
-	memset(redo, 0, sizeof(*redo));
-	for (size_t i = 0; i < n && doc_can_undo(&app->doc); i++) {
+	memset(w, 0, sizeof(*w));
+	w->any = calloc(n + 1, sizeof(*w->any));
+	w->appended = calloc(n + 1, sizeof(*w->appended));
+	w->changed = calloc(n + 1, sizeof(*w->changed));
+	if (!w->any || !w->appended || !w->changed) {
+		fprintf(stderr, "bench_rebuild: out of memory\n");
+		exit(1);
+	}
+}
+
+static void walk_finish(struct walk *w)
+{
+	free(w->any);
+	free(w->appended);
+	free(w->changed);
+}
+
+/* Undo all the way from the end, then redo all the way. */
+static void walk(struct app *app, struct walk *undo, struct walk *redo)
+{
+	walk_init(undo, app->doc.nops);
+	walk_init(redo, app->doc.nops);
+	while (doc_can_undo(&app->doc)) {
 		size_t from = app->doc.cursor;
+		double c0 = cpu_now(), dt = bench_press(app, BUTTON_UNDO);
 
-		walk_add(undo, app, from, bench_press(app, BUTTON_UNDO));
+		walk_add(undo, app, from, dt, cpu_now() - c0);
 	}
-	for (size_t i = 0; i < n && doc_can_redo(&app->doc); i++) {
-		double dt = bench_press(app, BUTTON_REDO);
+	while (doc_can_redo(&app->doc)) {
+		double c0 = cpu_now(), dt = bench_press(app, BUTTON_REDO);
 
-		walk_add(redo, app, app->doc.cursor, dt);
+		walk_add(redo, app, app->doc.cursor, dt, cpu_now() - c0);
 	}
+}
+
+/* The worst press of each kind the walk met (wall time / this thread's CPU time, and
+ * how many presses), and of all. */
+static void print_kinds(const char *what, const struct walk *w)
+{
+	double cpu = 0;
+
+	printf("  %s, worst press by kind, ms wall/cpu (presses):\n   ", what);
+	for (int k = 0; k < PRESS_KINDS; k++) {
+		if (!w->count[k])
+			continue;
+		printf(" %s %.3f/%.3f (%zu);", press_names[k], 1e3 * w->worst[k],
+		       1e3 * w->worst_cpu[k], w->count[k]);
+		cpu = w->worst_cpu[k] > cpu ? w->worst_cpu[k] : cpu;
+	}
+	printf(" all %.3f/%.3f\n", 1e3 * worst(w->any, w->nany), 1e3 * cpu);
 }
 
 /* A slash across one of the newest branches, begun away from the wood: a cut. A slash
@@ -154,17 +251,17 @@ static void print_walk(const char *what, double size, const struct walk *w, cons
 		       const char *changed, struct series *s)
 {
 	char name[64];
-	struct walk c = *w;
+	const struct walk *c = w;
 
-	if (c.nappended) {
+	if (c->nappended) {
 		snprintf(name, sizeof(name), "%s, %s (worst %.3f)", what, appended,
-			 1e3 * worst(c.appended, c.nappended));
-		row(name, size, bench_median(c.appended, c.nappended), &s[0]);
+			 1e3 * worst(c->appended, c->nappended));
+		row(name, size, bench_median(c->appended, c->nappended), &s[0]);
 	}
-	if (c.nchanged) {
+	if (c->nchanged) {
 		snprintf(name, sizeof(name), "%s, %s (worst %.3f)", what, changed,
-			 1e3 * worst(c.changed, c.nchanged));
-		row(name, size, bench_median(c.changed, c.nchanged), &s[1]);
+			 1e3 * worst(c->changed, c->nchanged));
+		row(name, size, bench_median(c->changed, c->nchanged), &s[1]);
 	}
 }
 
@@ -202,9 +299,11 @@ static int strokes(void)
 		snprintf(name, sizeof(name), "load %zu strokes", app->doc.nops);
 		row(name, n, load(app, reps, &loaded), &ld);
 		/* stepping through the loaded drawing, as after --load */
-		walk(loaded, 2 * (size_t)reps, &undo, &redo);
+		walk(loaded, &undo, &redo);
 		print_walk("undo", n, &undo, "a stroke", "a cut", un);
 		print_walk("redo", n, &redo, "a stroke", "a cut", re);
+		walk_finish(&undo);
+		walk_finish(&redo);
 		app_destroy(loaded);
 		app_destroy(app);
 	}
@@ -220,7 +319,7 @@ static int session(void)
 	struct app *loaded;
 	struct walk undo, redo;
 	char name[64];
-	size_t kinds[DOC_OP_IMPORT + 1] = { 0 };
+	size_t kinds[DOC_OP_IMPORT + 1] = { 0 }, cuts = 0;
 
 	if (!app)
 		return 1;
@@ -228,20 +327,34 @@ static int session(void)
 	 * one's do not: a press, so that --quick copies and frees an op that owns memory */
 	if (bench_quick)
 		(void)bench_press(app, BUTTON_GROW);
-	for (size_t i = 0; i < app->doc.nops; i++)
+	/* and a few cuts, from the front, each after a stroke */
+	app_set_camera(app, (struct camera){ 0, 0 });
+	for (int i = 0; i < CUTS; i++) {
+		bench_draw_stroke(app, &pen, 620, 380 + 20 * i, 500, 280, 32, NULL);
+		cut(app, &pen, 5 * i);
+	}
+	for (size_t i = 0; i < app->doc.nops; i++) {
+		const struct history_mark *m = history_mark(&app->history, i + 1);
+
 		kinds[app->doc.ops[i].kind]++;
-	printf("\n%zu edits: %zu strokes, 3D, %zu clones added, %zu removed, %zu propagations; "
-	       "%zu branches, %zu leaves\n",
-	       app->doc.nops, kinds[DOC_OP_STROKE], kinds[DOC_OP_CLONE_ADD],
-	       kinds[DOC_OP_CLONE_REMOVE], kinds[DOC_OP_PROPAGATE], app->tree.nbranches,
-	       app->tree.nleaves);
+		cuts += app->doc.ops[i].kind == DOC_OP_STROKE && m && !m->grew;
+	}
+	printf("\n%zu edits: %zu strokes (%zu cuts), 3D, %zu clones added, %zu removed, %zu "
+	       "propagations, %zu grow; %zu branches, %zu leaves\n",
+	       app->doc.nops, kinds[DOC_OP_STROKE], cuts, kinds[DOC_OP_CLONE_ADD],
+	       kinds[DOC_OP_CLONE_REMOVE], kinds[DOC_OP_PROPAGATE], kinds[DOC_OP_GROW],
+	       app->tree.nbranches, app->tree.nleaves);
 	snprintf(name, sizeof(name), "rebuild %zu ops", app->doc.nops);
-	row(name, (double)app->doc.nops, bench_run(rebuild, app, 3), &reb);
+	row(name, (double)app->doc.nops, bench_run(rebuild, app, bench_reps(3)), &reb);
 	snprintf(name, sizeof(name), "load %zu ops", app->doc.nops);
-	row(name, (double)app->doc.nops, load(app, 3, &loaded), &ld);
-	walk(loaded, WALK, &undo, &redo);
+	row(name, (double)app->doc.nops, load(app, bench_reps(3), &loaded), &ld);
+	walk(loaded, &undo, &redo);
 	print_walk("undo", (double)app->doc.nops, &undo, "appended", "changed", any);
 	print_walk("redo", (double)app->doc.nops, &redo, "appended", "changed", any + 2);
+	print_kinds("undo", &undo);
+	print_kinds("redo", &redo);
+	walk_finish(&undo);
+	walk_finish(&redo);
 	app_destroy(loaded);
 	app_destroy(app);
 	return 0;

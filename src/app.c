@@ -217,10 +217,8 @@ int app_push_op(struct app *app, struct doc_op *op)
 	/* a generated tree replaces every leaf: all of them unfold */
 	app_unfold_note(app, op->kind == DOC_OP_GENERATE || app->tree.nleaves < nl ? 0 : nl,
 			op->time_us);
-	if (ret == SKETCH_GREW && app->tree.nbranches >= nb && app->tree.nleaves >= nl)
-		ret = tree_mesh_append_marked(&app->mesh, &app->tree, nb, nl, &app->mesh_marks);
-	else
-		ret = tree_mesh_build_marked(&app->mesh, &app->tree, &app->mesh_marks);
+	/* appended parts, or those the op's delta says changed (app_history.c) */
+	ret = app_mesh_after_op(app, nb, nl, ret);
 	/* a press swells on screen; any other change of the tree shows its bark at rest */
 	app->swell_start_us = op->kind == DOC_OP_GROW && app->tree.wood ? op->time_us : UINT64_MAX;
 	if (ret == 0 && app->tree.nvines > nv) /* op is the caller's again: the doc's copy */

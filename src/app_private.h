@@ -23,8 +23,12 @@ int app_apply_op(struct app *app, const struct doc_op *op);
 int app_press_button(struct app *app, enum button button, uint64_t time_us);
 
 /* app_history.c */
-/* app_apply_op of ops[k - 1], the result recorded as state k (history.h). */
+/* app_apply_op of ops[k - 1], the result recorded as state k (history.h), with its
+ * delta. */
 int app_apply_recorded(struct app *app, size_t k);
+/* The meshes after the op at the cursor was applied (applied: its SKETCH_GREW/CHANGED) on
+ * a tree of nb branches and nl leaves: only what it changed is meshed. 0 or -ENOMEM. */
+int app_mesh_after_op(struct app *app, size_t nb, size_t nl, int applied);
 /* After doc_undo / doc_redo: the tree, generator and meshes of the cursor's state. 0 or
  * -ENOMEM. */
 /* New origami leaves unfolding (app_unfold.c): an edit added leaves [first, ...) at

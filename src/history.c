@@ -1,9 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 #include "history.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "tree_delta.h"
 
 void history_init(struct history *h)
 {
@@ -19,12 +22,25 @@ static void checkpoint_drop(struct history *h, size_t i)
 	h->ncps--;
 }
 
+void history_delta_drop(struct history *h, size_t k)
+{
+	if (k >= h->cap_deltas || !h->deltas[k])
+		return;
+	h->bytes -= h->delta_bytes[k];
+	tree_delta_finish(h->deltas[k]);
+	free(h->deltas[k]);
+	h->deltas[k] = NULL;
+	h->delta_bytes[k] = 0;
+}
+
 void history_forget_after(struct history *h, size_t k)
 {
 	if (h->nmarks > k + 1)
 		h->nmarks = k + 1;
 	while (h->ncps > 0 && h->cps[h->ncps - 1].at > k)
 		checkpoint_drop(h, h->ncps - 1);
+	for (size_t i = k + 1; i < h->cap_deltas; i++)
+		history_delta_drop(h, i);
 }
 
 void history_clear(struct history *h)
@@ -33,6 +49,7 @@ void history_clear(struct history *h)
 	h->nmarks = 0;
 	while (h->ncps > 0)
 		checkpoint_drop(h, h->ncps - 1);
+	history_delta_drop(h, 0);
 }
 
 void history_finish(struct history *h)
@@ -40,6 +57,8 @@ void history_finish(struct history *h)
 	history_clear(h);
 	free(h->marks);
 	free(h->cps);
+	free(h->deltas);
+	free(h->delta_bytes);
 	history_init(h);
 }
 
@@ -85,47 +104,119 @@ static size_t distance(size_t a, size_t b)
 	return a > b ? a - b : b - a;
 }
 
-/* Over the budget a checkpoint goes whose going leaves the smallest gap for how far it is
- * from the cursor: far from it they thin out, so that a long walk back replays
- * about as many ops as it has come (logarithmic spacing). The two nearest the cursor
- * stay. */
+/* The checkpoint whose going leaves the smallest gap for how far it is from the
+ * cursor: far from it they thin out, so that a long walk back replays about as many ops
+ * as it has come (logarithmic spacing). The two nearest the cursor stay: -1 then. */
+static long checkpoint_victim(const struct history *h, size_t cursor)
+{
+	size_t near[2] = { 0, 1 }, victim = SIZE_MAX;
+	double best = 0.0;
+
+	if (h->ncps <= 2)
+		return -1;
+	for (size_t i = 0; i < h->ncps; i++) {
+		size_t d = distance(h->cps[i].at, cursor);
+
+		if (i < 2)
+			continue;
+		if (d < distance(h->cps[near[0]].at, cursor)) {
+			near[1] = near[0];
+			near[0] = i;
+		} else if (d < distance(h->cps[near[1]].at, cursor)) {
+			near[1] = i;
+		}
+	}
+	if (distance(h->cps[near[1]].at, cursor) < distance(h->cps[near[0]].at, cursor)) {
+		size_t x = near[0];
+
+		near[0] = near[1];
+		near[1] = x;
+	}
+	for (size_t i = 0; i < h->ncps; i++) {
+		size_t prev = i > 0 ? h->cps[i - 1].at : 0;
+		size_t next = i + 1 < h->ncps ? h->cps[i + 1].at : h->cps[i].at;
+		double score = (double)(next - prev) / (double)(distance(h->cps[i].at, cursor) + 1);
+
+		if (i == near[0] || i == near[1])
+			continue;
+		if (victim == SIZE_MAX || score < best) {
+			victim = i;
+			best = score;
+		}
+	}
+	return (long)victim;
+}
+
+/* Parts a delta's stash holds: what a press would build without it. */
+static size_t stashed_parts(const struct tree_delta *d)
+{
+	size_t n = 0;
+
+	for (int s = 0; s < 2; s++) {
+		const struct tree_delta_side *side = &d->side[s];
+
+		if (side->stash == TREE_STASH_WHOLE)
+			n += side->nbranches + side->nleaves;
+		else if (side->stash == TREE_STASH_PARTS)
+			n += side->nb + side->nl;
+	}
+	return n;
+}
+
+/* The delta farthest from the cursor, but for those of the next undo and the next redo:
+ * with a stash of at most `parts` parts if stashed (0: any), or any. -1 if none. */
+static long delta_victim(const struct history *h, size_t cursor, bool stashed, size_t parts)
+{
+	long victim = -1;
+	size_t far = 0;
+
+	for (size_t k = 0; k < h->cap_deltas; k++) {
+		const struct tree_delta *d = h->deltas[k];
+		size_t dist = distance(k, cursor), n;
+
+		if (!d || k == cursor || k == cursor + 1 || dist < far)
+			continue;
+		n = stashed ? stashed_parts(d) : 0;
+		if (stashed && (n == 0 || (parts && n > parts)))
+			continue;
+		victim = (long)k;
+		far = dist;
+	}
+	return victim;
+}
+
+static void delta_count(struct history *h, size_t k)
+{
+	h->bytes -= h->delta_bytes[k];
+	h->delta_bytes[k] = tree_delta_bytes(h->deltas[k], NULL);
+	h->bytes += h->delta_bytes[k];
+}
+
+/* Over the budget: checkpoints go first (only an op without a delta needs one), then
+ * meshes stashed far from the cursor (they can be built again), then deltas. */
 static void evict(struct history *h, size_t cursor)
 {
-	while (h->bytes > h->budget && h->ncps > 2) {
-		size_t near[2] = { 0, 1 }, victim = SIZE_MAX;
-		double best = 0.0;
+	while (h->bytes > h->budget) {
+		long k = checkpoint_victim(h, cursor);
 
-		for (size_t i = 0; i < h->ncps; i++) {
-			size_t d = distance(h->cps[i].at, cursor);
-
-			if (i < 2)
-				continue;
-			if (d < distance(h->cps[near[0]].at, cursor)) {
-				near[1] = near[0];
-				near[0] = i;
-			} else if (d < distance(h->cps[near[1]].at, cursor)) {
-				near[1] = i;
-			}
+		if (k >= 0) {
+			checkpoint_drop(h, (size_t)k);
+			continue;
 		}
-		if (distance(h->cps[near[1]].at, cursor) < distance(h->cps[near[0]].at, cursor)) {
-			size_t x = near[0];
-
-			near[0] = near[1];
-			near[1] = x;
+		/* stashes a press builds again quickly first, then any */
+		k = delta_victim(h, cursor, true, HISTORY_CHEAP_PARTS);
+		if (k < 0)
+			k = delta_victim(h, cursor, true, 0);
+		if (k >= 0) {
+			tree_delta_drop_stash(&h->deltas[k]->side[0]);
+			tree_delta_drop_stash(&h->deltas[k]->side[1]);
+			delta_count(h, (size_t)k);
+			continue;
 		}
-		for (size_t i = 0; i < h->ncps; i++) {
-			size_t prev = i > 0 ? h->cps[i - 1].at : 0;
-			size_t next = i + 1 < h->ncps ? h->cps[i + 1].at : h->cps[i].at;
-			double score = (double)(next - prev) / (double)(distance(h->cps[i].at, cursor) + 1);
-
-			if (i == near[0] || i == near[1])
-				continue;
-			if (victim == SIZE_MAX || score < best) {
-				victim = i;
-				best = score;
-			}
-		}
-		checkpoint_drop(h, victim);
+		k = delta_victim(h, cursor, false, 0);
+		if (k < 0)
+			return;
+		history_delta_drop(h, (size_t)k);
 	}
 }
 
@@ -183,11 +274,72 @@ static bool due(size_t k, size_t cursor)
 }
 
 void history_record(struct history *h, size_t k, const struct tree *t, const struct rng *rng,
-		    bool grew, bool slow, size_t cursor)
+		    bool grew, bool replaying, size_t cursor)
 {
 	record_mark(h, k, t, rng, grew);
-	if (slow || due(k, cursor))
+	if (replaying && due(k, cursor))
 		record_checkpoint(h, k, t, rng, cursor);
+}
+
+struct tree_delta *history_delta(const struct history *h, size_t k)
+{
+	return k < h->cap_deltas ? h->deltas[k] : NULL;
+}
+
+int history_delta_put(struct history *h, size_t k, struct tree_delta *d, size_t cursor)
+{
+	struct tree_delta *p;
+
+	history_delta_drop(h, k);
+	if (k >= h->cap_deltas) {
+		size_t cap = h->cap_deltas ? h->cap_deltas : 64;
+		struct tree_delta **nd;
+		size_t *nb;
+
+		while (cap <= k)
+			cap *= 2;
+		nd = realloc(h->deltas, cap * sizeof(*nd));
+		if (nd)
+			h->deltas = nd;
+		nb = nd ? realloc(h->delta_bytes, cap * sizeof(*nb)) : NULL;
+		if (!nb) {
+			tree_delta_finish(d);
+			return -ENOMEM;
+		}
+		h->delta_bytes = nb;
+		for (size_t i = h->cap_deltas; i < cap; i++) {
+			h->deltas[i] = NULL;
+			h->delta_bytes[i] = 0;
+		}
+		h->cap_deltas = cap;
+	}
+	p = malloc(sizeof(*p));
+	if (!p) {
+		tree_delta_finish(d);
+		return -ENOMEM;
+	}
+	*p = *d;
+	tree_delta_init(d);
+	h->deltas[k] = p;
+	h->delta_bytes[k] = 0;
+	delta_count(h, k);
+	evict(h, cursor);
+	return 0;
+}
+
+void history_delta_changed(struct history *h, size_t k, size_t cursor)
+{
+	if (k >= h->cap_deltas || !h->deltas[k])
+		return;
+	delta_count(h, k);
+	evict(h, cursor);
+}
+
+void history_deltas_fit(struct history *h, size_t cursor)
+{
+	for (size_t k = 1; k < h->cap_deltas; k++)
+		if (h->deltas[k] && h->deltas[k]->stored != (k <= cursor ? 0 : 1))
+			history_delta_drop(h, k);
 }
 
 const struct history_mark *history_mark(const struct history *h, size_t k)

@@ -1163,6 +1163,48 @@ int tree_mesh_build_reusing(struct tree_mesh *tm, struct tree_mesh_marks *mk, co
 	return r;
 }
 
+int tree_mesh_build_parts(struct tree_mesh *out, struct tree_mesh_marks *out_mk,
+			  const struct tree *t, const size_t *branches, size_t nb, const size_t *leaves,
+			  size_t nl)
+{
+	struct scratch sc;
+	int r = 0;
+
+	mesh_clear(&out->bark);
+	mesh_clear(&out->leaves);
+	memset(&sc, 0, sizeof(sc));
+	lod_init(&sc.lod);
+	sc.lod.fixed = tree_sides(t);
+	marks_reserve_first(&out_mk->bark, &out_mk->cap_bark);
+	marks_reserve_first(&out_mk->leaves, &out_mk->cap_leaves);
+	mark_start(&out_mk->bark, &out_mk->nbark, 0, &out->bark);
+	mark_start(&out_mk->leaves, &out_mk->nleaves, 0, &out->leaves);
+	for (size_t k = 0; k < nb && r == 0; k++) {
+		if (branches[k] >= t->nbranches)
+			r = -EINVAL;
+		else if (!tree_branch_in_wood(t, branches[k]))
+			r = tube_build(&out->bark, t, branches[k], &sc);
+		mark_next(&out_mk->bark, &out_mk->nbark, &out_mk->cap_bark, &out->bark);
+	}
+	for (size_t k = 0; k < nl && r == 0; k++) {
+		if (leaves[k] >= t->nleaves)
+			r = -EINVAL;
+		else
+			r = leaf_build(&out->leaves, &t->leaves[leaves[k]], &sc);
+		mark_next(&out_mk->leaves, &out_mk->nleaves, &out_mk->cap_leaves, &out->leaves);
+	}
+	scratch_finish(&sc);
+	/* every part must be marked: a mark that could not be kept is a failure here */
+	if (r == 0 && (out_mk->nbark != nb + 1 || out_mk->nleaves != nl + 1))
+		r = -ENOMEM;
+	if (r < 0) {
+		mesh_clear(&out->bark);
+		mesh_clear(&out->leaves);
+		out_mk->nbark = out_mk->nleaves = 0;
+	}
+	return r;
+}
+
 int tree_mesh_append(struct tree_mesh *tm, const struct tree *t, size_t first_branch,
 		     size_t first_leaf)
 {

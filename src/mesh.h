@@ -113,3 +113,38 @@ bool tree_mesh_truncate(struct tree_mesh *tm, struct tree_mesh_marks *mk, size_t
 int tree_mesh_build_reusing(struct tree_mesh *tm, struct tree_mesh_marks *mk, const struct tree *t,
 			    const struct tree_mesh *from, const struct tree_mesh_marks *from_mk,
 			    const int *reuse_branch, const int *reuse_leaf);
+/*
+ * The parts of t's branches `branches[0..nb)` and leaves `leaves[0..nl)` alone, one after
+ * the other, into out (cleared first): part k between marks k and k + 1 of out_mk, its
+ * indices counted from its own first vertex's place in out. Each is the part a full
+ * build makes of that element, but for where its vertices are. 0, -EINVAL (no such
+ * element) or -ENOMEM (out then empty).
+ */
+int tree_mesh_build_parts(struct tree_mesh *out, struct tree_mesh_marks *out_mk,
+			  const struct tree *t, const size_t *branches, size_t nb, const size_t *leaves,
+			  size_t nl);
+/*
+ * Meshes t from the meshes tm holds (those of another tree, marked in mk), in place: part
+ * i of t's bark is the old part branch[i] when that is >= 0 (such parts must come in the
+ * old order), part -2 - branch[i] of `stash` (marked in stash_mk) when that is <= -2, or
+ * built (-1); leaves alike. The caller vouches that the parts taken are what a build
+ * would make. Memory moves only where parts come and go: the parts kept shift in place.
+ * 0, -EINVAL (a part that is not there, or out of order) or -ENOMEM; tm and mk are as
+ * they were on failure. parts_built, if given, gets how many parts were built.
+ */
+#define TREE_MESH_BUILD (-1)
+struct tree_mesh_plan {
+	const int *branch, *leaf;
+	const struct tree_mesh *stash;
+	const struct tree_mesh_marks *stash_mk;
+};
+int tree_mesh_update(struct tree_mesh *tm, struct tree_mesh_marks *mk, const struct tree *t,
+		     const struct tree_mesh_plan *plan, size_t *parts_built);
+/* Gives back the room tm's meshes hold beyond a quarter more than they use (meshes
+ * kept aside, to be the tree's again). */
+void tree_mesh_shrink(struct tree_mesh *tm);
+/* Copies the parts of tm's branches `branches[0..nb)` and leaves `leaves[0..nl)` into out
+ * (cleared first), as tree_mesh_build_parts lays them out. 0, -EINVAL or -ENOMEM. */
+int tree_mesh_copy_parts(struct tree_mesh *out, struct tree_mesh_marks *out_mk,
+			 const struct tree_mesh *tm, const struct tree_mesh_marks *mk,
+			 const size_t *branches, size_t nb, const size_t *leaves, size_t nl);

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "tree_delta.h"
 #include "tree_index.h"
 #include "wood.h"
 
@@ -36,6 +37,7 @@ void tree_init(struct tree *t)
 
 void tree_clear(struct tree *t)
 {
+	tree_journal_clear(t); /* what was there goes to the journal, if any */
 	for (size_t i = 0; i < t->nbranches; i++) {
 		free(t->branches[i].points);
 		free(t->branches[i].radii);
@@ -64,6 +66,7 @@ void tree_clear(struct tree *t)
 
 void tree_finish(struct tree *t)
 {
+	tree_journal_discard(t);
 	tree_clear(t);
 	free(t->branches);
 	free(t->leaves);
@@ -127,6 +130,10 @@ void tree_wood_drop(struct tree *t)
 {
 	if (!t->wood)
 		return;
+	if (tree_journal_wood(t)) {
+		t->wood = NULL; /* the journal's now */
+		return;
+	}
 	wood_finish(t->wood);
 	free(t->wood);
 	t->wood = NULL;
@@ -258,6 +265,7 @@ int tree_copy(struct tree *dst, const struct tree *src)
 
 void tree_truncate(struct tree *t, size_t nb, size_t nl)
 {
+	tree_journal_truncate(t, nb, nl);
 	for (size_t i = nb; i < t->nbranches; i++) {
 		free(t->branches[i].points);
 		free(t->branches[i].radii);

@@ -97,6 +97,9 @@ struct tree {
 	 * a cache, not part of the model (tree_copy leaves it). The functions here keep it in
 	 * step; code that moves a branch's points in place calls tree_index_drop(). */
 	struct tree_index *index;
+	/* While the app applies an op: what its edits take out or change, for undo and redo
+	 * (tree_delta.h); NULL otherwise. Not part of the model either (tree_copy leaves it). */
+	struct tree_journal *journal;
 };
 
 void tree_init(struct tree *t);

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "tree.h"
+#include "tree_delta.h"
 #include "tree_index.h"
 
 #define TREE_MIN_CUT_M 0.025
@@ -47,8 +48,18 @@ double tree_param(const struct branch *b, size_t segment, double seg_t)
 /* Compacts the leaves, keeping order; map_branch gives each branch's new id or -1. */
 static void compact_leaves(struct tree *t, const int *map_branch, const bool *remove_leaf)
 {
-	size_t k = 0;
+	/* the journal, if any, follows the leaves that stay (without memory it gives up) */
+	int *map = t->journal ? malloc((t->nleaves + 1) * sizeof(*map)) : NULL;
+	size_t k = 0, n = t->nleaves;
 
+	if (t->journal && !map)
+		tree_journal_fail(t);
+	for (size_t i = 0; i < t->nleaves; i++) {
+		int b = map_branch ? map_branch[t->leaves[i].branch] : t->leaves[i].branch;
+
+		if ((remove_leaf && remove_leaf[i]) || b < 0)
+			tree_journal_leaf(t, i, false);
+	}
 	for (size_t i = 0; i < t->nleaves; i++) {
 		struct leaf l = t->leaves[i];
 		int b = map_branch ? map_branch[l.branch] : l.branch;
@@ -56,13 +67,20 @@ static void compact_leaves(struct tree *t, const int *map_branch, const bool *re
 		if ((remove_leaf && remove_leaf[i]) || b < 0) {
 			free(l.points);
 			free(l.local);
+			if (map)
+				map[i] = -1;
 			continue;
 		}
+		if (map)
+			map[i] = (int)k;
 		l.id = (int)k;
 		l.branch = b;
 		t->leaves[k++] = l;
 	}
 	t->nleaves = k;
+	if (map)
+		tree_journal_leaves_moved(t, map, n);
+	free(map);
 }
 
 void tree_remove_leaves(struct tree *t, const bool *remove)
@@ -82,6 +100,14 @@ static void remove_branches(struct tree *t, bool *remove, int *map)
 		if (p >= 0 && remove[p])
 			remove[i] = true;
 	}
+	/* what goes, as it was, to the journal if any: the leaves too, while their branches
+	 * still have the ids it knows */
+	for (size_t i = 0; i < t->nbranches; i++)
+		if (remove[i])
+			tree_journal_branch(t, i, false);
+	for (size_t i = 0; i < t->nleaves; i++)
+		if (remove[t->leaves[i].branch])
+			tree_journal_leaf(t, i, false);
 	for (size_t i = 0; i < t->nbranches; i++) {
 		struct branch b = t->branches[i];
 
@@ -98,6 +124,7 @@ static void remove_branches(struct tree *t, bool *remove, int *map)
 		t->branches[k++] = b;
 	}
 	t->nbranches = k;
+	tree_journal_branches_moved(t, map, n);
 	tree_index_renumbered(t, map, n);
 	compact_leaves(t, map, NULL);
 	if (k == 0)
@@ -146,6 +173,13 @@ int tree_cut_branch(struct tree *t, int id, size_t segment, double seg_t)
 		free(map);
 		return 0;
 	}
+	/* The journal, if any, keeps b, and what is rescaled on it, as they were. */
+	if (tree_journal_keep_cut(t, id, cut_t) < 0) {
+		free(remove);
+		free(map);
+		return -ENOMEM;
+	}
+	b = &t->branches[id];
 	/* The cut point replaces everything past it. */
 	b->points[segment + 1] = vec3_lerp(b->points[segment], b->points[segment + 1], seg_t);
 	b->radii[segment + 1] = b->radii[segment] + (b->radii[segment + 1] - b->radii[segment]) * seg_t;
@@ -206,8 +240,11 @@ int tree_leaf_attach(struct tree *t, size_t i)
 {
 	struct leaf *l = &t->leaves[i];
 	struct tree_frame f = tree_frame_at(&t->branches[l->branch], l->branch_t);
-	struct vec3 *local = realloc(l->local, (l->npoints ? l->npoints : 1) * sizeof(*local));
+	struct vec3 *local;
 
+	if (tree_journal_leaf(t, i, true) < 0) /* the journal keeps it as it was, if any */
+		return -ENOMEM;
+	local = realloc(l->local, (l->npoints ? l->npoints : 1) * sizeof(*local));
 	if (!local)
 		return -ENOMEM;
 	for (size_t k = 0; k < l->npoints; k++) {
@@ -227,6 +264,9 @@ void tree_leaves_follow(struct tree *t, int b)
 
 		if (!l->local || (b >= 0 && l->branch != b))
 			continue;
+		if (tree_journal_leaf(t, i, true) < 0)
+			tree_journal_fail(t); /* moved all the same; its op goes without a delta */
+		l = &t->leaves[i];
 		f = tree_frame_at(&t->branches[l->branch], l->branch_t);
 		for (size_t k = 0; k < l->npoints; k++)
 			l->points[k] = vec3_add(f.origin,

@@ -378,6 +378,41 @@ void tree_index_swapped(struct tree *a, struct tree *b)
 		ib->owner = b;
 }
 
+void tree_index_replaced(struct tree *t, const int *map, size_t nold)
+{
+	struct tree_index *idx = owned(t);
+	bool *have;
+	size_t kept = 0;
+
+	if (!idx || idx->stale)
+		return;
+	for (size_t i = 0; i < nold; i++)
+		kept += map[i] >= 0;
+	/* mostly new branches: a new grid at the next query costs no more */
+	have = 2 * kept >= t->nbranches ? calloc(t->nbranches + 1, sizeof(*have)) : NULL;
+	if (!have) {
+		idx->stale = true;
+		return;
+	}
+	for (size_t s = 0; s < idx->nslots; s++) {
+		int id = idx->slot_id[s];
+
+		if (id < 0)
+			continue;
+		if ((size_t)id >= nold || map[id] < 0) {
+			slot_gone(idx, s);
+			continue;
+		}
+		idx->slot_id[s] = map[id];
+		have[map[id]] = true;
+	}
+	for (size_t j = 0; j < t->nbranches && !idx->stale; j++)
+		if (!have[j] && add_branch(idx, t, j) < 0)
+			idx->stale = true;
+	idx->nindexed = t->nbranches;
+	free(have);
+}
+
 static uint64_t points_key(const struct branch *b)
 {
 	uint64_t k = b->npoints * 0x9e3779b97f4a7c15ULL;

@@ -82,6 +82,9 @@ bool tree_index_nearest(const struct tree *t, struct vec3 p, struct tree_index_h
 void tree_index_drop(struct tree *t);
 /* Branches were renumbered: old id i < nold is now map[i], or gone if -1. */
 void tree_index_renumbered(struct tree *t, const int *map, size_t nold);
+/* The branches were replaced (undo, redo): old id i < nold is now map[i], with the same
+ * points, or gone if -1; the branches no old one maps to are added now. */
+void tree_index_replaced(struct tree *t, const int *map, size_t nold);
 /* Branches from nb on are gone. */
 void tree_index_truncated(struct tree *t, size_t nb);
 /* a and b were swapped, their grids with them (tree_swap). */
