@@ -2,6 +2,7 @@
 #include "lift.h"
 
 #include <errno.h>
+#include <stdint.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -136,7 +137,9 @@ static bool hull_range(const struct hull *h, const struct turn *tu, struct vec3 
 		w2 = r * r - at0.z * at0.z;
 		c = xc - at0.x; /* the depth that turns to the hull's centre line */
 	} else {
-		w2 = r * r - (x - xc) * (x - xc);
+		/* the drawn end is in the 2D hull, so inside the disc but for rounding (at the
+		 * hull's top, where the disc is a point, it came out a hair outside) */
+		w2 = fmax(r * r - (x - xc) * (x - xc), 0);
 	}
 	if (w2 < 0) {
 		*lo = *hi = c;
@@ -224,11 +227,11 @@ static double field_at(const struct field *f, double x, double z)
 	return f->d[j * LIFT_FIELD_N + i];
 }
 
+/* The angle between a and b (0 if either is 0): atan2 keeps it exact near 0 and pi, where
+ * acos of the cosine loses half the digits. */
 static double angle_between(struct vec3 a, struct vec3 b)
 {
-	double c = vec3_dot(a, b) / (vec3_len(a) * vec3_len(b) + 1e-300);
-
-	return acos(c < -1 ? -1 : c > 1 ? 1 : c);
+	return atan2(vec3_len(vec3_cross(a, b)), vec3_dot(a, b));
 }
 
 /* x at index i, extended past the ends by point reflection, so smoothing bends nothing
@@ -353,17 +356,47 @@ static void curvature_depth(const struct branch *b, double *depth)
 }
 
 /*
- * Among n admissible depths z[] with field values d[] (the largest is best): the
- * sparsest, a tie (the field is symmetric in z about a trunk, and constant within a
- * cell) broken at random; or with LIFT_PICK_RANDOM, any of them.
+ * What a depth of a branch's end leaves its children (lifter_score): how many would have no
+ * depth keeping the angle rule, the hull, the length rule. Fewer is better, in that order.
  */
-static double pick_depth(const double *z, const double *d, int n, double best,
+struct lookahead {
+	size_t angle, hull, length;
+};
+
+static int lookahead_cmp(const struct lookahead *a, const struct lookahead *b)
+{
+	const size_t x[] = { a->angle, a->hull, a->length };
+	const size_t y[] = { b->angle, b->hull, b->length };
+
+	for (int i = 0; i < 3; i++)
+		if (x[i] != y[i])
+			return x[i] < y[i] ? -1 : 1;
+	return 0;
+}
+
+/*
+ * Among n candidate depths z[] with field values d[] (the largest is best) and look-ahead
+ * scores la[]: of those with the best score, the sparsest, a tie (the field is symmetric
+ * in z about a trunk, and constant within a cell) broken at random; or with
+ * LIFT_PICK_RANDOM, any of them.
+ */
+static double pick_depth(const double *z, const double *d, const struct lookahead *la, int n,
 			 enum lift_pick pick, struct rng *rng)
 {
-	int idx[CANDIDATES], m = 0;
+	int idx[CANDIDATES], m = 0, top = 0;
+	bool first[CANDIDATES];
+	double best = -1;
 
+	for (int i = 1; i < n; i++)
+		if (lookahead_cmp(&la[i], &la[top]) < 0)
+			top = i;
+	for (int i = 0; i < n; i++) {
+		first[i] = lookahead_cmp(&la[i], &la[top]) == 0;
+		if (first[i])
+			best = fmax(best, d[i]);
+	}
 	for (int i = 0; i < n; i++)
-		if (pick == LIFT_PICK_RANDOM || d[i] >= best - 1e-6 * best)
+		if (first[i] && (pick == LIFT_PICK_RANDOM || d[i] >= best - 1e-6 * best))
 			idx[m++] = i;
 	return z[idx[m > 1 ? rng_next(rng) % (uint64_t)m : 0]];
 }
@@ -409,29 +442,557 @@ static double anchor_param(const struct branch *b, struct anchor a)
 }
 
 /*
- * 4.3 on top of 4.1: branch b's points go from its start's depth to its end's (by arc
- * length), plus the curvature depth. Uses depth[] (npoints) as scratch.
+ * 4.1's rules for one branch end, as the depths dz of the end relative to the start that
+ * keep them: up to two intervals (the angle rule can cut a gap out of the view rule's
+ * range when the limit is obtuse), in increasing order.
  */
-static void branch_depth(struct branch *b, const struct seg *s, double *depth)
+struct dzset {
+	int n;
+	double lo[2], hi[2];
+};
+
+static struct dzset dzset_point(double dz)
 {
-	double len = tree_branch_length(b), walked = 0;
+	return (struct dzset){ 1, { dz, 0 }, { dz, 0 } };
+}
 
-	curvature_depth(b, depth);
+static void dzset_add(struct dzset *s, double lo, double hi)
+{
+	if (lo <= hi && s->n < 2) {
+		s->lo[s->n] = lo;
+		s->hi[s->n++] = hi;
+	}
+}
+
+/* s intersected with [lo, hi]. */
+static struct dzset dzset_clip(const struct dzset *s, double lo, double hi)
+{
+	struct dzset r = { 0 };
+
+	for (int i = 0; i < s->n; i++)
+		dzset_add(&r, fmax(s->lo[i], lo), fmin(s->hi[i], hi));
+	return r;
+}
+
+/* The point of non-empty s nearest [lo, hi]. */
+static double dzset_nearest(const struct dzset *s, double lo, double hi)
+{
+	double best = s->lo[0], gap = INFINITY;
+
+	for (int i = 0; i < s->n; i++) {
+		double z = s->hi[i] < lo ? s->hi[i] : s->lo[i] > hi ? s->lo[i] : fmax(s->lo[i], lo);
+		double g = z < lo ? lo - z : z > hi ? z - hi : 0;
+
+		if (g < gap) {
+			gap = g;
+			best = z;
+		}
+	}
+	return best;
+}
+
+/* The k-th of n depths spread evenly over non-empty s, ends included. */
+static double dzset_spread(const struct dzset *s, int k, int n)
+{
+	double total = 0, at;
+
+	for (int i = 0; i < s->n; i++)
+		total += s->hi[i] - s->lo[i];
+	at = n > 1 ? total * k / (n - 1) : 0;
+	for (int i = 0; i < s->n; i++) {
+		double w = s->hi[i] - s->lo[i];
+
+		if (at <= w || i == s->n - 1)
+			return fmin(s->lo[i] + at, s->hi[i]);
+		at -= w;
+	}
+	return s->lo[0];
+}
+
+/* What 4.1 needs to know of a branch besides its start's depth and its parent's chord. */
+struct rules {
+	double dx, dy;   /* its chord as the front view shows it */
+	double dxy;      /* its length there */
+	double amax;     /* 1.2 x the largest drawn angle between its parent and its children */
+	double cos_amax;
+	double hlo, hhi; /* the depths of its end inside the hull (absolute) */
+	bool hull;       /* false: no depth is (a turned end); hlo = hhi the nearest */
+};
+
+/* How the rules fared for one branch end (docs/lifting.md, "When a rule cannot hold"). */
+enum lift_outcome {
+	LIFT_KEPT,      /* every rule */
+	LIFT_NO_LENGTH, /* no depth within view, angle and hull keeps the length */
+	LIFT_NO_HULL,   /* no depth within view and angle is inside the hull */
+	LIFT_NO_ANGLE,  /* no depth within the view rule keeps the angle */
+};
+
+/*
+ * The depths dz that keep the view rule (|dz| <= dxy, the chord's length on the screen)
+ * and the angle rule (at most amax from the parent's chord pd). With t = atan(dz / dxy) in
+ * [-pi/4, pi/4] the branch's direction is (cos t u, sin t) for u its direction on the
+ * screen, so cos(angle) = (k cos t + pd.z sin t) / |pd| = rho cos(t - t0): the rule is an
+ * arc of t about t0, exactly, however narrow. If no t keeps it, *s is the depth of the
+ * least angle within the view rule, and false is returned.
+ */
+static bool view_angle_range(const struct rules *r, struct vec3 pd, struct dzset *s)
+{
+	double dxy = r->dxy, plen = vec3_len(pd), k, rho, t0, c = r->cos_amax, alpha;
+
+	s->n = 0;
+	if (dxy <= 0) {
+		*s = dzset_point(0); /* no chord on the screen: no depth either */
+		return true;
+	}
+	if (plen <= 0 || r->amax >= VEC_PI) {
+		dzset_add(s, -dxy, dxy);
+		return true;
+	}
+	k = (r->dx * pd.x + r->dy * pd.y) / dxy;
+	rho = sqrt(k * k + pd.z * pd.z) / plen;
+	t0 = atan2(pd.z, k);
+	if (c <= -rho || (rho <= 1e-12 && c <= 0)) {
+		/* every direction is within the limit (rho 0: all at right angles) */
+		dzset_add(s, -dxy, dxy);
+		return true;
+	}
+	if (c < rho && rho > 1e-12) {
+		/* a hair inside the arc, so rounding never puts its ends outside the limit */
+		alpha = acos(c / rho) * (1 - 1e-12);
+		for (int j = -1; j <= 1; j++) {
+			double lo = fmax(t0 - alpha + 2 * VEC_PI * j, -0.25 * VEC_PI);
+			double hi = fmin(t0 + alpha + 2 * VEC_PI * j, 0.25 * VEC_PI);
+
+			if (lo <= hi) {
+				/* |t| <= pi/4: tan is exact enough, and |dz| <= dxy */
+				lo = lo <= -0.25 * VEC_PI ? -dxy : dxy * tan(lo);
+				hi = hi >= 0.25 * VEC_PI ? dxy : dxy * tan(hi);
+				if (s->n && lo <= s->hi[s->n - 1])
+					s->hi[s->n - 1] = fmax(s->hi[s->n - 1], hi);
+				else
+					dzset_add(s, lo, hi);
+			}
+		}
+		if (s->n)
+			return true;
+	}
+	/* none: the t nearest t0 round the circle, within [-pi/4, pi/4] */
+	if (fabs(t0) <= 0.25 * VEC_PI)
+		*s = dzset_point(dxy * tan(t0));
+	else if (fabs(remainder(t0 - 0.25 * VEC_PI, 2 * VEC_PI)) <=
+		 fabs(remainder(t0 + 0.25 * VEC_PI, 2 * VEC_PI)))
+		*s = dzset_point(dxy);
+	else
+		*s = dzset_point(-dxy);
+	return false;
+}
+
+/*
+ * The depths of a branch's end (absolute z) that 4.1 may choose, its start at depth zs and
+ * its parent's chord pd: those keeping every rule, or where that cannot be, what
+ * docs/lifting.md says: the view rule always; the angle rule if any depth within the view
+ * rule keeps it, otherwise the least angle; the hull if any depth within those keeps it,
+ * otherwise the depth nearest the hull within them and the length rule (if it can hold
+ * there); the length rule if any depth within all those keeps it, otherwise the shortest.
+ */
+static enum lift_outcome admissible(const struct rules *r, double zs, struct vec3 pd,
+				    struct dzset *out)
+{
+	double dxy = r->dxy, reach = LIFT_MAX_LENGTH_RATIO * vec3_len(pd), dl;
+	struct dzset va, in, fit;
+	enum lift_outcome res = LIFT_KEPT;
+
+	if (!view_angle_range(r, pd, &va)) {
+		*out = va;
+		res = LIFT_NO_ANGLE;
+	} else {
+		/* the length rule: |dz| <= dl; none if the screen alone makes it too long */
+		dl = reach >= dxy ? sqrt(reach * reach - dxy * dxy) : -1;
+		in = r->hull ? dzset_clip(&va, r->hlo - zs, r->hhi - zs) : (struct dzset){ 0 };
+		if (in.n == 0) {
+			fit = dzset_clip(&va, -dl, dl);
+			*out = dzset_point(dzset_nearest(fit.n ? &fit : &va, r->hlo - zs, r->hhi - zs));
+			res = LIFT_NO_HULL;
+		} else {
+			*out = dzset_clip(&in, -dl, dl);
+			if (out->n == 0) {
+				*out = dzset_point(dzset_nearest(&in, 0, 0));
+				res = LIFT_NO_LENGTH;
+			}
+		}
+	}
+	for (int i = 0; i < out->n; i++) {
+		out->lo[i] += zs;
+		out->hi[i] += zs;
+	}
+	return res;
+}
+
+/*
+ * admissible()'s outcome alone, for the look-ahead, which asks it of every child at every
+ * candidate. Where the view, length and hull rules leave a range and the parent's chord
+ * points forwards on the screen (k > 0), the direction in it nearest the parent's is the
+ * depth dxy * pd.z / k (t = t0) clamped to the range: if that keeps the angle rule with
+ * room to spare, every rule holds; otherwise admissible() decides.
+ */
+static enum lift_outcome outcome(const struct rules *r, double zs, struct vec3 pd)
+{
+	double dxy = r->dxy, plen = vec3_len(pd), reach = LIFT_MAX_LENGTH_RATIO * plen;
+	double k = dxy > 0 ? (r->dx * pd.x + r->dy * pd.y) / dxy : 0, lo = -dxy, hi = dxy;
+	struct dzset set;
+
+	if (r->hull && reach >= dxy && k > 0 && plen > 0) {
+		double dl = sqrt(reach * reach - dxy * dxy), dz;
+
+		lo = fmax(fmax(lo, -dl), r->hlo - zs);
+		hi = fmin(fmin(hi, dl), r->hhi - zs);
+		dz = fmin(fmax(dxy * pd.z / k, lo), hi);
+		if (lo <= hi && r->dx * pd.x + r->dy * pd.y + dz * pd.z >=
+					(r->cos_amax + 1e-9) * plen * sqrt(dxy * dxy + dz * dz))
+			return LIFT_KEPT;
+	}
+	return admissible(r, zs, pd, &set);
+}
+
+/* 4.3 on top of 4.1: branch b's points go from its start's depth to its end's, plus the
+ * curvature depth. */
+static void branch_depth(struct branch *b, const struct seg *s, const double *depth,
+			 const double *frac)
+{
+	for (size_t k = 0; k < b->npoints; k++)
+		b->points[k].z = s->s.z + (s->e.z - s->s.z) * frac[k] + depth[k];
+}
+
+/*
+ * Where along branch b each point is, as a fraction of its length on the screen: 4.3 runs
+ * the depth from the start's to the end's by it, so the end is exactly where 4.1 put it
+ * (the drawn depth of a stroke on a turned tree is not the lift's).
+ */
+static void screen_fractions(const struct branch *b, double *f)
+{
+	double len = 0, walked = 0;
+
+	for (size_t k = 0; k + 1 < b->npoints; k++)
+		len += hypot(b->points[k + 1].x - b->points[k].x, b->points[k + 1].y - b->points[k].y);
 	for (size_t k = 0; k < b->npoints; k++) {
-		double f = len > 0 ? walked / len : 0;
-
+		f[k] = len > 0 ? walked / len : 0;
 		if (k + 1 < b->npoints)
 			walked += hypot(b->points[k + 1].x - b->points[k].x,
 					b->points[k + 1].y - b->points[k].y);
-		b->points[k].z = s->s.z + (s->e.z - s->s.z) * f + depth[k];
 	}
+	f[b->npoints - 1] = 1;
+}
+
+/*
+ * The state of one lift (lift_once). Depths of a child's start on its parent are affine in
+ * the parent's start and end depths: z = zs + (ze - zs) at_f + at_d, at_f the fraction along
+ * the parent on the screen, at_d 4.3's depth there (which 4.1 does not change).
+ */
+struct lifter {
+	struct tree *t;
+	const struct turn *tu; /* the second lift of 4.2, or NULL */
+	struct field *f;
+	struct hull h;
+	struct seg *seg;
+	struct anchor *root, *leaf;
+	struct vec3 *shift;  /* with tu: where the merge moves each branch after the turn */
+	struct rules *rules; /* each branch's, once the trunk is placed */
+	double *at_f, *at_d;
+	int *order, *first, *next; /* a generation's branches; each branch's children */
+	/* 4.3's depth and the fraction along the screen of every point, branch i's from
+	 * at[i]: neither depends on where 4.1 puts the branch */
+	double *depth, *frac;
+	size_t *at;
+	int maxgen;
+};
+
+static void lifter_finish(struct lifter *L)
+{
+	free(L->h.p);
+	free(L->seg);
+	free(L->root);
+	free(L->leaf);
+	free(L->shift);
+	free(L->rules);
+	free(L->at_f);
+	free(L->order);
+	free(L->depth);
+	free(L->at);
+}
+
+static int lifter_init(struct lifter *L, struct tree *t, const struct turn *tu, struct field *f)
+{
+	size_t nb = t->nbranches + 1, npoints = 1;
+	int ret;
+
+	*L = (struct lifter){ .t = t, .tu = tu, .f = f };
+	ret = hull_build(&L->h, t);
+	if (ret < 0)
+		return ret;
+	for (size_t i = 0; i < t->nbranches; i++)
+		npoints += t->branches[i].npoints;
+	L->seg = malloc(nb * sizeof(*L->seg));
+	L->root = malloc(nb * sizeof(*L->root));
+	L->leaf = malloc((t->nleaves + 1) * sizeof(*L->leaf));
+	L->shift = calloc(nb, sizeof(*L->shift));
+	L->rules = malloc(nb * sizeof(*L->rules));
+	L->at_f = malloc(2 * nb * sizeof(*L->at_f));
+	L->order = malloc(3 * nb * sizeof(*L->order));
+	L->depth = malloc(2 * npoints * sizeof(*L->depth));
+	L->at = malloc(nb * sizeof(*L->at));
+	if (!L->seg || !L->root || !L->leaf || !L->shift || !L->rules || !L->at_f || !L->order ||
+	    !L->depth || !L->at) {
+		lifter_finish(L);
+		return -ENOMEM;
+	}
+	L->at_d = L->at_f + nb;
+	L->first = L->order + nb;
+	L->next = L->first + nb;
+	L->frac = L->depth + npoints;
+	return 0;
+}
+
+/* The distance field over the hull (and so over the turned tree too: the trunk's base is
+ * in it), for the first lift. */
+static void lifter_field(struct lifter *L)
+{
+	struct field *f = L->f;
+	double xmin = INFINITY, xmax = -INFINITY, rmax;
+
+	for (size_t i = 0; i < L->h.n; i++) {
+		xmin = fmin(xmin, L->h.p[i].x);
+		xmax = fmax(xmax, L->h.p[i].x);
+	}
+	rmax = LIFT_HULL_SCALE * 0.5 * (xmax - xmin) + 1e-3;
+	if (L->tu)
+		return;
+	f->cell = fmax(xmax - xmin + 2 * rmax, 2 * rmax) / LIFT_FIELD_N;
+	f->x0 = 0.5 * (xmin + xmax) - 0.5 * LIFT_FIELD_N * f->cell;
+	f->z0 = -0.5 * LIFT_FIELD_N * f->cell;
+	for (int i = 0; i < LIFT_FIELD_N * LIFT_FIELD_N; i++)
+		f->d[i] = INFINITY;
+	for (int i = 0; i < TILES * TILES; i++)
+		f->tile_max[i] = INFINITY;
+}
+
+/*
+ * The sketch as the front view shows it (a stroke drawn on a turned tree has depth; the
+ * lift chooses its own), the largest drawn angle between each parent and its children,
+ * each branch's children, where everything hangs (on the drawing as it is) and where each
+ * child's start is along its parent.
+ */
+static void lifter_sketch(struct lifter *L)
+{
+	struct tree *t = L->t;
+
+	for (size_t i = 0; i < t->nbranches; i++) {
+		const struct branch *b = &t->branches[i];
+
+		L->seg[i].s = vec3(b->points[0].x, b->points[0].y, 0);
+		L->seg[i].e = vec3(b->points[b->npoints - 1].x, b->points[b->npoints - 1].y, 0);
+		L->seg[i].max_child_angle = 0;
+		L->maxgen = b->generation > L->maxgen ? b->generation : L->maxgen;
+		L->first[i] = L->next[i] = -1;
+	}
+	for (size_t i = t->nbranches; i-- > 0;) {
+		int p = t->branches[i].parent;
+
+		if (p < 0)
+			continue;
+		L->seg[p].max_child_angle =
+			fmax(L->seg[p].max_child_angle,
+			     angle_between(vec3_sub(L->seg[p].e, L->seg[p].s),
+					   vec3_sub(L->seg[i].e, L->seg[i].s)));
+		L->next[i] = L->first[p];
+		L->first[p] = (int)i;
+		tree_locate(&t->branches[p], t->branches[i].parent_t, &L->root[i].segment,
+			    &L->root[i].seg_t);
+	}
+	for (size_t i = 0; i < t->nleaves; i++)
+		tree_locate(&t->branches[t->leaves[i].branch], t->leaves[i].branch_t,
+			    &L->leaf[i].segment, &L->leaf[i].seg_t);
+	for (size_t i = 0, at = 0; i < t->nbranches; i++) {
+		const struct branch *b = &t->branches[i];
+		const double *depth = L->depth + at, *frac = L->frac + at;
+
+		L->at[i] = at;
+		at += b->npoints;
+		curvature_depth(b, L->depth + L->at[i]);
+		screen_fractions(b, L->frac + L->at[i]);
+		for (int c = L->first[i]; c >= 0; c = L->next[c]) {
+			size_t k = L->root[c].segment, j = k + 1 < b->npoints ? k + 1 : k;
+			double s = L->root[c].seg_t;
+
+			L->at_f[c] = frac[k] + (frac[j] - frac[k]) * s;
+			L->at_d[c] = depth[k] + (depth[j] - depth[k]) * s;
+		}
+	}
+}
+
+/* The rules of branch id, its end's hull range seen as the merge will place it. */
+static void lifter_rules(struct lifter *L, int id)
+{
+	const struct seg *s = &L->seg[id];
+	struct rules *r = &L->rules[id];
+
+	r->dx = s->e.x - s->s.x;
+	r->dy = s->e.y - s->s.y;
+	r->dxy = hypot(r->dx, r->dy);
+	r->amax = fmin(LIFT_MAX_ANGLE_RATIO * L->seg[L->t->branches[id].parent].max_child_angle,
+		       VEC_PI);
+	r->cos_amax = cos(r->amax);
+	r->hull = hull_range(&L->h, L->tu, L->shift[id], s->e.x, s->e.y, &r->hlo, &r->hhi);
+}
+
+/*
+ * Once the trunk is placed: where the merge moves each branch of the second tree (a first
+ * generation branch onto the first tree's trunk, the same as this one, and the rest with
+ * it), and every branch's rules.
+ */
+static void lifter_prepare(struct lifter *L)
+{
+	struct tree *t = L->t;
+
+	for (int g = 1; g <= L->maxgen; g++)
+		for (size_t i = 0; i < t->nbranches; i++) {
+			const struct branch *b = &t->branches[i];
+
+			if (b->generation != g || b->parent < 0)
+				continue;
+			if (L->tu && t->branches[b->parent].parent < 0) {
+				struct vec3 on = anchor_point(&t->branches[b->parent], L->root[i]);
+				struct vec3 s = vec3(L->seg[i].s.x, L->seg[i].s.y, on.z);
+
+				L->shift[i] = vec3_sub(on, turn_point(L->tu->base, vec3(0, 0, 0), s));
+			} else if (L->tu) {
+				L->shift[i] = L->shift[b->parent];
+			}
+			lifter_rules(L, (int)i);
+		}
+}
+
+/*
+ * The chord of branch id's parent as the rules see it. In the second lift a first
+ * generation branch is turned onto the first tree's trunk, which is not turned: the angle
+ * the merged copy makes with it is the angle to that trunk turned back (x, y, z) ->
+ * (-z, y, x), here where the trunk's chord has no depth, (0, dy, dx).
+ */
+static struct vec3 parent_chord(const struct lifter *L, int id)
+{
+	int p = L->t->branches[id].parent;
+	struct vec3 pd = vec3_sub(L->seg[p].e, L->seg[p].s);
+
+	return L->tu && L->t->branches[p].parent < 0 ? vec3(-pd.z, pd.y, pd.x) : pd;
+}
+
+/* The look-ahead score of end depth e for branch id, its start s. */
+static struct lookahead lifter_score(const struct lifter *L, int id, struct vec3 s, struct vec3 e)
+{
+	struct vec3 pd = vec3_sub(e, s);
+	struct lookahead la = { 0 };
+
+	for (int c = L->first[id]; c >= 0; c = L->next[c]) {
+		double zs = s.z + (e.z - s.z) * L->at_f[c] + L->at_d[c];
+
+		switch (outcome(&L->rules[c], zs, pd)) {
+		case LIFT_NO_ANGLE:
+			la.angle++;
+			break;
+		case LIFT_NO_HULL:
+			la.hull++;
+			break;
+		case LIFT_NO_LENGTH:
+			la.length++;
+			break;
+		case LIFT_KEPT:
+			break;
+		}
+	}
+	return la;
+}
+
+/*
+ * The candidate depths cz[] for branch id's end, its start at depth zs and its parent's
+ * chord pd. Where every rule can hold: CANDIDATES depths evenly spaced over the range the
+ * view, length and hull rules leave, those that keep the angle rule too (to 1e-9 rad); if
+ * the angle rule leaves only depths between them, CANDIDATES spread over those
+ * (admissible(), exact). Otherwise the one depth admissible() gives, CANDIDATES times (the
+ * drawing's seeded generator then picks one of the equal ones, as it always has). Returns
+ * how many.
+ */
+static int lifter_candidates(const struct lifter *L, int id, double zs, struct vec3 pd,
+			     double *cz)
+{
+	const struct rules *r = &L->rules[id];
+	struct dzset set;
+	int m = 0;
+
+	if (admissible(r, zs, pd, &set) == LIFT_KEPT) {
+		double dxy = r->dxy, reach = LIFT_MAX_LENGTH_RATIO * vec3_len(pd);
+		double dz = sqrt(fmax(reach * reach - dxy * dxy, 0));
+		double lo = fmax(fmax(zs - dxy, zs - dz), r->hlo);
+		double hi = fmin(fmin(zs + dxy, zs + dz), r->hhi);
+		/* (the same bounds as the set's, but for rounding) */
+		double eps = 1e-12 * (dxy + fabs(zs) + 1);
+
+		for (int c = 0; c < CANDIDATES; c++) {
+			double z = lo + (hi - lo) * c / (CANDIDATES - 1);
+
+			for (int i = 0; i < set.n; i++)
+				if (z >= set.lo[i] - eps && z <= set.hi[i] + eps) {
+					cz[m++] = z;
+					break;
+				}
+		}
+		if (m > 0)
+			return m;
+	}
+	for (int c = 0; c < CANDIDATES; c++)
+		cz[c] = dzset_spread(&set, c, CANDIDATES);
+	return CANDIDATES;
+}
+
+/*
+ * 4.1 for one branch (not a trunk): its start on its parent, which (an earlier generation)
+ * has its depth; its end's depth the sparsest (or a random) candidate among those with the
+ * best look-ahead score.
+ */
+static void lifter_place(struct lifter *L, int id, enum lift_pick pick, struct rng *rng)
+{
+	struct seg *s = &L->seg[id];
+	const struct branch *b = &L->t->branches[id];
+	double cz[CANDIDATES], cd[CANDIDATES], stop = -INFINITY;
+	struct lookahead score[CANDIDATES];
+	int m, top = 0;
+
+	s->s.z = anchor_point(&L->t->branches[b->parent], L->root[id]).z;
+	m = lifter_candidates(L, id, s->s.z, parent_chord(L, id), cz);
+	for (int c = 0; c < m; c++) {
+		struct vec3 e = vec3(s->e.x, s->e.y, cz[c]);
+		struct vec3 at = L->tu ? turn_point(L->tu->base, L->shift[id], e) : e;
+
+		cd[c] = field_at(L->f, at.x, at.z);
+		score[c] = (struct lookahead){ SIZE_MAX, 0, 0 };
+	}
+	/* The sparsest rule needs the scores only where they can decide: if the sparsest
+	 * candidate leaves its children every rule, only those as sparse as it (the rest
+	 * score worst: the choice is the same as with every score). */
+	for (int c = 1; c < m; c++)
+		top = cd[c] > cd[top] ? c : top;
+	score[top] = lifter_score(L, id, s->s, vec3(s->e.x, s->e.y, cz[top]));
+	if (pick == LIFT_PICK_SPARSEST && lookahead_cmp(&score[top], &(struct lookahead){ 0 }) == 0)
+		stop = cd[top] - 1e-6 * cd[top];
+	for (int c = 0; c < m; c++)
+		if (c != top && !(cd[c] < stop))
+			score[c] = lifter_score(L, id, s->s, vec3(s->e.x, s->e.y, cz[c]));
+	s->e.z = pick_depth(cz, cd, score, m, pick, rng);
 }
 
 /*
  * 4.1 and 4.3, generation by generation: each branch's start is the point of its parent's
  * final polyline it hangs on (so the constraints hold for the branch as it ends up), its
- * end's depth the sparsest (or, LIFT_PICK_RANDOM, a random) admissible one; then its
- * points get their depth at once, before its children are placed.
+ * end's depth chosen by lifter_place; then its points get their depth at once, before its
+ * children are placed.
  *
  * Without a turn (the first tree), f is set up here and left holding the tree's branches.
  * With one (the second tree of 4.2), f is the first tree's, and this lift goes on from it
@@ -441,185 +1002,54 @@ static void branch_depth(struct branch *b, const struct seg *s, double *depth)
 static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick, struct field *f,
 		     const struct turn *tu)
 {
-	struct hull h = { 0 };
-	struct seg *seg;
-	struct anchor *root, *leaf;
-	struct vec3 *shift;
-	double *depth;
-	int *order;
-	size_t maxn = 1;
-	int maxgen = 0, ret;
-	double xmin = INFINITY, xmax = -INFINITY, rmax = 0;
+	struct lifter L;
+	int ret = lifter_init(&L, t, tu, f);
 
-	ret = hull_build(&h, t);
 	if (ret < 0)
 		return ret;
-	for (size_t i = 0; i < t->nbranches; i++)
-		maxn = t->branches[i].npoints > maxn ? t->branches[i].npoints : maxn;
-	seg = malloc((t->nbranches + 1) * sizeof(*seg));
-	root = malloc((t->nbranches + 1) * sizeof(*root));
-	leaf = malloc((t->nleaves + 1) * sizeof(*leaf));
-	depth = malloc(maxn * sizeof(*depth));
-	order = malloc((t->nbranches + 1) * sizeof(*order));
-	shift = calloc(t->nbranches + 1, sizeof(*shift));
-	if (!seg || !root || !leaf || !depth || !order || !shift) {
-		ret = -ENOMEM;
-		goto out;
-	}
-	for (size_t i = 0; i < h.n; i++) {
-		xmin = fmin(xmin, h.p[i].x);
-		xmax = fmax(xmax, h.p[i].x);
-	}
-	/* the field covers the hull, and so the turned tree too (the trunk's base is in it) */
-	rmax = LIFT_HULL_SCALE * 0.5 * (xmax - xmin) + 1e-3;
-	if (!tu) {
-		f->cell = fmax(xmax - xmin + 2 * rmax, 2 * rmax) / LIFT_FIELD_N;
-		f->x0 = 0.5 * (xmin + xmax) - 0.5 * LIFT_FIELD_N * f->cell;
-		f->z0 = -0.5 * LIFT_FIELD_N * f->cell;
-		for (int i = 0; i < LIFT_FIELD_N * LIFT_FIELD_N; i++)
-			f->d[i] = INFINITY;
-		for (int i = 0; i < TILES * TILES; i++)
-			f->tile_max[i] = INFINITY;
-	}
-
-	/* The largest drawn angle between each parent and its children. */
-	for (size_t i = 0; i < t->nbranches; i++) {
-		const struct branch *b = &t->branches[i];
-
-		seg[i].s = b->points[0];
-		seg[i].e = b->points[b->npoints - 1];
-		seg[i].max_child_angle = 0;
-		maxgen = b->generation > maxgen ? b->generation : maxgen;
-	}
-	for (size_t i = 0; i < t->nbranches; i++) {
-		const struct branch *b = &t->branches[i];
-
-		if (b->parent >= 0) {
-			double a = angle_between(vec3_sub(seg[b->parent].e, seg[b->parent].s),
-						 vec3_sub(seg[i].e, seg[i].s));
-
-			seg[b->parent].max_child_angle = fmax(seg[b->parent].max_child_angle, a);
-		}
-	}
-	/* Where everything hangs, on the drawing as it is. */
-	for (size_t i = 0; i < t->nbranches; i++)
-		if (t->branches[i].parent >= 0)
-			tree_locate(&t->branches[t->branches[i].parent], t->branches[i].parent_t,
-				    &root[i].segment, &root[i].seg_t);
-	for (size_t i = 0; i < t->nleaves; i++)
-		tree_locate(&t->branches[t->leaves[i].branch], t->leaves[i].branch_t, &leaf[i].segment,
-			    &leaf[i].seg_t);
-
-	for (int g = 0; g <= maxgen; g++) {
+	lifter_field(&L);
+	lifter_sketch(&L);
+	for (int g = 0; g <= L.maxgen; g++) {
 		size_t n = 0;
 
+		if (g == 1)
+			lifter_prepare(&L);
 		for (size_t i = 0; i < t->nbranches; i++)
 			if (t->branches[i].generation == g)
-				order[n++] = (int)i;
+				L.order[n++] = (int)i;
 		/* a seeded random order within the generation (Fisher-Yates) */
 		for (size_t i = n; i > 1; i--) {
 			size_t j = (size_t)(rng_next(rng) % i);
-			int tmp = order[i - 1];
+			int tmp = L.order[i - 1];
 
-			order[i - 1] = order[j];
-			order[j] = tmp;
+			L.order[i - 1] = L.order[j];
+			L.order[j] = tmp;
 		}
 		for (size_t k = 0; k < n; k++) {
-			int id = order[k];
+			int id = L.order[k];
 			struct branch *b = &t->branches[id];
-			struct seg *s = &seg[id];
-			double best = -1, best_angle = INFINITY, best_angle_z = 0;
-			double cz[CANDIDATES], cd[CANDIDATES];
-			int nadmissible = 0;
+			struct seg *s = &L.seg[id];
 
 			/* a trunk's ends stay in the sketch plane */
-			if (b->parent >= 0) {
-				const struct seg *p = &seg[b->parent];
-				struct vec3 pd = vec3_sub(p->e, p->s);
-				double plen = vec3_len(pd), dxy, lo, hi, reach, hlo, hhi;
-				double amax = fmin(LIFT_MAX_ANGLE_RATIO * p->max_child_angle, VEC_PI);
-
-				/* on the parent, which (an earlier generation) has its depth */
-				s->s.z = anchor_point(&t->branches[b->parent], root[id]).z;
-				/* the merge moves a turned first generation onto the first tree's
-				 * trunk (the same as this one), and the rest with it */
-				if (tu && t->branches[b->parent].parent < 0) {
-					struct vec3 on = anchor_point(&t->branches[b->parent], root[id]);
-
-					shift[id] = vec3_sub(on, turn_point(tu->base, vec3(0, 0, 0), s->s));
-				} else if (tu) {
-					shift[id] = shift[b->parent];
-				}
-				dxy = hypot(s->e.x - s->s.x, s->e.y - s->s.y);
-				/* 45..135 degrees from the view direction: |dz| <= |dxy| */
-				lo = s->s.z - dxy;
-				hi = s->s.z + dxy;
-				/* at most 1.2 x the parent's length */
-				reach = LIFT_MAX_LENGTH_RATIO * plen;
-				if (reach > dxy) {
-					double dz = sqrt(reach * reach - dxy * dxy);
-
-					lo = fmax(lo, s->s.z - dz);
-					hi = fmin(hi, s->s.z + dz);
-				} else {
-					lo = hi = s->s.z;
-				}
-				/* inside the hull; if it leaves no depth within the length and view
-				 * rules, the hull's depth nearest the start; if it has none (a turned
-				 * end can be farther in front of or behind the trunk than the hull is
-				 * deep), the depth within those rules nearest the hull */
-				if (hull_range(&h, tu, shift[id], s->e.x, s->e.y, &hlo, &hhi)) {
-					lo = fmax(lo, hlo);
-					hi = fmin(hi, hhi);
-					if (lo > hi)
-						lo = hi = fmin(fmax(s->s.z, hlo), hhi);
-				} else {
-					lo = hi = fmin(fmax(hlo, lo), hi);
-				}
-				for (int c = 0; c < CANDIDATES; c++) {
-					double z = lo + (hi - lo) * c / (CANDIDATES - 1);
-					struct vec3 e = vec3(s->e.x, s->e.y, z);
-					double a = angle_between(pd, vec3_sub(e, s->s));
-
-					if (a <= amax + 1e-9) {
-						struct vec3 at = tu ? turn_point(tu->base, shift[id], e) : e;
-
-						cz[nadmissible] = z;
-						cd[nadmissible] = field_at(f, at.x, at.z);
-						best = fmax(best, cd[nadmissible++]);
-					} else if (a < best_angle) {
-						best_angle = a;
-						best_angle_z = z;
-					}
-				}
-				s->e.z = nadmissible ? pick_depth(cz, cd, nadmissible, best, pick, rng) :
-						       best_angle_z;
-			}
-			branch_depth(b, s, depth);
+			if (b->parent >= 0)
+				lifter_place(&L, id, pick, rng);
+			branch_depth(b, s, L.depth + L.at[id], L.frac + L.at[id]);
 			if (!tu)
 				field_add(f, s->s, s->e);
 			else if (b->parent >= 0)
-				field_add(f, turn_point(tu->base, shift[id], s->s),
-					  turn_point(tu->base, shift[id], s->e));
+				field_add(f, turn_point(tu->base, L.shift[id], s->s),
+					  turn_point(tu->base, L.shift[id], s->e));
 		}
 	}
 	for (size_t i = 0; i < t->nbranches; i++)
 		if (t->branches[i].parent >= 0)
 			t->branches[i].parent_t =
-				anchor_param(&t->branches[t->branches[i].parent], root[i]);
+				anchor_param(&t->branches[t->branches[i].parent], L.root[i]);
 	for (size_t i = 0; i < t->nleaves; i++)
-		t->leaves[i].branch_t = anchor_param(&t->branches[t->leaves[i].branch], leaf[i]);
+		t->leaves[i].branch_t = anchor_param(&t->branches[t->leaves[i].branch], L.leaf[i]);
 	tree_leaves_follow(t, -1);
-	ret = 0;
-out:
-	free(h.p);
-	free(shift);
-	free(seg);
-	free(root);
-	free(leaf);
-	free(depth);
-	free(order);
-	return ret;
+	lifter_finish(&L);
+	return 0;
 }
 
 static int copy_tree(struct tree *dst, const struct tree *src)

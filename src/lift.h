@@ -10,24 +10,28 @@
  * Lifting the 2D sketch to a 3D tree (seed 000, sections 4.1-4.3). Every branch keeps its
  * drawn x and y (so the tree looks like the sketch from the front) and gets depth z:
  *
- * 4.1 Branches are taken as segments from start to end and placed from the trunk outwards,
- *     generation by generation, in a seeded random order within a generation. A branch's
- *     start sits on its placed parent; the depth of its end is the sparsest admissible
- *     one on a LIFT_FIELD_N^2 distance field of all branches placed so far, projected on
- *     the ground. Admissible: inside the sqrt(2)-scaled hull (the sketch's 2D convex hull
- *     swept as discs from its lowest to its highest point), at most 1.2 x the parent's
- *     length, at most 1.2 x the largest drawn parent-child angle from the parent, and
- *     between 45 and 135 degrees from the view direction.
+ * 4.1 Branches are taken as chords (segments from start to end) as the front view shows
+ *     them and placed from the trunk outwards, generation by generation, in a seeded
+ *     random order within a generation. A branch's start sits on its placed parent; the
+ *     depth of its end is the sparsest admissible one on a LIFT_FIELD_N^2 distance field
+ *     of all branches placed so far, projected on the ground, among those that leave the
+ *     most of its children a depth keeping every rule. Admissible: between 45 and 135
+ *     degrees from the view direction; at most 1.2 x the largest drawn angle between the
+ *     parent and its children from the parent's chord; inside the sqrt(2)-scaled hull
+ *     (the sketch's 2D convex hull swept as discs from its lowest to its highest point);
+ *     at most 1.2 x the parent's length. The depths keeping them are computed exactly;
+ *     where no depth keeps a rule with those before it, the one breaking it least is
+ *     taken (docs/lifting.md, "When a rule cannot hold").
  * 4.3 The points along each branch get depth by the constant-curvature rule, so a wavy
- *     stroke becomes a helix.
+ *     stroke becomes a helix; both ends stay where 4.1 put them.
  * 4.2 With `merge`, this is done twice with different random streams; the second tree,
  *     turned 90 degrees about the vertical through the trunk's base, is merged into the
  *     first without its trunk (origin ORIGIN_MERGE): the branches a child leaves out
  *     because they point at the viewer. The second lift starts from the first tree's
  *     distance field and sees its own branches where the merge will put them, so they go
  *     where both trees are sparsest, and its ends inside the hull as merged (or, where no
- *     depth is, as near as the length and view rules let them); the first tree is what a
- *     lift without it makes.
+ *     depth is, as near as the other rules let them), its first generation's angles to the
+ *     first tree's trunk; the first tree is what a lift without it makes.
  *
  * Leaves follow their branches. A lifted tree (t->lifted) is left as it is. Returns 0 or
  * -ENOMEM (tree unchanged).
