@@ -47,6 +47,8 @@ static int push_generate(struct app *app, const struct gen_params *p, uint64_t s
 	if (!op.params)
 		return -ENOMEM;
 	*op.params = *p;
+	/* a tree made now grows as this edaha grows it (an older drawing's ops keep theirs) */
+	op.params->gen_version = GEN_VERSION;
 	app->mode = APP_MODE_SKETCH;
 	app->selected = -1;
 	app_clear_suggestions(app);

@@ -32,8 +32,9 @@ enum doc_op_kind {
 	DOC_OP_PROPAGATE,    /* propagate mode: `branch`'s children everywhere, `pattern`
 			      * (enum propagate_pattern) */
 	/* Functional trees (version 5, seed 001): the canvas becomes the tree `params` (owned)
-	 * give with generator seed `seed`: a template of the New strip, --generate, or one of
-	 * the parameter buttons on it. */
+	 * give with generator seed `seed`, built by the generators of params->gen_version (the
+	 * line's G: GEN_VERSION for a tree made now, older in an older drawing): a template of
+	 * the New strip, --generate, or one of the parameter buttons on it. */
 	DOC_OP_GENERATE,
 	DOC_OP_SEASON,       /* the season button: `pattern` is the season (enum season) */
 	/* The leaf mode's leaf buttons (version 6, issue 15): `pattern` is the leaf kind
@@ -68,7 +69,8 @@ struct doc_op {
 	int branch;           /* editing ops: the branch they work on */
 	int pattern;          /* arrange, propagate: which pattern; season: the season;
 			       * leaftype: the kind */
-	struct gen_params *params; /* generate: the tree's parameters (owned) */
+	struct gen_params *params; /* generate: the tree's parameters and generator version
+				    * (owned) */
 	uint64_t seed;        /* generate: the generator's seed */
 	struct vine_params *vine; /* vine: the vine's parameters (owned) */
 	double plant[3];      /* vine: where it is planted, world metres */

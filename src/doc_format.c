@@ -101,8 +101,10 @@ int doc_serialize(const struct doc *d, const struct tree *t, struct buf *out)
 			buf_printf(out, "lift %llu\n", (unsigned long long)op->time_us);
 			break;
 		case DOC_OP_GENERATE:
+			/* the version it was made with: an older drawing's tree stays as it was */
 			buf_printf(out, "generate %llu %d %llu ", (unsigned long long)op->time_us,
-				   GEN_VERSION, (unsigned long long)op->seed);
+				   op->params ? op->params->gen_version : GEN_VERSION,
+				   (unsigned long long)op->seed);
 			if (op->params && gen_write(op->params, out) < 0)
 				return -ENOMEM;
 			buf_printf(out, "\n");
@@ -424,8 +426,10 @@ static int parse_functional(struct reader *r, struct doc_op *op)
 	op->params = malloc(sizeof(*op->params));
 	if (!op->params)
 		return error_at(r->err, -ENOMEM, r->name, r->line, "out of memory");
-	/* the parameters are YAML on this one line: their errors name it */
-	return gen_read(r->fields[4], strlen(r->fields[4]), r->name, r->line - 1, op->params, r->err);
+	/* the parameters are YAML on this one line: their errors name it. The tree is built
+	 * by the generators of version v, within that version's limits */
+	return gen_read_version(r->fields[4], strlen(r->fields[4]), r->name, r->line - 1, (int)v,
+				op->params, r->err);
 }
 
 /* vine T X Y Z {PARAMETERS} (version 7): the planting point, then a vine file's keys as

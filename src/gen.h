@@ -30,10 +30,17 @@
 
 /* The parameter file's version (`edaha-tree: N`) this edaha reads and writes. */
 #define GEN_PARAMS_VERSION 1
-/* The generators' version, stored with every generated tree in a drawing: a later edaha
+/*
+ * The generators' version, stored with every generated tree in a drawing: a later edaha
  * whose generators give other trees bumps it and keeps building older drawings as they
- * were. */
-#define GEN_VERSION 1
+ * were (docs/functional-trees.md, "Generator versions"):
+ *
+ *   1  the first generators: a shrub's crown is the L-system recursion clipped to its
+ *      shape (gen_shrub_v1.c)
+ *   2  a shrub's crown is aimed at points spread over its shape's surface (gen_shrub.c,
+ *      issue 24); L-system trees and palms as in 1
+ */
+#define GEN_VERSION 2
 
 enum gen_type {
 	GEN_LSYSTEM = 0,
@@ -98,6 +105,10 @@ struct gen_params {
 	int fronds;
 	double frond_length;
 	double droop;        /* degrees a frond bends down from its base to its tip */
+	/* The generators' version that builds the tree (1..GEN_VERSION): not a key of the
+	 * parameter file but the `generate` line's G in a drawing. gen_params_default, and so
+	 * gen_read and gen_preset, give GEN_VERSION; gen_read_version an older one. */
+	int gen_version;
 };
 
 const char *gen_type_name(enum gen_type t);
@@ -110,8 +121,8 @@ bool gen_leaf_from_name(const char *name, enum gen_leaf *l);
 /* The documented defaults of a type (docs/tree-params.md): what missing keys take. */
 void gen_params_default(struct gen_params *p, enum gen_type type);
 
-/* How many branches and leaves p makes (a shrub: the most it can, its crown being cut to
- * its shape). */
+/* How many branches and leaves p makes at its gen_version (a shrub: the most it can, its
+ * crown being cut to its shape). */
 size_t gen_count_branches(const struct gen_params *p);
 size_t gen_count_leaves(const struct gen_params *p);
 
@@ -132,6 +143,10 @@ int gen_params_check(const struct gen_params *p, const char **key, struct error 
  */
 int gen_read(const char *data, size_t len, const char *name, unsigned long line_offset,
 	     struct gen_params *p, struct error *err);
+/* gen_read for a tree of generator version `version` (1..GEN_VERSION; else -EINVAL): a
+ * drawing's `generate` line. Its limits are that version's counts (gen_count_branches). */
+int gen_read_version(const char *data, size_t len, const char *name, unsigned long line_offset,
+		     int version, struct gen_params *p, struct error *err);
 
 /*
  * p as YAML in flow style, on one line without a line end: every key of its type, in
@@ -141,16 +156,18 @@ int gen_read(const char *data, size_t len, const char *name, unsigned long line_
 int gen_write(const struct gen_params *p, struct buf *out);
 
 /*
- * Builds the tree p describes into t (emptied first): every element with origin
- * ORIGIN_GENERATE and its level, the tree 3D (`lifted`), t->sides = p->precision and
- * t->season = p->season. seed is the generator's seed: only angles are random. 0,
- * -EINVAL (p fails gen_params_check) or -ENOMEM (t then empty).
+ * Builds the tree p describes into t (emptied first) with the generators of
+ * p->gen_version: every element with origin ORIGIN_GENERATE and its level, the tree 3D
+ * (`lifted`), t->sides = p->precision and t->season = p->season. seed is the generator's
+ * seed: only angles are random. 0, -EINVAL (p fails gen_params_check) or -ENOMEM (t then
+ * empty).
  */
 int gen_build(struct tree *t, const struct gen_params *p, uint64_t seed);
 
 /* The kiosk's parameter buttons (docs/functional-trees.md says what each changes for each
- * type). Each makes a new parameter set from p; false when it would change nothing or pass
- * a limit (then q is p). */
+ * type). Each makes a new parameter set from p, at GEN_VERSION whatever p's (a press on an
+ * older drawing's tree grows it as this edaha does); false when it would change nothing
+ * or pass a limit (then q is p). */
 enum gen_adjust {
 	GEN_MORE = 0, /* more branches: levels + 1 (palm: 2 fronds more) */
 	GEN_FEWER,

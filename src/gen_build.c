@@ -75,7 +75,8 @@ int gen_build(struct tree *t, const struct gen_params *p, uint64_t seed)
 	g.noutline = gen_leaf_outline(p->leaf_type, g.outline, GEN_LEAF_MAX_POINTS);
 	switch (p->type) {
 	case GEN_SHRUB:
-		ret = gen_shrub(&g);
+		/* a drawing's older shrub grows as it did when drawn */
+		ret = p->gen_version == 1 ? gen_shrub_v1(&g) : gen_shrub(&g);
 		break;
 	case GEN_PALM:
 		ret = gen_palm(&g);

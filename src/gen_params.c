@@ -61,6 +61,7 @@ void gen_params_default(struct gen_params *p, enum gen_type type)
 {
 	memset(p, 0, sizeof(*p));
 	p->type = type;
+	p->gen_version = GEN_VERSION;
 	p->precision = 8;
 	p->trunk_start = vec3(0, 0, 0);
 	p->trunk_end = vec3(0, 2.5, 0);
@@ -153,8 +154,9 @@ size_t gen_count_branches(const struct gen_params *p)
 {
 	if (p->type == GEN_PALM)
 		return 1 + (size_t)p->fronds;
-	/* a shrub's crown is cut to its shape: this is the most it can have */
-	if (p->type == GEN_SHRUB)
+	/* a shrub's crown is cut to its shape: this is the most it can have (version 1's is
+	 * the L-system's, clipped) */
+	if (p->type == GEN_SHRUB && p->gen_version != 1)
 		return gen_shrub_branches(p);
 	return full_tree(p->children, p->levels);
 }
@@ -163,6 +165,10 @@ size_t gen_count_leaves(const struct gen_params *p)
 {
 	if (p->type == GEN_PALM)
 		return (size_t)p->fronds * (size_t)p->leaf_amount;
+	/* version 1's clipping makes tips of branches cut short: at most every branch but the
+	 * trunk */
+	if (p->type == GEN_SHRUB && p->gen_version == 1)
+		return (full_tree(p->children, p->levels) - 1) * (size_t)p->leaf_amount;
 	/* a shrub's leaves are its tips' (a branch cut short of its tips takes their place) */
 	if (p->type == GEN_SHRUB)
 		return gen_shrub_tips(p) * (size_t)p->leaf_amount;
@@ -244,6 +250,9 @@ int gen_params_check(const struct gen_params *p, const char **key, struct error 
 	size_t nb, nl;
 	int ret;
 
+	if (p->gen_version < 1 || p->gen_version > GEN_VERSION)
+		return BAD("generator", "generator version %d is not supported (this edaha has 1 to %d)",
+			   p->gen_version, GEN_VERSION);
 	if ((unsigned)p->type >= GEN_TYPE_COUNT)
 		return BAD("type", "type: unknown");
 	if (p->precision < GEN_MIN_PRECISION || p->precision > GEN_MAX_PRECISION)
@@ -377,6 +386,8 @@ bool gen_adjust(const struct gen_params *p, enum gen_adjust what, struct gen_par
 	bool ok = true;
 
 	*q = *p;
+	/* a new tree: this edaha's, whatever p's version */
+	q->gen_version = GEN_VERSION;
 	switch (what) {
 	case GEN_MORE:
 	case GEN_FEWER: {

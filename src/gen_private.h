@@ -64,6 +64,9 @@ int gen_tip_leaves(struct gen_ctx *g, int b, struct vec3 e, double reach, struct
 int gen_lsystem(struct gen_ctx *g);
 int gen_shrub(struct gen_ctx *g);
 int gen_palm(struct gen_ctx *g);
+/* A shrub as generator version 1 grew it (gen_shrub_v1.c): drawings made before version 2
+ * rebuild as they were. */
+int gen_shrub_v1(struct gen_ctx *g);
 
 /* A shrub's crown (gen_shrub.c): how many tips it aims at its shape's surface, and the
  * most branches it has, its trunk's included (gen_count_branches). */

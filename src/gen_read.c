@@ -20,6 +20,7 @@
 struct reader {
 	struct yaml_in in;
 	struct gen_params *p;
+	int version; /* the generators' version the tree is for */
 };
 
 static int get_point(struct reader *r, const yaml_node_t *n, const char *what, struct vec3 *v)
@@ -306,8 +307,11 @@ static int read_root(struct reader *r, const yaml_node_t *root)
 	char path[32];
 	int ret;
 
-	if ((ret = read_head(r, root)) < 0 ||
-	    (ret = yaml_in_pairs(&r->in, root, "the top level", top_pair, r)) < 0)
+	if ((ret = read_head(r, root)) < 0)
+		return ret;
+	/* the head set the type's defaults; the limits are the version's */
+	r->p->gen_version = r->version;
+	if ((ret = yaml_in_pairs(&r->in, root, "the top level", top_pair, r)) < 0)
 		return ret;
 	if ((ret = gen_params_check(r->p, &key, &why)) == 0)
 		return 0;
@@ -327,11 +331,21 @@ static int read_root(struct reader *r, const yaml_node_t *root)
 int gen_read(const char *data, size_t len, const char *name, unsigned long line_offset,
 	     struct gen_params *p, struct error *err)
 {
+	return gen_read_version(data, len, name, line_offset, GEN_VERSION, p, err);
+}
+
+int gen_read_version(const char *data, size_t len, const char *name, unsigned long line_offset,
+		     int version, struct gen_params *p, struct error *err)
+{
 	struct gen_params tmp;
-	struct reader r = { .p = &tmp };
+	struct reader r = { .p = &tmp, .version = version };
 	const yaml_node_t *root;
 	int ret;
 
+	if (version < 1 || version > GEN_VERSION)
+		return error_at(err, -EINVAL, name, line_offset + 1,
+				"generator version %d is not supported (this edaha has 1 to %d)",
+				version, GEN_VERSION);
 	gen_params_default(&tmp, GEN_LSYSTEM);
 	if ((ret = yaml_in_open(&r.in, &kind, data, len, name, line_offset, err, &root)) < 0)
 		return ret;

@@ -5,6 +5,7 @@
 
 #include "arrange.h"
 #include "doc.h"
+#include "gen.h"
 #include "ori_kinds.h"
 #include "propagate.h"
 #include "test.h"
@@ -280,8 +281,67 @@ static void test_camera(void)
 	buf_finish(&b2);
 }
 
+/* Generator versions (gen.h, GEN_VERSION): each generate op keeps the version it was made
+ * with, read and written back as read, in a drawing of both; copies keep it; its weight
+ * is its version's counts; a version this edaha does not have is refused at its line. */
+static void test_gen_versions(void)
+{
+#define SHRUB "{edaha-tree: 1, type: shrub, precision: 6, trunk: {start: [0, 0, 0]}, levels: 2, " \
+	      "children: 2, angle: {min: 30, max: 70, randomness: 0.8}, ratios: [0.8, 0.75], " \
+	      "spread: 120, twist: 60, thickness: 0.06, thickness_ratio: 0.75, leaves: {amount: 5, " \
+	      "size: 0.15, type: round}, season: summer, trunk_height: 0.8, clip: {shape: sphere, " \
+	      "center: [0, 1.5, 0], radius: 1}}"
+	static const char both[] = "edaha-drawing 8\nseed 4\nhistory 3 3\n"
+				   "generate 5 1 77 " SHRUB "\ngenerate 6 2 77 " SHRUB "\n"
+				   "generate 7 1 78 " SHRUB "\nend\n";
+	static const char v3[] = "edaha-drawing 8\nseed 4\nhistory 1 1\ngenerate 5 3 77 " SHRUB "\nend\n";
+	static const int want[3] = { 1, 2, 1 };
+	struct error err = { { 0 } };
+	struct doc d, e;
+	struct doc_op copy;
+	struct buf a, b;
+	struct tree t;
+
+	CHECK_INT(doc_parse(both, sizeof(both) - 1, "both", &d, &err), 0);
+	CHECK_INT(d.nops, 3);
+	for (size_t i = 0; i < 3; i++)
+		CHECK(d.ops[i].kind == DOC_OP_GENERATE && d.ops[i].params->gen_version == want[i]);
+	buf_init(&a);
+	buf_init(&b);
+	CHECK_INT(doc_serialize(&d, NULL, &a), 0);
+	CHECK(strstr((const char *)a.data, "\ngenerate 5 1 77 {") &&
+	      strstr((const char *)a.data, "\ngenerate 6 2 77 {") &&
+	      strstr((const char *)a.data, "\ngenerate 7 1 78 {"));
+	CHECK_INT(doc_parse((const char *)a.data, a.len, "again", &e, &err), 0);
+	for (size_t i = 0; i < 3; i++)
+		CHECK_INT(e.ops[i].params->gen_version, want[i]);
+	CHECK_INT(doc_serialize(&e, NULL, &b), 0);
+	CHECK(a.len == b.len && memcmp(a.data, b.data, a.len) == 0);
+	CHECK_INT(doc_op_copy(&copy, &d.ops[0]), 0);
+	CHECK_INT(copy.params->gen_version, 1);
+	/* version 1: the L-system's 3 branches clipped, a tip on all but the trunk; version 2:
+	 * at least 256 tips aimed at the sphere */
+	CHECK_INT(doc_op_weight(&copy), 3 + 2 * 5);
+	CHECK(doc_op_weight(&d.ops[1]) >= 256 * 6);
+	/* and the tree each builds is its version's: version 1 has at most those 3 branches */
+	tree_init(&t);
+	CHECK_INT(gen_build(&t, copy.params, copy.seed), 0);
+	CHECK(t.nbranches >= 1 && t.nbranches <= 3);
+	CHECK_INT(gen_build(&t, d.ops[1].params, d.ops[1].seed), 0);
+	CHECK(t.nbranches > 256);
+	tree_finish(&t);
+	doc_op_finish(&copy);
+	doc_finish(&e);
+	doc_finish(&d);
+	buf_finish(&a);
+	buf_finish(&b);
+	expect_error(v3, "bad.edaha:4: generator version 3 is not supported (this edaha has 1 to 2)");
+#undef SHRUB
+}
+
 int main(void)
 {
+	test_gen_versions();
 	test_versions();
 	test_camera();
 	test_edit_ops();

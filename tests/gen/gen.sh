@@ -480,4 +480,35 @@ t_shrub_trunk_leaves() {
 	[ "$n" -eq 0 ] || fail "a shrub's trunk has $n leaves"
 }
 
+# 13. Generator versions (docs/functional-trees.md, "Generator versions"): a drawing saved
+# before version 2 keeps its trees. versions/ holds what edaha at 4394a65 (generator
+# version 1, the last before issue 24's shrubs) wrote for --generate of four presets: their
+# drawings and the digests of their skeleton.json (SHA256SUMS: the trees, not the meshes,
+# which later work may draw otherwise; test_gen_version.c checks 500 trees' digests).
+# --load of each gives them byte for byte and saves the same drawing (its generate line
+# keeps G = 1). A parameter button on the old ball makes an op of this
+# edaha's version: the ball a template tap and the same press give now. The drawing with
+# both ops loads to the same tree, and undo there brings the old ball back.
+t_versions() {
+	local p v=$HERE/versions
+	for p in ball hedge cone cherry; do
+		run "$T/$p" --load "$v/$p/drawing.edaha"
+		cmp -s "$v/$p/drawing.edaha" "$T/$p/drawing.edaha" || fail "$p: --load saved another drawing"
+	done
+	(cd "$T" && sha256sum --check --quiet "$v/SHA256SUMS") || fail "a version 1 drawing's tree changed (above)"
+	echo "version 1 drawings (ball, hedge, cone, cherry): skeleton.json as edaha 4394a65 wrote it"
+	run "$T/old-leafier" --load "$v/ball/drawing.edaha" --press gen-leafier
+	run "$T/new-leafier" --press tpl-ball --press gen-leafier
+	[ "$(grep '^generate ' "$T/old-leafier/drawing.edaha" | cut -d' ' -f3 | tr '\n' ' ')" = "1 2 " ] ||
+		fail "leafier on a version 1 ball: not a version 2 op after the version 1 one"
+	cmp -s "$T/old-leafier/skeleton.json" "$T/new-leafier/skeleton.json" ||
+		fail "leafier on a version 1 ball did not give the ball of today's leafier"
+	run "$T/both" --load "$T/old-leafier/drawing.edaha"
+	cmp -s "$T/old-leafier/drawing.edaha" "$T/both/drawing.edaha" || fail "a drawing of versions 1 and 2 saved another"
+	cmp -s "$T/old-leafier/skeleton.json" "$T/both/skeleton.json" || fail "a drawing of versions 1 and 2 loaded another tree"
+	run "$T/undone" --load "$T/old-leafier/drawing.edaha" --press undo
+	cmp -s "$T/ball/skeleton.json" "$T/undone/skeleton.json" || fail "undo of leafier did not give the version 1 ball"
+	echo "leafier on the version 1 ball: a version 2 op, today's ball; undo: the version 1 ball"
+}
+
 "t_$1"
