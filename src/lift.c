@@ -577,9 +577,14 @@ static bool view_angle_range(const struct rules *r, struct vec3 pd, struct dzset
 			return true;
 	}
 	/* none: the t nearest t0 round the circle, within [-pi/4, pi/4] */
-	if (fabs(t0) <= 0.25 * VEC_PI)
+	if (fabs(t0) <= 0.25 * VEC_PI) {
 		*s = dzset_point(dxy * tan(t0));
-	else if (fabs(remainder(t0 - 0.25 * VEC_PI, 2 * VEC_PI)) <=
+		/* A branch drawn (all but) straight on from its parent has a limit of (all but)
+		 * 0, which cos() cannot tell from 0 (cos(5e-9) is 1): the arc is then lost in
+		 * rounding, but its centre, leaning as the parent does, keeps the rule. */
+		if (angle_between(vec3(r->dx, r->dy, s->lo[0]), pd) <= r->amax + 1e-10)
+			return true;
+	} else if (fabs(remainder(t0 - 0.25 * VEC_PI, 2 * VEC_PI)) <=
 		 fabs(remainder(t0 + 0.25 * VEC_PI, 2 * VEC_PI)))
 		*s = dzset_point(dxy);
 	else
