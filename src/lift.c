@@ -2,6 +2,7 @@
 #include "lift.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <stdint.h>
 #include <math.h>
 #include <stdlib.h>
@@ -9,6 +10,10 @@
 
 /* Depth candidates tried for each branch end. */
 #define CANDIDATES 48
+/* Generations below a branch its deep look-ahead sees (lifter_deeper), and the work it may
+ * do over a lift: so many outcome()s per branch of the tree. */
+#define LOOKAHEAD 3
+#define LOOKAHEAD_WORK 2048
 
 /* The sketch's 2D convex hull (Andrew's monotone chain), counter-clockwise. */
 struct hull {
@@ -356,22 +361,32 @@ static void curvature_depth(const struct branch *b, double *depth)
 }
 
 /*
- * What a depth of a branch's end leaves its children (lifter_score): how many would have no
- * depth keeping the angle rule, the hull, the length rule. Fewer is better, in that order.
+ * What a depth of a branch's end leaves its children (lifter_score), or its descendants
+ * (lifter_deep): how many would have no depth keeping the angle rule, the hull, the length
+ * rule. Fewer is better, in that order.
  */
 struct lookahead {
-	size_t angle, hull, length;
+	long angle, hull, length;
 };
+
+/* A score worse than any. */
+#define LOOKAHEAD_WORST ((struct lookahead){ LONG_MAX, 0, 0 })
 
 static int lookahead_cmp(const struct lookahead *a, const struct lookahead *b)
 {
-	const size_t x[] = { a->angle, a->hull, a->length };
-	const size_t y[] = { b->angle, b->hull, b->length };
+	const long x[] = { a->angle, a->hull, a->length };
+	const long y[] = { b->angle, b->hull, b->length };
 
 	for (int i = 0; i < 3; i++)
 		if (x[i] != y[i])
 			return x[i] < y[i] ? -1 : 1;
 	return 0;
+}
+
+/* a + b (neither LOOKAHEAD_WORST) */
+static struct lookahead lookahead_add(struct lookahead a, struct lookahead b)
+{
+	return (struct lookahead){ a.angle + b.angle, a.hull + b.hull, a.length + b.length };
 }
 
 /*
@@ -577,9 +592,14 @@ static bool view_angle_range(const struct rules *r, struct vec3 pd, struct dzset
 			return true;
 	}
 	/* none: the t nearest t0 round the circle, within [-pi/4, pi/4] */
-	if (fabs(t0) <= 0.25 * VEC_PI)
+	if (fabs(t0) <= 0.25 * VEC_PI) {
 		*s = dzset_point(dxy * tan(t0));
-	else if (fabs(remainder(t0 - 0.25 * VEC_PI, 2 * VEC_PI)) <=
+		/* A branch drawn (all but) straight on from its parent has a limit of (all but)
+		 * 0, which cos() cannot tell from 0 (cos(5e-9) is 1): the arc is then lost in
+		 * rounding, but its centre, leaning as the parent does, keeps the rule. */
+		if (angle_between(vec3(r->dx, r->dy, s->lo[0]), pd) <= r->amax + 1e-10)
+			return true;
+	} else if (fabs(remainder(t0 - 0.25 * VEC_PI, 2 * VEC_PI)) <=
 		 fabs(remainder(t0 + 0.25 * VEC_PI, 2 * VEC_PI)))
 		*s = dzset_point(dxy);
 	else
@@ -697,6 +717,7 @@ struct lifter {
 	struct anchor *root, *leaf;
 	struct vec3 *shift;  /* with tu: where the merge moves each branch after the turn */
 	struct rules *rules; /* each branch's, once the trunk is placed */
+	long work;           /* what is left of the deep look-ahead's outcome()s */
 	double *at_f, *at_d;
 	int *order, *first, *next; /* a generation's branches; each branch's children */
 	/* 4.3's depth and the fraction along the screen of every point, branch i's from
@@ -725,7 +746,7 @@ static int lifter_init(struct lifter *L, struct tree *t, const struct turn *tu, 
 	size_t nb = t->nbranches + 1, npoints = 1;
 	int ret;
 
-	*L = (struct lifter){ .t = t, .tu = tu, .f = f };
+	*L = (struct lifter){ .t = t, .tu = tu, .f = f, .work = LOOKAHEAD_WORK * (long)nb };
 	ret = hull_build(&L->h, t);
 	if (ret < 0)
 		return ret;
@@ -885,7 +906,8 @@ static struct vec3 parent_chord(const struct lifter *L, int id)
 	return L->tu && L->t->branches[p].parent < 0 ? vec3(-pd.z, pd.y, pd.x) : pd;
 }
 
-/* The look-ahead score of end depth e for branch id, its start s. */
+/* The look-ahead score of end depth e for branch id, its start s: its children's
+ * outcomes. */
 static struct lookahead lifter_score(const struct lifter *L, int id, struct vec3 s, struct vec3 e)
 {
 	struct vec3 pd = vec3_sub(e, s);
@@ -907,6 +929,89 @@ static struct lookahead lifter_score(const struct lifter *L, int id, struct vec3
 		case LIFT_KEPT:
 			break;
 		}
+	}
+	return la;
+}
+
+static int lifter_candidates(const struct lifter *L, int id, double zs, struct vec3 pd,
+			     double *cz);
+
+/* a, or b if b is lower */
+static const struct lookahead *lookahead_min(const struct lookahead *a, const struct lookahead *b)
+{
+	return b && lookahead_cmp(b, a) < 0 ? b : a;
+}
+
+static struct lookahead lifter_deep(struct lifter *L, int id, struct vec3 s, struct vec3 e,
+				    int depth, const struct lookahead *limit, bool length);
+
+/* The least lifter_deep() of branch id over its candidate depths, its start at depth zs and
+ * its parent's chord pd; worse than *limit if none is better. */
+static struct lookahead lifter_best(struct lifter *L, int id, double zs, struct vec3 pd, int depth,
+				    const struct lookahead *limit, bool length)
+{
+	struct vec3 s = vec3(L->seg[id].s.x, L->seg[id].s.y, zs);
+	struct lookahead best = LOOKAHEAD_WORST;
+	double cz[CANDIDATES];
+	int m = lifter_candidates(L, id, zs, pd, cz);
+
+	for (int c = 0; c < m && (best.angle || best.hull || best.length) && L->work > 0; c++) {
+		struct lookahead la;
+
+		if (c > 0 && cz[c] == cz[c - 1])
+			continue; /* (where no depth keeps every rule: the one there is) */
+		la = lifter_deep(L, id, s, vec3(L->seg[id].e.x, L->seg[id].e.y, cz[c]), depth,
+				 lookahead_min(&best, limit), length);
+		if (lookahead_cmp(&la, &best) < 0)
+			best = la;
+	}
+	/* (out of work before a candidate: lifter_deeper() throws the result away) */
+	return best.angle == LONG_MAX ? (struct lookahead){ 0 } : best;
+}
+
+/*
+ * The deep look-ahead of lifter_deeper(): how many of branch id's descendants, down to
+ * `depth` generations below it, would find no depth keeping the angle rule or the hull,
+ * its start s and its end e: each child's outcome and, below it, the least its own
+ * descendants can make over its candidate depths, and so on. A turned end that no depth
+ * puts inside the hull is not counted: no depth above it helps either. Stops as soon as
+ * the sum is worse than *limit (it only grows), or L->work runs out.
+ */
+static struct lookahead lifter_deep(struct lifter *L, int id, struct vec3 s, struct vec3 e,
+				    int depth, const struct lookahead *limit, bool length)
+{
+	struct vec3 pd = vec3_sub(e, s);
+	struct lookahead la = { 0 };
+
+	for (int c = L->first[id]; c >= 0 && L->work > 0; c = L->next[c]) {
+		double zs = s.z + (e.z - s.z) * L->at_f[c] + L->at_d[c];
+
+		L->work--;
+		switch (outcome(&L->rules[c], zs, pd)) {
+		case LIFT_NO_ANGLE:
+			la.angle++;
+			break;
+		case LIFT_NO_HULL:
+			la.hull += L->rules[c].hull;
+			break;
+		case LIFT_NO_LENGTH:
+			la.length += length;
+			break;
+		case LIFT_KEPT:
+			break;
+		}
+		if (depth > 1 && L->first[c] >= 0 && !(limit && lookahead_cmp(&la, limit) > 0)) {
+			/* what is left of the limit for c's descendants */
+			struct lookahead rest = { 0 };
+
+			if (limit)
+				rest = (struct lookahead){ limit->angle - la.angle, limit->hull - la.hull,
+							   limit->length - la.length };
+			la = lookahead_add(la, lifter_best(L, c, zs, pd, depth - 1, limit ? &rest : NULL,
+							   length));
+		}
+		if (limit && lookahead_cmp(&la, limit) > 0)
+			break;
 	}
 	return la;
 }
@@ -953,6 +1058,55 @@ static int lifter_candidates(const struct lifter *L, int id, double zs, struct v
 }
 
 /*
+ * The look-ahead one generation deep sees a child that no depth lets keep the rules, not
+ * a grandchild: a twig ending at the top of the sketch, where the hull's disc is a point,
+ * must start near the sketch plane, so its parent must not lean far out, and that is
+ * its grandparent's doing. So branch id's end, chosen among the candidates cz[] (field
+ * values cd[]) by its children's scores, is looked at LOOKAHEAD generations deep
+ * (lifter_deep): if another candidate lets fewer of its descendants break the angle rule
+ * or the hull, the end goes to the sparsest of those that let the fewest, and of those,
+ * that leave the fewest children too long. Where the first choice is as good as any, as
+ * far as the look-ahead sees, it stays (so does a tree that keeps every rule). A lift
+ * asks at most LOOKAHEAD_WORK x its branches outcome()s of it; when they are spent, the
+ * first choice stays.
+ */
+static void lifter_deeper(struct lifter *L, int id, const double *cz, const double *cd, int m,
+			  enum lift_pick pick, struct rng *rng)
+{
+	struct seg *s = &L->seg[id];
+	struct lookahead deep[CANDIDATES], full[CANDIDATES], now, best;
+
+	if (L->first[id] < 0 || L->work <= 0)
+		return;
+	now = lifter_deep(L, id, s->s, s->e, LOOKAHEAD, NULL, false);
+	if (!now.angle && !now.hull)
+		return;
+	best = now;
+	for (int c = 0; c < m; c++) {
+		deep[c] = cz[c] == s->e.z ?
+				  now :
+				  lifter_deep(L, id, s->s, vec3(s->e.x, s->e.y, cz[c]), LOOKAHEAD, &best, false);
+		if (lookahead_cmp(&deep[c], &best) < 0)
+			best = deep[c];
+	}
+	if (L->work <= 0 || lookahead_cmp(&best, &now) == 0)
+		return;
+	/* of those, the ones that leave the fewest children too long, or if the work allows,
+	 * the fewest descendants as far as the look-ahead sees */
+	now = LOOKAHEAD_WORST;
+	for (int c = 0; c < m; c++) {
+		if (lookahead_cmp(&deep[c], &best) != 0) {
+			deep[c] = full[c] = LOOKAHEAD_WORST;
+			continue;
+		}
+		deep[c].length = lifter_score(L, id, s->s, vec3(s->e.x, s->e.y, cz[c])).length;
+		full[c] = lifter_deep(L, id, s->s, vec3(s->e.x, s->e.y, cz[c]), LOOKAHEAD, &now, true);
+		now = *lookahead_min(&now, &full[c]);
+	}
+	s->e.z = pick_depth(cz, cd, L->work > 0 ? full : deep, m, pick, rng);
+}
+
+/*
  * 4.1 for one branch (not a trunk): its start on its parent, which (an earlier generation)
  * has its depth; its end's depth the sparsest (or a random) candidate among those with the
  * best look-ahead score.
@@ -972,7 +1126,7 @@ static void lifter_place(struct lifter *L, int id, enum lift_pick pick, struct r
 		struct vec3 at = L->tu ? turn_point(L->tu->base, L->shift[id], e) : e;
 
 		cd[c] = field_at(L->f, at.x, at.z);
-		score[c] = (struct lookahead){ SIZE_MAX, 0, 0 };
+		score[c] = LOOKAHEAD_WORST;
 	}
 	/* The sparsest rule needs the scores only where they can decide: if the sparsest
 	 * candidate leaves its children every rule, only those as sparse as it (the rest
@@ -986,6 +1140,7 @@ static void lifter_place(struct lifter *L, int id, enum lift_pick pick, struct r
 		if (c != top && !(cd[c] < stop))
 			score[c] = lifter_score(L, id, s->s, vec3(s->e.x, s->e.y, cz[c]));
 	s->e.z = pick_depth(cz, cd, score, m, pick, rng);
+	lifter_deeper(L, id, cz, cd, m, pick, rng);
 }
 
 /*

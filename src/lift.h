@@ -15,7 +15,8 @@
  *     random order within a generation. A branch's start sits on its placed parent; the
  *     depth of its end is the sparsest admissible one on a LIFT_FIELD_N^2 distance field
  *     of all branches placed so far, projected on the ground, among those that leave the
- *     most of its children a depth keeping every rule. Admissible: between 45 and 135
+ *     most of its children a depth keeping every rule, and, looking three generations
+ *     down, the fewest descendants breaking the angle rule or the hull. Admissible: between 45 and 135
  *     degrees from the view direction; at most 1.2 x the largest drawn angle between the
  *     parent and its children from the parent's chord; inside the sqrt(2)-scaled hull
  *     (the sketch's 2D convex hull swept as discs from its lowest to its highest point);
