@@ -5,6 +5,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "test_config.h"
+
 /*
  * Minimal test helpers: each test program runs its checks and exits non-zero on the
  * first failure, printing where. Meson counts programs.
@@ -36,3 +38,15 @@
 			exit(1);                                                          \
 		}                                                                         \
 	} while (0)
+
+/*
+ * How many seeded random cases a property test runs: n in the plain build; under
+ * ASan+UBSan, where a case costs 3 to 10 times as much, a quarter (at least one). The
+ * sanitizers look for memory errors and undefined behaviour, which the first cases to
+ * reach a path show; the property itself is checked on all n by the plain build, which
+ * tools/test runs too.
+ */
+static inline int test_cases(int n)
+{
+	return TEST_SANITIZED ? (n + 3) / 4 : n;
+}

@@ -576,9 +576,10 @@ static void test_random_toothed(void)
 	struct rng r;
 	int valid = 0, tried = 0;
 	size_t side_nodes = 0, inner = 0;
+	int want = test_cases(200);
 
 	rng_seed(&r, 24);
-	while (valid < 200 && tried < 5000) {
+	while (valid < want && tried < 5000) {
 		struct ori_design d = random_toothed(&r);
 		struct ori_leaf l;
 		struct error err;
@@ -600,7 +601,7 @@ static void test_random_toothed(void)
 	}
 	printf("random toothed designs: %d valid of %d tried, %zu nodes on side veins, %zu "
 	       "vertices inside checked\n", valid, tried, side_nodes, inner);
-	CHECK(valid >= 200);
+	CHECK(valid >= want);
 }
 
 int main(void)

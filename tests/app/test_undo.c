@@ -529,10 +529,14 @@ static void test_oom(void)
 
 int main(void)
 {
+	/* sessions of n steps, each state compared with a full replay: O(n^2), so half as
+	 * long under the sanitizers (test.h); test_undo_walk.c walks 300 more sessions */
+	int n = TEST_SANITIZED ? 60 : 120;
+
 	for (uint64_t seed = 1; seed <= 4; seed++)
-		session(seed, 240, seed % 2 == 0, false);
-	session(7, 360, false, true);
-	session(8, 260, true, true);
+		session(seed, n, seed % 2 == 0, false);
+	session(7, 3 * n / 2, false, true);
+	session(8, n + n / 12, true, true);
 	test_oom();
 	fprintf(stderr, "%ld states compared with a full replay, %ld vines planted, %ld grow "
 		"presses\n", checks, vines_planted, grows);

@@ -438,16 +438,18 @@ static void session(uint64_t seed)
 
 int main(void)
 {
+	int sessions = test_cases(SESSIONS);
+
 	ref = app_create(1280, 800, 1);
 	CHECK(ref);
-	for (uint64_t seed = 1; seed <= SESSIONS; seed++)
+	for (uint64_t seed = 1; seed <= (uint64_t)sessions; seed++)
 		session(seed);
 	app_destroy(ref);
 	fprintf(stderr,
 		"%d sessions: %ld presses of undo or redo, %ld states compared with a full replay; "
 		"%ld clone removals, %ld cuts or erasures, %ld generated trees, %ld vines, %ld "
 		"grow presses; worst press meshed %zu parts, %.1f%% of its tree's elements\n",
-		SESSIONS, presses, states, removals, cuts_or_erasures, generated, vines, grows,
+		sessions, presses, states, removals, cuts_or_erasures, generated, vines, grows,
 		worst_meshed, 100.0 * worst_share);
 	CHECK(removals > 0 && cuts_or_erasures > 0 && generated > 0 && vines > 0 && grows > 0);
 	return 0;

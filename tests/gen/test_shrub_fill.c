@@ -429,7 +429,7 @@ static int property(enum shape_kind kind, uint64_t seed)
 
 	tree_init(&t);
 	tree_init(&again);
-	while (drawn < FILES_PER_SHAPE) {
+	while (drawn < test_cases(FILES_PER_SHAPE)) {
 		struct gen_params p;
 		struct file f;
 		struct error err;

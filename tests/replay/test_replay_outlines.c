@@ -387,12 +387,12 @@ static void test_property(void)
 	struct layout_button bar[LAYOUT_NBUTTONS];
 	struct view v;
 	double right;
-	int merged = 0, cuts = 0, actions = 0;
+	int merged = 0, cuts = 0, actions = 0, sketches = test_cases(SKETCHES);
 
 	view_init(&v, W, H);
 	layout_buttons(&v, bar, LAYOUT_NBUTTONS);
 	right = bar[0].x - 30; /* strokes stay clear of the button bar */
-	for (uint64_t seed = 1; seed <= SKETCHES; seed++) {
+	for (uint64_t seed = 1; seed <= (uint64_t)sketches; seed++) {
 		struct sketch k = { .app = app_create(W, H, 1) };
 		struct rng r;
 		struct app *again;
@@ -462,9 +462,9 @@ static void test_property(void)
 		buf_finish(&k.p.text);
 	}
 	printf("%d random sketches, %d actions: %d outline pairs became one branch, %d strokes were gestures (undone)\n",
-	       SKETCHES, actions, merged, cuts);
+	       sketches, actions, merged, cuts);
 	/* the generator makes real outline pairs too, and not only them */
-	CHECK(merged > SKETCHES / 10);
+	CHECK(merged > sketches / 10);
 }
 
 /* With an argument, only that test: outlines, fans or property. */
