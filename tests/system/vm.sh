@@ -117,12 +117,18 @@ EOF
 	mv "$initrd.tmp" "$initrd"
 }
 mkdir -p "$cache"
+# rebuilt when this script changes, so a fix to init reaches every later run; one
+# builder at a time, whatever lock the guests take
+exec 8>"$cache/build.lock"
+flock 8
+{ [ -s "$initrd" ] && [ "$initrd" -nt "$0" ]; } || build_initrd
+exec 8>&-
 # One guest at a time on this machine, whoever starts it (meson, a developer, a second
-# checkout): two TCG guests on a small machine starve each other past their time limits.
+# checkout): two TCG guests on a small machine slow each other down, and a third job
+# beside them past their time limits. tools/test gives its ASan build's guests a lock of
+# their own, so that the two builds' chains of guests overlap.
 exec 9>"${VM_LOCK:-/tmp/edaha-vm.lock}"
 flock 9
-# rebuilt when this script changes, so a fix to init reaches every later run
-{ [ -s "$initrd" ] && [ "$initrd" -nt "$0" ]; } || build_initrd
 
 job=$(mktemp -d /tmp/edaha-vm-job.XXXXXX)
 trap 'rm -rf "$job"' EXIT
