@@ -124,9 +124,8 @@ flock 8
 { [ -s "$initrd" ] && [ "$initrd" -nt "$0" ]; } || build_initrd
 exec 8>&-
 # One guest at a time on this machine, whoever starts it (meson, a developer, a second
-# checkout): two TCG guests on a small machine slow each other down, and a third job
-# beside them past their time limits. tools/test gives its ASan build's guests a lock of
-# their own, so that the two builds' chains of guests overlap.
+# checkout): two TCG guests on a small machine starve each other (on two cores, with the
+# rest of tools/test beside them, system-display took 368 s, not 138).
 exec 9>"${VM_LOCK:-/tmp/edaha-vm.lock}"
 flock 9
 
