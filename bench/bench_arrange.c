@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Leaf arrangement (src/arrange.c) on one curved 3D branch of 1..20 m, sampled every 5 cm
+ * Leaf arrangement (src/sketch/arrange.c) on one curved 3D branch of 1..20 m, sampled every 5 cm
  * as sketching samples it, with 40-point leaves:
  *   whorl-extend   an opposite pair at 0.3 m, a leaf at 0.6 m turned 90 degrees: to the tip
  *   spiral-extend  single leaves at 0.3 and 0.55 m, 137.5 degrees apart: to the tip

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Twining vines (seed 004, issue 16): the support's index (src/vine_support.c). For a pole
+ * Twining vines (seed 004, issue 16): the support's index (src/vine/vine_support.c). For a pole
  * (a capped cylinder, 5 cm by 2 m) and a bumpy sphere (30 cm) of about 1k, 10k and 100k
  * triangles: the build, and a query (max 4 r, r = 2 mm: a few stem radii) from points
  * 0.5 r, 2 r and 20 r off the surface (along a triangle's normal from a point of it,

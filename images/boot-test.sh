@@ -204,7 +204,7 @@ qmp "{\"execute\":\"blockdev-add\",\"arguments\":{\"driver\":\"raw\",\"node-name
 qmp '{"execute":"device_add","arguments":{"driver":"usb-storage","bus":"xhci.0","drive":"stick","id":"stick-dev","removable":true}}' |
 	grep -q '"return"' || fail "QMP device_add usb-storage"
 check "the kiosk found the stick (usb: ... (vfat) is ready)" wait_log 'usb: sd[a-z0-9]* (vfat) is ready' 120
-# the Save button: the bottom one of the column on the right (src/layout.c) at 1280x800,
+# the Save button: the bottom one of the column on the right (src/core/layout.c) at 1280x800,
 # as reference-1280x800.png shows it
 click 1202 745 || fail "QMP input-send-event"
 check "Save wrote the tree to the stick (usb: saved tree-0001)" wait_log 'usb: saved tree-0001' 180

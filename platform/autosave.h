@@ -10,7 +10,7 @@
 
 /*
  * The drawing on screen, kept through crashes, watchdog restarts and power cuts: every
- * committed stroke and edit is appended to DIR/drawing.journal (src/journal.h) and
+ * committed stroke and edit is appended to DIR/drawing.journal (src/doc/journal.h) and
  * fsync'ed before the loop goes on. On start the journal gives the drawing back; the
  * idle reset archives it to DIR/archive/drawing-NNNNNN.edaha and starts afresh.
  */

@@ -40,7 +40,7 @@ void window_map_point(const struct window_map *m, double wx, double wy, double *
 
 bool window_input_key(SDL_Keycode key, enum button *button)
 {
-	/* 1-9: the bar's places in its order (src/layout.c); letters: the buttons' names */
+	/* 1-9: the bar's places in its order (src/core/layout.c); letters: the buttons' names */
 	static const struct {
 		SDL_Keycode key;
 		enum button button;

@@ -306,10 +306,10 @@ int gen_params_check(const struct gen_params *p, const char **key, struct error 
 	nb = gen_count_branches(p);
 	nl = gen_count_leaves(p);
 	if (nb > TREE_MAX_BRANCHES)
-		return BAD("levels", "the tree would have %zu branches, over edaha's %u (src/tree.h): fewer "
+		return BAD("levels", "the tree would have %zu branches, over edaha's %u (src/core/tree.h): fewer "
 			   "levels or children", nb, TREE_MAX_BRANCHES);
 	if (nl > TREE_MAX_LEAVES)
-		return BAD("leaves.amount", "the tree would have %zu leaves, over edaha's %u (src/tree.h): fewer "
+		return BAD("leaves.amount", "the tree would have %zu leaves, over edaha's %u (src/core/tree.h): fewer "
 			   "leaves.amount or levels", nl, TREE_MAX_LEAVES);
 	return 0;
 }

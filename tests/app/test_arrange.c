@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Leaf arrangement by example (src/arrange.c): whorl-add, whorl-extend and spiral-extend
+ * Leaf arrangement by example (src/sketch/arrange.c): whorl-add, whorl-extend and spiral-extend
  * on a straight vertical branch, an inclined one and a curved 3D one. Trees are built
  * directly: leaves are drawn in their branch's frame at a chosen angle, then attached.
  * Angles are measured here from the leaves' world points (centroid in the frame at

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Cloning (src/clone.c, seed 000 sections 3.4 and 4.4), checked against rules computed
+ * Cloning (src/sketch/clone.c, seed 000 sections 3.4 and 4.4), checked against rules computed
  * here on their own: the turtle frame (head = the parent's tangent, up = world up made
  * perpendicular, +z when head is vertical), the widest gap between neighbouring children,
  * interpolation from that pair, rotation as far as allowed from the other children (over

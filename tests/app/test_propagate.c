@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Propagation (src/propagate.c): fixed count copies every child to the same parameter,
+/* Propagation (src/sketch/propagate.c): fixed count copies every child to the same parameter,
  * scaled; fixed size copies the tip-most children that fit, at the same distance from
  * the tip and the same size; copies are ORIGIN_PROPAGATE, rooted on their target,
  * congruent; the trunk only takes copies from another trunk; -ENOENT;

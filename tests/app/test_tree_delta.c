@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * tree_delta.h and tree_mesh_update (src/tree_delta.c, src/mesh_update.c) on 400 seeded
+ * tree_delta.h and tree_mesh_update (src/doc/tree_delta.c, src/core/mesh_update.c) on 400 seeded
  * random trees and edits: whatever a journal saw (branches and leaves removed, cut,
  * appended, truncated, cleared and drawn anew, leaves re-attached and moved, vines added)
  * or a comparison found (points, radii and leaves changed in place, elements appended or

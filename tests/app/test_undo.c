@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Undo, redo and --load take quicker paths than replaying the whole document (marks,
- * deltas, checkpoints: src/history.h, src/tree_delta.h, src/app_history.c). After every step of
+ * deltas, checkpoints: src/doc/history.h, src/doc/tree_delta.h, src/app/app_history.c). After every step of
  * long random sessions (strokes, cuts, erasures, two-outline branches, leaves, 3D, turned
  * views, clones added and removed, arrangements, propagations, new, undo and redo runs)
  * the app must hold exactly what a fresh app replaying its document from scratch holds:

@@ -12,7 +12,7 @@ import sys
 W, H = 1280, 800
 GROUND = 736
 STEP_US = 8000
-# The side strip of thumbnails (src/layout.c at 1280x800): buttons are 80 px, margins 16,
+# The side strip of thumbnails (src/core/layout.c at 1280x800): buttons are 80 px, margins 16,
 # gaps 12, thumbnails 128 px.
 THUMB = [(16 + 64, 16 + 64 + i * (128 + 12)) for i in range(3)]
 PATTERN = [(16 + 40, 16 + 40 + i * (80 + 12)) for i in range(2)]

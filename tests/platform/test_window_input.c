@@ -52,7 +52,7 @@ static void test_map(void)
 
 static void test_keys(void)
 {
-	/* 1-9: the bar's order (src/layout.c) */
+	/* 1-9: the bar's order (src/core/layout.c) */
 	static const enum button digits[] = { BUTTON_3D, BUTTON_CLONE, BUTTON_LEAF,
 					      BUTTON_PROPAGATE, BUTTON_SEASON, BUTTON_VINE,
 					      BUTTON_GROW, BUTTON_UNDO, BUTTON_REDO };

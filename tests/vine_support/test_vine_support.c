@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * The vine's support (src/vine_support.c) against a scan of every triangle: random meshes
+ * The vine's support (src/vine/vine_support.c) against a scan of every triangle: random meshes
  * of 1 to 20,000 triangles (small, large and degenerate ones, some sharing vertices) and
  * points on, near and far from them, with and without max; a capped pole and a unit cube
  * with known distances; degenerate triangles; the empty mesh; input it refuses; and every
