@@ -2,7 +2,7 @@
 /*
  * Headless frame time at the kiosk's 1280x800: synthetic trees of 62..500 branches with
  * 10 leaves each, drawn by the renderer into llvmpipe, the buttons labelled (the font
- * platform/font_file.c finds; the glyphs go into the UI's one draw call). For each tree:
+ * platform/files/font_file.c finds; the glyphs go into the UI's one draw call). For each tree:
  * a frame that uploads the meshes (what follows a finished stroke), a steady frame with
  * nothing to upload (what the pen's hover costs), and reading the frame back (what
  * --headless and the golden tests pay). Medians of FRAMES_MAX frames; glFinish() so the time

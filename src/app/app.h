@@ -57,7 +57,7 @@ enum app_status {
 	APP_STATUS_NONE = 0,
 	APP_STATUS_SAVED,       /* the export was written */
 	APP_STATUS_SAVE_FAILED, /* the export could not be written */
-	/* USB export (platform/usb_export.c) */
+	/* USB export (platform/usb/usb_export.c) */
 	APP_STATUS_SAVING,       /* being written to the stick: held until the result */
 	APP_STATUS_SAVED_USB,    /* on the stick, which is unmounted: safe to take out */
 	APP_STATUS_NO_STICK,     /* save pressed with no stick in */

@@ -9,7 +9,7 @@
 
 /*
  * What the YAML files read with libyaml's document loader share (the tree, leaf and
- * settings files through yaml_in.c; the kiosk's configuration, platform/config_file.c): a
+ * settings files through yaml_in.c; the kiosk's configuration, platform/files/config_file.c): a
  * node's kind and text, and a parser's error told at FILE:LINE.
  */
 

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * render-scene [--twice] SCENE OUT.png: renders a hand-built scene (tests/render/scene.c)
- * headless, with the labels' font (platform/font_file.c's defaults), and writes it as
+ * headless, with the labels' font (platform/files/font_file.c's defaults), and writes it as
  * PNG. With --twice it renders again, with the same and with a fresh renderer, and fails
  * unless all frames are byte-identical.
  */

@@ -2,7 +2,7 @@
 /*
  * The text path without GL: UTF-8 decoding, the atlas's packing, glyphs rasterised once
  * and cached, measuring and setting a line, and the labels in both languages fitting
- * their buttons at the kiosk's size. Uses the font platform/font_file.c finds (the
+ * their buttons at the kiosk's size. Uses the font platform/files/font_file.c finds (the
  * image's fonts-vlgothic).
  */
 #include <errno.h>

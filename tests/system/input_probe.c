@@ -2,7 +2,7 @@
 /*
  * Prints what the kiosk's input modules make of the devices present, as an edaha trace
  * on stdout (replayable with `edaha --replay`): the pen tablet, mouse or touchscreen
- * through platform/input_libinput.c and the GPIO buttons through platform/gpio.c, for the
+ * through platform/input/input_libinput.c and the GPIO buttons through platform/input/gpio.c, for the
  * VM tests. A mode button pressed lights its LED (gpio_set_mode).
  * SIGTERM or SIGINT end it early, cleanly (the modules are destroyed, LEDs put out).
  *   input_probe [--config FILE] [--seconds N] [--screen WxH]

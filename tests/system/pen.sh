@@ -1,7 +1,7 @@
 #!/bin/bash
 # System test of the pen input: boots a VM (vm.sh),
 # makes a virtual pen tablet with uinput (uinput_pen, driven by pen.script) and records
-# what platform/input_libinput.c makes of it through libinput's udev backend
+# what platform/input/input_libinput.c makes of it through libinput's udev backend
 # (input_probe, an edaha trace). Checks the pen and eraser strokes, the stylus button,
 # the positions (the tablet's 16:10 onto the 1280x800 screen) and that the tablet
 # unplugged and plugged back mid-session is picked up again; then replays the trace with
