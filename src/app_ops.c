@@ -10,7 +10,8 @@
  */
 #include "app_private.h"
 
-static const struct app_op_kind kinds[APP_OP_KINDS] = {
+/* Sized by its rows: doc.h's enum has no count, and a new kind is only its row here. */
+static const struct app_op_kind kinds[] = {
 	[DOC_OP_STROKE] = { .apply = app_stroke_apply },
 	[DOC_OP_NEW] = { .apply = app_new_apply, .replaces_tree = true },
 	[DOC_OP_LIFT] = { .apply = app_lift_apply, .edits_in_place = true, .replaces_tree = true },
@@ -36,7 +37,7 @@ static const struct app_op_kind unknown = { 0 };
 
 const struct app_op_kind *app_op_kind(enum doc_op_kind kind)
 {
-	return (unsigned)kind < APP_OP_KINDS ? &kinds[kind] : &unknown;
+	return (size_t)kind < sizeof(kinds) / sizeof(*kinds) ? &kinds[kind] : &unknown;
 }
 
 /* In the order they run after an op. */

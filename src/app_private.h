@@ -15,8 +15,7 @@ static inline double app_clamp(double v, double lo, double hi)
 	return v < lo ? lo : v > hi ? hi : v;
 }
 
-/* app_ops.c: one row a kind of op (doc.h's enum doc_op_kind; it has no count). */
-#define APP_OP_KINDS (DOC_OP_IMPORT + 1)
+/* app_ops.c: one row a kind of op (doc.h's enum doc_op_kind). */
 struct app_op_kind {
 	/* Applies the op to app->tree and app->rng: SKETCH_GREW (it only appended, or
 	 * changed no element), SKETCH_CHANGED, or < 0 (half of it may have been made). */
