@@ -735,25 +735,6 @@ static void run_export(struct kiosk *k)
 	usb_export_start(k->usb, k->app, k->pixels);
 }
 
-/* The mode the screen shows, as the button whose LED says so. */
-static enum button mode_button(const struct app *app)
-{
-	switch (app->mode) {
-	case APP_MODE_CLONE:
-		return BUTTON_CLONE;
-	case APP_MODE_LEAF:
-		return BUTTON_LEAF;
-	case APP_MODE_PROPAGATE:
-		return BUTTON_PROPAGATE;
-	case APP_MODE_VINE:
-		return BUTTON_VINE;
-	case APP_MODE_NEW:
-	case APP_MODE_SKETCH:
-		break;
-	}
-	return app->tree.lifted ? BUTTON_3D : BUTTON_COUNT;
-}
-
 /* Every committed stroke and edit goes to the journal before anything else happens. */
 static void save_edits(struct kiosk *k)
 {
@@ -858,7 +839,7 @@ static void on_grow(struct kiosk *k)
 static void take_requests(struct kiosk *k)
 {
 	uint32_t req = app_take_requests(k->app);
-	enum button mode = mode_button(k->app);
+	enum button mode = app_lit_button(k->app); /* the button whose LED says the mode */
 
 	if (req & APP_REQUEST_EXPORT)
 		k->export_asked = true;

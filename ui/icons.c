@@ -4,6 +4,8 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "app_mode.h"
+
 /*
  * Icons are drawn in their own units: x and y from -1 to 1 across the icon's square,
  * y down like the screen.
@@ -612,11 +614,28 @@ void icon_draw_season(struct batch *b, enum season season, struct pt centre, dou
 	}
 }
 
+/* A New strip card's icon, as its template's row says (app_mode_new.c). */
+static void icon_template(const struct icon *ic, const struct app_template *tpl)
+{
+	switch (tpl->picture) {
+	case APP_TEMPLATE_SHEET:
+		icon_blank(ic);
+		break;
+	case APP_TEMPLATE_TREE:
+		break; /* the picture is the tree itself (render_preview.c) */
+	}
+}
+
 void icon_draw(struct batch *b, enum button button, struct pt centre, double size,
 	       struct rgba ink, struct rgba bg)
 {
 	struct icon ic = { b, centre, 0.5 * size, ink, bg };
+	const struct app_template *tpl = app_template_of(button);
 
+	if (tpl) {
+		icon_template(&ic, tpl);
+		return;
+	}
 	switch (button) {
 	case BUTTON_3D:
 		icon_3d(&ic);
@@ -672,9 +691,6 @@ void icon_draw(struct batch *b, enum button button, struct pt centre, double siz
 	case BUTTON_VINE:
 		icon_vine(&ic);
 		break;
-	case BUTTON_TPL_BLANK:
-		icon_blank(&ic);
-		break;
 	case BUTTON_GEN_MORE:
 	case BUTTON_GEN_FEWER:
 		icon_branches(&ic, button == BUTTON_GEN_MORE);
@@ -691,14 +707,7 @@ void icon_draw(struct batch *b, enum button button, struct pt centre, double siz
 	case BUTTON_GEN_BARER:
 		icon_leaves(&ic, button == BUTTON_GEN_LEAFIER);
 		break;
-	case BUTTON_TPL_CHERRY:
-	case BUTTON_TPL_ZELKOVA:
-	case BUTTON_TPL_HEDGE:
-	case BUTTON_TPL_BALL:
-	case BUTTON_TPL_CONE:
-	case BUTTON_TPL_PALM:
-		break; /* cards: their picture is the tree itself (render_preview.c) */
-	case BUTTON_COUNT:
-		break; /* not on the screen */
+	default:
+		break; /* BUTTON_COUNT, not on the screen; the templates, above */
 	}
 }

@@ -10,9 +10,10 @@
  * 3d a cube, clone a branch with a plus, leaf a leaf, propagate a fan of arrows,
  * undo/redo curved arrows, new a blank sheet, export an arrow into a USB stick, view a
  * tree on a turntable, fixed-count/fixed-size twigs with leaves, season the sun (see
- * icon_draw_season), tpl-blank a sheet and a pencil; the parameter pairs: branches with a
- * plus or minus badge, a tree with arrows out or in (wider, narrower), up or down (taller,
- * shorter), a leaf with a badge. The template cards have no icon: their picture is the tree.
+ * icon_draw_season); the parameter pairs: branches with a plus or minus badge, a tree
+ * with arrows out or in (wider, narrower), up or down (taller, shorter), a leaf with a
+ * badge. The New strip's cards as their template's row says (app_templates[]): the blank
+ * one a sheet and a pencil, a preset's none (its picture is the tree).
  * `ink` draws the picture; `bg` is the button behind it, used for cut-outs.
  */
 void icon_draw(struct batch *b, enum button button, struct pt centre, double size,

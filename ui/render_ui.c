@@ -48,6 +48,8 @@ static struct rgba season_accent(enum season season)
  * parameter buttons shares one, so they read as a pair. */
 static struct rgba accent(enum button button)
 {
+	if (app_template_of(button)) /* the New strip's cards: the tree's greens */
+		return (struct rgba){ 0.30f, 0.50f, 0.26f, 1.0f };
 	switch (button) {
 	case BUTTON_3D:
 		return (struct rgba){ 0.22f, 0.44f, 0.80f, 1.0f };
@@ -81,14 +83,6 @@ static struct rgba accent(enum button button)
 	case BUTTON_LEAF_HOP:
 	case BUTTON_LEAF_MAPLE:
 		return (struct rgba){ 0.24f, 0.58f, 0.22f, 1.0f };
-	case BUTTON_TPL_BLANK: /* the cards: the tree's greens */
-	case BUTTON_TPL_CHERRY:
-	case BUTTON_TPL_ZELKOVA:
-	case BUTTON_TPL_HEDGE:
-	case BUTTON_TPL_BALL:
-	case BUTTON_TPL_CONE:
-	case BUTTON_TPL_PALM:
-		return (struct rgba){ 0.30f, 0.50f, 0.26f, 1.0f };
 	default:
 		return (struct rgba){ 0.33f, 0.30f, 0.28f, 1.0f };
 	}
@@ -206,24 +200,11 @@ void render_ui_stroke(struct batch *b, const struct app *app)
 	}
 }
 
-/* A bar button is lit while its mode is on (the side strip's say so themselves: `lit`). */
+/* A bar button is lit while its mode is on, as its GPIO LED is (the mode table's say,
+ * app_modes.c; the side strip's say so themselves: `lit`). */
 static bool button_active(const struct app *app, enum button button)
 {
-	switch (app->mode) {
-	case APP_MODE_CLONE:
-		return button == BUTTON_CLONE;
-	case APP_MODE_LEAF:
-		return button == BUTTON_LEAF;
-	case APP_MODE_PROPAGATE:
-		return button == BUTTON_PROPAGATE;
-	case APP_MODE_VINE:
-		return button == BUTTON_VINE;
-	case APP_MODE_NEW:
-	case APP_MODE_SKETCH:
-		/* drawing on a 3D tree: the 3D button is lit, as its GPIO LED is */
-		return button == BUTTON_3D && app->tree.lifted;
-	}
-	return false;
+	return button == app_lit_button(app);
 }
 
 static bool button_enabled(const struct app *app, enum button button)

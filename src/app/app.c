@@ -7,11 +7,7 @@
 
 #include "app_mode.h"
 #include "app_private.h"
-#include "clone.h"
 #include "gen.h"
-#include "lift.h"
-#include "ori_kinds.h"
-#include "propagate.h"
 #include "sketch.h"
 #include "tree_index.h"
 #include "vine_support.h"
@@ -74,80 +70,16 @@ void app_destroy(struct app *app)
 	free(app);
 }
 
-static int apply_op(struct app *app, const struct doc_op *op);
-
-/* An op on the tree; one that changed its branches drops its wood (app_wood.c). */
+/* An op on the tree, as its kind's row says (app_ops.c); one that changed its branches
+ * drops its wood (app_wood.c). */
 int app_apply_op(struct app *app, const struct doc_op *op)
 {
-	int ret = apply_op(app, op);
+	const struct app_op_kind *k = app_op_kind(op->kind);
+	int ret = k->apply ? k->apply(app, op) : SKETCH_CHANGED;
 
 	if (ret >= 0 && !app_op_keeps_wood(op->kind, ret))
 		tree_wood_drop(&app->tree);
 	return ret;
-}
-
-static int apply_op(struct app *app, const struct doc_op *op)
-{
-	switch (op->kind) {
-	case DOC_OP_STROKE:
-		return sketch_apply(&app->tree, op, &app->rng);
-	case DOC_OP_NEW:
-		tree_clear(&app->tree);
-		return SKETCH_CHANGED;
-	case DOC_OP_LIFT: {
-		int ret = lift_tree(&app->tree, &app->rng, true);
-
-		tree_index_keep(&app->tree); /* the lifted tree is a new one */
-		return ret < 0 ? ret : SKETCH_CHANGED;
-	}
-	/* An edit whose branch is not there (a hand-edited file) does nothing. */
-	case DOC_OP_CLONE_ADD: {
-		int ret = clone_add(&app->tree, op->branch, &app->rng);
-
-		return ret == -ENOENT || ret == -ENOSPC ? SKETCH_GREW : ret < 0 ? ret : SKETCH_GREW;
-	}
-	case DOC_OP_CLONE_REMOVE: {
-		int ret = clone_remove(&app->tree, op->branch);
-
-		return ret == -ENOENT ? SKETCH_GREW : ret < 0 ? ret : SKETCH_CHANGED;
-	}
-	case DOC_OP_ARRANGE: {
-		int ret = arrange_apply(&app->tree, op->branch, (enum arrange_pattern)op->pattern);
-
-		/* whorl-add moves the leaves already there */
-		return ret == -ENOENT ? SKETCH_GREW : ret < 0 ? ret : SKETCH_CHANGED;
-	}
-	case DOC_OP_PROPAGATE: {
-		int ret = propagate_apply(&app->tree, op->branch, (enum propagate_pattern)op->pattern);
-
-		return ret == -ENOENT || ret == -ENOSPC ? SKETCH_GREW : ret < 0 ? ret : SKETCH_GREW;
-	}
-	case DOC_OP_GENERATE: {
-		/* a drawing's parameters were checked when read: nothing else is refused */
-		int ret = op->params ? gen_build(&app->tree, op->params, op->seed) : -EINVAL;
-
-		return ret == -EINVAL ? SKETCH_CHANGED : ret < 0 ? ret : SKETCH_CHANGED;
-	}
-	case DOC_OP_SEASON:
-		/* the leaves' colours: no element changes */
-		if ((unsigned)op->pattern < SEASON_COUNT)
-			app->tree.season = (enum season)op->pattern;
-		return SKETCH_GREW;
-	case DOC_OP_GROW:
-		return app_wood_apply(app, op);
-	case DOC_OP_IMPORT:
-		return app_import_apply(&app->tree, op);
-	case DOC_OP_VINE:
-		/* the tap's index of this very tree, if the op is the tap's */
-		return app_vine_apply(&app->tree, op,
-				      op == app->bark_index_op ? app->bark_index : NULL);
-	case DOC_OP_LEAFTYPE:
-		/* what arrangement and propagation place next: no element changes */
-		if (op->pattern >= -1 && op->pattern < ORI_KIND_COUNT)
-			app->tree.leaf_kind = op->pattern;
-		return SKETCH_GREW;
-	}
-	return SKETCH_CHANGED;
 }
 
 int app_load_doc(struct app *app, struct doc *doc)
@@ -158,9 +90,7 @@ int app_load_doc(struct app *app, struct doc *doc)
 	history_clear(&app->history);
 	app->doc = *doc;
 	doc_init(doc, doc->seed);
-	app_unfold_clear(app);
-	app_vine_growth_clear(app);
-	app->swell_start_us = UINT64_MAX;
+	app_op_hooks_clear(app);
 	app->camera = app->doc.view; /* kept if the drawing is a 3D tree */
 	ret = app_rebuild(app);
 	r2 = app_vines_refresh(app);
@@ -186,8 +116,7 @@ int app_show_tree(struct app *app, struct tree *t)
 	tree_finish(&app->tree);
 	app->tree = *t;
 	tree_init(t);
-	app_unfold_clear(app);
-	app_vine_growth_clear(app);
+	app_op_hooks_clear(app);
 	app->mesh_serial++;
 	return tree_mesh_build_marked(&app->mesh, &app->tree, &app->mesh_marks);
 }
@@ -197,8 +126,8 @@ int app_show_tree(struct app *app, struct tree *t)
  * grow with the drawing. */
 int app_push_op(struct app *app, struct doc_op *op)
 {
-	size_t nb = app->tree.nbranches, nl = app->tree.nleaves, nv = app->tree.nvines;
-	int ret = doc_push(&app->doc, op), r2;
+	struct app_op_before before = { app->tree.nbranches, app->tree.nleaves, app->tree.nvines };
+	int ret = doc_push(&app->doc, op);
 
 	if (ret < 0)
 		return ret;
@@ -214,19 +143,10 @@ int app_push_op(struct app *app, struct doc_op *op)
 	}
 	app_camera_follow_tree(app);
 	app->mesh_serial++;
-	/* a generated tree replaces every leaf: all of them unfold */
-	app_unfold_note(app, op->kind == DOC_OP_GENERATE || app->tree.nleaves < nl ? 0 : nl,
-			op->time_us);
 	/* appended parts, or those the op's delta says changed (app_history.c) */
-	ret = app_mesh_after_op(app, nb, nl, ret);
-	/* a press swells on screen; any other change of the tree shows its bark at rest */
-	app->swell_start_us = op->kind == DOC_OP_GROW && app->tree.wood ? op->time_us : UINT64_MAX;
-	if (ret == 0 && app->tree.nvines > nv) /* op is the caller's again: the doc's copy */
-		ret = app_vine_growth_start(app, &app->doc.ops[app->doc.cursor - 1]);
-	else if (ret == 0 && app->tree.nvines < nv)
-		app_vine_growth_clear(app); /* a new tree: the vine growing went with the old */
-	r2 = app_vines_refresh(app);
-	return ret < 0 ? ret : r2;
+	ret = app_mesh_after_op(app, before.nbranches, before.nleaves, ret);
+	/* then what follows the ops (app_ops.c); op is the caller's again: the doc's copy */
+	return app_op_hooks_after(app, &app->doc.ops[app->doc.cursor - 1], &before, ret);
 }
 
 static void update_pen(struct app *app, const struct event *ev)
@@ -326,17 +246,37 @@ static int stroke_commit(struct app *app)
 	return 0;
 }
 
-int app_press_button(struct app *app, enum button button, uint64_t time_us)
+/* Undo or redo: the cursor's state, without what showed the last ops (app_op_hooks_clear). */
+static int history_step(struct app *app, bool undo)
 {
-	struct doc_op op = { .kind = DOC_OP_NEW, .time_us = time_us };
 	int ret;
 
+	if (!(undo ? doc_undo(&app->doc) : doc_redo(&app->doc)))
+		return 0;
+	app_op_hooks_clear(app);
+	ret = undo ? app_undo(app) : app_redo(app);
+	if (ret == 0)
+		ret = app_vines_refresh(app);
+	return ret < 0 ? ret : app_refresh_mode_state(app);
+}
+
+/* The modes' buttons and the templates are their tables' (app_modes.c, app_mode_new.c). */
+int app_press_button(struct app *app, enum button button, uint64_t time_us)
+{
+	struct doc_op op = { .kind = DOC_OP_LIFT, .time_us = time_us };
+	const struct app_template *tpl = app_template_of(button);
+	enum app_mode mode;
+	int ret;
+
+	if (app_mode_for_button(button, &mode))
+		return app_mode_press(app, mode, time_us);
+	if (tpl)
+		return app_press_template(app, tpl, time_us);
 	switch (button) {
 	case BUTTON_3D:
 		/* Once per drawing: a 3D tree stays 3D (undo goes back to the sketch). */
 		if (app->tree.nbranches == 0 || app->tree.lifted)
 			return 0;
-		op.kind = DOC_OP_LIFT;
 		ret = app_push_op(app, &op);
 		if (ret == 0 && app->tree.lifted) {
 			/* a short swing, so the visitor sees the tree has become 3D */
@@ -344,14 +284,6 @@ int app_press_button(struct app *app, enum button button, uint64_t time_us)
 			app->turn_start_us = time_us;
 		}
 		return ret == -ENOSPC ? 0 : ret;
-	case BUTTON_CLONE:
-		return app_set_mode(app, APP_MODE_CLONE, time_us);
-	case BUTTON_LEAF:
-		return app_set_mode(app, APP_MODE_LEAF, time_us);
-	case BUTTON_PROPAGATE:
-		return app_set_mode(app, APP_MODE_PROPAGATE, time_us);
-	case BUTTON_VINE:
-		return app_set_mode(app, APP_MODE_VINE, time_us);
 	case BUTTON_GROW:
 		return app_grow(app, time_us);
 	case BUTTON_FIXED_COUNT:
@@ -361,53 +293,17 @@ int app_press_button(struct app *app, enum button button, uint64_t time_us)
 		app->pattern = APP_PATTERN_FIXED_SIZE;
 		return 0;
 	case BUTTON_UNDO:
-		if (!doc_undo(&app->doc))
-			return 0;
-		app_unfold_clear(app);
-		app_vine_growth_clear(app);
-		app->swell_start_us = UINT64_MAX;
-		ret = app_undo(app);
-		if (ret == 0)
-			ret = app_vines_refresh(app);
-		return ret < 0 ? ret : app_refresh_mode_state(app);
 	case BUTTON_REDO:
-		if (!doc_redo(&app->doc))
-			return 0;
-		app_unfold_clear(app);
-		app_vine_growth_clear(app);
-		app->swell_start_us = UINT64_MAX;
-		ret = app_redo(app);
-		if (ret == 0)
-			ret = app_vines_refresh(app);
-		return ret < 0 ? ret : app_refresh_mode_state(app);
+		return history_step(app, button == BUTTON_UNDO);
 	case BUTTON_EXPORT:
 		app->requests |= APP_REQUEST_EXPORT;
 		return 0;
-	case BUTTON_NEW:
-		/* Undoable, so a visitor who pressed it by accident gets the tree back; then the
-		 * side strip offers trees to start from (app_mode_new.c). */
-		app->selected = -1;
-		app_clear_suggestions(app);
-		ret = 0;
-		if (app->tree.nbranches != 0 || app->tree.nleaves != 0)
-			ret = app_push_op(app, &op);
-		if (ret < 0 && ret != -ENOSPC)
-			return ret;
-		app->mode = APP_MODE_NEW;
-		return app_mode_ops(APP_MODE_NEW)->enter(app, time_us);
 	case BUTTON_VIEW:
 		app->turning = false;
 		app->orbiting = false;
 		app_camera_store(app, (struct camera){ 0.0f, 0.0f });
 		return 0;
 	case BUTTON_SEASON:
-	case BUTTON_TPL_BLANK:
-	case BUTTON_TPL_CHERRY:
-	case BUTTON_TPL_ZELKOVA:
-	case BUTTON_TPL_HEDGE:
-	case BUTTON_TPL_BALL:
-	case BUTTON_TPL_CONE:
-	case BUTTON_TPL_PALM:
 	case BUTTON_GEN_MORE:
 	case BUTTON_GEN_FEWER:
 	case BUTTON_GEN_WIDER:
@@ -428,8 +324,8 @@ int app_press_button(struct app *app, enum button button, uint64_t time_us)
 			return 0; /* the choice in effect: nothing to undo */
 		return app_push_edit(app, DOC_OP_LEAFTYPE, 0, kind, time_us);
 	}
-	case BUTTON_COUNT:
-		break;
+	default:
+		break; /* BUTTON_COUNT, and the tables' above */
 	}
 	return 0;
 }

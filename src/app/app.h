@@ -31,6 +31,7 @@ enum app_mode {
 	APP_MODE_PROPAGATE,
 	APP_MODE_NEW, /* the New strip: templates to start from (app_mode_new.c) */
 	APP_MODE_VINE, /* a tap at the tree's foot plants a twining vine (app_mode_vine.c) */
+	APP_MODE_COUNT, /* a new mode: before this, and a row in app_modes.c's table */
 };
 
 /* Propagation pattern: until a pattern button is pressed, fixed count for a branch with

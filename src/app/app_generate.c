@@ -3,7 +3,8 @@
  * Functional trees on the kiosk (seed 001, docs/functional-trees.md): the New strip's
  * templates, the parameter buttons of a generated tree and the season button. Each is an
  * op of the drawing: a generated tree is stored as its parameters and seed (DOC_OP_GENERATE),
- * never as points, and every button press is one undoable step.
+ * never as points, and every button press is one undoable step. The generate and season
+ * ops' rows of app_ops.c apply here.
  */
 #include <errno.h>
 #include <stdlib.h>
@@ -11,14 +12,15 @@
 #include "app_mode.h"
 #include "app_private.h"
 #include "gen.h"
+#include "sketch.h"
 
 const struct doc_op *app_generated(const struct app *app)
 {
-	/* a season or a leaf type changes no branch: the tree is still as generated */
+	/* a setting (a season, a leaf type) changes no branch: the tree is still as generated */
 	for (size_t i = app->doc.cursor; i-- > 0;) {
 		const struct doc_op *op = &app->doc.ops[i];
 
-		if (op->kind == DOC_OP_SEASON || op->kind == DOC_OP_LEAFTYPE)
+		if (app_op_kind(op->kind)->setting_only)
 			continue;
 		return op->kind == DOC_OP_GENERATE && op->params ? op : NULL;
 	}
@@ -67,14 +69,14 @@ int app_generate(struct app *app, const struct gen_params *p, uint64_t time_us)
 	return push_generate(app, p, template_seed(app), time_us);
 }
 
-static int press_template(struct app *app, enum button b, uint64_t time_us)
+int app_press_template(struct app *app, const struct app_template *tpl, uint64_t time_us)
 {
 	struct doc_op op = { .kind = DOC_OP_NEW, .time_us = time_us };
 	struct gen_params p;
 	struct error err;
 	int ret;
 
-	if (b == BUTTON_TPL_BLANK) {
+	if (tpl->preset < 0) {
 		/* the blank canvas: as New, and the visitor draws */
 		app->mode = APP_MODE_SKETCH;
 		if (app->tree.nbranches == 0 && app->tree.nleaves == 0)
@@ -82,7 +84,7 @@ static int press_template(struct app *app, enum button b, uint64_t time_us)
 		ret = app_push_op(app, &op);
 		return ret == -ENOSPC ? 0 : ret;
 	}
-	ret = gen_preset((enum gen_preset)(b - BUTTON_TPL_CHERRY), &p, &err);
+	ret = gen_preset((enum gen_preset)tpl->preset, &p, &err);
 	return ret < 0 ? ret : app_generate(app, &p, time_us);
 }
 
@@ -119,8 +121,6 @@ int app_press_functional(struct app *app, enum button b, uint64_t time_us)
 	struct gen_params q;
 	enum gen_adjust a;
 
-	if (b >= BUTTON_TPL_BLANK && b <= BUTTON_TPL_PALM)
-		return press_template(app, b, time_us);
 	if (b == BUTTON_SEASON) {
 		/* every tree has a season, drawn or generated; an empty canvas has none to show */
 		if (app->tree.nbranches == 0)
@@ -133,4 +133,20 @@ int app_press_functional(struct app *app, enum button b, uint64_t time_us)
 		return 0;
 	q.season = app->tree.season; /* the visitor's season, not the file's */
 	return push_generate(app, &q, op->seed, time_us);
+}
+
+int app_generate_apply(struct app *app, const struct doc_op *op)
+{
+	/* a drawing's parameters were checked when read: nothing else is refused */
+	int ret = op->params ? gen_build(&app->tree, op->params, op->seed) : -EINVAL;
+
+	return ret == -EINVAL ? SKETCH_CHANGED : ret < 0 ? ret : SKETCH_CHANGED;
+}
+
+int app_season_apply(struct app *app, const struct doc_op *op)
+{
+	/* the leaves' colours: no element changes */
+	if ((unsigned)op->pattern < SEASON_COUNT)
+		app->tree.season = (enum season)op->pattern;
+	return SKETCH_GREW;
 }

@@ -20,20 +20,6 @@
 #include "tree_index.h"
 #include "wood.h"
 
-/* Ops that change elements in place outside tree.c and tree_edit.c: recorded by
- * comparing with a copy of the tree before them, not by a journal. */
-static bool edits_in_place(enum doc_op_kind kind)
-{
-	return kind == DOC_OP_LIFT || kind == DOC_OP_ARRANGE || kind == DOC_OP_GROW;
-}
-
-/* Ops after which nothing, or next to nothing, of the tree before is left. */
-static bool replaces_tree(enum doc_op_kind kind)
-{
-	return kind == DOC_OP_NEW || kind == DOC_OP_GENERATE || kind == DOC_OP_IMPORT ||
-	       kind == DOC_OP_LIFT || kind == DOC_OP_GROW;
-}
-
 /* Marks for meshes of no element. 0 or -ENOMEM. */
 static int empty_marks(struct tree_mesh_marks *mk)
 {
@@ -80,9 +66,10 @@ static int apply_recorded(struct app *app, size_t k, bool replaying)
 	if (!history_mark(&app->history, k - 1))
 		history_record(&app->history, k - 1, &app->tree, &app->rng, false, false,
 			       app->doc.cursor);
-	if (record && replaying && replaces_tree(op->kind) && (nb || nl))
+	/* what the op's row says of it (app_ops.c) */
+	if (record && replaying && app_op_kind(op->kind)->replaces_tree && (nb || nl))
 		stashed = tree_mesh_build_marked(&stash, &app->tree, &stash_mk) == 0;
-	if (record && edits_in_place(op->kind))
+	if (record && app_op_kind(op->kind)->edits_in_place)
 		copied = tree_copy(&before, &app->tree) == 0;
 	else if (record)
 		journaled = tree_journal_begin(&app->tree) == 0;

@@ -2,11 +2,13 @@
 #pragma once
 
 /*
- * A kiosk mode is a small handler behind this interface: what a finished pen stroke means
- * in it, what its side strip (the column at the canvas's left edge) offers, and what a
- * tap there does. app.c and app_modes.c dispatch to the active mode's handler; each mode
- * is its own file (app_mode_*.c). Not for the app's users but the renderer, which draws
- * the side strip from app_side_items().
+ * A kiosk mode is a small handler behind this interface: the bar button that enters it,
+ * what a finished pen stroke means in it, what its side strip (the column at the canvas's
+ * left edge) offers, and what a tap there does. app.c and app_modes.c dispatch to the
+ * active mode's handler; each mode is its own file (app_mode_*.c) and one row of
+ * app_modes.c's table, which is the only place a mode and its button are linked: the
+ * renderer lights, and the kiosk's LEDs show, app_lit_button(). Not for the app's users
+ * but the renderer and the kiosk, which draw the side strip from app_side_items().
  */
 #include "app.h"
 #include "layout.h"
@@ -31,9 +33,16 @@ struct app_side_item {
 
 struct app_mode_ops {
 	enum app_mode mode;
-	/* The bar button that enters and leaves it (its LED is lit while it is on);
-	 * BUTTON_COUNT: none (sketching, the New strip). */
+	/* The bar button that enters it (app_mode_for_button); BUTTON_COUNT: none (sketching,
+	 * where the others leave to). */
 	enum button button;
+	/* Its button is lit (and its LED) while it is on: an editing mode. Otherwise the 3D
+	 * button is, on a 3D tree, as while sketching (the New strip is on the way to a tree,
+	 * not a way of working on one). */
+	bool lit;
+	/* What its button does. NULL: app_set_mode, the editing modes' way (on a 3D tree,
+	 * made 3D first; pressed again, back to sketching). */
+	int (*press)(struct app *app, uint64_t time_us);
 	/* Entering it: 0 or a negative errno (the mode is on either way). NULL: nothing to do. */
 	int (*enter)(struct app *app, uint64_t time_us);
 	/* A finished pen stroke: *taken when it meant something in this mode (a tap, a
@@ -56,6 +65,34 @@ extern const struct app_mode_ops app_mode_new_ops;
 extern const struct app_mode_ops app_mode_vine_ops;
 
 const struct app_mode_ops *app_mode_ops(enum app_mode mode);
+/* The mode bar button b enters: true and *mode, or false (b is not a mode's). */
+bool app_mode_for_button(enum button b, enum app_mode *mode);
+/* The bar button that enters mode (BUTTON_COUNT: none). */
+enum button app_mode_button(enum app_mode mode);
+/* The bar button lit for what the screen shows (its LED on the kiosk): the editing mode's,
+ * or while sketching on a 3D tree the 3D one; BUTTON_COUNT: none. */
+enum button app_lit_button(const struct app *app);
+
+/*
+ * The New strip's templates (app_mode_new.c), top to bottom: the blank canvas, then the
+ * presets. The only list of them: the strip, a tap (app_generate.c), the renderer's
+ * colour and the icons read it. A new template is a row there (and its button in
+ * event.h, its words in ui/labels.c).
+ */
+enum app_template_picture {
+	APP_TEMPLATE_SHEET, /* drawn (ui/icons.c): a blank sheet and a pencil */
+	APP_TEMPLATE_TREE,  /* the preset's tree, rendered (app->templates[preset]) */
+};
+struct app_template {
+	enum button button;  /* what a tap presses (GPIO and traces press the same) */
+	const char *name;    /* the preset's name (presets/NAME.yaml); the blank canvas's */
+	int preset;          /* the enum gen_preset it puts on the canvas; -1: none, it clears */
+	enum app_template_picture picture; /* its card's */
+};
+#define APP_TEMPLATE_COUNT (1 + GEN_PRESET_COUNT)
+extern const struct app_template app_templates[APP_TEMPLATE_COUNT];
+/* The template button b presses, or NULL. */
+const struct app_template *app_template_of(enum button b);
 
 /* What the side strip shows now: the active mode's items. */
 size_t app_side_items(const struct app *app, struct app_side_item out[APP_SIDE_MAX]);

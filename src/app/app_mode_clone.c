@@ -1,11 +1,28 @@
 /* SPDX-License-Identifier: MIT */
 /* The clone mode (seed 000, 3.4): a tap picks a branch and tapping it again adds a child;
  * a circle drawn clockwise round it adds one, anticlockwise takes one away. */
+#include <errno.h>
 #include <math.h>
 
 #include "app_mode.h"
 #include "app_private.h"
+#include "clone.h"
 #include "sketch.h"
+
+/* An edit whose branch is not there (a hand-edited file) does nothing. */
+int app_clone_add_apply(struct app *app, const struct doc_op *op)
+{
+	int ret = clone_add(&app->tree, op->branch, &app->rng);
+
+	return ret == -ENOENT || ret == -ENOSPC ? SKETCH_GREW : ret < 0 ? ret : SKETCH_GREW;
+}
+
+int app_clone_remove_apply(struct app *app, const struct doc_op *op)
+{
+	int ret = clone_remove(&app->tree, op->branch);
+
+	return ret == -ENOENT ? SKETCH_GREW : ret < 0 ? ret : SKETCH_CHANGED;
+}
 
 /*
  * How far the pen went round the stroke's centre: +1 clockwise as the visitor sees it
@@ -72,5 +89,6 @@ static int clone_stroke(struct app *app, double len, bool *taken)
 const struct app_mode_ops app_mode_clone_ops = {
 	.mode = APP_MODE_CLONE,
 	.button = BUTTON_CLONE,
+	.lit = true,
 	.stroke = clone_stroke,
 };

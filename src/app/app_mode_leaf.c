@@ -1,10 +1,31 @@
 /* SPDX-License-Identifier: MIT */
 /* The leaf mode (seed 000, 3.5): a leaf drawn on a branch suggests arrangements of leaves
- * for it, shown as thumbnails on the side strip; a tap applies one. */
+ * for it, shown as thumbnails on the side strip; a tap applies one. Its leaf buttons pick
+ * the kind of leaf placed next. The arrange and leaf-type ops' rows of app_ops.c apply
+ * here. */
 #include <errno.h>
 
 #include "app_mode.h"
 #include "app_private.h"
+#include "ori_kinds.h"
+#include "sketch.h"
+
+/* An arrangement on a branch that is not there (a hand-edited file) does nothing. */
+int app_arrange_apply(struct app *app, const struct doc_op *op)
+{
+	int ret = arrange_apply(&app->tree, op->branch, (enum arrange_pattern)op->pattern);
+
+	/* whorl-add moves the leaves already there */
+	return ret == -ENOENT ? SKETCH_GREW : ret < 0 ? ret : SKETCH_CHANGED;
+}
+
+int app_leaftype_apply(struct app *app, const struct doc_op *op)
+{
+	/* what arrangement and propagation place next: no element changes */
+	if (op->pattern >= -1 && op->pattern < ORI_KIND_COUNT)
+		app->tree.leaf_kind = op->pattern;
+	return SKETCH_GREW;
+}
 
 void app_clear_suggestions(struct app *app)
 {
@@ -99,6 +120,7 @@ static int leaf_side_tap(struct app *app, const struct app_side_item *item, uint
 const struct app_mode_ops app_mode_leaf_ops = {
 	.mode = APP_MODE_LEAF,
 	.button = BUTTON_LEAF,
+	.lit = true,
 	.enter = leaf_enter,
 	.side = leaf_side,
 	.side_tap = leaf_side_tap,

@@ -1,13 +1,33 @@
 /* SPDX-License-Identifier: MIT */
 /* The New strip: after New, the side strip offers trees to start from, a blank canvas and
  * the presets (presets/\*.yaml) as rendered thumbnails; a tap puts one on the canvas as a
- * 3D tree (app_generate.c). Drawing on the canvas instead closes it. */
+ * 3D tree (app_generate.c). Drawing on the canvas instead closes it. The templates are
+ * app_templates[] below, the only list of them. */
 #include <errno.h>
 #include <math.h>
 
 #include "app_mode.h"
 #include "app_private.h"
 #include "gen.h"
+#include "sketch.h"
+
+const struct app_template app_templates[APP_TEMPLATE_COUNT] = {
+	{ BUTTON_TPL_BLANK, "blank", -1, APP_TEMPLATE_SHEET },
+	{ BUTTON_TPL_CHERRY, "cherry", GEN_PRESET_CHERRY, APP_TEMPLATE_TREE },
+	{ BUTTON_TPL_ZELKOVA, "zelkova", GEN_PRESET_ZELKOVA, APP_TEMPLATE_TREE },
+	{ BUTTON_TPL_HEDGE, "hedge", GEN_PRESET_HEDGE, APP_TEMPLATE_TREE },
+	{ BUTTON_TPL_BALL, "ball", GEN_PRESET_BALL, APP_TEMPLATE_TREE },
+	{ BUTTON_TPL_CONE, "cone", GEN_PRESET_CONE, APP_TEMPLATE_TREE },
+	{ BUTTON_TPL_PALM, "palm", GEN_PRESET_PALM, APP_TEMPLATE_TREE },
+};
+
+const struct app_template *app_template_of(enum button b)
+{
+	for (size_t i = 0; i < APP_TEMPLATE_COUNT; i++)
+		if (app_templates[i].button == b)
+			return &app_templates[i];
+	return NULL;
+}
 
 /*
  * A thumbnail is about 130 pixels square: the preset with its levels and leaves capped
@@ -21,6 +41,14 @@
  * reads as leafy (or blossoming) at a glance, a shrub's as solid */
 #define PREVIEW_LEAF_SCALE 5.0
 #define PREVIEW_SHRUB_LEAF_SCALE 1.6
+
+/* The New button's op: the canvas cleared. */
+int app_new_apply(struct app *app, const struct doc_op *op)
+{
+	(void)op;
+	tree_clear(&app->tree);
+	return SKETCH_CHANGED;
+}
 
 static int build_template(struct tree_mesh *tm, enum gen_preset which)
 {
@@ -70,19 +98,38 @@ static int new_enter(struct app *app, uint64_t time_us)
 	return app_templates_build(app);
 }
 
+/* New: undoable, so a visitor who pressed it by accident gets the tree back; then the side
+ * strip offers trees to start from. */
+static int new_press(struct app *app, uint64_t time_us)
+{
+	struct doc_op op = { .kind = DOC_OP_NEW, .time_us = time_us };
+	int ret = 0;
+
+	app->selected = -1;
+	app_clear_suggestions(app);
+	if (app->tree.nbranches != 0 || app->tree.nleaves != 0)
+		ret = app_push_op(app, &op);
+	if (ret < 0 && ret != -ENOSPC)
+		return ret;
+	app->mode = APP_MODE_NEW;
+	return new_enter(app, time_us);
+}
+
 static size_t new_side(const struct app *app, struct app_side_item *out, size_t max)
 {
 	size_t n = 0;
 
-	if (max > 0)
-		out[n++] = (struct app_side_item){ .thumbnail = true, .button = BUTTON_TPL_BLANK };
-	for (int i = 0; i < GEN_PRESET_COUNT && n < max; i++)
+	for (size_t i = 0; i < APP_TEMPLATE_COUNT && n < max; i++) {
+		const struct app_template *tpl = &app_templates[i];
+		bool tree = tpl->picture == APP_TEMPLATE_TREE;
+
 		out[n++] = (struct app_side_item){
 			.thumbnail = true,
-			.button = (enum button)(BUTTON_TPL_CHERRY + i),
-			.preview = app->templates_ready ? &app->templates[i] : NULL,
-			.template = true,
+			.button = tpl->button,
+			.preview = tree && app->templates_ready ? &app->templates[tpl->preset] : NULL,
+			.template = tree,
 		};
+	}
 	return n;
 }
 
@@ -97,7 +144,8 @@ static int new_stroke(struct app *app, double len, bool *taken)
 
 const struct app_mode_ops app_mode_new_ops = {
 	.mode = APP_MODE_NEW,
-	.button = BUTTON_COUNT,
+	.button = BUTTON_NEW,
+	.press = new_press,
 	.enter = new_enter,
 	.stroke = new_stroke,
 	.side = new_side,

@@ -1,10 +1,20 @@
 /* SPDX-License-Identifier: MIT */
 /* The propagate mode (seed 000, 3.6): a tap on a branch copies its children onto every
  * other branch; the side strip's two buttons pick the pattern. */
+#include <errno.h>
+
 #include "app_mode.h"
 #include "app_private.h"
 #include "propagate.h"
 #include "sketch.h"
+
+/* A propagation from a branch that is not there (a hand-edited file) does nothing. */
+int app_propagate_apply(struct app *app, const struct doc_op *op)
+{
+	int ret = propagate_apply(&app->tree, op->branch, (enum propagate_pattern)op->pattern);
+
+	return ret == -ENOENT || ret == -ENOSPC ? SKETCH_GREW : ret < 0 ? ret : SKETCH_GREW;
+}
 
 static enum propagate_pattern pattern_for(const struct app *app, int b)
 {
@@ -45,6 +55,7 @@ static size_t propagate_side(const struct app *app, struct app_side_item *out, s
 const struct app_mode_ops app_mode_propagate_ops = {
 	.mode = APP_MODE_PROPAGATE,
 	.button = BUTTON_PROPAGATE,
+	.lit = true,
 	.stroke = propagate_stroke,
 	.side = propagate_side,
 };

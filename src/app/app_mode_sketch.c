@@ -1,9 +1,27 @@
 /* SPDX-License-Identifier: MIT */
 /* Sketching: every stroke is drawn. On a generated tree nobody has edited by hand yet, the
  * side strip holds the parameter buttons in pairs (docs/functional-trees.md); the first
- * hand edit puts them away, and undoing it brings them back. */
+ * hand edit puts them away, and undoing it brings them back. The stroke and lift ops'
+ * rows of app_ops.c apply here. */
 #include "app_mode.h"
 #include "app_private.h"
+#include "lift.h"
+#include "sketch.h"
+#include "tree_index.h"
+
+int app_stroke_apply(struct app *app, const struct doc_op *op)
+{
+	return sketch_apply(&app->tree, op, &app->rng);
+}
+
+int app_lift_apply(struct app *app, const struct doc_op *op)
+{
+	int ret = lift_tree(&app->tree, &app->rng, true);
+
+	(void)op;
+	tree_index_keep(&app->tree); /* the lifted tree is a new one */
+	return ret < 0 ? ret : SKETCH_CHANGED;
+}
 
 static size_t sketch_side(const struct app *app, struct app_side_item *out, size_t max)
 {

@@ -246,6 +246,7 @@ static int vine_stroke(struct app *app, double len, bool *taken)
 const struct app_mode_ops app_mode_vine_ops = {
 	.mode = APP_MODE_VINE,
 	.button = BUTTON_VINE,
+	.lit = true,
 	.enter = vine_enter,
 	.stroke = vine_stroke,
 	.taps_on_canvas = true,

@@ -11,7 +11,8 @@
 #include "sketch.h"
 #include "sketch_view.h"
 
-static const struct app_mode_ops *const modes[] = {
+/* One row a mode: what it is and the button that enters it. */
+static const struct app_mode_ops *const modes[APP_MODE_COUNT] = {
 	[APP_MODE_SKETCH] = &app_mode_sketch_ops,
 	[APP_MODE_CLONE] = &app_mode_clone_ops,
 	[APP_MODE_LEAF] = &app_mode_leaf_ops,
@@ -22,7 +23,41 @@ static const struct app_mode_ops *const modes[] = {
 
 const struct app_mode_ops *app_mode_ops(enum app_mode mode)
 {
-	return (unsigned)mode < sizeof(modes) / sizeof(*modes) ? modes[mode] : modes[APP_MODE_SKETCH];
+	return (unsigned)mode < APP_MODE_COUNT ? modes[mode] : modes[APP_MODE_SKETCH];
+}
+
+bool app_mode_for_button(enum button b, enum app_mode *mode)
+{
+	for (int m = 0; m < APP_MODE_COUNT; m++) {
+		if (b != BUTTON_COUNT && modes[m] && modes[m]->button == b) {
+			*mode = (enum app_mode)m;
+			return true;
+		}
+	}
+	return false;
+}
+
+enum button app_mode_button(enum app_mode mode)
+{
+	return app_mode_ops(mode)->button;
+}
+
+enum button app_lit_button(const struct app *app)
+{
+	const struct app_mode_ops *m = app_mode_ops(app->mode);
+
+	if (m->lit)
+		return m->button;
+	/* drawing on a 3D tree: the 3D button is lit */
+	return app->tree.lifted ? BUTTON_3D : BUTTON_COUNT;
+}
+
+/* A mode's bar button: its own press, or the editing modes' way in and out. */
+int app_mode_press(struct app *app, enum app_mode mode, uint64_t time_us)
+{
+	const struct app_mode_ops *m = app_mode_ops(mode);
+
+	return m->press ? m->press(app, time_us) : app_set_mode(app, mode, time_us);
 }
 
 /* Records an editing op (clone, arrange, propagate, ...). A full drawing takes no more. */

@@ -3,7 +3,8 @@
  * New origami leaves unfold from the bud (seed 003, docs/origami-leaves.md): the leaves an
  * edit adds are drawn at keyframes of ori_unfold_frames for APP_UNFOLD_US after it, by the
  * time of the events (a replay draws the same), then at rest as any leaf. The model is at
- * rest all along: exports, the skeleton and undo never see the unfolding.
+ * rest all along: exports, the skeleton and undo never see the unfolding. app_unfold_hook
+ * notes each op's new leaves.
  */
 #include "app_private.h"
 #include "ori.h"
@@ -13,7 +14,7 @@ void app_unfold_clear(struct app *app)
 	app->nunfold = 0;
 }
 
-void app_unfold_note(struct app *app, size_t first, uint64_t time_us)
+static void unfold_note(struct app *app, size_t first, uint64_t time_us)
 {
 	bool origami = false;
 
@@ -32,6 +33,24 @@ void app_unfold_note(struct app *app, size_t first, uint64_t time_us)
 	}
 	app->unfold[app->nunfold++] = (struct app_unfold){ .first = first, .start_us = time_us };
 }
+
+/* The leaves an op added unfold; one that replaced every leaf (a generated tree), all. */
+static int unfold_after_op(struct app *app, const struct doc_op *op,
+			   const struct app_op_before *before, int meshed)
+{
+	size_t nl = before->nleaves;
+
+	(void)meshed;
+	unfold_note(app, app_op_kind(op->kind)->new_leaves || app->tree.nleaves < nl ? 0 : nl,
+		    op->time_us);
+	return 0;
+}
+
+const struct app_op_hook app_unfold_hook = {
+	.name = "unfold",
+	.after_op = unfold_after_op,
+	.clear = app_unfold_clear,
+};
 
 size_t app_unfold_at(const struct app *app, uint64_t now_us, struct app_unfold_span *out,
 		     size_t max)

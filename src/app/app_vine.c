@@ -2,7 +2,8 @@
 /*
  * Twining vines on the visitor's tree (issue 16, seed 004; docs/vines.md): a vine op grows
  * its vine to the end on the tree's bark as it stands, and the tree keeps it. The model
- * is the grown vine all along (exports, the skeleton and undo never see growth).
+ * is the grown vine all along (exports, the skeleton and undo never see growth). The vine
+ * op's row of app_ops.c applies here; app_vine_hook starts the growth after an op.
  */
 #include <errno.h>
 #include <math.h>
@@ -29,7 +30,8 @@ int app_vine_support(const struct tree *t, struct vine_support **out)
 	return ret;
 }
 
-int app_vine_apply(struct tree *t, const struct doc_op *op, const struct vine_support *bark)
+/* The vine op on t, on bark, the index of t's bark (NULL: made here). */
+static int vine_apply(struct tree *t, const struct doc_op *op, const struct vine_support *bark)
 {
 	struct vine_support *s = NULL;
 	struct vine v;
@@ -53,6 +55,12 @@ int app_vine_apply(struct tree *t, const struct doc_op *op, const struct vine_su
 	if (ret == -ENOSPC)
 		return SKETCH_GREW;
 	return ret < 0 ? ret : SKETCH_CHANGED;
+}
+
+int app_vine_apply(struct app *app, const struct doc_op *op)
+{
+	/* the tap's index of this very tree, if the op is the tap's */
+	return vine_apply(&app->tree, op, op == app->bark_index_op ? app->bark_index : NULL);
 }
 
 /* The settled vines' meshes, the growing one left out. 0 or -ENOMEM (empty then). */
@@ -119,6 +127,27 @@ int app_vine_growth_start(struct app *app, const struct doc_op *op)
 	g->on = true;
 	return app_vines_refresh(app);
 }
+
+/* A vine the op planted starts growing on screen; one it took away (a new tree) took the
+ * growing with it. The vines' meshes follow the tree's. */
+static int vine_after_op(struct app *app, const struct doc_op *op,
+			 const struct app_op_before *before, int meshed)
+{
+	int ret = 0, r2;
+
+	if (meshed == 0 && app->tree.nvines > before->nvines)
+		ret = app_vine_growth_start(app, op);
+	else if (meshed == 0 && app->tree.nvines < before->nvines)
+		app_vine_growth_clear(app);
+	r2 = app_vines_refresh(app);
+	return ret < 0 ? ret : r2;
+}
+
+const struct app_op_hook app_vine_hook = {
+	.name = "vine",
+	.after_op = vine_after_op,
+	.clear = app_vine_growth_clear,
+};
 
 bool app_vines_advance(struct app *app, uint64_t now_us)
 {

@@ -3,7 +3,9 @@
  * Growing wood on the visitor's tree (issue 17, seed 002; docs/wood.md): a grow op is a
  * press, the first one applying the power law and registering the tree's thick branches;
  * an import op puts a skeleton's branches on the canvas. An edit that changes the tree's
- * branches drops its wood (the field no longer holds them).
+ * branches drops its wood (the field no longer holds them): app_ops.c's rows say which
+ * keep it. The grow and import ops' rows apply here; app_wood_hook swells the bark after
+ * a press.
  */
 #include <errno.h>
 #include <stdint.h>
@@ -64,8 +66,9 @@ int app_grow_done(struct app *app, struct tree *grown, uint64_t serial, uint64_t
 	return ret == -ENOSPC ? 0 : ret;
 }
 
-int app_import_apply(struct tree *t, const struct doc_op *op)
+int app_import_apply(struct app *app, const struct doc_op *op)
 {
+	struct tree *t = &app->tree;
 	const struct tree *in = op->import;
 
 	tree_clear(t);
@@ -111,18 +114,31 @@ int app_import(struct app *app, struct tree *branches, uint64_t time_us)
 
 bool app_op_keeps_wood(enum doc_op_kind kind, int result)
 {
-	switch (kind) {
-	case DOC_OP_GROW:
-	case DOC_OP_SEASON:
-	case DOC_OP_LEAFTYPE:
-	case DOC_OP_VINE:
-	case DOC_OP_ARRANGE: /* moves leaves, not branches */
-		return true;
-	default:
-		/* appended branches and leaves keep their swept bark beside the wood */
-		return result == SKETCH_GREW;
-	}
+	/* appended branches and leaves keep their swept bark beside the wood */
+	return app_op_kind(kind)->keeps_wood || result == SKETCH_GREW;
 }
+
+/* A press swells on screen; any other change of the tree shows its bark at rest. */
+static int wood_after_op(struct app *app, const struct doc_op *op,
+			 const struct app_op_before *before, int meshed)
+{
+	(void)before;
+	(void)meshed;
+	app->swell_start_us = app_op_kind(op->kind)->swells && app->tree.wood ? op->time_us
+									     : UINT64_MAX;
+	return 0;
+}
+
+static void wood_clear(struct app *app)
+{
+	app->swell_start_us = UINT64_MAX;
+}
+
+const struct app_op_hook app_wood_hook = {
+	.name = "wood",
+	.after_op = wood_after_op,
+	.clear = wood_clear,
+};
 
 /* A year of growth: a grow press with the app's wood settings, on a 3D tree (a sketch is
  * made 3D first, as the modes do). */
