@@ -62,6 +62,9 @@ struct leaf {
 #define TREE_MAX_LEAVES 30000u
 /* Vines on one tree: a planting past it is refused (the kiosk says the tree is full). */
 #define TREE_MAX_VINES 12u
+/* The farthest a drawing's coordinates lie from the origin, metres (|x|, |y| on the
+ * sketch plane: DOC_MAX_COORD_M); a generated tree's points keep within it too. */
+#define TREE_MAX_COORD_M 1000.0f
 
 /* The model: what the skeleton, the meshes and the screen are made from. */
 struct tree {
