@@ -90,7 +90,7 @@ static int apply_op(struct app *app, const struct doc_op *op)
 {
 	switch (op->kind) {
 	case DOC_OP_STROKE:
-		return sketch_apply(&app->tree, op, &app->rng);
+		return doc_apply_stroke(&app->tree, op);
 	case DOC_OP_NEW:
 		tree_clear(&app->tree);
 		return SKETCH_CHANGED;

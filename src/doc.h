@@ -131,6 +131,11 @@ bool doc_can_redo(const struct doc *d);
 bool doc_undo(struct doc *d);
 bool doc_redo(struct doc *d);
 
+/* Applies a stroke op to t: sketch_stroke (sketch.h) with the op's points, tool, camera and
+ * times. SKETCH_GREW, SKETCH_CHANGED or -ENOMEM; SKETCH_GREW for any other op, or a stroke
+ * without points. */
+int doc_apply_stroke(struct tree *t, const struct doc_op *op);
+
 struct tree;
 /* drawing.edaha, see docs/document-format.md. The tree (built from d) is written as
  * a readable summary for other tools; loading rebuilds it from the history instead. */
