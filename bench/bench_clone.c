@@ -13,6 +13,7 @@
 #include "bench_draw.h"
 #include "bench_util.h"
 #include "clone.h"
+#include "doc.h"
 #include "lift.h"
 #include "sketch.h"
 #include "synth_tree.h"
@@ -169,7 +170,7 @@ static int drawn_lifted(void)
 		tree_init(&t);
 		rng_seed(&rng, app->doc.seed);
 		for (size_t i = 0; i < app->doc.cursor; i++)
-			if (sketch_apply(&t, &app->doc.ops[i], &rng) < 0)
+			if (doc_apply_stroke(&t, &app->doc.ops[i]) < 0)
 				return 1;
 		if (lift_tree(&t, &rng, true) < 0)
 			return 1;

@@ -10,6 +10,7 @@
 
 #include "bench_draw.h"
 #include "bench_util.h"
+#include "doc.h"
 #include "lift.h"
 #include "sketch.h"
 
@@ -41,7 +42,7 @@ int main(int argc, char **argv)
 			tree_init(&tree);
 			rng_seed(&rng, app->doc.seed);
 			for (size_t i = 0; i < app->doc.cursor; i++)
-				if (sketch_apply(&tree, &app->doc.ops[i], &rng) < 0)
+				if (doc_apply_stroke(&tree, &app->doc.ops[i]) < 0)
 					return 1;
 			t0 = bench_now();
 			if (lift_tree(&tree, &rng, true) < 0)

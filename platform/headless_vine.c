@@ -25,7 +25,6 @@
 #include "support_obj.h"
 #include "tree.h"
 #include "vine.h"
-#include "vine_json.h"
 #include "vine_presets.h"
 #include "vine_support.h"
 
@@ -132,7 +131,7 @@ static int export_all(const struct vine *v, const struct support_obj *obj, struc
 	if (ret == 0)
 		ret = vine_mesh_append(v, &all.bark, &all.leaves);
 	if (ret == 0)
-		ret = vine_skeleton(&t, v, 1, &files[OUT_SKELETON]);
+		ret = export_skeleton_vines(&t, v, 1, &files[OUT_SKELETON]);
 	if (ret == 0)
 		ret = export_glb(&t, &all, NULL, &files[OUT_GLB]);
 	if (ret == 0)

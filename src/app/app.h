@@ -15,6 +15,7 @@
 #include "rng.h"
 #include "tree.h"
 #include "view.h"
+#include "vine.h"
 #include "wood.h"
 
 /*

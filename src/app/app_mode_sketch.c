@@ -11,7 +11,7 @@
 
 int app_stroke_apply(struct app *app, const struct doc_op *op)
 {
-	return sketch_apply(&app->tree, op, &app->rng);
+	return doc_apply_stroke(&app->tree, op);
 }
 
 int app_lift_apply(struct app *app, const struct doc_op *op)

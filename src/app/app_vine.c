@@ -50,7 +50,7 @@ static int vine_apply(struct tree *t, const struct doc_op *op, const struct vine
 	ret = vine_grow(&v, bark ? bark : s, INFINITY);
 	vine_support_destroy(s);
 	if (ret == 0)
-		ret = tree_add_vine(t, &v);
+		ret = vine_attach(t, &v);
 	vine_finish(&v);
 	if (ret == -ENOSPC)
 		return SKETCH_GREW;

@@ -5,9 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "tree_delta.h"
 #include "tree_index.h"
-#include "wood.h"
+#include "tree_journal.h"
 
 const char *origin_name(enum origin origin)
 {
@@ -46,8 +45,8 @@ void tree_clear(struct tree *t)
 		free(t->leaves[i].points);
 		free(t->leaves[i].local);
 	}
-	for (size_t i = 0; i < t->nvines; i++)
-		vine_finish(&t->vines[i]);
+	if (t->nvines)
+		t->vine_ops->clear(t);
 	tree_wood_drop(t);
 	t->nbranches = 0;
 	t->nleaves = 0;
@@ -134,26 +133,13 @@ void tree_wood_drop(struct tree *t)
 		t->wood = NULL; /* the journal's now */
 		return;
 	}
-	wood_finish(t->wood);
-	free(t->wood);
+	t->wood_ops->destroy(t->wood);
 	t->wood = NULL;
 }
 
 bool tree_branch_in_wood(const struct tree *t, size_t i)
 {
-	return t->wood && i < t->wood->nbranches && t->wood->voxelised[i];
-}
-
-int tree_add_vine(struct tree *t, struct vine *v)
-{
-	if (t->nvines >= TREE_MAX_VINES)
-		return -ENOSPC;
-	if (grow((void **)&t->vines, &t->cap_vines, t->nvines + 1, sizeof(*t->vines)) < 0)
-		return -ENOMEM;
-	t->vines[t->nvines++] = *v;
-	memset(v, 0, sizeof(*v));
-	v->active = -1;
-	return 0;
+	return t->wood && t->wood_ops->holds(t->wood, i);
 }
 
 int tree_add_leaf(struct tree *t, int branch, enum origin origin, const struct vec3 *points,
@@ -226,28 +212,17 @@ int tree_copy(struct tree *dst, const struct tree *src)
 		}
 		dst->nleaves++;
 	}
-	if (src->nvines > dst->cap_vines) {
-		struct vine *v = realloc(dst->vines, src->nvines * sizeof(*v));
-
-		if (!v) {
-			tree_clear(dst);
-			return -ENOMEM;
-		}
-		dst->vines = v;
-		dst->cap_vines = src->nvines;
+	if (src->vine_ops)
+		dst->vine_ops = src->vine_ops;
+	if (src->nvines && src->vine_ops->copy(dst, src) < 0) {
+		tree_clear(dst);
+		return -ENOMEM;
 	}
-	for (size_t i = 0; i < src->nvines; i++) {
-		if (vine_copy(&dst->vines[i], &src->vines[i]) < 0) {
-			tree_clear(dst);
-			return -ENOMEM;
-		}
-		dst->nvines++;
-	}
+	if (src->wood_ops)
+		dst->wood_ops = src->wood_ops;
 	if (src->wood) {
-		dst->wood = malloc(sizeof(*dst->wood));
-		if (!dst->wood || wood_copy(dst->wood, src->wood) < 0) {
-			free(dst->wood);
-			dst->wood = NULL;
+		dst->wood = src->wood_ops->copy(src->wood);
+		if (!dst->wood) {
 			tree_clear(dst);
 			return -ENOMEM;
 		}
@@ -290,11 +265,10 @@ size_t tree_bytes(const struct tree *t)
 		n += t->branches[i].npoints * (sizeof(struct vec3) + sizeof(double));
 	for (size_t i = 0; i < t->nleaves; i++)
 		n += t->leaves[i].npoints * sizeof(struct vec3) * (t->leaves[i].local ? 2 : 1);
-	n += t->cap_vines * sizeof(*t->vines);
+	if (t->cap_vines)
+		n += t->vine_ops->bytes(t);
 	if (t->wood)
-		n += sizeof(*t->wood) + wood_bytes(t->wood);
-	for (size_t i = 0; i < t->nvines; i++)
-		n += vine_bytes(&t->vines[i]);
+		n += t->wood_ops->bytes(t->wood);
 	return n;
 }
 

@@ -7,7 +7,6 @@
 
 #include "season.h"
 #include "vec.h"
-#include "vine.h"
 
 /* How an element came to be; written to skeleton.json as a string. */
 enum origin {
@@ -62,6 +61,51 @@ struct leaf {
 #define TREE_MAX_LEAVES 30000u
 /* Vines on one tree: a planting past it is refused (the kiosk says the tree is full). */
 #define TREE_MAX_VINES 12u
+/* The farthest a drawing's coordinates lie from the origin, metres (|x|, |y| on the
+ * sketch plane: DOC_MAX_COORD_M); a generated tree's points keep within it too. */
+#define TREE_MAX_COORD_M 1000.0f
+
+struct tree;
+struct vine;
+struct wood;
+struct tree_journal;
+
+/*
+ * What systems built on the tree keep in it: the vines (vine.h) and the wood (wood.h).
+ * The tree frees, copies and counts them through these tables, which each system sets on
+ * a tree when it puts its data there (vine_attach, wood_begin, and tree_delta_swap when
+ * an undo brings some back); tree_clear keeps them, tree_copy copies them. So the tree
+ * (core, a floor below them: src/FLOORS) never names their code.
+ */
+struct tree_vine_ops {
+	/* Frees what each of t's nvines vines holds (the array and the count stay). */
+	void (*clear)(struct tree *t);
+	/* dst, without vines, gets exact copies of src's: 0, or -ENOMEM (dst->nvines then
+	 * counts the copies made, for tree_clear to free). */
+	int (*copy)(struct tree *dst, const struct tree *src);
+	/* Bytes t's vines take: the array (cap_vines of them) and what each holds. */
+	size_t (*bytes)(const struct tree *t);
+	/* Calls f on each of the vines' points, with its stem's radius: a vine's planting
+	 * point, then its shoots' raw axis points, in order; vine after vine. What another
+	 * system moves when it moves what hangs on the tree (wood_move_out). */
+	void (*each_point)(struct tree *t, void (*f)(struct vec3 *p, double radius, void *ctx),
+			   void *ctx);
+};
+
+struct tree_wood_ops {
+	/* Frees w and what it holds. */
+	void (*destroy)(struct wood *w);
+	/* An exact copy of w (allocated), or NULL without memory. */
+	struct wood *(*copy)(const struct wood *w);
+	/* Bytes w takes, itself and what it holds. */
+	size_t (*bytes)(const struct wood *w);
+	/* Whether branch i's bark is the wood's (voxelised), not its swept tube. */
+	bool (*holds)(const struct wood *w, size_t i);
+};
+
+/* The hooks an undo journal (tree_delta.h, a floor above) sets on the tree it watches:
+ * tree.c and tree_edit.c call them through tree_journal.h, never the journal's code. */
+struct tree_journal_ops;
 
 /* The model: what the skeleton, the meshes and the screen are made from. */
 struct tree {
@@ -83,10 +127,12 @@ struct tree {
 	 * on the bark as it stood when planted; later edits leave them as they are. */
 	struct vine *vines;
 	size_t nvines, cap_vines;
+	const struct tree_vine_ops *vine_ops; /* vine.h's, once the tree has had vines */
 	/* Growing wood (issue 17, DOC_OP_GROW): the field of its thick branches through its
 	 * presses and the bark drawn from it (wood.h), or NULL: never grown, or an edit changed
 	 * its branches since. Owned, copied with the tree. */
 	struct wood *wood;
+	const struct tree_wood_ops *wood_ops; /* wood.h's, once the tree has had wood */
 	/* What sketching carries from stroke to stroke; rebuilt with the tree. */
 	int last_sketched;             /* the branch the latest stroke drew, or -1 */
 	uint64_t last_sketched_end_us; /* when that stroke ended */
@@ -100,6 +146,7 @@ struct tree {
 	/* While the app applies an op: what its edits take out or change, for undo and redo
 	 * (tree_delta.h); NULL otherwise. Not part of the model either (tree_copy leaves it). */
 	struct tree_journal *journal;
+	const struct tree_journal_ops *journal_ops; /* the journal's hooks (tree_journal.h) */
 };
 
 void tree_init(struct tree *t);
@@ -110,15 +157,11 @@ int tree_add_branch(struct tree *t, int parent, double parent_t, enum origin ori
 		    const struct vec3 *points, const double *radii, size_t npoints);
 int tree_add_leaf(struct tree *t, int branch, enum origin origin, const struct vec3 *points,
 		  size_t npoints);
-struct wood;
 /* Drops t's wood (its branches show their swept bark again, their radii as the power law
  * left them). */
 void tree_wood_drop(struct tree *t);
 /* Whether branch i's bark is the wood's (voxelised), not its swept tube. */
 bool tree_branch_in_wood(const struct tree *t, size_t i);
-/* Takes v (grown) into the tree; v is left empty. 0, -ENOSPC (TREE_MAX_VINES) or -ENOMEM
- * (v unchanged then). */
-int tree_add_vine(struct tree *t, struct vine *v);
 /* Makes dst (initialised) an exact copy of src: every field of every branch and leaf, the
  * sketching state, bit for bit. 0, or -ENOMEM (dst is then empty). */
 int tree_copy(struct tree *dst, const struct tree *src);

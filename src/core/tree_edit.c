@@ -5,8 +5,8 @@
 #include <string.h>
 
 #include "tree.h"
-#include "tree_delta.h"
 #include "tree_index.h"
+#include "tree_journal.h"
 
 #define TREE_MIN_CUT_M 0.025
 

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include "doc.h"
 #include "gen.h"
+#include "sketch.h"
 #include "tree.h"
 #include "vine.h"
 #include "wood.h"
@@ -170,4 +171,32 @@ bool doc_redo(struct doc *d)
 		return false;
 	d->cursor++;
 	return true;
+}
+
+int doc_apply_stroke(struct tree *t, const struct doc_op *op)
+{
+	struct sketch_stroke st = {
+		.npoints = op->npoints,
+		.tool = op->tool,
+		.camera = op->camera,
+		.time_us = op->time_us,
+	};
+	struct vec3 *p = NULL;
+	int ret;
+
+	if (op->kind != DOC_OP_STROKE || op->npoints == 0)
+		return SKETCH_GREW;
+	/* a pen's stroke of one point is a tap (nothing to draw): no copy needed */
+	if (op->tool == EVENT_TOOL_ERASER || op->npoints >= 2) {
+		p = malloc(op->npoints * sizeof(*p));
+		if (!p)
+			return -ENOMEM;
+		for (size_t i = 0; i < op->npoints; i++)
+			p[i] = vec3(op->points[i].x, op->points[i].y, 0.0);
+	}
+	st.points = p;
+	st.end_us = op->time_us + op->points[op->npoints - 1].dt_us;
+	ret = sketch_stroke(t, &st);
+	free(p);
+	return ret;
 }

@@ -9,6 +9,7 @@
 #include "camera.h"
 #include "error.h"
 #include "event.h"
+#include "tree.h"
 
 struct gen_params;
 struct vine_params;
@@ -101,7 +102,7 @@ struct doc {
 #define DOC_MAX_STROKE_POINTS 100000u
 #define DOC_MAX_POINTS 4000000u    /* in all strokes together, generated elements counted
 				    * as points (doc_op_weight) */
-#define DOC_MAX_COORD_M 1000.0f    /* |x|, |y| on the sketch plane */
+#define DOC_MAX_COORD_M TREE_MAX_COORD_M /* |x|, |y| on the sketch plane (tree.h) */
 #define DOC_MAX_FILE_BYTES (256u << 20)
 /* A grow press costs a solve of the tree's springs (up to seconds on the board): it counts
  * as this many points, so that a drawing holds at most 40 and --load stays bounded. */
@@ -129,6 +130,11 @@ bool doc_can_undo(const struct doc *d);
 bool doc_can_redo(const struct doc *d);
 bool doc_undo(struct doc *d);
 bool doc_redo(struct doc *d);
+
+/* Applies a stroke op to t: sketch_stroke (sketch.h) with the op's points, tool, camera and
+ * times. SKETCH_GREW, SKETCH_CHANGED or -ENOMEM; SKETCH_GREW for any other op, or a stroke
+ * without points. */
+int doc_apply_stroke(struct tree *t, const struct doc_op *op);
 
 struct tree;
 /* drawing.edaha, see docs/document-format.md. The tree (built from d) is written as

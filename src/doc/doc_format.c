@@ -14,6 +14,7 @@
 #include "ori_kinds.h"
 #include "propagate.h"
 #include "tree.h"
+#include "vine.h"
 #include "wood.h"
 
 static const char *const propagate_names[] = {

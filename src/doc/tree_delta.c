@@ -159,23 +159,6 @@ static struct tree_journal *journal_of(const struct tree *t)
 	return j && j->owner == t && !j->failed ? j : NULL;
 }
 
-int tree_journal_begin(struct tree *t)
-{
-	struct tree_journal *j;
-
-	tree_journal_discard(t);
-	j = calloc(1, sizeof(*j));
-	if (!j)
-		return -ENOMEM;
-	j->owner = t;
-	j->nb0 = t->nbranches;
-	j->nl0 = t->nleaves;
-	j->nv0 = t->nvines;
-	j->wood0 = t->wood;
-	t->journal = j;
-	return 0;
-}
-
 /* What the journal holds goes: the elements it kept, the vines and wood it took. */
 static void journal_free(struct tree_journal *j)
 {
@@ -203,7 +186,7 @@ static void journal_free(struct tree_journal *j)
 	free(j);
 }
 
-void tree_journal_discard(struct tree *t)
+static void journal_discard(struct tree *t)
 {
 	struct tree_journal *j = t->journal;
 
@@ -269,7 +252,7 @@ static bool grow_array(void **a, size_t *cap, size_t n, size_t size)
 	return true;
 }
 
-int tree_journal_branch(struct tree *t, size_t i, bool keep)
+static int journal_branch(struct tree *t, size_t i, bool keep)
 {
 	struct tree_journal *j = journal_of(t);
 	struct branch *b, was;
@@ -306,7 +289,7 @@ int tree_journal_branch(struct tree *t, size_t i, bool keep)
 	return 0;
 }
 
-int tree_journal_leaf(struct tree *t, size_t i, bool keep)
+static int journal_leaf(struct tree *t, size_t i, bool keep)
 {
 	struct tree_journal *j = journal_of(t);
 	struct leaf *l, was;
@@ -357,7 +340,7 @@ static void moved(int *cur, size_t *ncur, const int *map, size_t nold)
 	*ncur = kept;
 }
 
-void tree_journal_branches_moved(struct tree *t, const int *map, size_t nold)
+static void journal_branches_moved(struct tree *t, const int *map, size_t nold)
 {
 	struct tree_journal *j = journal_of(t);
 
@@ -365,7 +348,7 @@ void tree_journal_branches_moved(struct tree *t, const int *map, size_t nold)
 		moved(j->cur_b, &j->ncur_b, map, nold);
 }
 
-void tree_journal_leaves_moved(struct tree *t, const int *map, size_t nold)
+static void journal_leaves_moved(struct tree *t, const int *map, size_t nold)
 {
 	struct tree_journal *j = journal_of(t);
 
@@ -373,16 +356,16 @@ void tree_journal_leaves_moved(struct tree *t, const int *map, size_t nold)
 		moved(j->cur_l, &j->ncur_l, map, nold);
 }
 
-void tree_journal_truncate(struct tree *t, size_t nb, size_t nl)
+static void journal_truncate(struct tree *t, size_t nb, size_t nl)
 {
 	struct tree_journal *j = journal_of(t);
 
 	if (!j || (nb >= t->nbranches && nl >= t->nleaves) || !touch(j, t))
 		return;
 	for (size_t i = nb; i < t->nbranches; i++)
-		tree_journal_branch(t, i, false);
+		journal_branch(t, i, false);
 	for (size_t i = nl; i < t->nleaves; i++)
-		tree_journal_leaf(t, i, false);
+		journal_leaf(t, i, false);
 	if ((j = journal_of(t)) == NULL)
 		return;
 	if (j->ncur_b > nb)
@@ -391,14 +374,14 @@ void tree_journal_truncate(struct tree *t, size_t nb, size_t nl)
 		j->ncur_l = nl;
 }
 
-void tree_journal_clear(struct tree *t)
+static void journal_clear(struct tree *t)
 {
 	struct tree_journal *j = journal_of(t);
 	size_t nv;
 
 	if (!j)
 		return;
-	tree_journal_truncate(t, 0, 0);
+	journal_truncate(t, 0, 0);
 	if ((j = journal_of(t)) == NULL || j->vines_taken)
 		return;
 	/* the vines there at the start are the first ones (vines are only appended) */
@@ -422,23 +405,23 @@ void tree_journal_clear(struct tree *t)
 	j->vines_taken = true;
 }
 
-int tree_journal_keep_cut(struct tree *t, int b, double cut_t)
+static int journal_keep_cut(struct tree *t, int b, double cut_t)
 {
 	int ret;
 
 	if (!journal_of(t))
 		return 0;
-	ret = tree_journal_branch(t, (size_t)b, true);
+	ret = journal_branch(t, (size_t)b, true);
 	for (size_t i = 0; i < t->nleaves && ret == 0; i++)
 		if (t->leaves[i].branch == b && t->leaves[i].branch_t <= cut_t)
-			ret = tree_journal_leaf(t, i, true);
+			ret = journal_leaf(t, i, true);
 	for (size_t i = 0; i < t->nbranches && ret == 0; i++)
 		if (t->branches[i].parent == b && t->branches[i].parent_t <= cut_t)
-			ret = tree_journal_branch(t, i, true);
+			ret = journal_branch(t, i, true);
 	return ret;
 }
 
-void tree_journal_fail(struct tree *t)
+static void journal_fail(struct tree *t)
 {
 	struct tree_journal *j = journal_of(t);
 
@@ -446,7 +429,7 @@ void tree_journal_fail(struct tree *t)
 		give_up(j);
 }
 
-bool tree_journal_wood(struct tree *t)
+static bool journal_take_wood(struct tree *t)
 {
 	struct tree_journal *j = journal_of(t);
 
@@ -454,6 +437,38 @@ bool tree_journal_wood(struct tree *t)
 		return false;
 	j->wood_taken = true;
 	return true;
+}
+
+/* What tree.c and tree_edit.c call while a journal watches (tree_journal.h). */
+static const struct tree_journal_ops journal_ops = {
+	.branch = journal_branch,
+	.leaf = journal_leaf,
+	.branches_moved = journal_branches_moved,
+	.leaves_moved = journal_leaves_moved,
+	.clear = journal_clear,
+	.truncate = journal_truncate,
+	.keep_cut = journal_keep_cut,
+	.fail = journal_fail,
+	.take_wood = journal_take_wood,
+	.discard = journal_discard,
+};
+
+int tree_journal_begin(struct tree *t)
+{
+	struct tree_journal *j;
+
+	journal_discard(t);
+	j = calloc(1, sizeof(*j));
+	if (!j)
+		return -ENOMEM;
+	j->owner = t;
+	j->nb0 = t->nbranches;
+	j->nl0 = t->nleaves;
+	j->nv0 = t->nvines;
+	j->wood0 = t->wood;
+	t->journal = j;
+	t->journal_ops = &journal_ops;
+	return 0;
 }
 
 int tree_journal_end(struct tree *t, struct tree_delta *d)
@@ -856,6 +871,8 @@ int tree_delta_swap(struct tree_delta *d, struct tree *t, int *branch_from, int 
 		t->vines = v;
 		t->cap_vines = s->nvines;
 	}
+	if (s->nvines) /* the tree frees and copies them from now on, if it never had any */
+		t->vine_ops = &vine_tree_ops;
 	ret = -EINVAL;
 	if (!counterparts(r->branch_at, r->branch_kept, r->nb, r->nbranches, s->branch_at,
 			  s->branch_kept, s->nb, s->nbranches, map_b) ||
@@ -930,6 +947,8 @@ int tree_delta_swap(struct tree_delta *d, struct tree *t, int *branch_from, int 
 		t->wood = s->wood;
 		s->wood = NULL;
 		r->wood = w;
+		if (t->wood)
+			t->wood_ops = &wood_tree_ops;
 	}
 
 	free(t->branches);

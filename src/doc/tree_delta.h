@@ -6,6 +6,7 @@
 
 #include "mesh.h"
 #include "tree.h"
+#include "tree_journal.h"
 
 /*
  * How one op changed a tree, both ways, so that undo and redo move elements between the
@@ -87,29 +88,24 @@ int tree_journal_begin(struct tree *t);
 /* Ends t's journal: d (initialised) becomes the op's delta, the before side stored.
  * 0, or -ENOMEM (d left empty). */
 int tree_journal_end(struct tree *t, struct tree_delta *d);
-/* Ends t's journal without a delta (the op failed; the tree is rebuilt anyway). */
-void tree_journal_discard(struct tree *t);
+/* tree_journal_discard(t) (tree_journal.h) ends t's journal without a delta (the op
+ * failed; the tree is rebuilt anyway). */
 
-/* Hooks for tree.c and tree_edit.c (no-ops without a journal). */
-/* Branch or leaf i is about to be removed (its arrays are then NULL: nothing to free)
- * or, if keep, changed (it gets copies of its arrays). 0, or -ENOMEM when keep and the
- * copies could not be made (the tree is as it was). */
-int tree_journal_branch(struct tree *t, size_t i, bool keep);
-int tree_journal_leaf(struct tree *t, size_t i, bool keep);
-/* Branches (leaves) were compacted: old index i < nold is now map[i], or gone if -1. */
-void tree_journal_branches_moved(struct tree *t, const int *map, size_t nold);
-void tree_journal_leaves_moved(struct tree *t, const int *map, size_t nold);
-/* The tree is about to clear (every element, vine and the wood go); then truncated to
- * nb branches and nl leaves. */
-void tree_journal_clear(struct tree *t);
-void tree_journal_truncate(struct tree *t, size_t nb, size_t nl);
-/* Branch b is about to be cut at cut_t: it, and the leaves and children on it that stay
- * (their parameters rescaled), are kept as they were. 0 or -ENOMEM (tree as it was). */
-int tree_journal_keep_cut(struct tree *t, int b, double cut_t);
-/* Something went without the journal seeing it (no memory): it gives up. */
-void tree_journal_fail(struct tree *t);
-/* Whether the journal takes t's wood instead of freeing it (tree_wood_drop). */
-bool tree_journal_wood(struct tree *t);
+/* The hooks tree.c and tree_edit.c call (tree_journal.h; no-ops without a journal):
+ * - branch, leaf (i, keep): branch or leaf i is about to be removed (its arrays are then
+ *   NULL: nothing to free) or, if keep, changed (it gets copies of its arrays). 0, or
+ *   -ENOMEM when keep and the copies could not be made (the tree is as it was).
+ * - branches_moved, leaves_moved (map, nold): branches (leaves) were compacted: old index
+ *   i < nold is now map[i], or gone if -1.
+ * - clear: the tree is about to clear (every element, vine and the wood go); truncate
+ *   (nb, nl): to be truncated to nb branches and nl leaves.
+ * - keep_cut (b, cut_t): branch b is about to be cut at cut_t: it, and the leaves and
+ *   children on it that stay (their parameters rescaled), are kept as they were. 0 or
+ *   -ENOMEM (tree as it was).
+ * - fail: something went without the journal seeing it (no memory): it gives up.
+ * - take_wood (tree_journal_wood): whether the journal takes t's wood instead of freeing
+ *   it (tree_wood_drop).
+ */
 
 /* An op that changed elements in place: before (a tree_copy of the state before it,
  * consumed: what t shares with it is freed) against t after it. Elements correspond by

@@ -58,7 +58,12 @@ int export_obj_mtllib(struct buf *obj, const char *mtl_name);
 /* skeleton.json, see docs/skeleton-format.md: the tree, its "wood" when it was grown, and
  * its "vines" (vine_json.c) when it has any. */
 int export_skeleton(const struct tree *t, struct buf *out);
-struct json_object;
-/* The same as a json-c object, for writers that add a section (vine_json.c); NULL without
- * memory. */
-struct json_object *export_skeleton_object(const struct tree *t);
+struct vine;
+/*
+ * skeleton.json with a "vines" section (docs/skeleton-format.md, "Vines"; vine_json.h):
+ * tree t's skeleton as export_skeleton writes it (an empty tree: the keys with nothing in
+ * them), its "vines" the vines given, in place of t's own. Same vines, same bytes. What
+ * `edaha --support` writes.
+ */
+int export_skeleton_vines(const struct tree *t, const struct vine *vines, size_t nvines,
+			  struct buf *out);

@@ -88,7 +88,8 @@ static struct json_object *jwood(const struct tree *t)
 	return json_out_set(o, "branches", ids);
 }
 
-struct json_object *export_skeleton_object(const struct tree *t)
+/* The skeleton as a json-c object, for the writers below; NULL without memory. */
+static struct json_object *skeleton_object(const struct tree *t)
 {
 	struct json_object *root = json_object_new_object();
 	struct json_object *view = json_object_new_array_ext(3);
@@ -123,13 +124,27 @@ struct json_object *export_skeleton_object(const struct tree *t)
 
 int export_skeleton(const struct tree *t, struct buf *out)
 {
-	struct json_object *root = export_skeleton_object(t);
+	struct json_object *root = skeleton_object(t);
 	int r;
 
 	if (!root)
 		return -ENOMEM;
 
 	/* Compact: a big tree is hundreds of thousands of numbers; one per line would bloat it. */
+	r = json_out_append(root, "\n", out);
+	json_object_put(root);
+	return r;
+}
+
+int export_skeleton_vines(const struct tree *t, const struct vine *vines, size_t nvines,
+			  struct buf *out)
+{
+	/* json-c replaces a key's value in place: t's own vines, if any, give way */
+	struct json_object *root = vine_json_set(skeleton_object(t), vines, nvines);
+	int r;
+
+	if (!root)
+		return -ENOMEM;
 	r = json_out_append(root, "\n", out);
 	json_object_put(root);
 	return r;

@@ -5,7 +5,6 @@
 #include <math.h>
 #include <string.h>
 
-#include "doc.h"
 #include "gen_private.h"
 
 static const char *const type_names[GEN_TYPE_COUNT] = {
@@ -182,8 +181,9 @@ static bool in(double v, double lo, double hi)
 
 static bool point_ok(struct vec3 v)
 {
-	return in(v.x, -DOC_MAX_COORD_M, DOC_MAX_COORD_M) && in(v.y, -DOC_MAX_COORD_M, DOC_MAX_COORD_M) &&
-	       in(v.z, -DOC_MAX_COORD_M, DOC_MAX_COORD_M);
+	const double m = TREE_MAX_COORD_M;
+
+	return in(v.x, -m, m) && in(v.y, -m, m) && in(v.z, -m, m);
 }
 
 /* Names the parameter at fault (its key path) and says what is wrong with it. */
@@ -197,7 +197,8 @@ static int check_shape(const struct gen_params *p, const char **key, struct erro
 	if (!in(p->trunk_height, 0.05, 20))
 		return BAD("trunk_height", "trunk_height: %g is not within 0.05..20 m", p->trunk_height);
 	if (!point_ok(p->clip_center))
-		return BAD("clip.center", "clip.center: not within %g m of the origin", (double)DOC_MAX_COORD_M);
+		return BAD("clip.center", "clip.center: not within %g m of the origin",
+			   (double)TREE_MAX_COORD_M);
 	switch (p->clip) {
 	case GEN_CLIP_SPHERE:
 		if (!in(p->clip_radius, 0.1, 20))
@@ -259,7 +260,7 @@ int gen_params_check(const struct gen_params *p, const char **key, struct error 
 		return BAD("precision", "precision: %d is not within %d..%d sides", p->precision,
 			   GEN_MIN_PRECISION, GEN_MAX_PRECISION);
 	if (!point_ok(p->trunk_start) || !point_ok(p->trunk_end))
-		return BAD("trunk", "trunk: a point is not within %g m of the origin", (double)DOC_MAX_COORD_M);
+		return BAD("trunk", "trunk: a point is not within %g m of the origin", (double)TREE_MAX_COORD_M);
 	if (p->type == GEN_LSYSTEM) {
 		double len = vec3_dist(p->trunk_start, p->trunk_end);
 

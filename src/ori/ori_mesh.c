@@ -3,7 +3,7 @@
 #include <errno.h>
 #include <math.h>
 
-#include "mesh.h"
+#include "mesh_buffer.h"
 #include "ori.h"
 
 size_t ori_mesh_triangles(const struct ori_leaf *l)

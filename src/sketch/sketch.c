@@ -313,18 +313,13 @@ static size_t sketched_points(const struct tree *t)
 	return n;
 }
 
-static int erase(struct tree *t, struct sketch_view *sv, const struct doc_op *op)
+static int erase(struct tree *t, struct sketch_view *sv, const struct sketch_stroke *st)
 {
-	struct vec3 *raw = malloc(op->npoints * sizeof(*raw)), *p = NULL;
+	struct vec3 *p = NULL;
 	size_t n;
 	int ret;
 
-	if (!raw)
-		return -ENOMEM;
-	for (size_t i = 0; i < op->npoints; i++)
-		raw[i] = vec3(op->points[i].x, op->points[i].y, 0.0);
-	ret = sketch_resample(raw, op->npoints, SKETCH_STEP_M, &p, &n);
-	free(raw);
+	ret = sketch_resample(st->points, st->npoints, SKETCH_STEP_M, &p, &n);
 	if (ret == -EINVAL)
 		return SKETCH_GREW;
 	if (ret < 0)
@@ -488,26 +483,18 @@ static int open_stroke(struct tree *t, struct sketch_view *sv, struct vec3 *p, s
 
 /* The stroke's points on the screen's sketch plane (view space), resampled and smoothed.
  * 1 = got a stroke, 0 = nothing to draw, <0 error. */
-static int prepare(const struct doc_op *op, size_t sketched, struct vec3 **out, size_t *nout,
-		   bool *closed)
+static int prepare(const struct sketch_stroke *st, size_t sketched, struct vec3 **out,
+		   size_t *nout, bool *closed)
 {
-	struct vec3 *raw, *p = NULL;
+	struct vec3 *p = NULL;
 	size_t n;
 	int ret;
 
-	if (op->npoints < 2)
+	if (st->npoints < 2)
 		return 0;
-	raw = malloc(op->npoints * sizeof(*raw));
-	if (!raw)
-		return -ENOMEM;
-	for (size_t i = 0; i < op->npoints; i++)
-		raw[i] = vec3(op->points[i].x, op->points[i].y, 0.0);
-	if (vec3_polyline_length(raw, op->npoints) < SKETCH_MIN_LENGTH_M) {
-		free(raw);
+	if (vec3_polyline_length(st->points, st->npoints) < SKETCH_MIN_LENGTH_M)
 		return 0;
-	}
-	ret = sketch_resample(raw, op->npoints, SKETCH_STEP_M, &p, &n);
-	free(raw);
+	ret = sketch_resample(st->points, st->npoints, SKETCH_STEP_M, &p, &n);
 	if (ret == -EINVAL)
 		return 0;
 	if (ret < 0)
@@ -523,7 +510,7 @@ static int prepare(const struct doc_op *op, size_t sketched, struct vec3 **out, 
 	return 1;
 }
 
-int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
+int sketch_stroke(struct tree *t, const struct sketch_stroke *st)
 {
 	struct sketch_view sv;
 	struct vec3 *p = NULL;
@@ -531,32 +518,31 @@ int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng)
 	bool closed = false;
 	int ret, sketched;
 
-	(void)rng;
-	if (op->kind != DOC_OP_STROKE || op->npoints == 0)
+	if (st->npoints == 0)
 		return SKETCH_GREW;
 	/* Only a branch drawn by the stroke right before can get a second outline. */
 	sketched = t->last_sketched;
 	t->last_sketched = -1;
-	if (op->tool != EVENT_TOOL_ERASER) {
-		ret = prepare(op, sketched_points(t), &p, &n, &closed);
+	if (st->tool != EVENT_TOOL_ERASER) {
+		ret = prepare(st, sketched_points(t), &p, &n, &closed);
 		if (ret <= 0)
 			return ret < 0 ? ret : SKETCH_GREW;
 	}
 	/* On a turned 3D tree everything is decided as the screen shows it. */
-	ret = sketch_view_init(&sv, t, op->camera);
+	ret = sketch_view_init(&sv, t, st->camera);
 	if (ret < 0) {
 		free(p);
 		return ret;
 	}
-	if (op->tool == EVENT_TOOL_ERASER)
-		ret = erase(t, &sv, op);
+	if (st->tool == EVENT_TOOL_ERASER)
+		ret = erase(t, &sv, st);
 	else if (closed)
 		ret = add_leaf(t, &sv, p, n);
 	else
-		ret = open_stroke(t, &sv, p, n, op->time_us, sketched);
+		ret = open_stroke(t, &sv, p, n, st->time_us, sketched);
 	sketch_view_finish(&sv);
 	free(p);
 	if (t->last_sketched >= 0) /* this stroke drew a branch */
-		t->last_sketched_end_us = op->time_us + op->points[op->npoints - 1].dt_us;
+		t->last_sketched_end_us = st->end_us;
 	return ret < 0 ? ret : ret == SKETCH_CHANGED ? SKETCH_CHANGED : SKETCH_GREW;
 }

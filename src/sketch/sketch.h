@@ -3,9 +3,10 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
-#include "doc.h"
-#include "rng.h"
+#include "camera.h"
+#include "event.h"
 #include "tree.h"
 
 /* Resampling step along strokes, metres (about 4 px on an 800 px high screen). */
@@ -59,12 +60,24 @@ void sketch_smooth(struct vec3 *p, size_t n, bool closed);
 /* Whether a resampled stroke returns near its start: a leaf rather than a branch. */
 bool sketch_is_closed(const struct vec3 *p, size_t n);
 
+/* One pen stroke as the sketch takes it: what a drawing's stroke op holds (doc.h's
+ * doc_apply_stroke makes one of it), in plain values. */
+struct sketch_stroke {
+	const struct vec3 *points; /* as drawn on the sketch plane, world metres, z 0 */
+	size_t npoints;
+	enum event_tool tool;
+	struct camera camera; /* the view it was drawn in */
+	uint64_t time_us;     /* when it began */
+	uint64_t end_us;      /* when it ended */
+};
+
 /*
- * Applies one stroke op: an open stroke becomes a branch (the first the trunk, later ones
- * attached to the nearest branch point), a closed one a leaf on the nearest branch.
- * Returns SKETCH_GREW when the tree only gained elements at its end (or nothing: taps, a
- * leaf with no branch), SKETCH_CHANGED when existing elements changed, or -ENOMEM.
+ * Applies one stroke: an open stroke becomes a branch (the first the trunk, later ones
+ * attached to the nearest branch point), a closed one a leaf on the nearest branch, an
+ * eraser's stroke erases. Returns SKETCH_GREW when the tree only gained elements at its
+ * end (or nothing: taps, a leaf with no branch), SKETCH_CHANGED when existing elements
+ * changed, or -ENOMEM.
  */
 #define SKETCH_GREW 0
 #define SKETCH_CHANGED 1
-int sketch_apply(struct tree *t, const struct doc_op *op, struct rng *rng);
+int sketch_stroke(struct tree *t, const struct sketch_stroke *s);

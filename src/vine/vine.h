@@ -119,6 +119,15 @@ void vine_finish(struct vine *v);
 int vine_copy(struct vine *dst, const struct vine *src);
 /* Bytes v's arrays take. */
 size_t vine_bytes(const struct vine *v);
+
+struct tree;
+/* Takes v (grown) into tree t (its `vines`); v is left empty. 0, -ENOSPC (TREE_MAX_VINES)
+ * or -ENOMEM (v unchanged then). vine_tree.c. */
+int vine_attach(struct tree *t, struct vine *v);
+/* How a tree frees, copies and counts its vines (tree.h's hooks): vine_attach sets it on
+ * the tree, and so does an undo that brings vines back (tree_delta_swap). */
+struct tree_vine_ops;
+extern const struct tree_vine_ops vine_tree_ops;
 /*
  * Grows v to simulated time `until` (units of step_time): every whole step not yet taken,
  * in order, so growing to 3.5 steps then to 7 gives what growing to 7 at once does. s may

@@ -5,7 +5,6 @@
 #include <errno.h>
 #include <stdlib.h>
 
-#include "export.h"
 #include "json_out.h"
 
 static struct json_object *jpoint(struct vec3 p)
@@ -114,17 +113,4 @@ struct json_object *vine_json_set(struct json_object *root, const struct vine *v
 	for (size_t i = 0; i < nvines; i++)
 		arr = json_out_push(arr, jvine(&vines[i]));
 	return json_out_set(root, "vines", arr);
-}
-
-int vine_skeleton(const struct tree *t, const struct vine *vines, size_t nvines, struct buf *out)
-{
-	/* json-c replaces a key's value in place: t's own vines, if any, give way */
-	struct json_object *root = vine_json_set(export_skeleton_object(t), vines, nvines);
-	int r;
-
-	if (!root)
-		return -ENOMEM;
-	r = json_out_append(root, "\n", out);
-	json_object_put(root);
-	return r;
 }

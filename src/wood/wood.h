@@ -258,7 +258,8 @@ struct wood {
 	int nswell;
 };
 /* Applies the power law to t (its radii change: the twigs' meshes show it), and registers
- * its thick branches in a new grid (p->grid cells). 0, -EINVAL (no branch thick enough to
+ * its thick branches in a new grid (p->grid cells); sets t's wood hooks (wood_tree_ops) so
+ * that t can own w. 0, -EINVAL (no branch thick enough to
  * voxelise, or no trunk) or -ENOMEM (w empty then). */
 int wood_begin(struct wood *w, struct tree *t, const struct wood_params *p);
 /* One press: the rest state (wood_rest), then thickening (wood_thicken). 0, -EINVAL (no
@@ -292,11 +293,15 @@ double wood_density_at(const struct wood_grid *g, struct vec3 p);
 int wood_copy(struct wood *dst, const struct wood *src);
 /* Bytes w's arrays take. */
 size_t wood_bytes(const struct wood *w);
+/* How a tree frees, copies and counts its wood and which branches it holds (tree.h's
+ * hooks): wood_begin sets it on the tree it begins on, and so does an undo that brings a
+ * wood back (tree_delta_swap). */
+extern const struct tree_wood_ops wood_tree_ops;
+struct buf;
 /* The settings as one line of YAML in flow style, every key, that wood_read reads back
  * bit for bit (how a drawing stores a grow press). 0 or -ENOMEM (out as it was). */
 int wood_write(const struct wood_params *p, struct buf *out);
 
-struct buf;
 /* voxels.json and voxels.bin (docs/wood.md, "Voxels dumped"): w's grid, settings and
  * presses; its fields density0, density, compression, tension, displacement (3, f64) and
  * flags (u8), x fastest. Appended: 0 or -ENOMEM (both as they were). wood_dump.c. */

@@ -249,16 +249,18 @@ static void vine_point_out(const struct wood *w, const struct tree *t, double ra
 	*p = vec3_add(*p, vec3_scale(d, s));
 }
 
-static void vine_out(const struct wood *w, const struct tree *t, struct vine *v)
-{
-	/* the root too, where the main axis starts: the same point moves the same way */
-	vine_point_out(w, t, v->p.radius, &v->plant);
-	for (size_t i = 0; i < v->nshoots; i++) {
-		struct vine_shoot *sh = &v->shoots[i];
+struct vine_move {
+	const struct wood *w;
+	const struct tree *t;
+};
 
-		for (size_t k = 0; k < sh->n; k++)
-			vine_point_out(w, t, v->p.radius, &sh->axis[k]);
-	}
+/* Each point of the vines (the tree's hook: the vines are theirs), the root too, where
+ * the main axis starts: the same point moves the same way. */
+static void vine_out(struct vec3 *p, double radius, void *ctx)
+{
+	const struct vine_move *m = ctx;
+
+	vine_point_out(m->w, m->t, radius, p);
 }
 
 int wood_move_out(const struct wood *w, struct tree *t)
@@ -268,7 +270,10 @@ int wood_move_out(const struct wood *w, struct tree *t)
 	/* every leaf: on a voxelised branch, or buried by a neighbour's wood */
 	for (size_t i = 0; i < t->nleaves; i++)
 		leaf_out(w, t, &t->leaves[i]);
-	for (size_t i = 0; i < t->nvines; i++)
-		vine_out(w, t, &t->vines[i]);
+	if (t->nvines) {
+		struct vine_move m = { w, t };
+
+		t->vine_ops->each_point(t, vine_out, &m);
+	}
 	return 0;
 }

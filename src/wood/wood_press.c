@@ -27,6 +27,7 @@ int wood_begin(struct wood *w, struct tree *t, const struct wood_params *p)
 
 	memset(w, 0, sizeof(*w));
 	w->p = *p;
+	t->wood_ops = &wood_tree_ops; /* the tree frees and copies its wood through them */
 	w->ground_y = ground_of(t);
 	if (isnan(w->ground_y))
 		return -EINVAL;
@@ -190,6 +191,40 @@ size_t wood_bytes(const struct wood *w)
 	return wood_cells(&w->g) * (49 + sizeof(double)) + w->nbranches +
 	       w->bark.cap_vertices * 6 * sizeof(float) + w->bark.cap_indices * sizeof(uint32_t);
 }
+
+static void tree_wood_destroy(struct wood *w)
+{
+	wood_finish(w);
+	free(w);
+}
+
+static struct wood *tree_wood_copy(const struct wood *src)
+{
+	struct wood *w = malloc(sizeof(*w));
+
+	if (!w || wood_copy(w, src) < 0) {
+		free(w);
+		return NULL;
+	}
+	return w;
+}
+
+static size_t tree_wood_bytes(const struct wood *w)
+{
+	return sizeof(*w) + wood_bytes(w);
+}
+
+static bool tree_wood_holds(const struct wood *w, size_t i)
+{
+	return i < w->nbranches && w->voxelised[i];
+}
+
+const struct tree_wood_ops wood_tree_ops = {
+	.destroy = tree_wood_destroy,
+	.copy = tree_wood_copy,
+	.bytes = tree_wood_bytes,
+	.holds = tree_wood_holds,
+};
 
 int wood_grow(struct tree *t, const struct wood_params *p)
 {

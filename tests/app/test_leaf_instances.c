@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Leaves grouped by shape (src/core/leaf_instances.c): the copies propagation (scaled, fixed
+/* Leaves grouped by shape (src/mesh/leaf_instances.c): the copies propagation (scaled, fixed
  * count; unscaled, fixed size) and arrangement (turned about the branch) make are
  * instances of the leaf they copy; a different leaf is a shape of its own; each leaf comes
  * back from its shape and matrix within 1e-6 (double) and float precision (what the GPU

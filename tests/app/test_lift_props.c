@@ -3,7 +3,7 @@
  * Lifting keeps its own constraints (docs/lifting.md, 4.1) for every branch: a property
  * test over seeded random sketches, and the broadleaf of issue 24 that broke them.
  *
- * Each sketch is drawn stroke by stroke (sketch_apply, as the app does), lifted with the
+ * Each sketch is drawn stroke by stroke (doc_apply_stroke, as the app does), lifted with the
  * 4.2 merge, and every branch is checked against the sketch, independently of lift.c:
  *
  * - view: 45..135 degrees from the view direction, |dz| <= |(dx, dy)| for the first tree;
@@ -33,6 +33,7 @@
 #include <string.h>
 
 #include "camera.h"
+#include "doc.h"
 #include "lift.h"
 #include "sketch.h"
 #include "sketch_view.h"
@@ -56,11 +57,9 @@ static void stroke(struct tree *t, struct rng *hand, struct camera cam, double x
 {
 	struct doc_op op = { .kind = DOC_OP_STROKE, .tool = EVENT_TOOL_PEN, .time_us = now,
 			     .camera = cam };
-	struct rng r;
 	double l = hypot(x1 - x0, y1 - y0);
 	int n = (int)(l / 0.005) + 2;
 
-	rng_seed(&r, 1);
 	now += 5000000; /* never two outlines of one branch */
 	op.points = calloc((size_t)n, sizeof(*op.points));
 	CHECK(op.points);
@@ -74,7 +73,7 @@ static void stroke(struct tree *t, struct rng *hand, struct camera cam, double x
 						   (float)(y0 + (y1 - y0) * s + dx * off), 0.5f,
 						   (uint32_t)i * 8000 };
 	}
-	CHECK(sketch_apply(t, &op, &r) >= 0);
+	CHECK(doc_apply_stroke(t, &op) >= 0);
 	doc_op_finish(&op);
 }
 

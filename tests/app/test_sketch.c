@@ -2,6 +2,7 @@
 /* Stroke to tree: resampling, open/closed, attachment (root moves, tip stays). */
 #include <string.h>
 
+#include "doc.h"
 #include "sketch.h"
 #include "test.h"
 
@@ -54,14 +55,12 @@ static void test_resample(void)
 static void test_tree(void)
 {
 	struct tree t;
-	struct rng rng;
 	struct doc_op op;
 	const struct branch *b;
 
 	tree_init(&t);
-	rng_seed(&rng, 1);
 	op = line_op(0, 0, 0.2, 6, 50);
-	CHECK_INT(sketch_apply(&t, &op, &rng), 0);
+	CHECK_INT(doc_apply_stroke(&t, &op), 0);
 	doc_op_finish(&op);
 	CHECK_INT(t.nbranches, 1);
 	CHECK_INT(t.branches[0].parent, -1);
@@ -69,7 +68,7 @@ static void test_tree(void)
 
 	/* starts 0.3 m right of the trunk at y=3: root moves onto the trunk, tip stays */
 	op = line_op(0.4, 3.0, 2.5, 4.5, 30);
-	CHECK_INT(sketch_apply(&t, &op, &rng), 0);
+	CHECK_INT(doc_apply_stroke(&t, &op), 0);
 	CHECK_INT(t.nbranches, 2);
 	b = &t.branches[1];
 	CHECK_INT(b->parent, 0);
@@ -87,7 +86,7 @@ static void test_tree(void)
 
 	/* a small loop near the branch tip is a leaf on that branch */
 	op = circle_op(2.7, 4.6, 0.2, 40);
-	CHECK_INT(sketch_apply(&t, &op, &rng), 0);
+	CHECK_INT(doc_apply_stroke(&t, &op), 0);
 	doc_op_finish(&op);
 	CHECK_INT(t.nleaves, 1);
 	CHECK_INT(t.leaves[0].branch, 1);
@@ -130,7 +129,7 @@ static void test_tree(void)
 
 	/* a tap makes nothing */
 	op = line_op(1, 1, 1.01, 1, 2);
-	CHECK_INT(sketch_apply(&t, &op, &rng), 0);
+	CHECK_INT(doc_apply_stroke(&t, &op), 0);
 	doc_op_finish(&op);
 	CHECK_INT(t.nbranches, 1);
 	tree_finish(&t);

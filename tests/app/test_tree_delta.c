@@ -1,13 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * tree_delta.h and tree_mesh_update (src/doc/tree_delta.c, src/core/mesh_update.c) on 400 seeded
+ * tree_delta.h and tree_mesh_update (src/doc/tree_delta.c, src/mesh/mesh_update.c) on 400 seeded
  * random trees and edits: whatever a journal saw (branches and leaves removed, cut,
  * appended, truncated, cleared and drawn anew, leaves re-attached and moved, vines added)
  * or a comparison found (points, radii and leaves changed in place, elements appended or
  * dropped at the end), swapping the tree to the delta's other side gives back the tree
  * before, bit for bit, and swapping again the tree after, any number of times. Meshes
  * updated in place at each swap (parts kept, stashed or built) are the bytes a full
- * build makes.
+ * build makes. An undo or redo that brings vines or a wood into a tree that never held
+ * any sets their hooks on it (tree.h), so that the tree counts, copies and frees them.
  */
 #include <errno.h>
 #include <stdlib.h>
@@ -16,9 +17,11 @@
 #include "mesh.h"
 #include "rng.h"
 #include "synth_tree.h"
+#include "synth_wood.h"
 #include "test.h"
 #include "tree_delta.h"
 #include "vine.h"
+#include "wood.h"
 
 static long swaps, stashed_parts, built_parts, kept_parts;
 
@@ -80,7 +83,7 @@ static void add_vine(struct tree *t, struct rng *r)
 	struct vine v;
 
 	vine_init(&v, &p, vec3(rng_range(r, -1, 1), 0, 0));
-	CHECK_INT(tree_add_vine(t, &v), 0);
+	CHECK_INT(vine_attach(t, &v), 0);
 	vine_finish(&v);
 }
 
@@ -317,6 +320,82 @@ static void check_refused(void)
 	tree_finish(&other);
 }
 
+/*
+ * d swapped into `fresh`, a tree at the other side's counts that
+ * never held vines nor wood (one rebuilt from its drawing): what comes back is the tree's
+ * to count, copy and free (ASan sees a leak or a bad read otherwise).
+ */
+static void swap_into_fresh(struct tree_delta *d, struct tree *fresh)
+{
+	int bf[64], lf[64];
+	struct tree c, bare;
+
+	CHECK(fresh->vine_ops == NULL && fresh->wood_ops == NULL);
+	CHECK(fresh->nbranches <= 64 && fresh->nleaves <= 64);
+	CHECK_INT(tree_delta_swap(d, fresh, bf, lf), 0);
+	/* counted: more than the same tree's view without them */
+	bare = *fresh;
+	bare.nvines = bare.cap_vines = 0;
+	bare.wood = NULL;
+	CHECK(tree_bytes(fresh) > tree_bytes(&bare));
+	copy(&c, fresh);
+	CHECK_INT(c.nvines, fresh->nvines);
+	CHECK((c.wood == NULL) == (fresh->wood == NULL));
+	for (size_t i = 0; i < fresh->nbranches; i++)
+		CHECK(tree_branch_in_wood(&c, i) == tree_branch_in_wood(fresh, i));
+	tree_finish(&c);
+}
+
+static void check_hooks_come_back(void)
+{
+	struct tree t, fresh;
+	struct tree_delta d;
+	struct wood_params p;
+	struct rng r;
+	int bf[64], lf[64];
+
+	/* a vine planted under a journal, undone, then redone into a fresh tree */
+	rng_seed(&r, 5);
+	tree_init(&t);
+	tree_init(&fresh);
+	CHECK_INT(synth_wood_tree(&t, 0, WOOD_BROADLEAF), 0);
+	CHECK_INT(synth_wood_tree(&fresh, 0, WOOD_BROADLEAF), 0);
+	tree_delta_init(&d);
+	CHECK_INT(tree_journal_begin(&t), 0);
+	add_vine(&t, &r);
+	CHECK_INT(tree_journal_end(&t, &d), 0);
+	CHECK_INT(tree_delta_swap(&d, &t, bf, lf), 0); /* undone: the delta holds the vine */
+	CHECK_INT(t.nvines, 0);
+	swap_into_fresh(&d, &fresh);
+	CHECK_INT(fresh.nvines, 1);
+	tree_delta_finish(&d);
+	tree_finish(&t);
+	tree_finish(&fresh);
+
+	/* a year of wood found by comparison, undone, then redone into a fresh tree */
+	tree_init(&t);
+	tree_init(&fresh);
+	CHECK_INT(synth_wood_tree(&t, 0, WOOD_BROADLEAF), 0);
+	CHECK_INT(synth_wood_tree(&fresh, 0, WOOD_BROADLEAF), 0);
+	{
+		struct tree before;
+
+		copy(&before, &t);
+		wood_params_default(&p);
+		CHECK_INT(wood_grow(&t, &p), 0);
+		CHECK(t.wood != NULL);
+		tree_delta_init(&d);
+		CHECK_INT(tree_delta_diff(&d, &before, &t), 0);
+	}
+	CHECK_INT(tree_delta_swap(&d, &t, bf, lf), 0); /* undone: the delta holds the wood */
+	CHECK(t.wood == NULL);
+	swap_into_fresh(&d, &fresh);
+	CHECK(fresh.wood != NULL && tree_branch_in_wood(&fresh, 0));
+	tree_delta_finish(&d);
+	tree_finish(&t);
+	tree_finish(&fresh);
+}
+
 int main(void)
 {
 	for (uint64_t seed = 1; seed <= 200; seed++) {
@@ -324,6 +403,7 @@ int main(void)
 		check(seed, false);
 	}
 	check_refused();
+	check_hooks_come_back();
 	fprintf(stderr, "400 edits, %ld swaps; parts kept %ld, stashed %ld, built %ld\n", swaps,
 		kept_parts, stashed_parts, built_parts);
 	CHECK(kept_parts > 0 && stashed_parts > 0 && built_parts > 0);

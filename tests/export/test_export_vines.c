@@ -185,10 +185,10 @@ static void test_skeleton(void)
 	/* the command line's writer is the same code: the same bytes, for the tree's vines
 	 * given on the tree without them and on the tree with them (in their place) */
 	buf_reset(&a);
-	CHECK_INT(vine_skeleton(&p.bare, p.vines.vines, p.vines.nvines, &a), 0);
+	CHECK_INT(export_skeleton_vines(&p.bare, p.vines.vines, p.vines.nvines, &a), 0);
 	CHECK(a.len == b.len && !memcmp(a.data, b.data, a.len));
 	buf_reset(&a);
-	CHECK_INT(vine_skeleton(&p.vines, p.vines.vines, p.vines.nvines, &a), 0);
+	CHECK_INT(export_skeleton_vines(&p.vines, p.vines.vines, p.vines.nvines, &a), 0);
 	CHECK(a.len == b.len && !memcmp(a.data, b.data, a.len));
 
 	/* the same tree grown again: the same bytes */

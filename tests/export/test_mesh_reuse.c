@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* tree_mesh_rebuild_from (src/core/mesh_reuse.c): the meshes of a tree made from those of
+/* tree_mesh_rebuild_from (src/mesh/mesh_reuse.c): the meshes of a tree made from those of
  * another are the bytes tree_mesh_build makes, whatever the edit between the two: removed
  * and added branches and leaves, a branch cut, points moved under an unchanged child (its
  * parent or grandparent changed), identical branches side by side, and changes between a

@@ -6,7 +6,7 @@
 # - assimp: reads every .glb and .obj with `assimp info`;
 # - summer: checks that the summer samples are byte for byte what the exporters made
 #   before trees had seasons (SHA256S, made at commit d67c552). Should the meshes change
-#   on purpose (src/core/mesh.c, tests/tools/synth_tree.c), make it anew from that change's
+#   on purpose (src/mesh/mesh.c, tests/tools/synth_tree.c), make it anew from that change's
 #   write_samples, after checking that its exporters still give summer no COLOR_0 and the
 #   one "leaves" material.
 # Exit 77: checker missing.

@@ -55,7 +55,7 @@ static int grow_one(struct tree *t, const struct vine_support *s, size_t i)
 	vine_init(&v, &p, plant);
 	r = vine_grow(&v, s, INFINITY);
 	if (r == 0)
-		r = tree_add_vine(t, &v);
+		r = vine_attach(t, &v);
 	vine_finish(&v);
 	return r;
 }

@@ -4,6 +4,7 @@
 #include <stddef.h>
 
 #include "tree.h"
+#include "vine.h"
 
 /*
  * A tree with vines for the export tests and samples: a lifted vertical trunk of

@@ -111,7 +111,7 @@ static void vine(struct tree *t)
 		  0);
 	vine_init(&v, &p, vec3(TRUNK_R + p.radius + 0.003, 0.0, 0.0));
 	CHECK_INT(vine_grow(&v, s, INFINITY), 0);
-	CHECK_INT(tree_add_vine(t, &v), 0);
+	CHECK_INT(vine_attach(t, &v), 0);
 	vine_finish(&v);
 	vine_support_destroy(s);
 	tree_mesh_finish(&bark);

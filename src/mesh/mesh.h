@@ -4,22 +4,14 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "mesh_buffer.h"
 #include "tree.h"
 
-/* An indexed triangle list; positions in world metres (y up), unit normals. */
-struct mesh {
-	float *positions; /* 3 per vertex */
-	float *normals;   /* 3 per vertex */
-	size_t nvertices, cap_vertices;
-	uint32_t *indices; /* 3 per triangle, counter-clockwise seen from outside */
-	size_t nindices, cap_indices;
-};
-
-void mesh_init(struct mesh *m);
-void mesh_finish(struct mesh *m);
-void mesh_clear(struct mesh *m);
-/* Room for nv more vertices and ni more indices. 0 or -ENOMEM (m unchanged). */
-int mesh_reserve(struct mesh *m, size_t nv, size_t ni);
+/*
+ * The tree as triangles (mesh.c, mesh_reuse.c, mesh_update.c; leaf_instances.h and
+ * leaf_colors.h beside it): on the floor above the origami leaves (src/FLOORS), whose
+ * kinds it meshes, and below every system that draws on it.
+ */
 
 /*
  * Level of detail. The camera is orthographic at a fixed scale (the screen height always
