@@ -222,195 +222,236 @@ static bool parse_idle(const char *s, double *seconds)
 	return !errno && end != s && !*end && *seconds >= 0.0 && *seconds <= 86400.0;
 }
 
-int options_parse(struct options *o, int argc, char **argv)
+enum {
+	OPT_HEADLESS = 256, OPT_SIZE, OPT_SEED, OPT_OUT, OPT_LOAD, OPT_REPLAY, OPT_PRESS, OPT_VIEW,
+	OPT_RECORD, OPT_HELP, OPT_VERSION, OPT_KIOSK_FRAMES, OPT_SCREENSHOT, OPT_CONFIG, OPT_STATS,
+	OPT_LANG, OPT_IDLE, OPT_GENERATE, OPT_LEAF, OPT_OPENING, OPT_SUPPORT, OPT_VINE, OPT_PLANT,
+	OPT_WOOD, OPT_DUMP_VOXELS, OPT_SKELETON, OPT_WINDOW, OPT_KIOSK,
+};
+
+static const struct option longopts[] = {
+	{ "headless", no_argument, NULL, OPT_HEADLESS },
+	{ "size", required_argument, NULL, OPT_SIZE },
+	{ "seed", required_argument, NULL, OPT_SEED },
+	{ "out", required_argument, NULL, OPT_OUT },
+	{ "load", required_argument, NULL, OPT_LOAD },
+	{ "generate", required_argument, NULL, OPT_GENERATE },
+	{ "skeleton", required_argument, NULL, OPT_SKELETON },
+	{ "replay", required_argument, NULL, OPT_REPLAY },
+	{ "press", required_argument, NULL, OPT_PRESS },
+	{ "view", required_argument, NULL, OPT_VIEW },
+	{ "record", required_argument, NULL, OPT_RECORD },
+	{ "kiosk-frames", required_argument, NULL, OPT_KIOSK_FRAMES },
+	{ "screenshot", required_argument, NULL, OPT_SCREENSHOT },
+	{ "config", required_argument, NULL, OPT_CONFIG },
+	{ "stats", no_argument, NULL, OPT_STATS },
+	{ "window", no_argument, NULL, OPT_WINDOW },
+	{ "kiosk", no_argument, NULL, OPT_KIOSK },
+	{ "lang", required_argument, NULL, OPT_LANG },
+	{ "idle", required_argument, NULL, OPT_IDLE },
+	{ "leaf", required_argument, NULL, OPT_LEAF },
+	{ "opening", required_argument, NULL, OPT_OPENING },
+	{ "support", required_argument, NULL, OPT_SUPPORT },
+	{ "vine", required_argument, NULL, OPT_VINE },
+	{ "plant", required_argument, NULL, OPT_PLANT },
+	{ "wood", required_argument, NULL, OPT_WOOD },
+	{ "dump-voxels", no_argument, NULL, OPT_DUMP_VOXELS },
+	{ "help", no_argument, NULL, OPT_HELP },
+	{ "version", no_argument, NULL, OPT_VERSION },
+	{ NULL, 0, NULL, 0 },
+};
+
+/* What an option group's parser returns for an option that is not one of its own (else 0,
+ * or 2 with the usage error printed). */
+#define OPTION_NOT_OURS (-1)
+
+/* An option naming a file: an empty name is a usage error, not "the current directory". */
+static int set_file(const char **dst, const char *arg, const char *name)
 {
-	enum { OPT_HEADLESS = 256, OPT_SIZE, OPT_SEED, OPT_OUT, OPT_LOAD, OPT_REPLAY, OPT_PRESS,
-	       OPT_VIEW, OPT_RECORD, OPT_HELP, OPT_VERSION, OPT_KIOSK_FRAMES, OPT_SCREENSHOT,
-	       OPT_CONFIG, OPT_STATS, OPT_LANG, OPT_IDLE, OPT_GENERATE, OPT_LEAF, OPT_OPENING,
-	       OPT_SUPPORT, OPT_VINE, OPT_PLANT, OPT_WOOD, OPT_DUMP_VOXELS, OPT_SKELETON,
-	       OPT_WINDOW, OPT_KIOSK };
-	static const struct option longopts[] = {
-		{ "headless", no_argument, NULL, OPT_HEADLESS },
-		{ "size", required_argument, NULL, OPT_SIZE },
-		{ "seed", required_argument, NULL, OPT_SEED },
-		{ "out", required_argument, NULL, OPT_OUT },
-		{ "load", required_argument, NULL, OPT_LOAD },
-		{ "generate", required_argument, NULL, OPT_GENERATE },
-		{ "skeleton", required_argument, NULL, OPT_SKELETON },
-		{ "replay", required_argument, NULL, OPT_REPLAY },
-		{ "press", required_argument, NULL, OPT_PRESS },
-		{ "view", required_argument, NULL, OPT_VIEW },
-		{ "record", required_argument, NULL, OPT_RECORD },
-		{ "kiosk-frames", required_argument, NULL, OPT_KIOSK_FRAMES },
-		{ "screenshot", required_argument, NULL, OPT_SCREENSHOT },
-		{ "config", required_argument, NULL, OPT_CONFIG },
-		{ "stats", no_argument, NULL, OPT_STATS },
-		{ "window", no_argument, NULL, OPT_WINDOW },
-		{ "kiosk", no_argument, NULL, OPT_KIOSK },
-		{ "lang", required_argument, NULL, OPT_LANG },
-		{ "idle", required_argument, NULL, OPT_IDLE },
-		{ "leaf", required_argument, NULL, OPT_LEAF },
-		{ "opening", required_argument, NULL, OPT_OPENING },
-		{ "support", required_argument, NULL, OPT_SUPPORT },
-		{ "vine", required_argument, NULL, OPT_VINE },
-		{ "plant", required_argument, NULL, OPT_PLANT },
-		{ "wood", required_argument, NULL, OPT_WOOD },
-		{ "dump-voxels", no_argument, NULL, OPT_DUMP_VOXELS },
-		{ "help", no_argument, NULL, OPT_HELP },
-		{ "version", no_argument, NULL, OPT_VERSION },
-		{ NULL, 0, NULL, 0 },
-	};
-	int c, ret;
+	if (!arg[0])
+		return usage_error("%s needs a file name", name);
+	*dst = arg;
+	return 0;
+}
 
-	memset(o, 0, sizeof(*o));
-	o->width = DEFAULT_WIDTH;
-	o->height = DEFAULT_HEIGHT;
-	o->seed = DEFAULT_SEED;
-	opterr = 0;
-	optind = 1;
-	while ((c = getopt_long(argc, argv, "", longopts, NULL)) != -1) {
-		struct step s = { 0 };
-
-		switch (c) {
-		case OPT_HEADLESS:
-			o->headless = true;
-			break;
-		case OPT_SIZE:
-			if (!parse_size(optarg, &o->width, &o->height))
-				return usage_error("bad --size \"%s\" (expected WxH, 64..8192)", optarg);
-			break;
-		case OPT_SEED:
-			if (!parse_seed(optarg, &o->seed))
-				return usage_error("bad --seed \"%s\" (expected a whole number)", optarg);
-			o->seed_given = true;
-			break;
-		case OPT_OUT:
-			o->out_dir = optarg;
-			break;
-		case OPT_LOAD:
-			o->load = optarg;
-			break;
-		case OPT_GENERATE:
-			if (!optarg[0])
-				return usage_error("%s needs a file name", "--generate");
-			o->generate = optarg;
-			break;
-		case OPT_SKELETON:
-			if (!optarg[0])
-				return usage_error("%s needs a file name", "--skeleton");
-			o->skeleton = optarg;
-			break;
-		case OPT_RECORD:
-			o->record = optarg;
-			break;
-		case OPT_REPLAY:
-			s.kind = STEP_REPLAY;
-			s.path = optarg;
-			if ((ret = add_step(o, s)))
-				return ret;
-			break;
-		case OPT_PRESS:
-			s.kind = STEP_PRESS;
-			if (!button_from_name(optarg, &s.button))
-				return usage_error("unknown button \"%s\" (3d, clone, leaf, propagate, vine, "
-						   "grow, undo, redo, export, new, fixed-count, fixed-size, "
-						   "view, season, tpl-..., gen-...: see --help)", optarg);
-			if ((ret = add_step(o, s)))
-				return ret;
-			break;
-		case OPT_VIEW:
-			if (!parse_view(optarg, &o->view_yaw, &o->view_pitch))
-				return usage_error("bad --view \"%s\" (expected YAW or YAW,PITCH in degrees, "
-						   "pitch -20..75)", optarg);
-			o->view_given = true;
-			break;
-		case OPT_KIOSK_FRAMES:
-			if (!parse_frames(optarg, &o->kiosk_frames))
-				return usage_error("bad --kiosk-frames \"%s\" (expected 1..1000000)", optarg);
-			break;
-		case OPT_SCREENSHOT:
-			if (!optarg[0])
-				return usage_error("%s needs a file name", "--screenshot");
-			o->screenshot = optarg;
-			break;
-		case OPT_CONFIG:
-			if (!optarg[0])
-				return usage_error("%s needs a file name", "--config");
-			o->config = optarg;
-			break;
-		case OPT_STATS:
-			o->stats = true;
-			break;
-		case OPT_WINDOW:
-			o->window = true;
-			break;
-		case OPT_KIOSK:
-			o->kiosk = true;
-			break;
-		case OPT_LANG:
-			if (strcmp(optarg, "en") != 0 && strcmp(optarg, "ja") != 0)
-				return usage_error("bad --lang \"%s\" (expected en or ja)", optarg);
-			o->lang = optarg;
-			break;
-		case OPT_IDLE:
-			if (!parse_idle(optarg, &o->idle_s))
-				return usage_error("bad --idle \"%s\" (expected seconds, 0..86400)", optarg);
-			o->idle_given = true;
-			break;
-		case OPT_LEAF:
-			if (!optarg[0])
-				return usage_error("%s needs a leaf preset's name or a file name", "--leaf");
-			o->leaf = optarg;
-			break;
-		case OPT_OPENING:
-			if (!parse_opening(optarg, &o->opening))
-				return usage_error("bad --opening \"%s\" (expected a number from 0, folded "
-						   "in the bud, to 1, flat)", optarg);
-			o->opening_given = true;
-			break;
-		case OPT_SUPPORT:
-			if (!optarg[0])
-				return usage_error("%s needs a file name", "--support");
-			o->support = optarg;
-			break;
-		case OPT_VINE:
-			if (!optarg[0])
-				return usage_error("%s needs a vine preset's name or a file name", "--vine");
-			o->vine = optarg;
-			break;
-		case OPT_PLANT:
-			if (!parse_plant(optarg, o->plant))
-				return usage_error("bad --plant \"%s\" (expected X,Y,Z: three numbers, "
-						   "metres)", optarg);
-			o->plant_given = true;
-			break;
-		case OPT_WOOD:
-			if (!optarg[0])
-				return usage_error("%s needs a file name", "--wood");
-			o->wood = optarg;
-			break;
-		case OPT_DUMP_VOXELS:
-			o->dump_voxels = true;
-			break;
-		case OPT_HELP:
-			o->help = true;
-			break;
-		case OPT_VERSION:
-			o->version = true;
-			break;
-		default:
-			return usage_error("unknown or incomplete option \"%s\"", argv[optind - 1]);
-		}
-	}
-	if (optind < argc)
-		return usage_error("unexpected argument \"%s\"", argv[optind]);
-	if (o->help || o->version)
+/* A headless run's start and its results: what it draws from, where it writes. */
+static int parse_run_option(struct options *o, int c, const char *arg)
+{
+	switch (c) {
+	case OPT_HEADLESS:
+		o->headless = true;
 		return 0;
+	case OPT_OUT:
+		o->out_dir = arg;
+		return 0;
+	case OPT_SIZE:
+		if (!parse_size(arg, &o->width, &o->height))
+			return usage_error("bad --size \"%s\" (expected WxH, 64..8192)", arg);
+		return 0;
+	case OPT_SEED:
+		if (!parse_seed(arg, &o->seed))
+			return usage_error("bad --seed \"%s\" (expected a whole number)", arg);
+		o->seed_given = true;
+		return 0;
+	case OPT_LOAD:
+		o->load = arg;
+		return 0;
+	case OPT_GENERATE:
+		return set_file(&o->generate, arg, "--generate");
+	case OPT_SKELETON:
+		return set_file(&o->skeleton, arg, "--skeleton");
+	case OPT_WOOD:
+		return set_file(&o->wood, arg, "--wood");
+	case OPT_DUMP_VOXELS:
+		o->dump_voxels = true;
+		return 0;
+	}
+	return OPTION_NOT_OURS;
+}
+
+/* The input a headless run is fed, in command-line order, and the screen after it. */
+static int parse_input_option(struct options *o, int c, const char *arg)
+{
+	struct step s = { 0 };
+
+	switch (c) {
+	case OPT_REPLAY:
+		s.kind = STEP_REPLAY;
+		s.path = arg;
+		return add_step(o, s);
+	case OPT_PRESS:
+		s.kind = STEP_PRESS;
+		if (!button_from_name(arg, &s.button))
+			return usage_error("unknown button \"%s\" (3d, clone, leaf, propagate, vine, "
+					   "grow, undo, redo, export, new, fixed-count, fixed-size, "
+					   "view, season, tpl-..., gen-...: see --help)", arg);
+		return add_step(o, s);
+	case OPT_VIEW:
+		if (!parse_view(arg, &o->view_yaw, &o->view_pitch))
+			return usage_error("bad --view \"%s\" (expected YAW or YAW,PITCH in degrees, "
+					   "pitch -20..75)", arg);
+		o->view_given = true;
+		return 0;
+	case OPT_IDLE:
+		if (!parse_idle(arg, &o->idle_s))
+			return usage_error("bad --idle \"%s\" (expected seconds, 0..86400)", arg);
+		o->idle_given = true;
+		return 0;
+	}
+	return OPTION_NOT_OURS;
+}
+
+/* The headless modes without a drawing: an origami leaf alone, a vine alone. */
+static int parse_alone_option(struct options *o, int c, const char *arg)
+{
+	switch (c) {
+	case OPT_LEAF:
+		if (!arg[0])
+			return usage_error("%s needs a leaf preset's name or a file name", "--leaf");
+		o->leaf = arg;
+		return 0;
+	case OPT_OPENING:
+		if (!parse_opening(arg, &o->opening))
+			return usage_error("bad --opening \"%s\" (expected a number from 0, folded "
+					   "in the bud, to 1, flat)", arg);
+		o->opening_given = true;
+		return 0;
+	case OPT_SUPPORT:
+		return set_file(&o->support, arg, "--support");
+	case OPT_VINE:
+		if (!arg[0])
+			return usage_error("%s needs a vine preset's name or a file name", "--vine");
+		o->vine = arg;
+		return 0;
+	case OPT_PLANT:
+		if (!parse_plant(arg, o->plant))
+			return usage_error("bad --plant \"%s\" (expected X,Y,Z: three numbers, "
+					   "metres)", arg);
+		o->plant_given = true;
+		return 0;
+	}
+	return OPTION_NOT_OURS;
+}
+
+/* The kiosk: its display, its configuration and its test runs. */
+static int parse_kiosk_option(struct options *o, int c, const char *arg)
+{
+	switch (c) {
+	case OPT_WINDOW:
+		o->window = true;
+		return 0;
+	case OPT_KIOSK:
+		o->kiosk = true;
+		return 0;
+	case OPT_CONFIG:
+		return set_file(&o->config, arg, "--config");
+	case OPT_STATS:
+		o->stats = true;
+		return 0;
+	case OPT_KIOSK_FRAMES:
+		if (!parse_frames(arg, &o->kiosk_frames))
+			return usage_error("bad --kiosk-frames \"%s\" (expected 1..1000000)", arg);
+		return 0;
+	case OPT_SCREENSHOT:
+		return set_file(&o->screenshot, arg, "--screenshot");
+	}
+	return OPTION_NOT_OURS;
+}
+
+/* Any mode's. */
+static int parse_common_option(struct options *o, int c, const char *arg)
+{
+	switch (c) {
+	case OPT_LANG:
+		if (strcmp(arg, "en") != 0 && strcmp(arg, "ja") != 0)
+			return usage_error("bad --lang \"%s\" (expected en or ja)", arg);
+		o->lang = arg;
+		return 0;
+	case OPT_RECORD:
+		o->record = arg;
+		return 0;
+	case OPT_HELP:
+		o->help = true;
+		return 0;
+	case OPT_VERSION:
+		o->version = true;
+		return 0;
+	}
+	return OPTION_NOT_OURS;
+}
+
+/* One option getopt_long() returned: 0, 2 (usage error, printed), or OPTION_NOT_OURS for an
+ * unknown one or one without its argument. */
+static int parse_option(struct options *o, int c, const char *arg)
+{
+	static int (*const groups[])(struct options *, int, const char *) = {
+		parse_run_option, parse_input_option, parse_alone_option, parse_kiosk_option,
+		parse_common_option,
+	};
+
+	for (size_t i = 0; i < sizeof(groups) / sizeof(groups[0]); i++) {
+		int ret = groups[i](o, c, arg);
+
+		if (ret != OPTION_NOT_OURS)
+			return ret;
+	}
+	return OPTION_NOT_OURS;
+}
+
+/* The grow button's settings and voxels: a headless tree's, not a leaf's or a vine's. */
+static int check_wood(const struct options *o)
+{
 	if (!o->headless && (o->wood || o->dump_voxels))
 		return usage_error("%s needs --headless", o->wood ? "--wood" : "--dump-voxels");
 	if ((o->leaf || o->support) && (o->wood || o->dump_voxels))
 		return usage_error("%s is for a tree, not --leaf or --support",
 				   o->wood ? "--wood" : "--dump-voxels");
+	return 0;
+}
+
+/* What only a headless run takes: its input, its results, the modes without a drawing. */
+static int check_headless_only(const struct options *o)
+{
 	if (!o->headless && (o->out_dir || o->nsteps || o->view_given || o->idle_given || o->generate ||
 			     o->leaf || o->opening_given || o->support || o->vine || o->plant_given))
 		return usage_error("%s needs --headless",
@@ -419,6 +460,11 @@ int options_parse(struct options *o, int argc, char **argv)
 				   o->leaf ? "--leaf" : o->opening_given ? "--opening" :
 				   o->support ? "--support" : o->vine ? "--vine" :
 				   o->plant_given ? "--plant" : "--idle");
+	return 0;
+}
+
+static int check_skeleton(const struct options *o)
+{
 	if (o->skeleton && !o->headless)
 		return usage_error("%s needs --headless", "--skeleton");
 	/* the skeleton is the start of a new drawing, as a parameter file is */
@@ -426,6 +472,12 @@ int options_parse(struct options *o, int argc, char **argv)
 		return usage_error("%s does not go with --skeleton",
 				   o->load ? "--load" : o->generate ? "--generate" :
 				   o->leaf ? "--leaf" : "--support");
+	return 0;
+}
+
+/* One display: a window, the kiosk's DRM/KMS, or none (headless, which writes to --out). */
+static int check_display(const struct options *o)
+{
 	if (o->window && o->kiosk)
 		return usage_error("%s does not go with --kiosk", "--window");
 	if (o->headless && (o->window || o->kiosk))
@@ -436,6 +488,11 @@ int options_parse(struct options *o, int argc, char **argv)
 				   o->config ? "--config" : "--stats");
 	if (o->headless && (!o->out_dir || !o->out_dir[0]))
 		return usage_error("%s needs --out DIR", "--headless");
+	return 0;
+}
+
+static int check_leaf(const struct options *o)
+{
 	if (o->opening_given && !o->leaf)
 		return usage_error("%s is for a --leaf", "--opening");
 	/* a leaf alone: no drawing, so nothing to load, feed, turn or record */
@@ -446,6 +503,11 @@ int options_parse(struct options *o, int argc, char **argv)
 				   o->nsteps ? "--replay/--press" : o->view_given ? "--view" :
 				   o->idle_given ? "--idle" : o->record ? "--record" :
 				   o->seed_given ? "--seed" : "--lang");
+	return 0;
+}
+
+static int check_vine(const struct options *o)
+{
 	if ((o->vine || o->plant_given) && !o->support)
 		return usage_error("%s is for a --support", o->vine ? "--vine" : "--plant");
 	if (o->support && (!o->vine || !o->plant_given))
@@ -461,6 +523,53 @@ int options_parse(struct options *o, int argc, char **argv)
 				   o->idle_given ? "--idle" : o->record ? "--record" :
 				   o->seed_given ? "--seed" : "--lang");
 	return 0;
+}
+
+/* The options that do not go together, in this order: the first conflict found is the one
+ * the message names. */
+static int check_options(const struct options *o)
+{
+	static int (*const checks[])(const struct options *) = {
+		check_wood, check_headless_only, check_skeleton, check_display, check_leaf,
+		check_vine,
+	};
+
+	for (size_t i = 0; i < sizeof(checks) / sizeof(checks[0]); i++) {
+		int ret = checks[i](o);
+
+		if (ret)
+			return ret;
+	}
+	return 0;
+}
+
+static void options_init(struct options *o)
+{
+	memset(o, 0, sizeof(*o));
+	o->width = DEFAULT_WIDTH;
+	o->height = DEFAULT_HEIGHT;
+	o->seed = DEFAULT_SEED;
+}
+
+int options_parse(struct options *o, int argc, char **argv)
+{
+	int c, ret;
+
+	options_init(o);
+	opterr = 0;
+	optind = 1;
+	while ((c = getopt_long(argc, argv, "", longopts, NULL)) != -1) {
+		ret = parse_option(o, c, optarg);
+		if (ret == OPTION_NOT_OURS)
+			return usage_error("unknown or incomplete option \"%s\"", argv[optind - 1]);
+		if (ret)
+			return ret;
+	}
+	if (optind < argc)
+		return usage_error("unexpected argument \"%s\"", argv[optind]);
+	if (o->help || o->version)
+		return 0;
+	return check_options(o);
 }
 
 void options_finish(struct options *o)

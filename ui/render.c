@@ -1,5 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* The frame: paper and ground, the lit tree, then stroke, buttons, messages and cursor on top. */
+/*
+ * The frame: paper and ground, the lit tree, then stroke, buttons, messages and cursor on
+ * top; and the renderer's life (create, destroy, stats). The top of ui's renderer: it calls
+ * the layers (render_*.c), which call nothing here; what they share with it is below them
+ * (render_gl.c, render_shaders.c).
+ */
 #include "render.h"
 
 #include <errno.h>
@@ -13,47 +18,6 @@
 #include "render_private.h"
 #include "wood.h"
 #include "sketch_view.h"
-
-/* GLSL ES 1.00 so the same shaders run on GLES 2 and 3. With TINT defined, each vertex
- * has its own colour (leaves in spring and autumn); without, the program is the one it
- * always was, and summer's pixels are too. */
-#define TREE_VS                                                                            \
-	"uniform mat4 u_mvp;\n"                                                            \
-	"attribute vec3 a_position;\n"                                                     \
-	"attribute vec3 a_normal;\n"                                                       \
-	"varying vec3 v_normal;\n"                                                         \
-	RENDER_TINT_VS_DECLS                                                               \
-	"void main() {\n"                                                                  \
-	"	v_normal = a_normal;\n"                                                   \
-	RENDER_TINT_VS_PASS                                                                \
-	"	gl_Position = u_mvp * vec4(a_position, 1.0);\n"                           \
-	"}\n"
-
-#define TREE_FS                                                                            \
-	"precision mediump float;\n"                                                       \
-	"#ifdef TINT\n"                                                                    \
-	"varying vec3 v_tint;\n"                                                           \
-	"#define LEAF_COLOR v_tint\n"                                                      \
-	"#else\n"                                                                          \
-	"uniform vec3 u_color;\n"                                                          \
-	"#define LEAF_COLOR u_color\n"                                                     \
-	"#endif\n"                                                                         \
-	"uniform vec3 u_light;\n"                                                          \
-	"uniform bool u_two_sided;\n"                                                      \
-	"varying vec3 v_normal;\n"                                                         \
-	"void main() {\n"                                                                  \
-	"	vec3 n = normalize(v_normal);\n"                                          \
-	/* a leaf seen from behind is lit like its front */                                \
-	"	if (u_two_sided && !gl_FrontFacing)\n"                                    \
-	"		n = -n;\n"                                                       \
-	"	float lambert = max(dot(n, u_light), 0.0);\n"                             \
-	"	gl_FragColor = vec4(LEAF_COLOR * (0.45 + 0.7 * lambert), 1.0);\n"         \
-	"}\n"
-
-static const char tree_vs[] = TREE_VS;
-static const char tinted_vs[] = "#define TINT\n" TREE_VS;
-const char render_tree_fs[] = TREE_FS;
-const char render_tinted_fs[] = "#define TINT\n" TREE_FS;
 
 /* Flat shapes and glyphs alike: colour times the atlas's coverage (solid for shapes).
  * Texel coordinates become texture ones here, in the vertex shader's high precision. */
@@ -85,18 +49,9 @@ static const char flat_fs[] =
 	"	gl_FragColor = vec4(v_color.rgb, v_color.a * texture2D(u_atlas, v_uv).a);\n"
 	"}\n";
 
-/* Warm paper, like the sheet a child would draw on. */
-const float render_paper[3] = { 0.975f, 0.953f, 0.898f };
 static const float bark_color[3] = { 0.47f, 0.32f, 0.20f };
-/* Towards the light: from the upper left, in front of the sketch plane. */
-const float render_light_dir[3] = { -0.4418339f, 0.7069342f, 0.5522924f };
-
-void render_drain_gl_errors(void)
-{
-	/* bounded: a lost context may report errors forever */
-	for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; i++)
-		;
-}
+/* Towards the light, in view space: from the upper left, in front of the sketch plane. */
+static const float light_dir[3] = { -0.4418339f, 0.7069342f, 0.5522924f };
 
 struct render *render_create(void)
 {
@@ -112,10 +67,10 @@ struct render *render_create(void)
 	render_drain_gl_errors();
 
 	r->tree_program =
-		render_program("tree", tree_vs, render_tree_fs, tree_attribs, tree_locations, 2);
+		render_program("tree", render_tree_vs, render_tree_fs, tree_attribs, tree_locations, 2);
 	r->flat_program = render_program("flat", flat_vs, flat_fs, flat_attribs, flat_locations, 3);
 	if (!r->tree_program || !r->flat_program ||
-	    !render_program_tree_init(&r->tinted, "tinted", tinted_vs, render_tinted_fs,
+	    !render_program_tree_init(&r->tinted, "tinted", render_tinted_vs, render_tinted_fs,
 				      tree_attribs, tree_locations, 3) ||
 	    render_text_init(r) < 0)
 		goto fail;
@@ -225,19 +180,6 @@ static int flush_batch(struct render *r, const float proj[16])
 static bool leaves_instanced(const struct render *r, const struct app *app)
 {
 	return r->instanced && app->tree.nleaves > 0 && app->mesh.leaves.nindices > 0;
-}
-
-float *render_tint_scratch(struct render *r, size_t n)
-{
-	if (n > r->tint_cap) {
-		float *p = realloc(r->tint_scratch, n * sizeof(*p));
-
-		if (!p)
-			return NULL;
-		r->tint_scratch = p;
-		r->tint_cap = n;
-	}
-	return r->tint_scratch;
 }
 
 /* The merged leaves' colours in the tree's season. */
@@ -399,8 +341,7 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 	r->frame_us = now_us;
 	camera_xf_init(&xf, cam, sketch_view_pivot(&app->tree));
 	/* the light turns with the camera: the side a visitor looks at is always lit */
-	l = camera_dir_from_view(&xf, vec3(render_light_dir[0], render_light_dir[1],
-					   render_light_dir[2]));
+	l = camera_dir_from_view(&xf, vec3(light_dir[0], light_dir[1], light_dir[2]));
 	light[0] = (float)l.x;
 	light[1] = (float)l.y;
 	light[2] = (float)l.z;

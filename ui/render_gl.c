@@ -1,10 +1,13 @@
 /* SPDX-License-Identifier: MIT */
-/* Small GL helpers: shader programs and what the context offers. */
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
+/*
+ * Small GL helpers for the whole renderer: shader programs, what the context offers, its
+ * error flags. Below the frame (render.c) and its layers (render_*.c): it knows nothing of
+ * struct render or the app.
+ */
+#include "render_gl.h"
 
-#include "render_private.h"
+#include <stdio.h>
+#include <string.h>
 
 static GLuint compile(const char *name, GLenum type, const char *src)
 {
@@ -94,4 +97,11 @@ int render_gl_major_version(void)
 	if (!version || sscanf(version, "OpenGL ES %d.%d", &major, &minor) != 2)
 		return 2;
 	return major;
+}
+
+void render_drain_gl_errors(void)
+{
+	/* bounded: a lost context may report errors forever */
+	for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; i++)
+		;
 }

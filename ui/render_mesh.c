@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Tree meshes on the GPU: uploaded when the tree changes, drawn every frame. */
+/* Tree meshes on the GPU: uploaded when the tree changes, drawn every frame; and the scratch
+ * buffer their colours go up through. */
 #include <errno.h>
 #include <limits.h>
 #include <stdlib.h>
@@ -149,4 +150,17 @@ void render_mesh_finish(struct render_mesh *rm)
 	glDeleteBuffers(1, &rm->indices);
 	glDeleteBuffers(1, &rm->tints);
 	memset(rm, 0, sizeof(*rm));
+}
+
+float *render_tint_scratch(struct render *r, size_t n)
+{
+	if (n > r->tint_cap) {
+		float *p = realloc(r->tint_scratch, n * sizeof(*p));
+
+		if (!p)
+			return NULL;
+		r->tint_scratch = p;
+		r->tint_cap = n;
+	}
+	return r->tint_scratch;
 }

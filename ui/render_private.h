@@ -1,7 +1,13 @@
 /* SPDX-License-Identifier: MIT */
 #pragma once
 
-/* Shared by the renderer's files; not for its users (tests may poke at it). */
+/*
+ * The renderer's state (struct render) and the layers the frame (render.c) draws with: the
+ * meshes, instanced leaves, text, 2D layers, previews, a leaf or a vine alone (render_*.c).
+ * Shared by the renderer's files; not for its users (tests and benches may poke at it).
+ * The layers call no function of render.c's: what they share is below them, in render_gl.h
+ * (GL helpers) and render_shaders.h (the lit programs' sources, the paper).
+ */
 
 #include <GLES2/gl2.h>
 #include <stdbool.h>
@@ -16,23 +22,14 @@
 #include "leaf_instances.h"
 #include "ori.h"
 #include "render.h"
+#include "render_gl.h"
+#include "render_shaders.h"
 
 struct app;
 struct mesh;
 struct tree;
-struct tree_mesh_marks;
-
-/* Attribute locations, bound before linking so all programs agree. */
-enum {
-	ATTR_POSITION = 0,
-	ATTR_NORMAL = 1, /* tree program */
-	ATTR_COLOR = 1,  /* flat program */
-	ATTR_ROW0 = 2,   /* instanced leaves: the rows of each instance's 3x4 matrix, 2..4 */
-	ATTR_UV = 5,     /* flat program: the atlas texel; clear of the instanced rows */
-	ATTR_TINT = 6,   /* tinted programs: a leaf's colour, per vertex or per instance */
-};
-
 struct font;
+struct tree_mesh_marks;
 
 /* What the 2D layers need to write words: the font (NULL: no words) and the language. */
 struct ui_text {
@@ -56,11 +53,6 @@ struct render_mesh {
  * attribute that advances per instance; the leaves no other is a copy of, merged, drawn
  * as before with the tree program.
  */
-struct render_program_tree {
-	GLuint program;
-	GLint mvp, color, light, two_sided;
-};
-
 struct render_instanced {
 	/* plain (one colour) and tinted (a colour an instance, tints) */
 	struct render_program_tree plain, tinted;
@@ -142,26 +134,14 @@ struct render {
 	struct render_stats stats;
 };
 
-/* render.c: the tree program's fragment shader (the instanced program shares it), and
- * that of the tinted programs (a `varying vec3 v_tint` instead of u_color) */
-extern const char render_tree_fs[];
-extern const char render_tinted_fs[];
-/* render.c: the paper behind everything, and the light's direction in view space (towards
- * it: from the upper left, in front), for the frames drawn elsewhere (render_leaf.c) */
-extern const float render_paper[3];
-extern const float render_light_dir[3];
 /* render_leaf.c: world -> clip for a frame of its own (a leaf, a vine): the camera xf,
  * then the meshes' view-space box centred and scaled to fill width x height but for margin
  * (1.12: an eighth of their size), their depth filling the depth range. */
 void render_fit_matrix(const struct mesh *const *meshes, size_t nmeshes,
 		       const struct camera_xf *xf, int width, int height, double margin,
 		       float out[16]);
-/* Empties GL's error flags: errors left by others are not ours to report. */
-void render_drain_gl_errors(void);
-/* Room for n floats of colours (r->tint_scratch), or NULL. */
-float *render_tint_scratch(struct render *r, size_t n);
-/* Uploads the tree's meshes if mesh_serial changed (render_frame does it first): for
- * benchmarks. 0 or a negative errno. */
+/* render.c: uploads the tree's meshes if mesh_serial changed (render_frame does it
+ * first): for benchmarks. 0 or a negative errno. */
 int render_upload_tree(struct render *r, const struct app *app);
 
 /* render_vine.c: the stems' green, and the app's vines drawn with the tree program in use
@@ -170,17 +150,6 @@ int render_upload_tree(struct render *r, const struct app *app);
 extern const float render_vine_stem[3];
 int render_vines_draw(struct render *r, const struct app *app);
 void render_vines_finish(struct render *r);
-
-/* render_gl.c: a linked program with attributes at the given locations, or 0 (stderr says why). */
-GLuint render_program(const char *name, const char *vertex_src, const char *fragment_src,
-		      const char *const *attribs, const GLuint *locations, size_t nattribs);
-/* A lit program (the tree program's uniforms) from these sources: false if it did not
- * build (stderr says why). */
-bool render_program_tree_init(struct render_program_tree *p, const char *name, const char *vs,
-			      const char *fs, const char *const *attribs, const GLuint *locations,
-			      size_t nattribs);
-bool render_has_extension(const char *name);
-int render_gl_major_version(void);
 
 /* render_mesh.c */
 int render_mesh_upload(struct render_mesh *rm, const struct mesh *m, bool uint_indices);
@@ -191,6 +160,8 @@ void render_mesh_draw(struct render *r, const struct render_mesh *rm);
 /* With a tinted program in use: the mesh with its vertices' colours. */
 void render_mesh_draw_tinted(struct render *r, const struct render_mesh *rm);
 void render_mesh_finish(struct render_mesh *rm);
+/* Room for n floats of colours on their way to the GPU (r->tint_scratch), or NULL. */
+float *render_tint_scratch(struct render *r, size_t n);
 
 /* render_instanced.c (GLES 3 only). create: 0, or -1 (stderr says why; draw merged).
  * upload: the shapes, their matrices and the loose leaves of t (`merged`, t's leaves
@@ -242,15 +213,3 @@ bool render_previews_shown(const struct app *app);
 int render_previews(struct render *r, const struct app *app, const struct camera_xf *xf,
 		    const float light[3]);
 void render_previews_finish(struct render *r);
-
-/* What the tinted vertex shaders (TINT defined: a colour a vertex or an instance, for spring
- * and autumn leaves) declare and pass on, the merged and the instanced alike. */
-#define RENDER_TINT_VS_DECLS                                                               \
-	"#ifdef TINT\n"                                                                    \
-	"attribute vec3 a_tint;\n"                                                         \
-	"varying vec3 v_tint;\n"                                                           \
-	"#endif\n"
-#define RENDER_TINT_VS_PASS                                                                \
-	"#ifdef TINT\n"                                                                    \
-	"	v_tint = a_tint;\n"                                                       \
-	"#endif\n"

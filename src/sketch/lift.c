@@ -1143,6 +1143,58 @@ static void lifter_place(struct lifter *L, int id, enum lift_pick pick, struct r
 	lifter_deeper(L, id, cz, cd, m, pick, rng);
 }
 
+/* Generation g's branches in L->order, in a seeded random order (Fisher-Yates); returns how
+ * many. */
+static size_t lifter_generation(struct lifter *L, int g, struct rng *rng)
+{
+	const struct tree *t = L->t;
+	size_t n = 0;
+
+	for (size_t i = 0; i < t->nbranches; i++)
+		if (t->branches[i].generation == g)
+			L->order[n++] = (int)i;
+	for (size_t i = n; i > 1; i--) {
+		size_t j = (size_t)(rng_next(rng) % i);
+		int tmp = L->order[i - 1];
+
+		L->order[i - 1] = L->order[j];
+		L->order[j] = tmp;
+	}
+	return n;
+}
+
+/*
+ * Branch id once its ends have their depths: its points get theirs (4.3) and f holds it,
+ * where the merge will put it in the second lift (whose trunk the merge leaves out).
+ */
+static void lifter_settle(struct lifter *L, int id)
+{
+	struct branch *b = &L->t->branches[id];
+	const struct seg *s = &L->seg[id];
+	const struct turn *tu = L->tu;
+
+	branch_depth(b, s, L->depth + L->at[id], L->frac + L->at[id]);
+	if (!tu)
+		field_add(L->f, s->s, s->e);
+	else if (b->parent >= 0)
+		field_add(L->f, turn_point(tu->base, L->shift[id], s->s),
+			  turn_point(tu->base, L->shift[id], s->e));
+}
+
+/* Every child branch and leaf back on its lifted parent, where it hung on the drawing. */
+static void lifter_reattach(struct lifter *L)
+{
+	struct tree *t = L->t;
+
+	for (size_t i = 0; i < t->nbranches; i++)
+		if (t->branches[i].parent >= 0)
+			t->branches[i].parent_t =
+				anchor_param(&t->branches[t->branches[i].parent], L->root[i]);
+	for (size_t i = 0; i < t->nleaves; i++)
+		t->leaves[i].branch_t = anchor_param(&t->branches[t->leaves[i].branch], L->leaf[i]);
+	tree_leaves_follow(t, -1);
+}
+
 /*
  * 4.1 and 4.3, generation by generation: each branch's start is the point of its parent's
  * final polyline it hangs on (so the constraints hold for the branch as it ends up), its
@@ -1165,44 +1217,22 @@ static int lift_once(struct tree *t, struct rng *rng, enum lift_pick pick, struc
 	lifter_field(&L);
 	lifter_sketch(&L);
 	for (int g = 0; g <= L.maxgen; g++) {
-		size_t n = 0;
+		size_t n;
 
+		/* the rules need the trunk placed */
 		if (g == 1)
 			lifter_prepare(&L);
-		for (size_t i = 0; i < t->nbranches; i++)
-			if (t->branches[i].generation == g)
-				L.order[n++] = (int)i;
-		/* a seeded random order within the generation (Fisher-Yates) */
-		for (size_t i = n; i > 1; i--) {
-			size_t j = (size_t)(rng_next(rng) % i);
-			int tmp = L.order[i - 1];
-
-			L.order[i - 1] = L.order[j];
-			L.order[j] = tmp;
-		}
+		n = lifter_generation(&L, g, rng);
 		for (size_t k = 0; k < n; k++) {
 			int id = L.order[k];
-			struct branch *b = &t->branches[id];
-			struct seg *s = &L.seg[id];
 
 			/* a trunk's ends stay in the sketch plane */
-			if (b->parent >= 0)
+			if (t->branches[id].parent >= 0)
 				lifter_place(&L, id, pick, rng);
-			branch_depth(b, s, L.depth + L.at[id], L.frac + L.at[id]);
-			if (!tu)
-				field_add(f, s->s, s->e);
-			else if (b->parent >= 0)
-				field_add(f, turn_point(tu->base, L.shift[id], s->s),
-					  turn_point(tu->base, L.shift[id], s->e));
+			lifter_settle(&L, id);
 		}
 	}
-	for (size_t i = 0; i < t->nbranches; i++)
-		if (t->branches[i].parent >= 0)
-			t->branches[i].parent_t =
-				anchor_param(&t->branches[t->branches[i].parent], L.root[i]);
-	for (size_t i = 0; i < t->nleaves; i++)
-		t->leaves[i].branch_t = anchor_param(&t->branches[t->leaves[i].branch], L.leaf[i]);
-	tree_leaves_follow(t, -1);
+	lifter_reattach(&L);
 	lifter_finish(&L);
 	return 0;
 }

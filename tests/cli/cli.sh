@@ -47,7 +47,41 @@ t_usage() {
 		[ $rc -eq 2 ] || fail "edaha $args: exit $rc, wanted 2"
 		grep -q "^edaha: " "$T/err" || fail "edaha $args: no message"
 	done
+	# the words of each option group's errors and of the checks after them, and which
+	# conflict the checks name first (options.c)
+	usage_says "--generate needs a file name" --headless --out "$T/x" --generate=
+	usage_says "--wood needs a file name" --headless --out "$T/x" --wood=
+	usage_says "--screenshot needs a file name" --screenshot=
+	usage_says "--config needs a file name" --config=
+	usage_says "--support needs a file name" --headless --out "$T/x" --support=
+	usage_says "--leaf needs a leaf preset's name or a file name" --headless --out "$T/x" --leaf=
+	usage_says "--vine needs a vine preset's name or a file name" --headless --out "$T/x" --vine=
+	usage_says 'bad --kiosk-frames "0" (expected 1..1000000)' --kiosk-frames 0
+	usage_says 'bad --kiosk-frames "1000001" (expected 1..1000000)' --kiosk-frames 1000001
+	usage_says 'unknown or incomplete option "--size"' --headless --out "$T/x" --size
+	usage_says 'unexpected argument "stray"' --headless --out "$T/x" stray
+	usage_says "--wood needs --headless" --out "$T/x" --wood w.yaml
+	usage_says "--wood is for a tree, not --leaf or --support" --headless --out "$T/x" --leaf maple \
+		--wood w.yaml
+	usage_says "--dump-voxels is for a tree, not --leaf or --support" --headless --out "$T/x" \
+		--support s.obj --vine default --plant 0,0,0 --dump-voxels
+	usage_says "--out needs --headless" --out "$T/x" --skeleton s.json
+	usage_says "--skeleton needs --headless" --skeleton s.json --window
+	usage_says "--load does not go with --skeleton" --headless --out "$T/x" --skeleton s.json \
+		--load d.edaha --window
+	usage_says "--window is not --headless" --headless --out "$T/x" --window --opening 0.5
+	usage_says "--headless needs --out DIR" --headless --opening 0.5
+	usage_says "--opening is for a --leaf" --headless --out "$T/x" --opening 0.5 --vine default
 	[ ! -e "$T/x" ] || fail "a usage error wrote files"
+}
+
+# usage_says TEXT ARGS...: edaha ARGS exits 2 and its one line on stderr is "edaha: TEXT"
+usage_says() {
+	local want=$1 rc
+	shift
+	edaha "$@" >/dev/null 2>"$T/err"; rc=$?
+	[ $rc -eq 2 ] || { cat "$T/err"; fail "edaha $*: exit $rc, wanted 2"; }
+	[ "$(head -n 1 "$T/err")" = "edaha: $want" ] || { cat "$T/err"; fail "edaha $*: not \"$want\""; }
 }
 
 t_golden() {

@@ -1,0 +1,50 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The lit programs' GLSL and the paper: what the screen's tree, its instanced leaves, a
+ * leaf alone and a vine alone share, so that each is lit and coloured as the others.
+ */
+#include "render_shaders.h"
+
+/* GLSL ES 1.00 so the same shaders run on GLES 2 and 3. With TINT defined, each vertex
+ * has its own colour (leaves in spring and autumn); without, the program is the one it
+ * always was, and summer's pixels are too. */
+#define TREE_VS                                                                            \
+	"uniform mat4 u_mvp;\n"                                                            \
+	"attribute vec3 a_position;\n"                                                     \
+	"attribute vec3 a_normal;\n"                                                       \
+	"varying vec3 v_normal;\n"                                                         \
+	RENDER_TINT_VS_DECLS                                                               \
+	"void main() {\n"                                                                  \
+	"	v_normal = a_normal;\n"                                                   \
+	RENDER_TINT_VS_PASS                                                                \
+	"	gl_Position = u_mvp * vec4(a_position, 1.0);\n"                           \
+	"}\n"
+
+#define TREE_FS                                                                            \
+	"precision mediump float;\n"                                                       \
+	"#ifdef TINT\n"                                                                    \
+	"varying vec3 v_tint;\n"                                                           \
+	"#define LEAF_COLOR v_tint\n"                                                      \
+	"#else\n"                                                                          \
+	"uniform vec3 u_color;\n"                                                          \
+	"#define LEAF_COLOR u_color\n"                                                     \
+	"#endif\n"                                                                         \
+	"uniform vec3 u_light;\n"                                                          \
+	"uniform bool u_two_sided;\n"                                                      \
+	"varying vec3 v_normal;\n"                                                         \
+	"void main() {\n"                                                                  \
+	"	vec3 n = normalize(v_normal);\n"                                          \
+	/* a leaf seen from behind is lit like its front */                                \
+	"	if (u_two_sided && !gl_FrontFacing)\n"                                    \
+	"		n = -n;\n"                                                       \
+	"	float lambert = max(dot(n, u_light), 0.0);\n"                             \
+	"	gl_FragColor = vec4(LEAF_COLOR * (0.45 + 0.7 * lambert), 1.0);\n"         \
+	"}\n"
+
+const char render_tree_vs[] = TREE_VS;
+const char render_tinted_vs[] = "#define TINT\n" TREE_VS;
+const char render_tree_fs[] = TREE_FS;
+const char render_tinted_fs[] = "#define TINT\n" TREE_FS;
+
+/* Warm paper, like the sheet a child would draw on. */
+const float render_paper[3] = { 0.975f, 0.953f, 0.898f };
