@@ -1,4 +1,8 @@
 /* SPDX-License-Identifier: MIT */
+/*
+ * src/app/ (floor 8 of src/FLOORS, the top of src/): the application: modes, the op
+ * and hook tables, history, status. Includes anything below; platform/ and ui/ build on it.
+ */
 #pragma once
 
 #include <stdbool.h>

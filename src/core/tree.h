@@ -1,4 +1,10 @@
 /* SPDX-License-Identifier: MIT */
+/*
+ * src/core/ (floor 2 of src/FLOORS): the tree model (this header: branches, leaves,
+ * the hooks through which vines, wood and the undo journal are reached), its index and
+ * edits, the triangle buffer, tube frames, vectors, the seeded generator, camera, season,
+ * the event model and the screen's layout. Includes fmt only.
+ */
 #pragma once
 
 #include <stdbool.h>

@@ -1,4 +1,9 @@
 /* SPDX-License-Identifier: MIT */
+/*
+ * src/doc/ (floor 6 of src/FLOORS): the drawing (this header: its ops), its file
+ * format, history and undo deltas, the journal, the skeleton reader. Includes the systems
+ * below it.
+ */
 #pragma once
 
 #include <stdbool.h>

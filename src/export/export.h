@@ -1,4 +1,8 @@
 /* SPDX-License-Identifier: MIT */
+/*
+ * src/export/ (floor 7 of src/FLOORS): glTF, OBJ and skeleton.json, as bytes in
+ * memory. Includes the systems below it, not doc.
+ */
 #pragma once
 
 #include "buf.h"

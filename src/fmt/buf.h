@@ -1,4 +1,8 @@
 /* SPDX-License-Identifier: MIT */
+/*
+ * src/fmt/ (floor 1 of src/FLOORS): growable byte buffers (this header), errors at
+ * FILE:LINE, number formatting, JSON out and the YAML reader. Includes no other folder.
+ */
 #pragma once
 
 #include <stdbool.h>

@@ -1,4 +1,9 @@
 /* SPDX-License-Identifier: MIT */
+/*
+ * src/gen/ (floor 5 of src/FLOORS, beside sketch, vine and wood, which it never
+ * includes): functional trees from parameters (seed 001) and their presets. Includes ori,
+ * core and fmt.
+ */
 #pragma once
 
 #include <stdbool.h>

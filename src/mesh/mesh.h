@@ -1,4 +1,9 @@
 /* SPDX-License-Identifier: MIT */
+/*
+ * src/mesh/ (floor 4 of src/FLOORS): the tree's meshes (this header: tubes, leaf
+ * polygons, origami leaves), their reuse and updates, leaf instances and colours.
+ * Includes ori, core and fmt.
+ */
 #pragma once
 
 #include <stddef.h>

@@ -1,4 +1,8 @@
 /* SPDX-License-Identifier: MIT */
+/*
+ * src/ori/ (floor 3 of src/FLOORS): origami leaves (seed 003): a design's crease
+ * pattern, its fold and opening, the presets and their placement. Includes core and fmt.
+ */
 #pragma once
 
 #include <stdbool.h>

@@ -1,4 +1,10 @@
 /* SPDX-License-Identifier: MIT */
+/*
+ * src/sketch/ (floor 5 of src/FLOORS, beside gen, vine and wood, which it never
+ * includes): freehand sketching (this header), gestures, the sketch as the camera shows
+ * it, lifting to 3D, clone, leaf arrangement and propagation (seed 000). Includes ori,
+ * core and fmt.
+ */
 #pragma once
 
 #include <stdbool.h>

@@ -1,4 +1,9 @@
 /* SPDX-License-Identifier: MIT */
+/*
+ * src/vine/ (floor 5 of src/FLOORS, beside sketch, gen and wood, which it never
+ * includes): twining vines (seed 004): parameters, the support's index, growth, shapes
+ * and meshes, and their place on a tree. Includes mesh, core and fmt.
+ */
 #pragma once
 
 #include <stdbool.h>

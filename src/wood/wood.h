@@ -1,4 +1,9 @@
 /* SPDX-License-Identifier: MIT */
+/*
+ * src/wood/ (floor 5 of src/FLOORS, beside sketch, gen and vine, which it never
+ * includes): stress-driven thickening (seed 002): voxels, the mass-spring solve, the
+ * iso-surface. Includes mesh, core and fmt.
+ */
 #pragma once
 
 #include <stdbool.h>
