@@ -56,8 +56,8 @@ grep -qx 'after-clone 0 1' "$T/vm/leds" || fail "after clone, not only the clone
 grep -q "edaha: exported /tmp/export/tree-0001.glb" "$log" || fail "no export in the log"
 grep -q "edaha: Terminated, stopping" "$log" || fail "the kiosk did not stop on SIGTERM"
 grow=$(grep -m1 'edaha: grew a year' "$log") || fail "the grow press did not land"
-shown=$(echo "$grow" | sed -n 's/.*, \([0-9]*\) frames shown meanwhile$/\1/p')
-[ -n "$shown" ] && [ "$shown" -gt 0 ] || fail "no frame was shown while the tree grew: $grow"
+drawn=$(echo "$grow" | sed -n 's/.*, \([0-9]*\) frames drawn and [0-9]* shown meanwhile$/\1/p')
+[ -n "$drawn" ] && [ "$drawn" -gt 0 ] || fail "no frame was drawn while the tree grew: $grow"
 for b in 3d clone leaf propagate vine grow export; do
 	grep -q " button $b pressed$" "$T/vm/session.edaha-trace" || fail "the recording has no $b press"
 done
