@@ -7,7 +7,7 @@
 #include "bench_util.h"
 #include "layout.h"
 #include "rng.h"
-#include "sketch_view.h"
+#include "sketch_seen.h"
 
 /* One event of the pen's tip, at the pressure of all of them. */
 static void tip_event(struct app *app, struct bench_pen *pen, enum event_type type, double x,
@@ -60,7 +60,7 @@ struct app *bench_draw_tree(struct bench_pen *pen, int nbranches)
 		struct vec3 at = b->points[rng_next(&rng) % b->npoints];
 		double dx = rng_range(&rng, -200, 200), dy = rng_range(&rng, -150, -20), x, y;
 
-		view_to_screen(&app->view, at, &x, &y);
+		screen_from_world(&app->screen, at, &x, &y);
 		bench_draw_stroke(app, pen, x, y, x + dx, y + dy, 32, NULL);
 		if (i % 10 == 9)
 			leaf_loop(app, pen, x + dx, y + dy - 14);
@@ -80,10 +80,10 @@ static bool seen_at(const struct app *app, struct vec3 world, double *x, double 
 	struct camera_xf xf;
 	enum button hit;
 
-	camera_xf_init(&xf, app->camera, sketch_view_pivot(&app->tree));
-	view_to_screen(&app->view, camera_to_view(&xf, world), x, y);
-	return *x > 40 && *x < app->view.width - 40 && *y > 40 && *y < app->view.height - 40 &&
-	       !layout_hit(&app->view, *x, *y, &hit) && !layout_hit_view_button(&app->view, *x, *y);
+	camera_xf_init(&xf, app->camera, sketch_seen_pivot(&app->tree));
+	screen_from_world(&app->screen, camera_to_view(&xf, world), x, y);
+	return *x > 40 && *x < app->screen.width - 40 && *y > 40 && *y < app->screen.height - 40 &&
+	       !layout_hit(&app->screen, *x, *y, &hit) && !layout_hit_view_button(&app->screen, *x, *y);
 }
 
 static size_t children(const struct tree *t, size_t b)

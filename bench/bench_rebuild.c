@@ -66,7 +66,7 @@ static double load(const struct app *app, int reps, struct app **out)
 	double t[REPS];
 
 	for (int i = 0; i < reps; i++) {
-		struct app *b = app_create(app->view.width, app->view.height, app->doc.seed);
+		struct app *b = app_create(app->screen.width, app->screen.height, app->doc.seed);
 		struct doc d;
 		double t0;
 
@@ -234,8 +234,8 @@ static void cut(struct app *app, struct bench_pen *pen, int k)
 
 		if (br->npoints < 4 || i + 1 >= br->npoints)
 			continue;
-		view_to_screen(&app->view, br->points[i], &x, &y);
-		view_to_screen(&app->view, br->points[i + 1], &qx, &qy);
+		screen_from_world(&app->screen, br->points[i], &x, &y);
+		screen_from_world(&app->screen, br->points[i + 1], &qx, &qy);
 		l = hypot(qx - x, qy - y) + 1e-9;
 		nx = -(qy - y) / l * 80;
 		ny = (qx - x) / l * 80;

@@ -3,7 +3,7 @@
  * Drawing on a grown tree: the cost of each pen event while a stroke is drawn, and of
  * committing a 5,000-point stroke (resample, smooth, classify, attach, mesh), on
  * drawings of 125..1,000 branches; then the same on the 3D tree turned by the orbit
- * camera (the tree is seen through sketch_view), and the check a frame makes for the
+ * camera (the tree is seen through sketch_seen), and the check a frame makes for the
  * cursor: would a drag here turn the tree. Medians; growth with size.
  */
 #include <stdbool.h>

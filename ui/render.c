@@ -17,7 +17,7 @@
 #include "leaf_tint.h"
 #include "render_private.h"
 #include "wood.h"
-#include "sketch_view.h"
+#include "sketch_seen.h"
 
 /* Flat shapes and glyphs alike: colour times the atlas's coverage (solid for shapes).
  * Texel coordinates become texture ones here, in the vertex shader's high precision. */
@@ -294,7 +294,7 @@ static int draw_tree(struct render *r, const struct app *app, const struct camer
 	if (ret == 0)
 		ret = r2;
 
-	view_clip_matrix(&app->view, xf, mvp);
+	screen_clip_matrix(&app->screen, xf, mvp);
 	glEnable(GL_DEPTH_TEST);
 	glDepthFunc(GL_LESS);
 	glDisable(GL_BLEND);
@@ -328,7 +328,7 @@ int render_frame(struct render *r, const struct app *app)
 
 int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 {
-	const struct view *v = &app->view;
+	const struct screen *v = &app->screen;
 	struct camera cam;
 	struct camera_xf xf;
 	struct vec3 l;
@@ -339,7 +339,7 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 	(void)app_camera_at(app, now_us, &cam);
 	r->nunfold = app_unfold_at(app, now_us, r->unfold, APP_UNFOLD_MAX);
 	r->frame_us = now_us;
-	camera_xf_init(&xf, cam, sketch_view_pivot(&app->tree));
+	camera_xf_init(&xf, cam, sketch_seen_pivot(&app->tree));
 	/* the light turns with the camera: the side a visitor looks at is always lit */
 	l = camera_dir_from_view(&xf, vec3(light_dir[0], light_dir[1], light_dir[2]));
 	light[0] = (float)l.x;

@@ -10,7 +10,7 @@ struct app;
  * Draws what the kiosk shows for an app state: the tree, the stroke under the pen, the
  * hover cursor, the on-screen buttons with their labels, status messages and the attract
  * screen. Needs a current GLES context (2.0 or later); draws into the bound framebuffer at
- * app->view's size. Same state, same pixels. The tree's meshes are uploaded to the GPU
+ * app->screen's size. Same state, same pixels. The tree's meshes are uploaded to the GPU
  * only when app->mesh_serial changes.
  */
 struct render;

@@ -105,13 +105,13 @@ static void status_icon(struct batch *b, enum app_status s, struct pt c, double 
 /* The canvas right of the side strip: a message there covers none of its buttons. */
 static struct layout_rect free_canvas(const struct app *app)
 {
-	struct layout_rect canvas = layout_canvas(&app->view);
+	struct layout_rect canvas = layout_canvas(&app->screen);
 	struct app_side_item items[APP_SIDE_MAX];
 	size_t n = app_side_items(app, items);
 	double right = 0.0;
 
 	for (size_t i = 0; i < n; i++) {
-		struct layout_rect t = layout_side_target(&app->view, i, app_side_kind(&items[0]));
+		struct layout_rect t = layout_side_target(&app->screen, i, app_side_kind(&items[0]));
 
 		right = fmax(right, t.x + t.w);
 	}
@@ -123,7 +123,7 @@ static struct layout_rect free_canvas(const struct app *app)
 void render_ui_status(struct batch *b, const struct ui_text *t, const struct app *app,
 		      uint64_t now_us)
 {
-	const struct view *v = &app->view;
+	const struct screen *v = &app->screen;
 	struct layout_rect canvas = free_canvas(app);
 	uint64_t until;
 	enum app_status s = app_status_at(app, now_us, &until);
@@ -253,7 +253,7 @@ static void illustration(struct batch *b, double cx, double base, double u)
 
 void render_ui_attract(struct batch *b, const struct ui_text *t, const struct app *app)
 {
-	const struct view *v = &app->view;
+	const struct screen *v = &app->screen;
 	struct layout_rect canvas = layout_canvas(v);
 	double u = 0.01 * v->height, cx = canvas.x + 0.5 * canvas.w, base = 0.60 * v->height;
 	double cw = fmin(0.9 * canvas.w, 62.0 * u), ch = 66.0 * u;

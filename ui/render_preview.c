@@ -105,7 +105,7 @@ static void fit_matrix(const struct camera_xf *xf, const double b[4], bool stand
 	camera_matrix(xf, cam);
 	fit[0] = (float)(1.0 / half);
 	fit[5] = (float)(1.0 / half);
-	fit[10] = (float)(-1.0 / VIEW_DEPTH_M);
+	fit[10] = (float)(-1.0 / SCREEN_DEPTH_M);
 	fit[12] = (float)(-cx / half);
 	fit[13] = (float)(-cy / half);
 	fit[15] = 1.0f;
@@ -138,7 +138,7 @@ static int draw_picture(struct render *r, const struct app *app, int k, const st
 	float mvp[16];
 	/* inside the card's border; GL counts rows from the bottom */
 	GLint x = (GLint)(pic.x + 0.08 * pic.w), w = (GLint)(0.84 * pic.w);
-	GLint y = (GLint)(app->view.height - pic.y - 0.92 * pic.h), h = (GLint)(0.84 * pic.h);
+	GLint y = (GLint)(app->screen.height - pic.y - 0.92 * pic.h), h = (GLint)(0.84 * pic.h);
 	float leaf[3] = { LEAF_TINT_SUMMER_RGB };
 	int ret = upload(r, app, k, tm);
 
@@ -193,7 +193,7 @@ int render_previews(struct render *r, const struct app *app, const struct camera
 	glEnable(GL_SCISSOR_TEST);
 	glDisable(GL_BLEND);
 	for (size_t i = 0; i < n && ret == 0; i++) {
-		struct layout_rect s = layout_side_slot(&app->view, i, kind);
+		struct layout_rect s = layout_side_slot(&app->screen, i, kind);
 		int k = items[i].preview ? picture_of(app, items[i].preview) : -1;
 
 		if (k >= 0)
@@ -201,7 +201,7 @@ int render_previews(struct render *r, const struct app *app, const struct camera
 	}
 	glDisable(GL_SCISSOR_TEST);
 	glDisable(GL_DEPTH_TEST);
-	glViewport(0, 0, app->view.width, app->view.height);
+	glViewport(0, 0, app->screen.width, app->screen.height);
 	r->stats.tree_triangles = tree_triangles; /* the stat counts the tree itself */
 	return ret;
 }

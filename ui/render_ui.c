@@ -8,7 +8,7 @@
 #include "labels.h"
 #include "layout.h"
 #include "render_private.h"
-#include "sketch_view.h"
+#include "sketch_seen.h"
 #include "text.h"
 
 static const struct rgba ink = { 0.16f, 0.13f, 0.12f, 1.0f };
@@ -100,7 +100,7 @@ static struct rgba with_alpha(struct rgba c, float a)
 }
 
 /* Pixel sizes chosen on an 800-pixel-tall kiosk screen follow the screen. */
-static double screen_scale(const struct view *v)
+static double ui_scale(const struct screen *v)
 {
 	return fmax(0.5, v->height / 800.0);
 }
@@ -110,8 +110,8 @@ static double screen_scale(const struct view *v)
  * settled camera is the one on the screen. */
 static void ground_patch(struct batch *b, const struct app *app)
 {
-	const struct view *v = &app->view;
-	struct vec3 pivot = sketch_view_pivot(&app->tree);
+	const struct screen *v = &app->screen;
+	struct vec3 pivot = sketch_seen_pivot(&app->tree);
 	double reach = 0.0, x, y, rx, ry, k = sin(app->camera.pitch * (VEC_PI / 180.0));
 	struct pt p[48];
 
@@ -123,7 +123,7 @@ static void ground_patch(struct batch *b, const struct app *app)
 
 			reach = fmax(reach, hypot(q.x - pivot.x, q.z - pivot.z));
 		}
-	view_to_screen(v, pivot, &x, &y);
+	screen_from_world(v, pivot, &x, &y);
 	rx = (reach + 0.5) / v->m_per_px;
 	ry = rx * fabs(k);
 	for (int i = 0; i < 48; i++)
@@ -136,9 +136,9 @@ static void ground_patch(struct batch *b, const struct app *app)
 
 void render_ui_ground(struct batch *b, const struct app *app)
 {
-	const struct view *v = &app->view;
+	const struct screen *v = &app->screen;
 	double gy = v->ground_y_px, w = v->width, h = v->height;
-	double s = screen_scale(v);
+	double s = ui_scale(v);
 
 	if (gy >= h)
 		return;
@@ -377,11 +377,11 @@ static void render_ui_side(struct batch *b, const struct ui_text *t, const struc
 	enum layout_side_kind kind = n ? app_side_kind(&items[0]) : LAYOUT_SIDE_BUTTONS;
 
 	for (size_t i = 0; i < n; i++) {
-		struct layout_rect r = layout_side_slot(&app->view, i, kind);
+		struct layout_rect r = layout_side_slot(&app->screen, i, kind);
 
 		if (kind == LAYOUT_SIDE_BUTTONS) {
 			struct layout_button lb = { items[i].button, r.x, r.y, r.w, r.h,
-						    layout_side_target(&app->view, i, kind) };
+						    layout_side_target(&app->screen, i, kind) };
 
 			draw_button(b, t, app, &lb, items[i].lit);
 		} else {
@@ -394,7 +394,7 @@ void render_ui_selection(struct batch *b, const struct app *app, const struct ca
 	const struct branch *br;
 	struct pt p[256];
 	size_t n;
-	double s = screen_scale(&app->view);
+	double s = ui_scale(&app->screen);
 
 	if (app->mode != APP_MODE_CLONE || app->selected < 0 ||
 	    (size_t)app->selected >= app->tree.nbranches)
@@ -406,7 +406,7 @@ void render_ui_selection(struct batch *b, const struct app *app, const struct ca
 		/* at most 256 points along it, ends included */
 		size_t k = n > 1 ? i * (br->npoints - 1) / (n - 1) : 0;
 
-		view_to_screen(&app->view, camera_to_view(xf, br->points[k]), &x, &y);
+		screen_from_world(&app->screen, camera_to_view(xf, br->points[k]), &x, &y);
 		p[i] = (struct pt){ x, y };
 	}
 	/* a glow along the chosen branch in the clone button's colour */
@@ -416,11 +416,11 @@ void render_ui_selection(struct batch *b, const struct app *app, const struct ca
 
 void render_ui_buttons(struct batch *b, const struct ui_text *t, const struct app *app)
 {
-	const struct view *v = &app->view;
+	const struct screen *v = &app->screen;
 	struct layout_rect bar = layout_bar(v);
 	struct layout_button buttons[LAYOUT_NBUTTONS];
 	size_t n = layout_buttons(v, buttons, LAYOUT_NBUTTONS);
-	double s = screen_scale(v);
+	double s = ui_scale(v);
 
 	/* the bar casts a faint shadow on the canvas, and has a rim */
 	batch_rect_hgradient(b, bar.x - 8.0 * s, 0.0, 8.0 * s, bar.h, with_alpha(shadow, 0.0f),
@@ -467,7 +467,7 @@ void render_ui_cursor(struct batch *b, const struct app *app)
 {
 	const struct app_pen *pen = &app->pen;
 	struct pt at = { pen->x, pen->y };
-	double s = screen_scale(&app->view);
+	double s = ui_scale(&app->screen);
 
 	if (!pen->in_proximity)
 		return;

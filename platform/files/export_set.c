@@ -47,7 +47,7 @@ int export_set_build(struct export_set *s, const struct app *app, const uint8_t 
 	if ((r = doc_serialize(&app->doc, &app->tree, &f[EXPORT_SET_EDAHA])) < 0)
 		return error_set(err, r, "cannot build the .edaha: %s", strerror(-r));
 	if (rgba)
-		return pngio_encode_rgba(rgba, app->view.width, app->view.height,
+		return pngio_encode_rgba(rgba, app->screen.width, app->screen.height,
 					 &f[EXPORT_SET_PNG], err);
 	return 0;
 }

@@ -38,7 +38,7 @@ struct export_set {
 
 void export_set_init(struct export_set *s);
 void export_set_finish(struct export_set *s);
-/* The app's drawing as the set's bytes, the picture from rgba (app->view's size, top row
+/* The app's drawing as the set's bytes, the picture from rgba (app->screen's size, top row
  * first) when given. 0 or -ENOMEM / -EFBIG with a message. */
 int export_set_build(struct export_set *s, const struct app *app, const uint8_t *rgba,
 		     struct error *err);

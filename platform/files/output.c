@@ -43,7 +43,7 @@ int output_write(const struct app *app, const char *dir, const struct output_nam
 	}
 	if (ret == 0 && n->png && rgba) {
 		buf_reset(&a);
-		ret = pngio_encode_rgba(rgba, app->view.width, app->view.height, &a, err);
+		ret = pngio_encode_rgba(rgba, app->screen.width, app->screen.height, &a, err);
 		if (ret == 0)
 			ret = fileio_write_atomic(dir, n->png, a.data, a.len, err);
 	}

@@ -13,7 +13,7 @@ struct output_names {
 
 /*
  * Writes the drawing into dir (created when missing) under those names, each file
- * atomically; the picture only when rgba (app->view's size) is given. Same state, same
+ * atomically; the picture only when rgba (app->screen's size) is given. Same state, same
  * bytes. 0, or a negative errno with a message naming the file.
  */
 int output_write(const struct app *app, const char *dir, const struct output_names *names,

@@ -44,7 +44,7 @@ struct usb_export *usb_export_create(const struct usb_export_config *cfg, struct
 void usb_export_destroy(struct usb_export *ux);
 /* What the kiosk polls: the udev monitor (with usb) and the thread's results. Up to 2. */
 size_t usb_export_sources(struct usb_export *ux, struct kiosk_source *out, size_t max);
-/* The export button: the drawing and its picture (rgba, app->view's size; NULL: none)
+/* The export button: the drawing and its picture (rgba, app->screen's size; NULL: none)
  * are saved. Ignored (and said on stderr) while the last one is being saved. */
 void usb_export_start(struct usb_export *ux, const struct app *app, const uint8_t *rgba);
 /* A stick came (its kernel name) or went: what the monitor says; also for tests. */

@@ -25,7 +25,7 @@ struct app *app_create(int width, int height, uint64_t seed)
 
 	if (!app)
 		return NULL;
-	view_init(&app->view, width, height);
+	screen_init(&app->screen, width, height);
 	doc_init(&app->doc, seed);
 	tree_init(&app->tree);
 	tree_index_keep(&app->tree); /* strokes find their branch in it, not by a scan */
@@ -169,7 +169,7 @@ static int stroke_add(struct app *app, const struct event *ev)
 {
 	struct app_stroke *s = &app->stroke;
 	struct app_point *last = s->npoints ? &s->points[s->npoints - 1] : NULL;
-	double x = app_clamp(ev->x, 0, app->view.width), y = app_clamp(ev->y, 0, app->view.height);
+	double x = app_clamp(ev->x, 0, app->screen.width), y = app_clamp(ev->y, 0, app->screen.height);
 	double pressure = app_clamp(ev->pressure, 0, 1);
 
 	if (last && last->x == x && last->y == y) {
@@ -203,13 +203,13 @@ static int stroke_commit(struct app *app)
 	s->active = false;
 	for (size_t i = 1; i < s->npoints; i++)
 		len += hypot(s->points[i].x - s->points[i - 1].x, s->points[i].y - s->points[i - 1].y);
-	ret = app_mode_stroke(app, len * app->view.m_per_px, &taken);
+	ret = app_mode_stroke(app, len * app->screen.m_per_px, &taken);
 	if (taken) {
 		s->npoints = 0;
 		return ret;
 	}
 	/* A pen tap is not a drawing: keep it out of the history. An eraser tap erases. */
-	if (s->tool == EVENT_TOOL_PEN && (s->npoints < 2 || len * app->view.m_per_px < SKETCH_MIN_LENGTH_M)) {
+	if (s->tool == EVENT_TOOL_PEN && (s->npoints < 2 || len * app->screen.m_per_px < SKETCH_MIN_LENGTH_M)) {
 		s->npoints = 0;
 		return 0;
 	}
@@ -220,7 +220,7 @@ static int stroke_commit(struct app *app)
 	op.npoints = s->npoints;
 	for (size_t i = 0; i < s->npoints; i++) {
 		const struct app_point *a = &s->points[i];
-		struct vec3 w = view_to_world(&app->view, a->x, a->y);
+		struct vec3 w = screen_to_world(&app->screen, a->x, a->y);
 		uint64_t dt = a->time_us - op.time_us;
 
 		op.points[i] = (struct doc_point){
@@ -336,12 +336,12 @@ static int canvas_tap(struct app *app, const struct event *ev)
 {
 	struct app_stroke *s = &app->stroke;
 	struct event down = *ev;
-	double moved = hypot(app_clamp(ev->x, 0, app->view.width) - app->orbit_x0,
-			     app_clamp(ev->y, 0, app->view.height) - app->orbit_y0);
+	double moved = hypot(app_clamp(ev->x, 0, app->screen.width) - app->orbit_x0,
+			     app_clamp(ev->y, 0, app->screen.height) - app->orbit_y0);
 	int ret;
 
 	if (!app_mode_ops(app->mode)->taps_on_canvas ||
-	    moved * app->view.m_per_px >= SKETCH_MIN_LENGTH_M)
+	    moved * app->screen.m_per_px >= SKETCH_MIN_LENGTH_M)
 		return 0;
 	down.x = app->orbit_x0;
 	down.y = app->orbit_y0;
@@ -410,8 +410,8 @@ void app_handle_event(struct app *app, const struct event *ev)
 		app->turning = false;
 		if (app_would_orbit(app, ev->x, ev->y)) {
 			app->orbiting = true;
-			app->orbit_x = app_clamp(ev->x, 0, app->view.width);
-			app->orbit_y = app_clamp(ev->y, 0, app->view.height);
+			app->orbit_x = app_clamp(ev->x, 0, app->screen.width);
+			app->orbit_y = app_clamp(ev->y, 0, app->screen.height);
 			app->orbit_x0 = app->orbit_x;
 			app->orbit_y0 = app->orbit_y;
 			app->orbit_t0_us = ev->time_us;

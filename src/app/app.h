@@ -18,7 +18,7 @@
 #include "mesh.h"
 #include "rng.h"
 #include "tree.h"
-#include "view.h"
+#include "screen.h"
 #include "vine.h"
 #include "wood.h"
 
@@ -157,7 +157,7 @@ struct app_vine_growth {
 };
 
 struct app {
-	struct view view;
+	struct screen screen; /* pixels <-> the sketch plane */
 	struct doc doc;       /* strokes, history, seed: what drawing.edaha holds */
 	struct tree tree;     /* rebuilt from doc */
 	struct rng rng;       /* state after applying doc up to its cursor */

@@ -6,7 +6,7 @@
 #include "app_mode.h"
 #include "app_private.h"
 #include "layout.h"
-#include "sketch_view.h"
+#include "sketch_seen.h"
 
 void app_camera_store(struct app *app, struct camera c)
 {
@@ -33,9 +33,9 @@ bool app_ui_hit(const struct app *app, double x, double y, enum button *button)
 {
 	struct app_side_item item;
 
-	if (layout_hit(&app->view, x, y, button))
+	if (layout_hit(&app->screen, x, y, button))
 		return true;
-	if (app->tree.lifted && layout_hit_view_button(&app->view, x, y)) {
+	if (app->tree.lifted && layout_hit_view_button(&app->screen, x, y)) {
 		*button = BUTTON_VIEW;
 		return true;
 	}
@@ -54,7 +54,7 @@ bool app_would_orbit(const struct app *app, double x, double y)
 	if (!app->tree.lifted || app->pen.tool != EVENT_TOOL_PEN || app_ui_hit(app, x, y, &hit) ||
 	    app_side_hit(app, x, y, &item))
 		return false;
-	return !sketch_view_near(&app->tree, app->camera, view_to_world(&app->view, x, y),
+	return !sketch_seen_near(&app->tree, app->camera, screen_to_world(&app->screen, x, y),
 				 APP_ORBIT_CLEARANCE_M);
 }
 
@@ -62,8 +62,8 @@ bool app_would_orbit(const struct app *app, double x, double y)
  * visitor look down on it. */
 void app_orbit_to(struct app *app, const struct event *ev)
 {
-	double x = app_clamp(ev->x, 0, app->view.width), y = app_clamp(ev->y, 0, app->view.height);
-	double k = app->view.m_per_px * APP_ORBIT_DEG_PER_M;
+	double x = app_clamp(ev->x, 0, app->screen.width), y = app_clamp(ev->y, 0, app->screen.height);
+	double k = app->screen.m_per_px * APP_ORBIT_DEG_PER_M;
 
 	app_camera_store(app, camera_normalize(app->camera.yaw - (x - app->orbit_x) * k,
 					 app->camera.pitch + (y - app->orbit_y) * k));

@@ -14,7 +14,7 @@
 #include "app_private.h"
 #include "camera.h"
 #include "sketch.h"
-#include "sketch_view.h"
+#include "sketch_seen.h"
 #include "vine.h"
 #include "vine_presets.h"
 #include "vine_support.h"
@@ -102,7 +102,7 @@ static struct vec3 tap_on_ground(const struct app *app, struct vec3 p, struct ve
 	struct vec3 o, d, h;
 	double s;
 
-	camera_xf_init(&xf, app->camera, sketch_view_pivot(&app->tree));
+	camera_xf_init(&xf, app->camera, sketch_seen_pivot(&app->tree));
 	o = camera_from_view(&xf, p);
 	d = xf.back;
 	if (fabs(d.y) > sin(VINE_GROUND_PITCH_DEG * VEC_PI / 180.0)) {
@@ -147,7 +147,7 @@ int app_vine_plan(const struct app *app, struct vec3 p, uint64_t time_us, struct
 	bool touched = false;
 	int b, ret;
 
-	b = nearest_trunk(t, sketch_view_pivot(t));
+	b = nearest_trunk(t, sketch_seen_pivot(t));
 	if (b < 0)
 		return 0;
 	at = tap_on_ground(app, p, t->branches[b].points[0]);

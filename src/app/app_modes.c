@@ -9,7 +9,7 @@
 #include "app_private.h"
 #include "layout.h"
 #include "sketch.h"
-#include "sketch_view.h"
+#include "sketch_seen.h"
 
 /* One row a mode: what it is and the button that enters it. */
 static const struct app_mode_ops *const modes[APP_MODE_COUNT] = {
@@ -88,19 +88,19 @@ bool app_has_leaf(const struct tree *t, int b)
 
 int app_branch_near(const struct app *app, struct vec3 p, double within)
 {
-	struct sketch_view sv;
+	struct sketch_seen sv;
 	struct sketch_hit h;
 
-	if (sketch_view_init(&sv, &app->tree, app->camera) < 0)
+	if (sketch_seen_init(&sv, &app->tree, app->camera) < 0)
 		return -1;
 	h = sketch_nearest(sv.tree, p);
-	sketch_view_finish(&sv);
+	sketch_seen_finish(&sv);
 	return h.branch >= 0 && h.dist <= within ? h.branch : -1;
 }
 
 struct vec3 app_stroke_point(const struct app *app, size_t i)
 {
-	return view_to_world(&app->view, app->stroke.points[i].x, app->stroke.points[i].y);
+	return screen_to_world(&app->screen, app->stroke.points[i].x, app->stroke.points[i].y);
 }
 
 /* After undo/redo the ids the modes hold may name nothing, or something else. */
@@ -167,7 +167,7 @@ bool app_side_hit(const struct app *app, double x, double y, struct app_side_ite
 	struct app_side_item items[APP_SIDE_MAX];
 	size_t n = app_side_items(app, items), slot;
 
-	if (n == 0 || !layout_side_hit(&app->view, x, y, n, app_side_kind(&items[0]), &slot))
+	if (n == 0 || !layout_side_hit(&app->screen, x, y, n, app_side_kind(&items[0]), &slot))
 		return false;
 	*item = items[slot];
 	return true;

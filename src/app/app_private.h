@@ -4,7 +4,7 @@
 /*
  * What the app's files share: app.c (events, the document, the sketch), app_ops.c (each
  * op kind's row, the hooks that follow the ops), app_modes.c (the modes' table) and
- * app_view.c (the orbit camera, on-screen hits). Not for the app's users.
+ * app_camera.c (the orbit camera, on-screen hits). Not for the app's users.
  */
 #include "app.h"
 
@@ -164,7 +164,7 @@ bool app_op_keeps_wood(enum doc_op_kind kind, int result);
 /* The grow button. 0 or a negative errno. */
 int app_grow(struct app *app, uint64_t time_us);
 
-/* app_view.c */
+/* app_camera.c */
 void app_camera_store(struct app *app, struct camera c);
 void app_camera_follow_tree(struct app *app);
 bool app_ui_hit(const struct app *app, double x, double y, enum button *button);

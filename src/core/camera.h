@@ -7,7 +7,7 @@
 
 /*
  * The orbit camera of a 3D tree. The projection stays the front view's orthographic
- * one (view.h); the camera turns the world about a pivot, the trunk's base, before it is
+ * one (screen.h); the camera turns the world about a pivot, the trunk's base, before it is
  * shown: yaw about the vertical, then pitch about the screen's horizontal. Angles are in
  * degrees and stored as float, so what a drawing records is exactly what was used.
  *

@@ -50,7 +50,7 @@ struct metrics {
 };
 
 /* Whole pixels, so edges land on pixel boundaries and stay crisp. */
-static struct metrics metrics(const struct view *v)
+static struct metrics metrics(const struct screen *v)
 {
 	double h = v->height > 0 ? v->height : 0;
 	double w = v->width > 0 ? v->width : 0;
@@ -80,7 +80,7 @@ static bool bar_fits(const struct layout_bar_list *l)
 }
 
 /* Button i of a list that fits: its column, its row from the top, and the target. */
-static void bar_button(const struct view *v, const struct metrics *m,
+static void bar_button(const struct screen *v, const struct metrics *m,
 		       const struct layout_bar_list *l, size_t i, struct layout_button *b)
 {
 	double half = 0.5 * m->bar_space, split = m->bar_x + m->bar_space + m->bar_wide + half;
@@ -113,7 +113,7 @@ static void bar_button(const struct view *v, const struct metrics *m,
 	b->target.h = (bottom_row ? v->height : b->y + b->h + half) - b->target.y;
 }
 
-size_t layout_bar_buttons(const struct view *v, const struct layout_bar_list *list,
+size_t layout_bar_buttons(const struct screen *v, const struct layout_bar_list *list,
 			  struct layout_button *out, size_t max)
 {
 	const struct layout_bar_list *l = bar_list(list);
@@ -131,7 +131,7 @@ static bool inside(const struct layout_rect *r, double x, double y)
 	return x >= r->x && x < r->x + r->w && y >= r->y && y < r->y + r->h;
 }
 
-bool layout_bar_hit(const struct view *v, const struct layout_bar_list *list, double x, double y,
+bool layout_bar_hit(const struct screen *v, const struct layout_bar_list *list, double x, double y,
 		    size_t *index)
 {
 	const struct layout_bar_list *l = bar_list(list);
@@ -151,12 +151,12 @@ bool layout_bar_hit(const struct view *v, const struct layout_bar_list *list, do
 	return false;
 }
 
-size_t layout_buttons(const struct view *v, struct layout_button *out, size_t max)
+size_t layout_buttons(const struct screen *v, struct layout_button *out, size_t max)
 {
 	return layout_bar_buttons(v, NULL, out, max);
 }
 
-bool layout_hit(const struct view *v, double x, double y, enum button *button)
+bool layout_hit(const struct screen *v, double x, double y, enum button *button)
 {
 	size_t i;
 
@@ -171,7 +171,7 @@ static struct layout_rect padded(struct layout_rect r, double pad)
 	return (struct layout_rect){ r.x - pad, r.y - pad, r.w + 2.0 * pad, r.h + 2.0 * pad };
 }
 
-struct layout_button layout_view_button(const struct view *v)
+struct layout_button layout_view_button(const struct screen *v)
 {
 	struct metrics m = metrics(v);
 	struct layout_rect r = { m.margin, v->height - m.margin - m.size, m.wide, m.size };
@@ -179,7 +179,7 @@ struct layout_button layout_view_button(const struct view *v)
 	return (struct layout_button){ BUTTON_VIEW, r.x, r.y, r.w, r.h, padded(r, 0.5 * m.gap) };
 }
 
-bool layout_hit_view_button(const struct view *v, double x, double y)
+bool layout_hit_view_button(const struct screen *v, double x, double y)
 {
 	struct layout_button b = layout_view_button(v);
 
@@ -187,7 +187,7 @@ bool layout_hit_view_button(const struct view *v, double x, double y)
 }
 
 /* How many cards a column holds: those that end above the front view button. */
-static size_t card_rows(const struct view *v, const struct metrics *m, double card_h)
+static size_t card_rows(const struct screen *v, const struct metrics *m, double card_h)
 {
 	double bottom = v->height - m->margin - m->size - m->gap;
 	double rows = floor((bottom - m->margin + m->gap) / (card_h + m->gap));
@@ -195,7 +195,7 @@ static size_t card_rows(const struct view *v, const struct metrics *m, double ca
 	return rows >= 1.0 ? (size_t)rows : 1;
 }
 
-struct layout_rect layout_side_slot(const struct view *v, size_t i, enum layout_side_kind kind)
+struct layout_rect layout_side_slot(const struct screen *v, size_t i, enum layout_side_kind kind)
 {
 	struct metrics m = metrics(v);
 	double w, h;
@@ -219,7 +219,7 @@ struct layout_rect layout_side_slot(const struct view *v, size_t i, enum layout_
 				     m.margin + (double)row * (h + m.gap), w, h };
 }
 
-struct layout_rect layout_side_target(const struct view *v, size_t i, enum layout_side_kind kind)
+struct layout_rect layout_side_target(const struct screen *v, size_t i, enum layout_side_kind kind)
 {
 	struct metrics m = metrics(v);
 	struct layout_rect s = layout_side_slot(v, i, kind);
@@ -237,7 +237,7 @@ struct layout_rect layout_side_target(const struct view *v, size_t i, enum layou
 	return t;
 }
 
-bool layout_side_hit(const struct view *v, double x, double y, size_t n,
+bool layout_side_hit(const struct screen *v, double x, double y, size_t n,
 		     enum layout_side_kind kind, size_t *slot)
 {
 	for (size_t i = 0; i < n; i++) {
@@ -258,14 +258,14 @@ struct layout_rect layout_card_picture(struct layout_rect card, enum layout_side
 	return card;
 }
 
-struct layout_rect layout_bar(const struct view *v)
+struct layout_rect layout_bar(const struct screen *v)
 {
 	struct metrics m = metrics(v);
 
 	return (struct layout_rect){ m.bar_x, 0.0, v->width - m.bar_x, v->height };
 }
 
-struct layout_rect layout_canvas(const struct view *v)
+struct layout_rect layout_canvas(const struct screen *v)
 {
 	struct metrics m = metrics(v);
 

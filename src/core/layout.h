@@ -5,7 +5,7 @@
 #include <stddef.h>
 
 #include "event.h"
-#include "view.h"
+#include "screen.h"
 
 /*
  * Where the on-screen buttons are. Pure geometry in screen pixels (origin top left, y
@@ -63,23 +63,23 @@ extern const struct layout_bar_list layout_kiosk_bar;
  * and returns how many there are, even when max is smaller, like snprintf; 0 for a list
  * that does not fit the rows.
  */
-size_t layout_bar_buttons(const struct view *v, const struct layout_bar_list *list,
+size_t layout_bar_buttons(const struct screen *v, const struct layout_bar_list *list,
 			  struct layout_button *out, size_t max);
 /* The index in a bar's list (NULL: the kiosk's) of the button whose target holds (x, y). */
-bool layout_bar_hit(const struct view *v, const struct layout_bar_list *list, double x, double y,
+bool layout_bar_hit(const struct screen *v, const struct layout_bar_list *list, double x, double y,
 		    size_t *index);
 
 /* The kiosk's bar: layout_bar_buttons and layout_bar_hit with the kiosk's list. */
-size_t layout_buttons(const struct view *v, struct layout_button *out, size_t max);
-bool layout_hit(const struct view *v, double x, double y, enum button *button);
+size_t layout_buttons(const struct screen *v, struct layout_button *out, size_t max);
+bool layout_hit(const struct screen *v, double x, double y, enum button *button);
 
 /*
  * The "front view" button of a 3D tree: a side-strip button, in the canvas's bottom left
  * corner, where a turned tree rarely reaches. Shown and hit only while the tree is 3D (the
  * app decides).
  */
-struct layout_button layout_view_button(const struct view *v);
-bool layout_hit_view_button(const struct view *v, double x, double y);
+struct layout_button layout_view_button(const struct screen *v);
+bool layout_hit_view_button(const struct screen *v, double x, double y);
 
 /* What the side strip holds: all its items are of one kind. */
 enum layout_side_kind {
@@ -94,16 +94,16 @@ enum layout_side_kind {
  * card is taller by a band for its word. A column of cards stops above the front view
  * button.
  */
-struct layout_rect layout_side_slot(const struct view *v, size_t i, enum layout_side_kind kind);
-struct layout_rect layout_side_target(const struct view *v, size_t i, enum layout_side_kind kind);
+struct layout_rect layout_side_slot(const struct screen *v, size_t i, enum layout_side_kind kind);
+struct layout_rect layout_side_target(const struct screen *v, size_t i, enum layout_side_kind kind);
 /* The slot, of n, whose target holds (x, y). */
-bool layout_side_hit(const struct view *v, double x, double y, size_t n,
+bool layout_side_hit(const struct screen *v, double x, double y, size_t n,
 		     enum layout_side_kind kind, size_t *slot);
 /* The picture's part of a card slot: all of a card, the square above a named card's word. */
 struct layout_rect layout_card_picture(struct layout_rect card, enum layout_side_kind kind);
 
 /* The strip the bar's buttons sit on. */
-struct layout_rect layout_bar(const struct view *v);
+struct layout_rect layout_bar(const struct screen *v);
 
 /* The drawing area: the screen minus the bar. */
-struct layout_rect layout_canvas(const struct view *v);
+struct layout_rect layout_canvas(const struct screen *v);

@@ -1,28 +1,28 @@
 /* SPDX-License-Identifier: MIT */
-#include "view.h"
+#include "screen.h"
 
 #include <string.h>
 
-void view_init(struct view *v, int width, int height)
+void screen_init(struct screen *v, int width, int height)
 {
 	v->width = width;
 	v->height = height;
-	v->m_per_px = VIEW_HEIGHT_M / height;
-	v->ground_y_px = VIEW_GROUND_FRACTION * height;
+	v->m_per_px = SCREEN_HEIGHT_M / height;
+	v->ground_y_px = SCREEN_GROUND_FRACTION * height;
 }
 
-struct vec3 view_to_world(const struct view *v, double x_px, double y_px)
+struct vec3 screen_to_world(const struct screen *v, double x_px, double y_px)
 {
 	return vec3((x_px - 0.5 * v->width) * v->m_per_px, (v->ground_y_px - y_px) * v->m_per_px, 0.0);
 }
 
-void view_to_screen(const struct view *v, struct vec3 p, double *x_px, double *y_px)
+void screen_from_world(const struct screen *v, struct vec3 p, double *x_px, double *y_px)
 {
 	*x_px = 0.5 * v->width + p.x / v->m_per_px;
 	*y_px = v->ground_y_px - p.y / v->m_per_px;
 }
 
-void view_clip_matrix(const struct view *v, const struct camera_xf *xf, float m[16])
+void screen_clip_matrix(const struct screen *v, const struct camera_xf *xf, float m[16])
 {
 	double sx = 2.0 / (v->m_per_px * v->width);
 	double sy = 2.0 / (v->m_per_px * v->height);
@@ -30,7 +30,7 @@ void view_clip_matrix(const struct view *v, const struct camera_xf *xf, float m[
 
 	memset(m, 0, 16 * sizeof(*m));
 	if (xf && !xf->identity) {
-		view_clip_matrix(v, NULL, proj);
+		screen_clip_matrix(v, NULL, proj);
 		camera_matrix(xf, cam);
 		for (int c = 0; c < 4; c++)
 			for (int r = 0; r < 4; r++)
@@ -41,7 +41,7 @@ void view_clip_matrix(const struct view *v, const struct camera_xf *xf, float m[
 	/* x_clip = x * sx; y_clip = y * sy + (1 - 2 ground / h); z_clip = -z / depth */
 	m[0] = (float)sx;
 	m[5] = (float)sy;
-	m[10] = (float)(-1.0 / VIEW_DEPTH_M);
+	m[10] = (float)(-1.0 / SCREEN_DEPTH_M);
 	m[13] = (float)(1.0 - 2.0 * v->ground_y_px / v->height);
 	m[15] = 1.0f;
 }

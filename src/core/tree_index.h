@@ -23,7 +23,7 @@
  * can hold a nearer segment (with a 1 um margin for rounding). The answer is exactly the
  * linear scan's of the tree as the camera shows it (every segment in order, squared
  * distance by tree_segment_d2 on the view-space points camera_to_view gives, the first
- * on equal distance). A sketch_view's copy of a turned tree answers through the tree's
+ * on equal distance). A sketch_seen's copy of a turned tree answers through the tree's
  * grid (tree_index_keep_view).
  */
 #define TREE_INDEX_CELL_M 0.1
@@ -60,7 +60,7 @@ struct tree_index_hit {
  * Without memory it does nothing, and queries scan. */
 void tree_index_keep(struct tree *t);
 /*
- * view (sketch_view.c's copy of world, its points turned by xf into view space, the same
+ * view (sketch_seen.c's copy of world, its points turned by xf into view space, the same
  * ids and segments) answers sketch_nearest from world's grid, if world keeps one: the
  * points of a branch are computed only when needed. show(ctx, b) is called to put branch
  * b's points into view before a hit on it is returned; show(ctx, -1) to put all of them

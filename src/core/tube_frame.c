@@ -1,17 +1,17 @@
 /* SPDX-License-Identifier: MIT */
-/* Tangents and rotation-minimising frames along a polyline (frame.h). */
-#include "frame.h"
+/* Tangents and rotation-minimising frames along a polyline (tube_frame.h). */
+#include "tube_frame.h"
 
 #include <math.h>
 
-struct vec3 frame_perpendicular(struct vec3 t)
+struct vec3 tube_frame_perpendicular(struct vec3 t)
 {
 	struct vec3 ref = fabs(t.z) < 0.9 ? vec3(0, 0, 1) : vec3(1, 0, 0);
 
 	return vec3_norm_or(vec3_sub(ref, vec3_scale(t, vec3_dot(ref, t))), vec3(0, 1, 0));
 }
 
-struct vec3 frame_tangent(const struct vec3 *p, size_t k, size_t i)
+struct vec3 tube_frame_tangent(const struct vec3 *p, size_t k, size_t i)
 {
 	struct vec3 in = i > 0 ? vec3_sub(p[i], p[i - 1]) : vec3_sub(p[1], p[0]);
 	struct vec3 out = i + 1 < k ? vec3_sub(p[i + 1], p[i]) : in;
@@ -27,11 +27,11 @@ static struct vec3 reflect(struct vec3 v, struct vec3 a, double aa)
 	return vec3_sub(v, vec3_scale(a, 2.0 * vec3_dot(v, a) / aa));
 }
 
-void frame_build(const struct vec3 *p, size_t k, struct vec3 *t, struct vec3 *n)
+void tube_frame_build(const struct vec3 *p, size_t k, struct vec3 *t, struct vec3 *n)
 {
 	for (size_t i = 0; i < k; i++)
-		t[i] = frame_tangent(p, k, i);
-	n[0] = frame_perpendicular(t[0]);
+		t[i] = tube_frame_tangent(p, k, i);
+	n[0] = tube_frame_perpendicular(t[0]);
 	for (size_t i = 0; i + 1 < k; i++) {
 		struct vec3 v1 = vec3_sub(p[i + 1], p[i]), r;
 		double c1 = vec3_dot(v1, v1);
@@ -47,6 +47,6 @@ void frame_build(const struct vec3 *p, size_t k, struct vec3 *t, struct vec3 *n)
 		}
 		/* back to perpendicular, so rounding cannot build up */
 		r = vec3_sub(r, vec3_scale(t[i + 1], vec3_dot(r, t[i + 1])));
-		n[i + 1] = vec3_norm_or(r, frame_perpendicular(t[i + 1]));
+		n[i + 1] = vec3_norm_or(r, tube_frame_perpendicular(t[i + 1]));
 	}
 }

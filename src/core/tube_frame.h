@@ -15,15 +15,15 @@
 /* A unit vector perpendicular to unit t, a fixed function of t: towards the viewer (+z)
  * unless t nearly is, so a sketched branch in z = 0 has its rings facing the screen and a
  * vertical trunk its corners on x and z. */
-struct vec3 frame_perpendicular(struct vec3 t);
+struct vec3 tube_frame_perpendicular(struct vec3 t);
 
 /* The unit tangent at point i of p[0..k), k >= 2: the mean of the directions in and out
  * (the one there is at an end; the way out at a hairpin, where they cancel). */
-struct vec3 frame_tangent(const struct vec3 *p, size_t k, size_t i);
+struct vec3 tube_frame_tangent(const struct vec3 *p, size_t k, size_t i);
 
 /*
  * Tangents t[0..k) and rotation-minimising normals n[0..k) along p[0..k), k >= 2: n[0] is
- * frame_perpendicular(t[0]), each next one carried over by the double reflection method
+ * tube_frame_perpendicular(t[0]), each next one carried over by the double reflection method
  * (Wang, Juettler, Zheng, Liu 2008); a point given twice carries the frame over as it is.
  */
-void frame_build(const struct vec3 *p, size_t k, struct vec3 *t, struct vec3 *n);
+void tube_frame_build(const struct vec3 *p, size_t k, struct vec3 *t, struct vec3 *n);

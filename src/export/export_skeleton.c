@@ -96,7 +96,7 @@ static struct json_object *skeleton_object(const struct tree *t)
 	struct json_object *branches = json_object_new_array();
 	struct json_object *leaves = json_object_new_array();
 
-	/* The front view looks along -z (src/core/view.h). */
+	/* The front view looks along -z (src/core/screen.h). */
 	view = json_out_push(view, json_object_new_int(0));
 	view = json_out_push(view, json_object_new_int(0));
 	view = json_out_push(view, json_object_new_int(-1));

@@ -20,8 +20,8 @@
 
 /*
  * Level of detail. The camera is orthographic at a fixed scale (the screen height always
- * spans VIEW_HEIGHT_M, no zoom), so a branch's size on screen is its size in metres times
- * MESH_REF_SCREEN_PX / VIEW_HEIGHT_M: pixels at a reference screen height of 1080 px, 108 px
+ * spans SCREEN_HEIGHT_M, no zoom), so a branch's size on screen is its size in metres times
+ * MESH_REF_SCREEN_PX / SCREEN_HEIGHT_M: pixels at a reference screen height of 1080 px, 108 px
  * a metre. Detail follows from that alone, so it is the same on every screen and in exports:
  *
  * - Sides. Each ring gets the fewest sides (MESH_MIN_SIDES..MESH_MAX_SIDES) whose polygon

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "frame.h"
+#include "tube_frame.h"
 #include "ori_kinds.h"
 
 /* Twice the signed area of (a, b, c) in the leaf plane: > 0 when counter-clockwise. */
@@ -178,7 +178,7 @@ int mesh_leaf_build(struct mesh *m, const struct leaf *l, struct mesh_scratch *s
 		return 0; /* no area, or a figure eight that cancels out */
 	normal = vec3_scale(nn, 1.0 / area2);
 
-	u = frame_perpendicular(normal);
+	u = tube_frame_perpendicular(normal);
 	v = vec3_cross(normal, u);
 	for (size_t i = 0; i < k; i++) {
 		struct vec3 d = vec3_sub(s->p[i], c);

@@ -12,7 +12,7 @@
 
 #include "mesh.h"
 #include "tree.h"
-#include "view.h"
+#include "screen.h"
 
 /* Tubes never get thinner than this, so no ring collapses into a point (no zero-area faces). */
 #define TUBE_MIN_RADIUS 0.0005
@@ -29,7 +29,7 @@
 #define LEAF_MIN_STEP 1e-7
 
 /* Pixels a metre at the reference screen height (see mesh.h). */
-#define TUBE_PX_PER_M (MESH_REF_SCREEN_PX / VIEW_HEIGHT_M)
+#define TUBE_PX_PER_M (MESH_REF_SCREEN_PX / SCREEN_HEIGHT_M)
 
 /* Ring shapes for every side count, and what each count costs in accuracy. */
 struct lod {

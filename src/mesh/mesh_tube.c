@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "frame.h"
+#include "tube_frame.h"
 
 void mesh_lod_init(struct lod *l)
 {
@@ -580,7 +580,7 @@ int mesh_tube_build(struct mesh *m, const struct tree *tr, size_t index, struct 
 	for (size_t i = 0; i < k; i++)
 		sc->sides[i] = lod_sides(&sc->lod, sc->r[i]);
 	k = tube_simplify(sc, k, sc->lod.cos_turn);
-	frame_build(sc->p, k, sc->t, sc->n);
+	tube_frame_build(sc->p, k, sc->t, sc->n);
 
 	for (size_t i = 0; i < k; i++)
 		nv += (size_t)sc->sides[i];

@@ -33,7 +33,7 @@ int gesture_crossings(const struct tree *t, const struct vec3 *p, size_t n,
 
 /*
  * The edits below look for crossings and touches in `seen`, the tree as the screen shows
- * it (the same ids and segments: t itself for the front view, a sketch_view of it on a
+ * it (the same ids and segments: t itself for the front view, a sketch_seen of it on a
  * turned 3D tree), and edit t.
  */
 

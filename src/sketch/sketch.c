@@ -5,7 +5,7 @@
 #include <stdlib.h>
 
 #include "gesture.h"
-#include "sketch_view.h"
+#include "sketch_seen.h"
 #include "tree_index.h"
 
 /* Trunk root radius relative to its length, and how much thinner the tip gets. */
@@ -216,7 +216,7 @@ static double profile_at(const struct tree *t, double s)
  * branch point. radii, when given, are the drawn ones (two-stroke branches); otherwise
  * the root radius follows from the parent and the profile gives the rest.
  */
-static int add_branch(struct tree *t, const struct sketch_view *sv, struct vec3 *p, size_t n,
+static int add_branch(struct tree *t, const struct sketch_seen *sv, struct vec3 *p, size_t n,
 		      const double *drawn)
 {
 	double len = vec3_polyline_length(p, n), walked = 0.0, root_r;
@@ -274,7 +274,7 @@ static int add_branch(struct tree *t, const struct sketch_view *sv, struct vec3 
 	return 0;
 }
 
-static int add_leaf(struct tree *t, const struct sketch_view *sv, struct vec3 *p, size_t n)
+static int add_leaf(struct tree *t, const struct sketch_seen *sv, struct vec3 *p, size_t n)
 {
 	struct sketch_hit best = { .branch = -1, .dist = INFINITY };
 	int ret;
@@ -313,7 +313,7 @@ static size_t sketched_points(const struct tree *t)
 	return n;
 }
 
-static int erase(struct tree *t, struct sketch_view *sv, const struct sketch_stroke *st)
+static int erase(struct tree *t, struct sketch_seen *sv, const struct sketch_stroke *st)
 {
 	struct vec3 *p = NULL;
 	size_t n;
@@ -324,7 +324,7 @@ static int erase(struct tree *t, struct sketch_view *sv, const struct sketch_str
 		return SKETCH_GREW;
 	if (ret < 0)
 		return ret;
-	sketch_view_show_all(sv); /* the eraser looks at everything */
+	sketch_seen_show_all(sv); /* the eraser looks at everything */
 	ret = gesture_eraser(t, sv->tree, p, n);
 	free(p);
 	return ret < 0 ? ret : ret > 0 ? SKETCH_CHANGED : SKETCH_GREW;
@@ -355,7 +355,7 @@ static struct vec3 point_at(const struct vec3 *p, size_t n, double len, double s
  * one after the other meets at the root and opens up, so it stays two branches.
  * Returns 1 when it merged them, 0 when not, or -ENOMEM.
  */
-static int outline_pair(struct tree *t, struct sketch_view *sv, const struct vec3 *b, size_t nb,
+static int outline_pair(struct tree *t, struct sketch_seen *sv, const struct vec3 *b, size_t nb,
 			uint64_t start_us, int prev)
 {
 	enum { N = 48 };
@@ -430,7 +430,7 @@ static int outline_pair(struct tree *t, struct sketch_view *sv, const struct vec
 	free(remove);
 	if (ret < 0)
 		return ret;
-	sketch_view_drop_last_branch(sv);
+	sketch_seen_drop_last_branch(sv);
 	ret = add_branch(t, sv, axis, N, radii);
 	if (ret < 0)
 		return ret;
@@ -454,7 +454,7 @@ static int outline_pair(struct tree *t, struct sketch_view *sv, const struct vec
  * cut/erase gesture: a slash that begins away from the wood. So a branch drawn from its
  * parent is never a cut, even when it crosses other branches further on.
  */
-static int open_stroke(struct tree *t, struct sketch_view *sv, struct vec3 *p, size_t n,
+static int open_stroke(struct tree *t, struct sketch_seen *sv, struct vec3 *p, size_t n,
 		       uint64_t start_us, int prev)
 {
 	struct gesture_crossing *c;
@@ -468,7 +468,7 @@ static int open_stroke(struct tree *t, struct sketch_view *sv, struct vec3 *p, s
 
 	if (t->nbranches == 0 || sketch_nearest(sv->tree, p[0]).dist <= GESTURE_SNAP_M)
 		return add_branch(t, sv, p, n, NULL);
-	sketch_view_show_all(sv); /* crossings look at every branch */
+	sketch_seen_show_all(sv); /* crossings look at every branch */
 	ret = gesture_crossings(sv->tree, p, n, &c, &nc);
 	if (ret < 0)
 		return ret;
@@ -512,7 +512,7 @@ static int prepare(const struct sketch_stroke *st, size_t sketched, struct vec3 
 
 int sketch_stroke(struct tree *t, const struct sketch_stroke *st)
 {
-	struct sketch_view sv;
+	struct sketch_seen sv;
 	struct vec3 *p = NULL;
 	size_t n = 0;
 	bool closed = false;
@@ -529,7 +529,7 @@ int sketch_stroke(struct tree *t, const struct sketch_stroke *st)
 			return ret < 0 ? ret : SKETCH_GREW;
 	}
 	/* On a turned 3D tree everything is decided as the screen shows it. */
-	ret = sketch_view_init(&sv, t, st->camera);
+	ret = sketch_seen_init(&sv, t, st->camera);
 	if (ret < 0) {
 		free(p);
 		return ret;
@@ -540,7 +540,7 @@ int sketch_stroke(struct tree *t, const struct sketch_stroke *st)
 		ret = add_leaf(t, &sv, p, n);
 	else
 		ret = open_stroke(t, &sv, p, n, st->time_us, sketched);
-	sketch_view_finish(&sv);
+	sketch_seen_finish(&sv);
 	free(p);
 	if (t->last_sketched >= 0) /* this stroke drew a branch */
 		t->last_sketched_end_us = st->end_us;

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-#include "sketch_view.h"
+#include "sketch_seen.h"
 
 #include <errno.h>
 #include <math.h>
@@ -8,7 +8,7 @@
 
 #include "tree_index.h"
 
-struct vec3 sketch_view_pivot(const struct tree *t)
+struct vec3 sketch_seen_pivot(const struct tree *t)
 {
 	if (t->nbranches == 0 || t->branches[0].npoints == 0)
 		return vec3(0, 0, 0);
@@ -16,7 +16,7 @@ struct vec3 sketch_view_pivot(const struct tree *t)
 }
 
 /* Turns branch i's points, or leaf i's, into the pool. */
-static void show_one(struct sketch_view *sv, bool leaf, size_t i)
+static void show_one(struct sketch_seen *sv, bool leaf, size_t i)
 {
 	struct vec3 *to, **points;
 	const struct vec3 *from;
@@ -40,7 +40,7 @@ static void show_one(struct sketch_view *sv, bool leaf, size_t i)
 	*points = to;
 }
 
-void sketch_view_show_all(struct sketch_view *sv)
+void sketch_seen_show_all(struct sketch_seen *sv)
 {
 	if (!sv->lazy)
 		return;
@@ -54,21 +54,21 @@ void sketch_view_show_all(struct sketch_view *sv)
 /* tree_index asks for a branch it found, or for all of them before a scan. */
 static void show(void *ctx, int branch)
 {
-	struct sketch_view *sv = ctx;
+	struct sketch_seen *sv = ctx;
 
 	if (branch < 0)
-		sketch_view_show_all(sv);
+		sketch_seen_show_all(sv);
 	else if (sv->lazy && (size_t)branch < sv->shadow.nbranches)
 		show_one(sv, false, (size_t)branch);
 }
 
-int sketch_view_init(struct sketch_view *sv, const struct tree *t, struct camera c)
+int sketch_seen_init(struct sketch_seen *sv, const struct tree *t, struct camera c)
 {
 	size_t n = 0, k = 0;
 	struct tree *s = &sv->shadow;
 
 	memset(sv, 0, sizeof(*sv));
-	camera_xf_init(&sv->xf, c, sketch_view_pivot(t));
+	camera_xf_init(&sv->xf, c, sketch_seen_pivot(t));
 	sv->tree = t;
 	sv->world = t;
 	if (sv->xf.identity)
@@ -86,7 +86,7 @@ int sketch_view_init(struct sketch_view *sv, const struct tree *t, struct camera
 	sv->pool = malloc((n ? n : 1) * sizeof(*sv->pool));
 	sv->at = malloc((t->nbranches + t->nleaves + 1) * sizeof(*sv->at));
 	if (!s->branches || !s->leaves || !sv->pool || !sv->at) {
-		sketch_view_finish(sv);
+		sketch_seen_finish(sv);
 		return -ENOMEM;
 	}
 	s->cap_branches = t->nbranches;
@@ -108,7 +108,7 @@ int sketch_view_init(struct sketch_view *sv, const struct tree *t, struct camera
 	sv->nbranches = t->nbranches;
 	sv->lazy = true;
 	if (!tree_index_keep_view(s, t, &sv->xf, show, sv)) {
-		sketch_view_show_all(sv); /* no grid to ask: turned all at once, as scans need */
+		sketch_seen_show_all(sv); /* no grid to ask: turned all at once, as scans need */
 		return 0;
 	}
 	/* the two-outline test reads the last branch and what it hangs on */
@@ -119,7 +119,7 @@ int sketch_view_init(struct sketch_view *sv, const struct tree *t, struct camera
 	return 0;
 }
 
-void sketch_view_finish(struct sketch_view *sv)
+void sketch_seen_finish(struct sketch_seen *sv)
 {
 	/* the shadow borrows radii from the tree: only its own arrays are freed */
 	tree_index_destroy(&sv->shadow);
@@ -133,7 +133,7 @@ void sketch_view_finish(struct sketch_view *sv)
 	sv->tree = NULL;
 }
 
-void sketch_view_drop_last_branch(struct sketch_view *sv)
+void sketch_seen_drop_last_branch(struct sketch_seen *sv)
 {
 	if (sv->tree == &sv->shadow && sv->shadow.nbranches > 0)
 		sv->shadow.nbranches--;
@@ -183,11 +183,11 @@ static bool polyline_near(const struct camera_xf *xf, const struct vec3 *pts, si
 	return false;
 }
 
-bool sketch_view_near(const struct tree *t, struct camera c, struct vec3 p, double r)
+bool sketch_seen_near(const struct tree *t, struct camera c, struct vec3 p, double r)
 {
 	struct camera_xf xf;
 
-	camera_xf_init(&xf, c, sketch_view_pivot(t));
+	camera_xf_init(&xf, c, sketch_seen_pivot(t));
 	for (size_t i = 0; i < t->nbranches; i++)
 		if (polyline_near(&xf, t->branches[i].points, t->branches[i].npoints, false, p, r))
 			return true;
@@ -210,12 +210,12 @@ bool sketch_view_near(const struct tree *t, struct camera c, struct vec3 p, doub
 	return false;
 }
 
-double sketch_view_clearance(struct sketch_view *sv, struct vec3 p)
+double sketch_seen_clearance(struct sketch_seen *sv, struct vec3 p)
 {
 	const struct tree *t = sv->tree;
 	double best = INFINITY;
 
-	sketch_view_show_all(sv);
+	sketch_seen_show_all(sv);
 	for (size_t i = 0; i < t->nbranches; i++) {
 		const struct branch *b = &t->branches[i];
 

@@ -16,10 +16,10 @@
  * tree: sketch_nearest finds its hits through the tree's grid and shows them, and the
  * last branch and its ancestors are shown from the start (the two-outline test looks at
  * the last branch and its parent). Code that reads other points of the copy calls
- * sketch_view_show_all first, before it changes the tree other than by removing its last
+ * sketch_seen_show_all first, before it changes the tree other than by removing its last
  * branch or appending: what is shown later is turned from the tree as it is then.
  */
-struct sketch_view {
+struct sketch_seen {
 	struct camera_xf xf;
 	const struct tree *tree; /* what to query */
 	struct tree shadow;      /* the turned copy, when there is one */
@@ -31,18 +31,18 @@ struct sketch_view {
 };
 
 /* The pivot the camera turns about: the trunk's base (the origin without a trunk). */
-struct vec3 sketch_view_pivot(const struct tree *t);
+struct vec3 sketch_seen_pivot(const struct tree *t);
 /* 0 or -ENOMEM. */
-int sketch_view_init(struct sketch_view *sv, const struct tree *t, struct camera c);
-void sketch_view_finish(struct sketch_view *sv);
+int sketch_seen_init(struct sketch_seen *sv, const struct tree *t, struct camera c);
+void sketch_seen_finish(struct sketch_seen *sv);
 /* The tree's last branch was just removed: forget it here too. */
-void sketch_view_drop_last_branch(struct sketch_view *sv);
+void sketch_seen_drop_last_branch(struct sketch_seen *sv);
 /* Every point of the copy turned (nothing to do for the front view). */
-void sketch_view_show_all(struct sketch_view *sv);
+void sketch_seen_show_all(struct sketch_seen *sv);
 /* Distance on the screen (metres) from view-space point p to the nearest branch or
  * leaf; 0 inside a leaf, INFINITY on an empty tree. */
-double sketch_view_clearance(struct sketch_view *sv, struct vec3 p);
+double sketch_seen_clearance(struct sketch_seen *sv, struct vec3 p);
 /* Whether anything of t is within r of view-space point p on the screen through camera c:
  * the same answer as clearance <= r, without copying the tree and stopping at the first
  * hit (the cursor asks every frame). */
-bool sketch_view_near(const struct tree *t, struct camera c, struct vec3 p, double r);
+bool sketch_seen_near(const struct tree *t, struct camera c, struct vec3 p, double r);

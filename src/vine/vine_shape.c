@@ -22,7 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "frame.h"
+#include "tube_frame.h"
 #include "mesh.h"
 #include "rng.h"
 #include "vine.h"
@@ -454,7 +454,7 @@ static size_t node_build(const struct vine *v, size_t s, size_t k, const struct 
 	double g = v->p.leaf_size;
 	bool cot, gone[64] = { false };
 	int count = node_leaves(v, s, k, &cot);
-	struct vec3 t = frame_tangent(a, sh->n, at), ref = leaf_ref(t), o[64];
+	struct vec3 t = tube_frame_tangent(a, sh->n, at), ref = leaf_ref(t), o[64];
 
 	if (count > 64)
 		count = 64; /* vine_params_check keeps it to 2 */
@@ -572,7 +572,7 @@ static void tube(const struct vine *v, const struct vec3 *a, size_t n, struct ve
 	double r = v->p.radius, h = VINE_TIP_LENGTH * r;
 
 	/* rotation-minimising: the rings do not twist */
-	frame_build(a, n, t, nr);
+	tube_frame_build(a, n, t, nr);
 	for (size_t i = 0; i < n; i++) {
 		struct vec3 b = vec3_cross(t[i], nr[i]);
 

@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "frame.h"
+#include "tube_frame.h"
 #include "wood.h"
 
 _Static_assert(WOOD_PRISM_SIDES == 8, "the prisms are octagons (the corner tables below)");
@@ -199,7 +199,7 @@ static int branch_rings(const struct branch *b, struct rings *s)
 		s->r[s->k] = s->r[s->k - 1];
 		s->k++;
 	}
-	frame_build(s->p, s->k, s->t, s->n);
+	tube_frame_build(s->p, s->k, s->t, s->n);
 	for (size_t i = 0; i < s->k; i++)
 		for (int j = 0; j < WOOD_PRISM_SIDES; j++) {
 			struct vec3 q = vec3_add(s->p[i], vec3_scale(ring_dir(s, i, j), s->r[i]));

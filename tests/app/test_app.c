@@ -84,7 +84,7 @@ int main(void)
 		tree_mesh_finish(&full);
 	}
 	/* the tip of a drawn branch stays where the pen lifted, to 0.5 px */
-	view_to_screen(&app->view, app->tree.branches[2].points[app->tree.branches[2].npoints - 1],
+	screen_from_world(&app->screen, app->tree.branches[2].points[app->tree.branches[2].npoints - 1],
 		       &tx, &ty);
 	CHECK_NEAR(tx, 420, 0.5);
 	CHECK_NEAR(ty, 300, 0.5);
@@ -120,7 +120,7 @@ int main(void)
 	/* the pen taps the on-screen buttons: undo, then redo */
 	{
 		struct layout_button buttons[LAYOUT_NBUTTONS];
-		size_t n = layout_buttons(&app->view, buttons, LAYOUT_NBUTTONS);
+		size_t n = layout_buttons(&app->screen, buttons, LAYOUT_NBUTTONS);
 
 		for (size_t i = 0; i < n; i++) {
 			double cx = buttons[i].x + buttons[i].w / 2, cy = buttons[i].y + buttons[i].h / 2;

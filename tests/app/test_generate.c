@@ -27,8 +27,8 @@ static const struct gen_params *params_of(const struct app *app)
  * test does not know the layout. */
 static bool spot_of(const struct app *app, enum button b, double *x, double *y)
 {
-	for (double py = 2; py < app->view.height; py += 4) {
-		for (double px = 2; px < app->view.width; px += 4) {
+	for (double py = 2; py < app->screen.height; py += 4) {
+		for (double px = 2; px < app->screen.width; px += 4) {
 			enum button hit;
 
 			if (app_ui_hit(app, px, py, &hit) && hit == b) {

@@ -44,7 +44,7 @@ static double screen_x(const struct app *app, struct vec3 p)
 {
 	double x, y;
 
-	view_to_screen(&app->view, p, &x, &y);
+	screen_from_world(&app->screen, p, &x, &y);
 	return x;
 }
 
@@ -80,7 +80,7 @@ static void test_cut_keeps_lower_children(void)
 	pen_line(&pen, app, 600, 300, 680, 320);
 	CHECK_INT(app->tree.nbranches, 3);
 	CHECK_NEAR(app->tree.branches[0].points[app->tree.branches[0].npoints - 1].y,
-		   view_to_world(&app->view, 0, 310).y, 0.05);
+		   screen_to_world(&app->screen, 0, 310).y, 0.05);
 	CHECK(app->tree.branches[1].parent_t > 0.4 && app->tree.branches[1].parent_t <= 1.0);
 	/* a slash across the trunk below b1: b1, b2 and the leaf go */
 	pen_line(&pen, app, 600, 650, 680, 660);
@@ -149,7 +149,7 @@ static void test_slash_cuts_every_crossed_branch(void)
 	pen_line(&pen, app, 560, 505, 760, 505);
 	CHECK_INT(app->tree.nbranches, 2);
 	CHECK_NEAR(app->tree.branches[0].points[app->tree.branches[0].npoints - 1].y,
-		   view_to_world(&app->view, 0, 505).y, 0.05);
+		   screen_to_world(&app->screen, 0, 505).y, 0.05);
 	CHECK_NEAR(screen_x(app, app->tree.branches[1].points[app->tree.branches[1].npoints - 1]), 733, 3);
 	app_destroy(app);
 }

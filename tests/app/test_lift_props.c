@@ -36,7 +36,7 @@
 #include "doc.h"
 #include "lift.h"
 #include "sketch.h"
-#include "sketch_view.h"
+#include "sketch_seen.h"
 #include "test.h"
 
 #define SKETCHES 300
@@ -110,7 +110,7 @@ static void child(struct tree *t, struct rng *hand, struct camera cam, int p, do
 	b = &t->branches[p];
 	k = (size_t)(f * (double)(b->npoints - 1));
 	k = k >= b->npoints - 1 ? b->npoints - 2 : k;
-	camera_xf_init(&xf, cam, sketch_view_pivot(t));
+	camera_xf_init(&xf, cam, sketch_seen_pivot(t));
 	a = camera_to_view(&xf, b->points[k]);
 	d = vec3_sub(camera_to_view(&xf, b->points[k + 1]), a);
 	dl = hypot(d.x, d.y);

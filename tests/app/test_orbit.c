@@ -8,7 +8,7 @@
 #include "gesture.h"
 #include "layout.h"
 #include "pen.h"
-#include "sketch_view.h"
+#include "sketch_seen.h"
 #include "test.h"
 
 /* 10 motion events a leg; a pause after each stroke: no two strokes here are one
@@ -38,19 +38,19 @@ static void to_screen(const struct app *app, struct vec3 p, double *x, double *y
 {
 	struct camera_xf xf;
 
-	camera_xf_init(&xf, app->camera, sketch_view_pivot(&app->tree));
-	view_to_screen(&app->view, camera_to_view(&xf, p), x, y);
+	camera_xf_init(&xf, app->camera, sketch_seen_pivot(&app->tree));
+	screen_from_world(&app->screen, camera_to_view(&xf, p), x, y);
 }
 
 /* Screen distance (metres) from a screen point to the tree as the camera shows it. */
 static double clearance(const struct app *app, double x, double y)
 {
-	struct sketch_view sv;
+	struct sketch_seen sv;
 	double d;
 
-	CHECK_INT(sketch_view_init(&sv, &app->tree, app->camera), 0);
-	d = sketch_view_clearance(&sv, view_to_world(&app->view, x, y));
-	sketch_view_finish(&sv);
+	CHECK_INT(sketch_seen_init(&sv, &app->tree, app->camera), 0);
+	d = sketch_seen_clearance(&sv, screen_to_world(&app->screen, x, y));
+	sketch_seen_finish(&sv);
 	return d;
 }
 
@@ -101,7 +101,7 @@ static void test_orbit_drag(void)
 	CHECK(!app_would_orbit(app, 560, 500)); /* on the trunk */
 	pen_line(&pen, app, 120, 150, 320, 150);
 	CHECK_INT(app->doc.nops, nops); /* nothing drawn */
-	CHECK_NEAR(app->camera.yaw, -200 * app->view.m_per_px * APP_ORBIT_DEG_PER_M, 1e-3);
+	CHECK_NEAR(app->camera.yaw, -200 * app->screen.m_per_px * APP_ORBIT_DEG_PER_M, 1e-3);
 	CHECK_NEAR(app->camera.pitch, 0, 1e-6);
 	CHECK(app->doc.view.yaw == app->camera.yaw); /* saved with the drawing */
 	/* dragging down looks from above, as far as the limit */
@@ -139,7 +139,7 @@ static void test_orbit_drag(void)
 			double c = clearance(app, x, y);
 
 			if (fabs(c - APP_ORBIT_CLEARANCE_M) > 1e-6)
-				CHECK(sketch_view_near(&app->tree, app->camera, view_to_world(&app->view, x, y),
+				CHECK(sketch_seen_near(&app->tree, app->camera, screen_to_world(&app->screen, x, y),
 						       APP_ORBIT_CLEARANCE_M) == (c <= APP_ORBIT_CLEARANCE_M));
 		}
 	/* the eraser never orbits */
@@ -160,7 +160,7 @@ static void test_orbit_drag(void)
 static void test_view_button_and_undo(void)
 {
 	struct app *app = lifted_tree();
-	struct layout_button vb = layout_view_button(&app->view);
+	struct layout_button vb = layout_view_button(&app->screen);
 
 	pen_line(&pen, app, 120, 150, 420, 250);
 	CHECK(!camera_is_front(app->camera));
@@ -242,7 +242,7 @@ static void test_stroke_on_turned_tree(void)
 		CHECK(best < 1e-9);
 	}
 	/* every point at the attachment point's depth as the camera sees it */
-	camera_xf_init(&xf, app->camera, sketch_view_pivot(&app->tree));
+	camera_xf_init(&xf, app->camera, sketch_seen_pivot(&app->tree));
 	root_v = camera_to_view(&xf, b->points[0]);
 	for (size_t i = 0; i < b->npoints; i++)
 		CHECK_NEAR(camera_to_view(&xf, b->points[i]).z, root_v.z, 1e-9);

@@ -13,7 +13,7 @@ static struct pen pen = { .now_us = 1000, .steps = 40 };
 
 static double px(const struct app *app, double m)
 {
-	return m / app->view.m_per_px;
+	return m / app->screen.m_per_px;
 }
 
 static void test_two_outlines(void)

@@ -160,7 +160,7 @@ static void test_bar_buttons(void)
 	bool seen[APP_MODE_COUNT] = { false };
 
 	CHECK(probe);
-	n = layout_buttons(&probe->view, bar, LAYOUT_NBUTTONS);
+	n = layout_buttons(&probe->screen, bar, LAYOUT_NBUTTONS);
 	CHECK(n > 0);
 	for (size_t i = 0; i < n; i++) {
 		struct app *app = drawn_tree(7);

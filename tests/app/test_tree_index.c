@@ -6,7 +6,7 @@
 
 #include "rng.h"
 #include "sketch.h"
-#include "sketch_view.h"
+#include "sketch_seen.h"
 #include "test.h"
 #include "tree.h"
 #include "tree_index.h"
@@ -213,7 +213,7 @@ static void test_odd(void)
 }
 
 /* A 3D tree (branches at every depth, leaves) seen through random cameras: the copy a
- * sketch_view turns lazily through the tree's grid answers as a copy turned whole and
+ * sketch_seen turns lazily through the tree's grid answers as a copy turned whole and
  * scanned does, and what it shows is that copy's points. */
 static void test_views(uint64_t seed)
 {
@@ -245,11 +245,11 @@ static void test_views(uint64_t seed)
 		struct camera c = v == 0 ? (struct camera){ 0, 0 }
 					 : camera_normalize(rng_range(&r, -180, 180), rng_range(&r, -20, 75));
 		struct tree plain = t;
-		struct sketch_view lazy, eager;
+		struct sketch_seen lazy, eager;
 
 		plain.index = NULL; /* a copy without the grid: turned whole, scanned */
-		CHECK_INT(sketch_view_init(&lazy, &t, c), 0);
-		CHECK_INT(sketch_view_init(&eager, &plain, c), 0);
+		CHECK_INT(sketch_seen_init(&lazy, &t, c), 0);
+		CHECK_INT(sketch_seen_init(&eager, &plain, c), 0);
 		for (int i = 0; i < 60; i++) {
 			const struct branch *b = &eager.tree->branches[rng_next(&r) % t.nbranches];
 			struct vec3 p = b->npoints ? b->points[rng_next(&r) % b->npoints] : vec3(0, 0, 0);
@@ -265,15 +265,15 @@ static void test_views(uint64_t seed)
 		 * alike */
 		for (int b = (int)t.nbranches - 1; b >= 0; b = t.branches[b].parent)
 			CHECK(lazy.tree->branches[b].points != NULL);
-		sketch_view_show_all(&lazy);
+		sketch_seen_show_all(&lazy);
 		for (size_t i = 0; i < t.nbranches; i++)
 			CHECK(memcmp(lazy.tree->branches[i].points, eager.tree->branches[i].points,
 				     t.branches[i].npoints * sizeof(struct vec3)) == 0);
 		for (size_t i = 0; i < t.nleaves; i++)
 			CHECK(memcmp(lazy.tree->leaves[i].points, eager.tree->leaves[i].points,
 				     t.leaves[i].npoints * sizeof(struct vec3)) == 0);
-		sketch_view_finish(&lazy);
-		sketch_view_finish(&eager);
+		sketch_seen_finish(&lazy);
+		sketch_seen_finish(&eager);
 	}
 	tree_finish(&t);
 }

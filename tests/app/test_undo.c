@@ -18,7 +18,7 @@
 #include "layout.h"
 #include "pen.h"
 #include "rng.h"
-#include "sketch_view.h"
+#include "sketch_seen.h"
 #include "test.h"
 #include "wood.h"
 
@@ -53,7 +53,7 @@ static void mirror_doc(struct doc *d)
 
 static struct app *loaded(const struct app *a)
 {
-	struct app *b = app_create(a->view.width, a->view.height, a->doc.seed);
+	struct app *b = app_create(a->screen.width, a->screen.height, a->doc.seed);
 	struct doc d;
 
 	CHECK(b);
@@ -210,7 +210,7 @@ static bool pick(const struct app *app, struct rng *r, bool parent, double *x, d
 
 	if (app->tree.nbranches == 0)
 		return false;
-	camera_xf_init(&xf, app->camera, sketch_view_pivot(&app->tree));
+	camera_xf_init(&xf, app->camera, sketch_seen_pivot(&app->tree));
 	for (int tries = 0; tries < 40; tries++) {
 		size_t b = rng_next(r) % app->tree.nbranches;
 		const struct branch *br = &app->tree.branches[b];
@@ -220,9 +220,9 @@ static bool pick(const struct app *app, struct rng *r, bool parent, double *x, d
 			kids = app->tree.branches[i].parent == (int)b;
 		if ((parent && !kids) || br->npoints == 0)
 			continue;
-		view_to_screen(&app->view, camera_to_view(&xf, br->points[rng_next(r) % br->npoints]), x, y);
-		if (*x > 60 && *x < app->view.width - 60 && *y > 60 && *y < app->view.height - 60 &&
-		    !layout_hit(&app->view, *x, *y, &hit) && !layout_hit_view_button(&app->view, *x, *y))
+		screen_from_world(&app->screen, camera_to_view(&xf, br->points[rng_next(r) % br->npoints]), x, y);
+		if (*x > 60 && *x < app->screen.width - 60 && *y > 60 && *y < app->screen.height - 60 &&
+		    !layout_hit(&app->screen, *x, *y, &hit) && !layout_hit_view_button(&app->screen, *x, *y))
 			return true;
 	}
 	return false;
@@ -233,9 +233,9 @@ static void canvas_point(const struct app *app, struct rng *r, double *x, double
 	enum button hit;
 
 	do {
-		*x = rng_range(r, 80, app->view.width - 80);
-		*y = rng_range(r, 80, app->view.height - 80);
-	} while (layout_hit(&app->view, *x, *y, &hit) || layout_hit_view_button(&app->view, *x, *y));
+		*x = rng_range(r, 80, app->screen.width - 80);
+		*y = rng_range(r, 80, app->screen.height - 80);
+	} while (layout_hit(&app->screen, *x, *y, &hit) || layout_hit_view_button(&app->screen, *x, *y));
 }
 
 /* A tree from the New strip: the blank canvas or, as --generate puts them, a small
@@ -282,7 +282,7 @@ static bool act(struct app *app, struct rng *r, int *propagations, bool gentle)
 		what = what < 60 ? 0 : what; /* a trunk first, mostly */
 	if (what < 6) {
 		canvas_point(app, r, &x, &y);
-		y = app->view.height * 0.9;
+		y = app->screen.height * 0.9;
 		stroke(app, x, y, x + rng_range(r, -30, 30), y - rng_range(r, 250, 500), 30,
 		       EVENT_TOOL_PEN, PEN_PAUSE_US);
 	} else if (what < 33) {
@@ -348,7 +348,7 @@ static bool act(struct app *app, struct rng *r, int *propagations, bool gentle)
 		if (app->mode == APP_MODE_LEAF && rng_next(r) % 2)
 			press(app, (enum button)(BUTTON_LEAF_DRAWN + rng_next(r) % 4));
 		if (app->mode == APP_MODE_LEAF && pick(app, r, false, &x, &y)) {
-			struct layout_rect s = layout_side_slot(&app->view, 0, LAYOUT_SIDE_CARDS);
+			struct layout_rect s = layout_side_slot(&app->screen, 0, LAYOUT_SIDE_CARDS);
 
 			loop(app, x, y - 14, 12, 1.0);
 			if (app->suggestions)
@@ -378,8 +378,8 @@ static bool act(struct app *app, struct rng *r, int *propagations, bool gentle)
 			if (app->mode == APP_MODE_VINE) {
 				size_t nv = app->tree.nvines;
 
-				tap(app, app->view.width / 2 + rng_range(r, -90, 90),
-				    app->view.ground_y_px - 4);
+				tap(app, app->screen.width / 2 + rng_range(r, -90, 90),
+				    app->screen.ground_y_px - 4);
 				vines_planted += app->tree.nvines > nv;
 				press(app, BUTTON_VINE);
 			}

@@ -23,7 +23,7 @@
 #include "layout.h"
 #include "pen.h"
 #include "rng.h"
-#include "sketch_view.h"
+#include "sketch_seen.h"
 #include "test.h"
 #include "tree_delta.h"
 #include "wood.h"
@@ -264,7 +264,7 @@ static bool pick(const struct app *app, struct rng *r, bool parent, double *x, d
 
 	if (app->tree.nbranches == 0)
 		return false;
-	camera_xf_init(&xf, app->camera, sketch_view_pivot(&app->tree));
+	camera_xf_init(&xf, app->camera, sketch_seen_pivot(&app->tree));
 	for (int tries = 0; tries < 40; tries++) {
 		size_t b = rng_next(r) % app->tree.nbranches;
 		const struct branch *br = &app->tree.branches[b];
@@ -274,9 +274,9 @@ static bool pick(const struct app *app, struct rng *r, bool parent, double *x, d
 			kids = app->tree.branches[i].parent == (int)b;
 		if ((parent && !kids) || br->npoints == 0)
 			continue;
-		view_to_screen(&app->view, camera_to_view(&xf, br->points[rng_next(r) % br->npoints]), x, y);
-		if (*x > 60 && *x < app->view.width - 60 && *y > 60 && *y < app->view.height - 60 &&
-		    !layout_hit(&app->view, *x, *y, &hit) && !layout_hit_view_button(&app->view, *x, *y))
+		screen_from_world(&app->screen, camera_to_view(&xf, br->points[rng_next(r) % br->npoints]), x, y);
+		if (*x > 60 && *x < app->screen.width - 60 && *y > 60 && *y < app->screen.height - 60 &&
+		    !layout_hit(&app->screen, *x, *y, &hit) && !layout_hit_view_button(&app->screen, *x, *y))
 			return true;
 	}
 	return false;
@@ -318,8 +318,8 @@ static void act(struct app *app, struct rng *r, int *propagations, bool may_grow
 	if (app->tree.nbranches == 0 && what >= 8 && what < 80)
 		what = rng_next(r) % 4 ? 0 : 79; /* a trunk first, or a generated tree */
 	if (what < 8) {
-		x = rng_range(r, 300, app->view.width - 300);
-		y = app->view.height * 0.9;
+		x = rng_range(r, 300, app->screen.width - 300);
+		y = app->screen.height * 0.9;
 		stroke(app, x, y, x + rng_range(r, -30, 30), y - rng_range(r, 250, 450), 30,
 		       EVENT_TOOL_PEN);
 	} else if (what < 34) {
@@ -362,7 +362,7 @@ static void act(struct app *app, struct rng *r, int *propagations, bool may_grow
 		if (app->mode == APP_MODE_LEAF && rng_next(r) % 2)
 			press(app, (enum button)(BUTTON_LEAF_DRAWN + rng_next(r) % 4));
 		if (app->mode == APP_MODE_LEAF && pick(app, r, false, &x, &y)) {
-			struct layout_rect s = layout_side_slot(&app->view, 0, LAYOUT_SIDE_CARDS);
+			struct layout_rect s = layout_side_slot(&app->screen, 0, LAYOUT_SIDE_CARDS);
 
 			loop(app, x, y - 14, 12, 1.0);
 			if (app->suggestions)
@@ -390,7 +390,7 @@ static void act(struct app *app, struct rng *r, int *propagations, bool may_grow
 
 			press(app, BUTTON_VINE);
 			if (app->mode == APP_MODE_VINE) {
-				tap(app, app->view.width / 2 + rng_range(r, -90, 90), app->view.ground_y_px - 4);
+				tap(app, app->screen.width / 2 + rng_range(r, -90, 90), app->screen.ground_y_px - 4);
 				press(app, BUTTON_VINE);
 			}
 			vines += app->tree.nvines > nv;

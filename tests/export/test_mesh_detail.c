@@ -14,10 +14,10 @@
 #include "synth_tree.h"
 #include "test.h"
 #include "tree.h"
-#include "view.h"
+#include "screen.h"
 
 #define TEST_PI 3.14159265358979323846
-#define PX_PER_M (MESH_REF_SCREEN_PX / VIEW_HEIGHT_M)
+#define PX_PER_M (MESH_REF_SCREEN_PX / SCREEN_HEIGHT_M)
 /* Tubes never get thinner than this (mesh.c's TUBE_MIN_RADIUS). */
 #define MIN_RADIUS 0.0005
 

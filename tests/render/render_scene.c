@@ -118,13 +118,13 @@ int main(int argc, char **argv)
 		return 2;
 	}
 
-	egl = egl_headless_create(app.view.width, app.view.height, &err);
+	egl = egl_headless_create(app.screen.width, app.screen.height, &err);
 	if (!egl) {
 		fprintf(stderr, "render-scene: %s\n", err.msg);
 		goto out;
 	}
 	r = renderer(scene);
-	size = (size_t)app.view.width * (size_t)app.view.height * 4;
+	size = (size_t)app.screen.width * (size_t)app.screen.height * 4;
 	rgba = malloc(size);
 	again = malloc(size);
 	if (!r || !rgba || !again) {
@@ -150,7 +150,7 @@ int main(int argc, char **argv)
 			goto out;
 		}
 	}
-	if (write_png(out, rgba, app.view.width, app.view.height) < 0)
+	if (write_png(out, rgba, app.screen.width, app.screen.height) < 0)
 		goto out;
 	status = 0;
 out:

@@ -257,14 +257,14 @@ int scene_build(struct app *app, const char *name)
 
 	if (!strcmp(name, "leaf")) {
 		/* drawing a new branch in leaf mode; undo possible, nothing to redo */
-		view_init(&app->view, 640, 400);
+		screen_init(&app->screen, 640, 400);
 		app->mode = APP_MODE_LEAF;
 		app->doc.nops = 3;
 		app->doc.cursor = 3;
 		r = build_stroke(app, EVENT_TOOL_PEN, 130, 330, 230, 140, 0.25);
 	} else if (!strcmp(name, "eraser")) {
 		/* rubbing out in clone mode, the clone button held, everything undone */
-		view_init(&app->view, 640, 400);
+		screen_init(&app->screen, 640, 400);
 		app->mode = APP_MODE_CLONE;
 		app->doc.nops = 2;
 		app->doc.cursor = 0;
@@ -275,7 +275,7 @@ int scene_build(struct app *app, const char *name)
 		/* the kiosk's size, the pen away, a message over the drawing */
 		int i = status_scene(name);
 
-		view_init(&app->view, 1280, 800);
+		screen_init(&app->screen, 1280, 800);
 		app->mode = !strcmp(name, "save-failed-ja") ? APP_MODE_PROPAGATE : APP_MODE_SKETCH;
 		app->doc.nops = 5;
 		app->doc.cursor = 5;
@@ -287,14 +287,14 @@ int scene_build(struct app *app, const char *name)
 		r = 0;
 	} else if (!strcmp(name, "vine-7inch-ja")) {
 		/* a 7-inch kiosk's 800x480 in the vine mode: its button lit beside season */
-		view_init(&app->view, 800, 480);
+		screen_init(&app->screen, 800, 480);
 		app->mode = APP_MODE_VINE;
 		app->doc.nops = 5;
 		app->doc.cursor = 5;
 		r = 0;
 	} else if (!strcmp(name, "kiosk")) {
 		/* the kiosk's own size, sketch mode, the pen hovering near the tree */
-		view_init(&app->view, 1280, 800);
+		screen_init(&app->screen, 1280, 800);
 		app->mode = APP_MODE_SKETCH;
 		app->doc.nops = 5;
 		app->doc.cursor = 4;
@@ -392,7 +392,7 @@ void scene_leafy(struct app *app, int width, int height, struct camera cam, bool
 	int trunk, s;
 
 	memset(app, 0, sizeof(*app));
-	view_init(&app->view, width, height);
+	screen_init(&app->screen, width, height);
 	tree_init(t);
 	tree_mesh_init(&app->mesh);
 	tree_mesh_marks_init(&app->mesh_marks);

@@ -13,7 +13,7 @@
 #include "layout.h"
 #include "test.h"
 #include "trace.h"
-#include "view.h"
+#include "screen.h"
 
 static const enum button expected_order[LAYOUT_NBUTTONS] = {
 	BUTTON_3D,   BUTTON_CLONE, BUTTON_LEAF, BUTTON_PROPAGATE, BUTTON_SEASON, BUTTON_VINE,
@@ -23,16 +23,16 @@ static const enum button expected_order[LAYOUT_NBUTTONS] = {
 enum { SEASON = 4, VINE = 5, GROW = 6, UNDO = 7, REDO = 8, NEW = 9, SAVE = 10 };
 
 /* A screen of this many inches across its diagonal. */
-struct screen {
+struct panel {
 	int width, height;
 	double inches;
 };
-static const struct screen tablet10 = { 1280, 800, 10.0 };
-static const struct screen tablet7 = { 800, 480, 7.0 };
+static const struct panel tablet10 = { 1280, 800, 10.0 };
+static const struct panel tablet7 = { 800, 480, 7.0 };
 
 #define MIN_TARGET_MM 9.0
 
-static double mm_per_px(const struct screen *s)
+static double mm_per_px(const struct panel *s)
 {
 	return 25.4 * s->inches / hypot(s->width, s->height);
 }
@@ -53,7 +53,7 @@ static struct layout_rect visible(const struct layout_button *b)
 }
 
 /* A target's smaller side in mm is at least MIN_TARGET_MM; says what it is. */
-static void check_mm(const struct screen *s, const char *what, size_t i, struct layout_rect t)
+static void check_mm(const struct panel *s, const char *what, size_t i, struct layout_rect t)
 {
 	double k = mm_per_px(s), w = t.w * k, h = t.h * k;
 
@@ -64,7 +64,7 @@ static void check_mm(const struct screen *s, const char *what, size_t i, struct 
 
 /* The buttons of a bar on a screen: inside it, apart, their targets around them, apart,
  * and hit where they are. */
-static void check_bar(const struct view *v, const struct layout_bar_list *list,
+static void check_bar(const struct screen *v, const struct layout_bar_list *list,
 		      const struct layout_button *b, size_t n)
 {
 	struct layout_rect bar = layout_bar(v);
@@ -112,13 +112,13 @@ static void check_bar(const struct view *v, const struct layout_bar_list *list,
 
 static void check_screen(int width, int height, double min_canvas)
 {
-	struct view v;
+	struct screen v;
 	struct layout_button b[LAYOUT_NBUTTONS];
 	struct layout_rect canvas, bar;
 	enum button hit;
 	double row_gap, group_gap;
 
-	view_init(&v, width, height);
+	screen_init(&v, width, height);
 	CHECK_INT(layout_buttons(&v, b, LAYOUT_NBUTTONS), LAYOUT_NBUTTONS);
 	canvas = layout_canvas(&v);
 	bar = layout_bar(&v);
@@ -182,15 +182,15 @@ static void check_screen(int width, int height, double min_canvas)
 /* A tree tool on a kiosk's screen: in the bar once, its centre and its corners pressing
  * it, clear of every other button and target, above every action. Fills b and returns
  * the tool's place in it. */
-static size_t check_tool(const struct screen *s, enum button tool,
+static size_t check_tool(const struct panel *s, enum button tool,
 			 struct layout_button b[LAYOUT_NBUTTONS])
 {
-	struct view v;
+	struct screen v;
 	struct layout_rect bar, vis;
 	size_t found = 0, at = 0;
 	enum button hit = BUTTON_COUNT;
 
-	view_init(&v, s->width, s->height);
+	screen_init(&v, s->width, s->height);
 	CHECK_INT(layout_buttons(&v, b, LAYOUT_NBUTTONS), LAYOUT_NBUTTONS);
 	bar = layout_bar(&v);
 	for (size_t i = 0; i < LAYOUT_NBUTTONS; i++) {
@@ -228,7 +228,7 @@ static size_t check_tool(const struct screen *s, enum button tool,
 }
 
 /* The vine button (issue 16): season's right-hand neighbour. */
-static void check_vine(const struct screen *s)
+static void check_vine(const struct panel *s)
 {
 	struct layout_button b[LAYOUT_NBUTTONS];
 	size_t at = check_tool(s, BUTTON_VINE, b);
@@ -238,7 +238,7 @@ static void check_vine(const struct screen *s)
 
 /* The grow button (issue 17): under season, in the left column, with an empty row at
  * least between it and the actions. */
-static void check_grow(const struct screen *s)
+static void check_grow(const struct panel *s)
 {
 	struct layout_button b[LAYOUT_NBUTTONS];
 	size_t at = check_tool(s, BUTTON_GROW, b);
@@ -251,16 +251,16 @@ static void check_grow(const struct screen *s)
 
 /* Every target on the two screens a kiosk may have is at least 9 mm either way: the bar's,
  * the front view button, the side strip's places. */
-static void check_targets(const struct screen *s)
+static void check_targets(const struct panel *s)
 {
 	static const enum layout_side_kind kinds[] = { LAYOUT_SIDE_BUTTONS, LAYOUT_SIDE_CARDS,
 						       LAYOUT_SIDE_NAMED_CARDS };
 	static const char *const kind_names[] = { "side button", "card", "named card" };
-	struct view v;
+	struct screen v;
 	struct layout_button b[LAYOUT_NBUTTONS];
 	size_t n;
 
-	view_init(&v, s->width, s->height);
+	screen_init(&v, s->width, s->height);
 	n = layout_buttons(&v, b, LAYOUT_NBUTTONS);
 	CHECK_INT(n, LAYOUT_NBUTTONS);
 	for (size_t i = 0; i < n; i++)
@@ -279,11 +279,11 @@ static void check_targets(const struct screen *s)
  * apart, hit where they are; cards stay above the front view button. */
 static void check_side(int width, int height, enum layout_side_kind kind, size_t n)
 {
-	struct view v;
+	struct screen v;
 	struct layout_rect canvas, view_target;
 	struct layout_button vb;
 
-	view_init(&v, width, height);
+	screen_init(&v, width, height);
 	canvas = layout_canvas(&v);
 	vb = layout_view_button(&v);
 	view_target = vb.target;
@@ -336,11 +336,11 @@ static void check_traces(const char *dir)
 	struct dirent *e;
 	size_t files = 0;
 	double largest = 0.0;
-	struct view v;
+	struct screen v;
 	struct layout_rect bar;
 
 	CHECK(d);
-	view_init(&v, 1280, 800);
+	screen_init(&v, 1280, 800);
 	bar = layout_bar(&v);
 	while ((e = readdir(d))) {
 		size_t len = strlen(e->d_name);
@@ -384,7 +384,7 @@ static void check_traces(const char *dir)
 
 int main(int argc, char **argv)
 {
-	struct view v;
+	struct screen v;
 	struct layout_button few[3];
 
 	CHECK(argc == 2);
@@ -408,7 +408,7 @@ int main(int argc, char **argv)
 	}
 
 	/* like snprintf: the count is the full one even when out is short */
-	view_init(&v, 1280, 800);
+	screen_init(&v, 1280, 800);
 	CHECK_INT(layout_buttons(&v, few, 3), LAYOUT_NBUTTONS);
 	CHECK_INT(few[2].button, BUTTON_LEAF);
 	CHECK_INT(layout_buttons(&v, NULL, 0), LAYOUT_NBUTTONS);
@@ -423,12 +423,12 @@ int main(int argc, char **argv)
 	}
 
 	/* a tall narrow screen still leaves a canvas */
-	view_init(&v, 300, 1000);
+	screen_init(&v, 300, 1000);
 	CHECK(layout_canvas(&v).w >= 0.7 * 300);
 
 	/* where the traces tap the side strip at 1280x800 (tests/data/gen-edit-traces.py):
 	 * the pattern buttons at (56, 56), the leaf suggestions down the left edge */
-	view_init(&v, 1280, 800);
+	screen_init(&v, 1280, 800);
 	{
 		struct layout_button vb = layout_view_button(&v);
 		struct layout_rect pat = layout_side_slot(&v, 1, LAYOUT_SIDE_BUTTONS);

@@ -72,7 +72,7 @@ static void test_upload_only_on_serial(void)
 
 	CHECK_INT(scene_build(&app, "leaf"), 0);
 	tree_tris = (app.mesh.bark.nindices + app.mesh.leaves.nindices) / 3;
-	fixture_init(&f, app.view.width, app.view.height);
+	fixture_init(&f, app.screen.width, app.screen.height);
 	r = render_create();
 	CHECK(r);
 
@@ -251,7 +251,7 @@ static void test_seasons(void)
 
 	draw(&f, inst, &app, summer);
 	CHECK(!inst->uploaded_tinted);
-	CHECK_INT(reddish(summer, f.size, (int)layout_bar(&app.view).x), 0);
+	CHECK_INT(reddish(summer, f.size, (int)layout_bar(&app.screen).x), 0);
 	for (int s = 0; s < 2; s++) {
 		app.tree.season = s == 0 ? SEASON_AUTUMN : SEASON_SPRING;
 		app.mesh_serial++;
@@ -267,7 +267,7 @@ static void test_seasons(void)
 		CHECK(differing(f.a, f.b, f.size, 8) <= f.size / 4 / 1000);
 		CHECK(differing(f.a, summer, f.size, 8) > 1000);
 		if (s == 0)
-			CHECK(reddish(f.a, f.size, (int)layout_bar(&app.view).x) > 500);
+			CHECK(reddish(f.a, f.size, (int)layout_bar(&app.screen).x) > 500);
 		draw(&f, expanded, &app, f.a);
 		CHECK(!expanded->leaves.indexed);
 		CHECK(memcmp(f.a, f.b, f.size) == 0);
@@ -290,7 +290,7 @@ static void test_seasons(void)
 		app.mesh.leaves.nindices = 0;
 		app.mesh_serial++;
 		draw(&f, merged, &app, bare);
-		CHECK(same_canvas(f.a, bare, f.size, (int)layout_bar(&app.view).x));
+		CHECK(same_canvas(f.a, bare, f.size, (int)layout_bar(&app.screen).x));
 		CHECK(memcmp(f.a, bare, f.size) != 0); /* the season button's picture */
 		app.tree.nleaves = nleaves;
 		app.mesh.leaves.nindices = nindices;
@@ -320,7 +320,7 @@ static void test_expanded_indices(void)
 	struct render_stats st;
 
 	CHECK_INT(scene_build(&app, "eraser"), 0);
-	fixture_init(&f, app.view.width, app.view.height);
+	fixture_init(&f, app.screen.width, app.screen.height);
 	indexed = render_create();
 	expanded = render_create();
 	CHECK(indexed && expanded);
@@ -348,7 +348,7 @@ static void test_bad_mesh(void)
 	uint32_t good;
 
 	CHECK_INT(scene_build(&app, "leaf"), 0);
-	fixture_init(&f, app.view.width, app.view.height);
+	fixture_init(&f, app.screen.width, app.screen.height);
 	r = render_create();
 	CHECK(r);
 
@@ -374,7 +374,7 @@ static void test_empty(void)
 	struct render_stats st;
 
 	memset(&app, 0, sizeof(app));
-	view_init(&app.view, 320, 200);
+	screen_init(&app.screen, 320, 200);
 	fixture_init(&f, 320, 200);
 	r = render_create();
 	CHECK(r);
@@ -400,7 +400,7 @@ static void test_antialiased_stroke(void)
 	size_t blended = 0;
 
 	memset(&app, 0, sizeof(app));
-	view_init(&app.view, 320, 200);
+	screen_init(&app.screen, 320, 200);
 	app.stroke.points = pts;
 	app.stroke.npoints = 2;
 	app.stroke.active = true;
@@ -542,7 +542,7 @@ static void test_templates(void)
 	CHECK_INT(st.uploads, 2 + 2 * GEN_PRESET_COUNT);
 	CHECK_INT(st.tree_triangles, 0);
 	for (size_t i = 0; i < n; i++) {
-		struct layout_rect card = layout_side_slot(&app->view, i, LAYOUT_SIDE_NAMED_CARDS);
+		struct layout_rect card = layout_side_slot(&app->screen, i, LAYOUT_SIDE_NAMED_CARDS);
 		size_t drawn = drawn_in(f.a, 640, layout_card_picture(card, LAYOUT_SIDE_NAMED_CARDS));
 
 		if (drawn < 200)
@@ -606,7 +606,7 @@ static void test_labels_batched(void)
 	uint8_t *c;
 
 	CHECK_INT(scene_build(&app, "kiosk"), 0);
-	fixture_init(&f, app.view.width, app.view.height);
+	fixture_init(&f, app.screen.width, app.screen.height);
 	c = malloc(f.size);
 	CHECK(c);
 	plain = render_create();
@@ -626,10 +626,10 @@ static void test_labels_batched(void)
 	CHECK(differing(f.b, c, f.size, 8) > 500);
 	/* the canvas is the same in all three: only the bar changed */
 	{
-		struct layout_rect bar = layout_bar(&app.view);
-		size_t row = (size_t)app.view.width * 4;
+		struct layout_rect bar = layout_bar(&app.screen);
+		size_t row = (size_t)app.screen.width * 4;
 
-		for (int y = 0; y < app.view.height; y += 7)
+		for (int y = 0; y < app.screen.height; y += 7)
 			CHECK(memcmp(f.a + y * row, c + y * row, (size_t)(bar.x - 12) * 4) == 0);
 	}
 	/* the same again: the glyphs are cached, none is rasterised a second time */
@@ -678,7 +678,7 @@ static void test_status_fades(void)
 	CHECK_INT(scene_build(&app, "saved"), 0);
 	at = app.status_us;
 	CHECK_INT(app_status_at(&app, at, &until), APP_STATUS_SAVED);
-	fixture_init(&f, app.view.width, app.view.height);
+	fixture_init(&f, app.screen.width, app.screen.height);
 	none = malloc(f.size);
 	half = malloc(f.size);
 	CHECK(none && half);
@@ -704,9 +704,9 @@ static void test_status_fades(void)
 	CHECK(differing(half, f.a, f.size, 8) > 1000);
 	CHECK(differing(half, none, f.size, 8) > 1000);
 	/* half way: the tick's green disc is half over the paper */
-	for (int yy = 0; yy < app.view.height / 4; yy++)
-		for (int xx = 0; xx < app.view.width; xx++) {
-			int d = red_at(none, app.view.width, xx, yy) - red_at(f.a, app.view.width, xx, yy);
+	for (int yy = 0; yy < app.screen.height / 4; yy++)
+		for (int xx = 0; xx < app.screen.width; xx++) {
+			int d = red_at(none, app.screen.width, xx, yy) - red_at(f.a, app.screen.width, xx, yy);
 
 			if (d > best) {
 				best = d;
@@ -716,8 +716,8 @@ static void test_status_fades(void)
 		}
 	CHECK(best > 100);
 	{
-		int full = red_at(f.a, app.view.width, x, y), bare = red_at(none, app.view.width, x, y);
-		int mid = red_at(half, app.view.width, x, y);
+		int full = red_at(f.a, app.screen.width, x, y), bare = red_at(none, app.screen.width, x, y);
+		int mid = red_at(half, app.screen.width, x, y);
 
 		CHECK(abs(mid - (full + bare) / 2) <= 12);
 	}
@@ -763,7 +763,7 @@ static void test_attract(void)
 	CHECK_INT(egl_headless_read_rgba(f.egl, later), 0);
 	CHECK(memcmp(f.b, later, f.size) == 0);
 	/* over the canvas only */
-	bar = layout_bar(&app->view);
+	bar = layout_bar(&app->screen);
 	for (int y = 0; y < 400; y++)
 		CHECK(memcmp(f.a + ((size_t)y * 640 + (size_t)bar.x) * 4,
 			     f.b + ((size_t)y * 640 + (size_t)bar.x) * 4, (size_t)bar.w * 4) == 0);

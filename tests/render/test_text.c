@@ -304,7 +304,7 @@ static void test_measure(void)
 }
 
 /* Where a button's label is drawn, at a screen size: its size, and the width it may take. */
-static void label_place(const struct view *v, enum button b, int *px, double *room)
+static void label_place(const struct screen *v, enum button b, int *px, double *room)
 {
 	struct layout_button lb[LAYOUT_NBUTTONS];
 	size_t n = layout_buttons(v, lb, LAYOUT_NBUTTONS);
@@ -339,7 +339,7 @@ static void test_labels(void)
 	static const enum render_lang langs[] = { RENDER_LANG_EN, RENDER_LANG_JA };
 	static const int sizes[][2] = { { 1280, 800 }, { 800, 480 } };
 	struct fixture f;
-	struct view v;
+	struct screen v;
 	const char *s;
 	size_t n;
 
@@ -349,7 +349,7 @@ static void test_labels(void)
 			int px;
 			double room;
 
-			view_init(&v, sizes[z][0], sizes[z][1]);
+			screen_init(&v, sizes[z][0], sizes[z][1]);
 			label_place(&v, BUTTON_3D, &px, &room);
 			if (z == 0)
 				CHECK(px >= 20); /* 13 mm on a kiosk screen 50 cm tall */

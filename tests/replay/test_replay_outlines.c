@@ -385,11 +385,11 @@ static void test_property(void)
 {
 	enum { SKETCHES = 300, ACTIONS = 14 };
 	struct layout_button bar[LAYOUT_NBUTTONS];
-	struct view v;
+	struct screen v;
 	double right;
 	int merged = 0, cuts = 0, actions = 0, sketches = test_cases(SKETCHES);
 
-	view_init(&v, W, H);
+	screen_init(&v, W, H);
 	layout_buttons(&v, bar, LAYOUT_NBUTTONS);
 	right = bar[0].x - 30; /* strokes stay clear of the button bar */
 	for (uint64_t seed = 1; seed <= (uint64_t)sketches; seed++) {

@@ -20,7 +20,7 @@ static void check_screen(const struct app *app, struct vec3 p, double x, double 
 {
 	double sx, sy;
 
-	view_to_screen(&app->view, p, &sx, &sy);
+	screen_from_world(&app->screen, p, &sx, &sy);
 	CHECK_NEAR(sx, x, 0.5);
 	CHECK_NEAR(sy, y, 0.5);
 }
