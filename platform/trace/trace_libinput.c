@@ -343,7 +343,7 @@ struct codes_ctx {
 static int code_item(struct li_parser *p, void *data)
 {
 	struct codes_ctx *c = data;
-	int64_t code;
+	int64_t code = 0;
 	int a, r;
 
 	r = scalar_int(p, 0, 0xffff, "event code", &code);

@@ -254,6 +254,8 @@ static int expect_fields(struct reader *r, int n, const char *what)
 	return 0;
 }
 
+/* Sets *v only on success; callers still initialise it, as gcc -O3 cannot see that
+ * error_at() is negative and warns (-Wmaybe-uninitialized) in release builds. */
 static int parse_u64(struct reader *r, const char *s, uint64_t max, uint64_t *v, const char *what)
 {
 	char *endp;
@@ -304,7 +306,7 @@ static int parse_camera(struct reader *r, const char *yaw, const char *pitch, st
 
 static int parse_stroke(struct reader *r, struct doc_op *op, uint64_t version)
 {
-	uint64_t v, npoints;
+	uint64_t v = 0, npoints = 0;
 	uint32_t last_dt = 0;
 	int ret;
 
@@ -356,7 +358,7 @@ static int parse_stroke(struct reader *r, struct doc_op *op, uint64_t version)
 static int parse_edit(struct reader *r, struct doc_op *op)
 {
 	bool patterned = op->kind == DOC_OP_ARRANGE || op->kind == DOC_OP_PROPAGATE;
-	uint64_t v;
+	uint64_t v = 0;
 	int ret;
 
 	if ((ret = expect_fields(r, patterned ? 4 : 3, r->fields[0])) < 0 ||
@@ -389,7 +391,7 @@ static int parse_edit(struct reader *r, struct doc_op *op)
  * (version 6) */
 static int parse_functional(struct reader *r, struct doc_op *op)
 {
-	uint64_t v;
+	uint64_t v = 0;
 	int ret;
 
 	if (op->kind == DOC_OP_SEASON) {
@@ -494,7 +496,7 @@ static int parse_exact(struct reader *r, const char *s, double lo, double hi, do
 /* One branch of an import: its head line (read), then its points. */
 static int parse_import_branch(struct reader *r, struct tree *t, size_t i)
 {
-	uint64_t n, gen;
+	uint64_t n = 0, gen = 0;
 	double parent, pt;
 	struct vec3 *p;
 	double *rad;
@@ -550,7 +552,7 @@ static int parse_import_branch(struct reader *r, struct tree *t, size_t i)
 /* import T B (version 8): B branches follow, parents before children. */
 static int parse_import(struct reader *r, struct doc_op *op)
 {
-	uint64_t n;
+	uint64_t n = 0;
 	int ret;
 
 	if ((ret = expect_fields(r, 3, "import (time, branches)")) < 0 ||
@@ -720,7 +722,7 @@ static int parse_body(struct reader *r, struct doc *d, uint64_t version)
 int doc_parse(const char *data, size_t len, const char *name, struct doc *d, struct error *err)
 {
 	struct reader r = { .data = data, .end = data + len, .pos = data, .name = name, .err = err };
-	uint64_t version;
+	uint64_t version = 0;
 	int ret;
 
 	doc_init(d, 0);

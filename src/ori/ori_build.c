@@ -259,7 +259,7 @@ static int axis(struct ori_builder *b, const struct ori_axis *x, int s, size_t i
 	double dc[2];
 	struct ori_node_geo *g;
 	struct iso before;
-	int v, c, ret, gi;
+	int v = 0, c = 0, ret, gi;
 
 	if (i == x->nnodes)
 		return ray(b, s, x->dir, ORI_VALLEY, rule, parent, 0, node, NULL);
