@@ -9,7 +9,7 @@
  * Settings files that are one flat YAML mapping of known keys, its version key first
  * (`edaha-vine: 1`, `edaha-wood: 1`): read with libyaml's document loader from memory
  * into a struct, every key optional (the struct's defaults stand), every refusal told at
- * its line. A format is a table of its keys; vine_read.c and wood_read.c are two.
+ * its line. A format is a table of its keys; vine_read.c and wood_params.c are two.
  */
 
 enum yaml_flat_kind {
