@@ -13,7 +13,7 @@
  * a leaf loop every tenth branch. Seeded, so every run draws the same.
  */
 struct bench_pen {
-	struct pen pen;       /* its clock (tests/app/pen.h) */
+	struct pen pen;       /* its clock (tests/lib/pen.h) */
 	double last_commit_s; /* wall time of the latest tip-up (the commit) */
 };
 

@@ -24,7 +24,7 @@ git -C "$REPO" worktree add --detach -q "$T/base-src" "$base"
 build "$T/base-src" "$T/base"
 build "$REPO" "$T/head"
 
-python3 "$REPO/tests/vine_cli/support.py" pole "$T/pole.obj"
+python3 "$REPO/tests/vine/support.py" pole "$T/pole.obj"
 runs=(
 	"demo|"
 	"leaf-entire|--leaf entire"

@@ -23,7 +23,7 @@
 #include "layout.h"
 #include "pen.h"
 #include "rng.h"
-#include "sketch_seen.h"
+#include "session.h"
 #include "test.h"
 #include "tree_delta.h"
 #include "wood.h"
@@ -38,107 +38,18 @@ static size_t worst_meshed;
 
 /* ---- the reference ---- */
 
-static void copy_doc(struct doc *d, const struct doc *src)
-{
-	doc_init(d, src->seed);
-	d->ops = calloc(src->nops + 1, sizeof(*d->ops));
-	CHECK(d->ops);
-	d->cap = src->nops + 1;
-	for (size_t i = 0; i < src->nops; i++)
-		CHECK_INT(doc_op_copy(&d->ops[i], &src->ops[i]), 0);
-	d->nops = src->nops;
-	d->cursor = src->cursor;
-	d->view = src->view;
-}
-
-#define SAME(a, b) CHECK(memcmp(&(a), &(b), sizeof(a)) == 0)
-
-static void same_mesh(const struct mesh *a, const struct mesh *b)
-{
-	CHECK_INT(a->nvertices, b->nvertices);
-	CHECK_INT(a->nindices, b->nindices);
-	if (a->nvertices) {
-		CHECK(memcmp(a->positions, b->positions, a->nvertices * 3 * sizeof(float)) == 0);
-		CHECK(memcmp(a->normals, b->normals, a->nvertices * 3 * sizeof(float)) == 0);
-	}
-	if (a->nindices)
-		CHECK(memcmp(a->indices, b->indices, a->nindices * sizeof(uint32_t)) == 0);
-}
-
-static void same_tree(const struct tree *a, const struct tree *b)
-{
-	CHECK_INT(a->nbranches, b->nbranches);
-	CHECK_INT(a->nleaves, b->nleaves);
-	CHECK_INT(a->lifted, b->lifted);
-	CHECK_INT(a->sides, b->sides);
-	CHECK_INT(a->season, b->season);
-	CHECK_INT(a->leaf_kind, b->leaf_kind);
-	CHECK_INT(a->last_sketched, b->last_sketched);
-	CHECK_INT(a->last_sketched_end_us, b->last_sketched_end_us);
-	CHECK_INT(a->has_profile, b->has_profile);
-	SAME(a->profile, b->profile);
-	for (size_t i = 0; i < a->nbranches; i++) {
-		const struct branch *x = &a->branches[i], *y = &b->branches[i];
-
-		CHECK_INT(x->id, y->id);
-		CHECK_INT(x->parent, y->parent);
-		SAME(x->parent_t, y->parent_t);
-		CHECK_INT(x->generation, y->generation);
-		CHECK_INT(x->level, y->level);
-		CHECK_INT(x->origin, y->origin);
-		CHECK_INT(x->npoints, y->npoints);
-		CHECK(memcmp(x->points, y->points, x->npoints * sizeof(*x->points)) == 0);
-		CHECK(memcmp(x->radii, y->radii, x->npoints * sizeof(*x->radii)) == 0);
-	}
-	for (size_t i = 0; i < a->nleaves; i++) {
-		const struct leaf *x = &a->leaves[i], *y = &b->leaves[i];
-
-		CHECK_INT(x->id, y->id);
-		CHECK_INT(x->branch, y->branch);
-		SAME(x->branch_t, y->branch_t);
-		CHECK_INT(x->kind, y->kind);
-		CHECK_INT(x->origin, y->origin);
-		CHECK_INT(x->npoints, y->npoints);
-		CHECK(memcmp(x->points, y->points, x->npoints * sizeof(*x->points)) == 0);
-		CHECK((x->local == NULL) == (y->local == NULL));
-		CHECK(!x->local || memcmp(x->local, y->local, x->npoints * sizeof(*x->local)) == 0);
-	}
-	CHECK((a->wood == NULL) == (b->wood == NULL));
-	if (a->wood && b->wood) {
-		CHECK_INT(a->wood->presses, b->wood->presses);
-		CHECK(wood_cells(&a->wood->g) == wood_cells(&b->wood->g));
-		CHECK(memcmp(a->wood->g.density, b->wood->g.density,
-			     wood_cells(&a->wood->g) * sizeof(double)) == 0);
-		CHECK_INT(a->wood->nbranches, b->wood->nbranches);
-		CHECK(memcmp(a->wood->voxelised, b->wood->voxelised,
-			     a->wood->nbranches * sizeof(*a->wood->voxelised)) == 0);
-	}
-	CHECK_INT(a->nvines, b->nvines);
-	for (size_t i = 0; i < a->nvines; i++) {
-		const struct vine *x = &a->vines[i], *y = &b->vines[i];
-
-		SAME(x->plant, y->plant);
-		CHECK_INT(x->nshoots, y->nshoots);
-		for (size_t k = 0; k < x->nshoots; k++) {
-			CHECK_INT(x->shoots[k].n, y->shoots[k].n);
-			CHECK(memcmp(x->shoots[k].axis, y->shoots[k].axis,
-				     x->shoots[k].n * sizeof(*x->shoots[k].axis)) == 0);
-		}
-	}
-}
-
 static void same_as_replay(const struct app *a)
 {
 	struct doc d;
 
-	copy_doc(&d, &a->doc);
+	session_copy_doc(&d, &a->doc);
 	CHECK_INT(app_load_doc(ref, &d), 0);
 	doc_finish(&d);
-	same_tree(&a->tree, &ref->tree);
+	session_same_tree(&a->tree, &ref->tree);
 	SAME(a->rng, ref->rng);
 	SAME(a->camera, ref->camera);
-	same_mesh(&a->mesh.bark, &ref->mesh.bark);
-	same_mesh(&a->mesh.leaves, &ref->mesh.leaves);
+	session_same_mesh(&a->mesh.bark, &ref->mesh.bark);
+	session_same_mesh(&a->mesh.leaves, &ref->mesh.leaves);
 	states++;
 }
 
@@ -215,71 +126,9 @@ static void step(struct app *app, enum button b)
 
 /* ---- a visitor ---- */
 
-static void pen(struct app *app, enum event_type type, double x, double y, enum event_tool tool)
-{
-	pen_event(&clock, app, type, tool, x, y, 0.6);
-}
-
-static void stroke(struct app *app, double x0, double y0, double x1, double y1, int n,
-		   enum event_tool tool)
-{
-	pen(app, EVENT_TIP_DOWN, x0, y0, tool);
-	for (int i = 1; i < n; i++) {
-		double t = (double)i / (n - 1);
-
-		pen(app, EVENT_MOTION, x0 + (x1 - x0) * t + 5 * sin(t * 7), y0 + (y1 - y0) * t, tool);
-	}
-	pen(app, EVENT_TIP_UP, x1, y1, tool);
-	clock.now_us += PEN_PAUSE_US;
-}
-
-static void loop(struct app *app, double cx, double cy, double r, double dir)
-{
-	pen(app, EVENT_TIP_DOWN, cx + r, cy, EVENT_TOOL_PEN);
-	for (int i = 1; i <= 30; i++)
-		pen(app, EVENT_MOTION, cx + r * cos(dir * i * 0.23), cy + r * sin(dir * i * 0.23),
-		    EVENT_TOOL_PEN);
-	pen(app, EVENT_TIP_UP, cx + r * cos(dir * 30 * 0.23), cy + r * sin(dir * 30 * 0.23),
-	    EVENT_TOOL_PEN);
-	clock.now_us += PEN_PAUSE_US;
-}
-
-static void tap(struct app *app, double x, double y)
-{
-	pen(app, EVENT_TIP_DOWN, x, y, EVENT_TOOL_PEN);
-	pen(app, EVENT_TIP_UP, x, y, EVENT_TOOL_PEN);
-	clock.now_us += 300000;
-}
-
 static void press(struct app *app, enum button b)
 {
 	pen_button(&clock, app, b);
-}
-
-/* A point of a random branch (one with children if asked) as the screen shows it. */
-static bool pick(const struct app *app, struct rng *r, bool parent, double *x, double *y)
-{
-	struct camera_xf xf;
-	enum button hit;
-
-	if (app->tree.nbranches == 0)
-		return false;
-	camera_xf_init(&xf, app->camera, sketch_seen_pivot(&app->tree));
-	for (int tries = 0; tries < 40; tries++) {
-		size_t b = rng_next(r) % app->tree.nbranches;
-		const struct branch *br = &app->tree.branches[b];
-		bool kids = false;
-
-		for (size_t i = b + 1; i < app->tree.nbranches && parent && !kids; i++)
-			kids = app->tree.branches[i].parent == (int)b;
-		if ((parent && !kids) || br->npoints == 0)
-			continue;
-		screen_from_world(&app->screen, camera_to_view(&xf, br->points[rng_next(r) % br->npoints]), x, y);
-		if (*x > 60 && *x < app->screen.width - 60 && *y > 60 && *y < app->screen.height - 60 &&
-		    !layout_hit(&app->screen, *x, *y, &hit) && !layout_hit_view_button(&app->screen, *x, *y))
-			return true;
-	}
-	return false;
 }
 
 /* A small generated tree, as the New strip's templates and --generate make them. */
@@ -320,24 +169,26 @@ static void act(struct app *app, struct rng *r, int *propagations, bool may_grow
 	if (what < 8) {
 		x = rng_range(r, 300, app->screen.width - 300);
 		y = app->screen.height * 0.9;
-		stroke(app, x, y, x + rng_range(r, -30, 30), y - rng_range(r, 250, 450), 30,
-		       EVENT_TOOL_PEN);
+		session_stroke(&clock, app, x, y, x + rng_range(r, -30, 30), y - rng_range(r, 250, 450),
+			       30, EVENT_TOOL_PEN, PEN_PAUSE_US);
 	} else if (what < 34) {
-		if (pick(app, r, false, &x, &y))
-			stroke(app, x, y, x + rng_range(r, -160, 160), y - rng_range(r, 10, 140), 24,
-			       EVENT_TOOL_PEN);
+		if (session_pick(app, r, false, &x, &y))
+			session_stroke(&clock, app, x, y, x + rng_range(r, -160, 160),
+				       y - rng_range(r, 10, 140), 24, EVENT_TOOL_PEN, PEN_PAUSE_US);
 	} else if (what < 41) {
 		/* a slash across a branch, begun away from it: a cut */
-		if (pick(app, r, false, &x, &y))
-			stroke(app, x - 70, y - 50, x + 70, y + 50, 16, EVENT_TOOL_PEN);
+		if (session_pick(app, r, false, &x, &y))
+			session_stroke(&clock, app, x - 70, y - 50, x + 70, y + 50, 16, EVENT_TOOL_PEN,
+				       PEN_PAUSE_US);
 		cuts_or_erasures += app->tree.nbranches < nb;
 	} else if (what < 44) {
-		if (pick(app, r, false, &x, &y))
-			stroke(app, x - 15, y, x + 15, y + 5, 8, EVENT_TOOL_ERASER);
+		if (session_pick(app, r, false, &x, &y))
+			session_stroke(&clock, app, x - 15, y, x + 15, y + 5, 8, EVENT_TOOL_ERASER,
+				       PEN_PAUSE_US);
 		cuts_or_erasures += app->tree.nbranches < nb;
 	} else if (what < 50) {
-		if (pick(app, r, false, &x, &y))
-			loop(app, x, y - 14, 12, 1.0);
+		if (session_pick(app, r, false, &x, &y))
+			session_loop(&clock, app, x, y - 14, 12, 1.0);
 	} else if (what < 53) {
 		press(app, BUTTON_3D);
 	} else if (what < 55) {
@@ -346,12 +197,12 @@ static void act(struct app *app, struct rng *r, int *propagations, bool may_grow
 	} else if (what < 62) {
 		/* clone mode: a child more (two taps), or one less (a counter-clockwise circle) */
 		press(app, BUTTON_CLONE);
-		if (app->mode == APP_MODE_CLONE && pick(app, r, true, &x, &y)) {
-			tap(app, x, y);
+		if (app->mode == APP_MODE_CLONE && session_pick(app, r, true, &x, &y)) {
+			session_tap(&clock, app, x, y);
 			if (what < 58)
-				tap(app, x, y);
+				session_tap(&clock, app, x, y);
 			else
-				loop(app, x, y, 40, -1.0);
+				session_loop(&clock, app, x, y, 40, -1.0);
 		}
 		if (app->mode == APP_MODE_CLONE)
 			press(app, BUTTON_CLONE);
@@ -361,20 +212,20 @@ static void act(struct app *app, struct rng *r, int *propagations, bool may_grow
 		press(app, BUTTON_LEAF);
 		if (app->mode == APP_MODE_LEAF && rng_next(r) % 2)
 			press(app, (enum button)(BUTTON_LEAF_DRAWN + rng_next(r) % 4));
-		if (app->mode == APP_MODE_LEAF && pick(app, r, false, &x, &y)) {
+		if (app->mode == APP_MODE_LEAF && session_pick(app, r, false, &x, &y)) {
 			struct layout_rect s = layout_side_slot(&app->screen, 0, LAYOUT_SIDE_CARDS);
 
-			loop(app, x, y - 14, 12, 1.0);
+			session_loop(&clock, app, x, y - 14, 12, 1.0);
 			if (app->suggestions)
-				tap(app, s.x + s.w / 2, s.y + s.h / 2);
+				session_tap(&clock, app, s.x + s.w / 2, s.y + s.h / 2);
 		}
 		if (app->mode == APP_MODE_LEAF)
 			press(app, BUTTON_LEAF);
 	} else if (what < 69) {
 		if (*propagations > 0) {
 			press(app, BUTTON_PROPAGATE);
-			if (app->mode == APP_MODE_PROPAGATE && pick(app, r, false, &x, &y)) {
-				tap(app, x, y);
+			if (app->mode == APP_MODE_PROPAGATE && session_pick(app, r, false, &x, &y)) {
+				session_tap(&clock, app, x, y);
 				(*propagations)--;
 			}
 			if (app->mode == APP_MODE_PROPAGATE)
@@ -390,7 +241,7 @@ static void act(struct app *app, struct rng *r, int *propagations, bool may_grow
 
 			press(app, BUTTON_VINE);
 			if (app->mode == APP_MODE_VINE) {
-				tap(app, app->screen.width / 2 + rng_range(r, -90, 90), app->screen.ground_y_px - 4);
+				session_tap(&clock, app, app->screen.width / 2 + rng_range(r, -90, 90), app->screen.ground_y_px - 4);
 				press(app, BUTTON_VINE);
 			}
 			vines += app->tree.nvines > nv;

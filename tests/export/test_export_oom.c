@@ -4,7 +4,7 @@
  * exporter in turn, the glTF and OBJ exporters in every season, a tree with a vine too
  * (the exporters mesh it) and a grown tree (its wood's bark, skeleton.json's "wood");
  * each must return -ENOMEM, leave nothing half-built and leak nothing.
- * Allocations fail through tests/fail_alloc.c, which replaces malloc & co., so it is not
+ * Allocations fail through tests/lib/fail_alloc.c, which replaces malloc & co., so it is not
  * built with sanitizers, which replace them too.
  */
 #include <errno.h>

@@ -140,3 +140,16 @@ void shape_sample(const struct shape *s, unsigned i, unsigned n, double p[3], do
 			p[k] = s->c[k] + s->r * nrm[k];
 	}
 }
+
+double shape_inradius(const struct shape *s)
+{
+	switch (s->kind) {
+	case SHAPE_BOX:
+		return fmin(s->half[0], fmin(s->half[1], s->half[2]));
+	case SHAPE_CONE:
+		return s->r * s->h / (s->r + hypot(s->r, s->h));
+	case SHAPE_SPHERE:
+		break;
+	}
+	return s->r;
+}

@@ -22,3 +22,5 @@ double shape_distance(const struct shape *s, const double x[3]);
 /* The i-th of n points spread uniformly by area over the surface, and its outward
  * normal. Deterministic. */
 void shape_sample(const struct shape *s, unsigned i, unsigned n, double p[3], double normal[3]);
+/* The radius of the largest ball inside the shape. */
+double shape_inradius(const struct shape *s);

@@ -21,8 +21,9 @@
  *
  *   git worktree add --detach /tmp/old 4394a65
  *   (cd /tmp/old && meson setup build && meson compile -C build src/libedaha_core.a)
- *   cc -std=c11 -O2 -DGEN_VERSION_RECORD -I/tmp/old/src -Itests tests/gen/test_gen_version.c \
- *      tests/gen/shape.c /tmp/old/build/src/libedaha_core.a -lyaml -lm -o /tmp/record-1
+ *   cc -std=c11 -O2 -DGEN_VERSION_RECORD -I/tmp/old/src -Itests/lib -Ibuild/tests/lib \
+ *      tests/gen/test_gen_version.c tests/gen/shape.c tests/gen/draw.c \
+ *      /tmp/old/build/src/libedaha_core.a -lyaml -lm -o /tmp/record-1
  *   /tmp/record-1 > /tmp/v1.txt
  *
  * and the same at 9753074 for the second column (paste, with the type in the middle).
@@ -35,6 +36,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "draw.h"
 #include "gen.h"
 #include "shape.h"
 #include "test.h"
@@ -43,72 +45,33 @@
 #define RANDOM_FILES 500
 #define RECORDED_VERSIONS 2
 
-static uint64_t mix(uint64_t *s)
-{
-	uint64_t z = (*s += 0x9e3779b97f4a7c15ULL);
-
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-	return z ^ (z >> 31);
-}
-
-static double uni(uint64_t *s)
-{
-	return (double)(mix(s) >> 11) * 0x1.0p-53;
-}
-
-static double span(uint64_t *s, double lo, double hi)
-{
-	return lo + (hi - lo) * uni(s);
-}
-
-/* log-uniform: small and large alike */
-static double logspan(uint64_t *s, double lo, double hi)
-{
-	return exp(span(s, log(lo), log(hi)));
-}
-
 static const char *const leaf_types[] = { "oval", "pointed", "round", "needle", "leaflet",
 					  "entire", "hop", "maple" };
 static const char *const seasons[] = { "spring", "summer", "autumn", "winter" };
 static const char *const kinds[] = { "lsystem", "sphere", "box", "cone", "palm" };
 
-/* Appends to the file text. */
-static void put(char *yaml, size_t size, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
-static void put(char *yaml, size_t size, const char *fmt, ...)
-{
-	size_t len = strlen(yaml);
-	va_list ap;
-	int n;
-
-	va_start(ap, fmt);
-	n = vsnprintf(yaml + len, size - len, fmt, ap);
-	va_end(ap);
-	CHECK(n > 0 && (size_t)n < size - len);
-}
-
 /* Leaves: mostly few a tip, sometimes many (the limits refuse some). */
 static void put_leaves(uint64_t *s, char *yaml, size_t size, double lo, double hi)
 {
-	double u = uni(s);
-	int amount = u < 0.15 ? 0 : u < 0.85 ? 1 + (int)(uni(s) * 8) : (int)span(s, 9, 80);
+	double u = draw_uni(s);
+	int amount = u < 0.15 ? 0 : u < 0.85 ? 1 + (int)(draw_uni(s) * 8) : (int)draw_span(s, 9, 80);
 
-	put(yaml, size, "leaves: {amount: %d, size: %.17g, type: %s}\nseason: %s\n", amount,
-	    logspan(s, lo, hi), leaf_types[mix(s) % 8], seasons[mix(s) % 4]);
+	draw_put(yaml, size, "leaves: {amount: %d, size: %.17g, type: %s}\nseason: %s\n", amount,
+	         draw_logspan(s, lo, hi), leaf_types[draw_mix(s) % 8], seasons[draw_mix(s) % 4]);
 }
 
 /* The branching keys of lsystem and shrub. */
 static void put_branching(uint64_t *s, char *yaml, size_t size, int max_levels)
 {
-	int children = uni(s) < 0.5 ? 2 : 3;
-	double amin = span(s, 0, 120), amax = span(s, amin, 130);
+	int children = draw_uni(s) < 0.5 ? 2 : 3;
+	double amin = draw_span(s, 0, 120), amax = draw_span(s, amin, 130);
 
-	put(yaml, size, "levels: %d\nchildren: %d\nangle: {min: %.17g, max: %.17g, randomness: %.17g}\n",
-	    1 + (int)(uni(s) * max_levels), children, amin, amax, uni(s));
-	put(yaml, size, "ratios: [%.17g, %.17g", span(s, 0.3, 1.0), span(s, 0.3, 1.0));
+	draw_put(yaml, size, "levels: %d\nchildren: %d\nangle: {min: %.17g, max: %.17g, randomness: %.17g}\n",
+	         1 + (int)(draw_uni(s) * max_levels), children, amin, amax, draw_uni(s));
+	draw_put(yaml, size, "ratios: [%.17g, %.17g", draw_span(s, 0.3, 1.0), draw_span(s, 0.3, 1.0));
 	if (children == 3)
-		put(yaml, size, ", %.17g", span(s, 0.3, 1.0));
-	put(yaml, size, "]\nspread: %.17g\ntwist: %.17g\n", span(s, 0, 360), span(s, -360, 360));
+		draw_put(yaml, size, ", %.17g", draw_span(s, 0.3, 1.0));
+	draw_put(yaml, size, "]\nspread: %.17g\ntwist: %.17g\n", draw_span(s, 0, 360), draw_span(s, -360, 360));
 }
 
 /* A random point at least `margin` inside the shape (false when none was found). */
@@ -118,10 +81,10 @@ static bool inside_point(uint64_t *s, const struct shape *sh, double margin, dou
 		for (int k = 0; k < 3; k++) {
 			double ext = sh->kind == SHAPE_BOX ? sh->half[k] : sh->r;
 
-			x[k] = span(s, sh->c[k] - ext, sh->c[k] + ext);
+			x[k] = draw_span(s, sh->c[k] - ext, sh->c[k] + ext);
 		}
 		if (sh->kind == SHAPE_CONE)
-			x[1] = span(s, sh->c[1], sh->c[1] + sh->h);
+			x[1] = draw_span(s, sh->c[1], sh->c[1] + sh->h);
 		if (shape_distance(sh, x) < -margin)
 			return true;
 	}
@@ -131,79 +94,68 @@ static bool inside_point(uint64_t *s, const struct shape *sh, double margin, dou
 static void draw_shrub(uint64_t *s, enum shape_kind kind, char *yaml, size_t size)
 {
 	struct shape sh = { .kind = kind };
-	double top[3], ratio = span(s, 0.4, 0.95), thickness, trunk_h, in;
+	double top[3], ratio = draw_span(s, 0.4, 0.95), thickness, trunk_h, in;
 
 	for (int k = 0; k < 3; k++)
-		sh.c[k] = uni(s) < 0.1 ? span(s, -900, 900) : span(s, -3, 3);
+		sh.c[k] = draw_uni(s) < 0.1 ? draw_span(s, -900, 900) : draw_span(s, -3, 3);
 	switch (kind) {
 	case SHAPE_SPHERE:
-		sh.r = logspan(s, 0.2, 4);
-		in = sh.r;
+		sh.r = draw_logspan(s, 0.2, 4);
 		break;
 	case SHAPE_BOX:
 		for (int k = 0; k < 3; k++)
-			sh.half[k] = 0.5 * logspan(s, 0.2, 6);
-		in = fmin(sh.half[0], fmin(sh.half[1], sh.half[2]));
+			sh.half[k] = 0.5 * draw_logspan(s, 0.2, 6);
 		break;
 	case SHAPE_CONE:
 	default:
-		sh.r = logspan(s, 0.2, 4);
-		sh.h = logspan(s, 0.3, 6);
-		in = sh.r * sh.h / (sh.r + hypot(sh.r, sh.h));
+		sh.r = draw_logspan(s, 0.2, 4);
+		sh.h = draw_logspan(s, 0.3, 6);
 		break;
 	}
-	thickness = logspan(s, 0.002, fmin(0.3, in / 10 / ratio));
+	in = shape_inradius(&sh);
+	thickness = draw_logspan(s, 0.002, fmin(0.3, in / 10 / ratio));
 	/* the trunk's top well inside (2.2 of the crown's radii), else anywhere: a file that
 	 * is refused is recorded so */
 	if (!inside_point(s, &sh, 2.2 * thickness * ratio * 1.01, top))
 		top[0] = sh.c[0], top[1] = sh.c[1], top[2] = sh.c[2];
-	trunk_h = logspan(s, 0.05, 5);
-	put(yaml, size, "edaha-tree: 1\ntype: shrub\nprecision: %d\n", 3 + (int)(uni(s) * 14));
-	put(yaml, size, "trunk: {start: [%.17g, %.17g, %.17g]}\ntrunk_height: %.17g\n", top[0],
-	    top[1] - trunk_h, top[2], trunk_h);
+	trunk_h = draw_logspan(s, 0.05, 5);
+	draw_put(yaml, size, "edaha-tree: 1\ntype: shrub\nprecision: %d\n", 3 + (int)(draw_uni(s) * 14));
+	draw_put(yaml, size, "trunk: {start: [%.17g, %.17g, %.17g]}\ntrunk_height: %.17g\n", top[0],
+	         top[1] - trunk_h, top[2], trunk_h);
 	put_branching(s, yaml, size, 10);
-	put(yaml, size, "thickness: %.17g\nthickness_ratio: %.17g\n", thickness, ratio);
+	draw_put(yaml, size, "thickness: %.17g\nthickness_ratio: %.17g\n", thickness, ratio);
 	put_leaves(s, yaml, size, 0.01, fmin(0.5, in / 3));
-	switch (kind) {
-	case SHAPE_SPHERE:
-		put(yaml, size, "clip: {shape: sphere, center: [%.17g, %.17g, %.17g], radius: %.17g}\n",
-		    sh.c[0], sh.c[1], sh.c[2], sh.r);
-		break;
-	case SHAPE_BOX:
-		put(yaml, size, "clip: {shape: box, center: [%.17g, %.17g, %.17g], size: [%.17g, %.17g, %.17g]}\n",
-		    sh.c[0], sh.c[1], sh.c[2], 2 * sh.half[0], 2 * sh.half[1], 2 * sh.half[2]);
-		break;
-	case SHAPE_CONE:
-		put(yaml, size, "clip: {shape: cone, center: [%.17g, %.17g, %.17g], radius: %.17g, height: %.17g}\n",
-		    sh.c[0], sh.c[1], sh.c[2], sh.r, sh.h);
-		break;
-	}
+	draw_put_clip(yaml, size, &sh);
 }
 
 static void draw_lsystem(uint64_t *s, char *yaml, size_t size)
 {
-	double x = span(s, -3, 3), y = span(s, -1, 1), z = span(s, -3, 3);
+	double x = draw_span(s, -3, 3), y = draw_span(s, -1, 1), z = draw_span(s, -3, 3);
 
-	put(yaml, size, "edaha-tree: 1\ntype: lsystem\nprecision: %d\n", 3 + (int)(uni(s) * 14));
-	put(yaml, size, "trunk: {start: [%.17g, %.17g, %.17g], end: [%.17g, %.17g, %.17g]}\n", x, y, z,
-	    x + span(s, -1, 1), y + span(s, 0.2, 5), z + span(s, -1, 1));
+	draw_put(yaml, size, "edaha-tree: 1\ntype: lsystem\nprecision: %d\n", 3 + (int)(draw_uni(s) * 14));
+	draw_put(yaml, size, "trunk: {start: [%.17g, %.17g, %.17g], end: [%.17g, %.17g, %.17g]}\n", x, y, z,
+	         x + draw_span(s, -1, 1), y + draw_span(s, 0.2, 5), z + draw_span(s, -1, 1));
 	put_branching(s, yaml, size, 10);
-	put(yaml, size, "thickness: %.17g\nthickness_ratio: %.17g\n", logspan(s, 0.005, 0.5), span(s, 0.3, 1));
+	draw_put(yaml, size, "thickness: %.17g\nthickness_ratio: %.17g\n", draw_logspan(s, 0.005, 0.5),
+		 draw_span(s, 0.3, 1));
 	put_leaves(s, yaml, size, 0.01, 0.5);
 }
 
 static void draw_palm(uint64_t *s, char *yaml, size_t size)
 {
-	double lean = span(s, 0, 19) * 3.14159265358979323846 / 180, az = span(s, 0, 6.283);
-	double amin = span(s, 0, 120), amax = span(s, amin, 130), x = span(s, -3, 3), z = span(s, -3, 3);
+	double lean = draw_span(s, 0, 19) * 3.14159265358979323846 / 180, az = draw_span(s, 0, 6.283);
+	double amin = draw_span(s, 0, 120), amax = draw_span(s, amin, 130), x = draw_span(s, -3, 3),
+	       z = draw_span(s, -3, 3);
 
-	put(yaml, size, "edaha-tree: 1\ntype: palm\nprecision: %d\n", 3 + (int)(uni(s) * 14));
-	put(yaml, size, "trunk: {start: [%.17g, 0, %.17g], end: [%.17g, %.17g, %.17g]}\n", x, z,
-	    x + sin(lean) * cos(az), cos(lean), z + sin(lean) * sin(az));
-	put(yaml, size, "height: %.17g\nfronds: %d\nfrond_length: %.17g\ndroop: %.17g\n", span(s, 0.5, 15),
-	    1 + (int)(uni(s) * 40), logspan(s, 0.1, 6), span(s, 0, 180));
-	put(yaml, size, "angle: {min: %.17g, max: %.17g, randomness: %.17g}\n", amin, amax, uni(s));
-	put(yaml, size, "thickness: %.17g\nthickness_ratio: %.17g\n", logspan(s, 0.02, 0.5), span(s, 0.3, 1));
+	draw_put(yaml, size, "edaha-tree: 1\ntype: palm\nprecision: %d\n", 3 + (int)(draw_uni(s) * 14));
+	draw_put(yaml, size, "trunk: {start: [%.17g, 0, %.17g], end: [%.17g, %.17g, %.17g]}\n", x, z,
+	         x + sin(lean) * cos(az), cos(lean), z + sin(lean) * sin(az));
+	draw_put(yaml, size, "height: %.17g\nfronds: %d\nfrond_length: %.17g\ndroop: %.17g\n",
+		 draw_span(s, 0.5, 15), 1 + (int)(draw_uni(s) * 40), draw_logspan(s, 0.1, 6),
+		 draw_span(s, 0, 180));
+	draw_put(yaml, size, "angle: {min: %.17g, max: %.17g, randomness: %.17g}\n", amin, amax, draw_uni(s));
+	draw_put(yaml, size, "thickness: %.17g\nthickness_ratio: %.17g\n", draw_logspan(s, 0.02, 0.5),
+		 draw_span(s, 0.3, 1));
 	put_leaves(s, yaml, size, 0.05, 1.5);
 }
 
@@ -271,7 +223,7 @@ static uint64_t seed_of(unsigned i)
 {
 	uint64_t s = 0xb1d0000ULL + i;
 
-	return mix(&s);
+	return draw_mix(&s);
 }
 
 #ifdef GEN_VERSION_RECORD

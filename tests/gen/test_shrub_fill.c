@@ -35,6 +35,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "draw.h"
 #include "gen.h"
 #include "shape.h"
 #include "test.h"
@@ -46,51 +47,12 @@
 #define PI 3.14159265358979323846
 #define INSIDE_TOL 1e-9 /* metres: rounding (the generator keeps bark 2.2 radii in, leaves 2 mm) */
 
-static uint64_t mix(uint64_t *s)
-{
-	uint64_t z = (*s += 0x9e3779b97f4a7c15ULL);
-
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-	return z ^ (z >> 31);
-}
-
-static double uni(uint64_t *s)
-{
-	return (double)(mix(s) >> 11) * 0x1.0p-53;
-}
-
-static double span(uint64_t *s, double lo, double hi)
-{
-	return lo + (hi - lo) * uni(s);
-}
-
-/* log-uniform: small and large alike */
-static double logspan(uint64_t *s, double lo, double hi)
-{
-	return exp(span(s, log(lo), log(hi)));
-}
-
 struct file {
 	char yaml[2048];
 	struct shape sh;
 	double leaf_size;
 	int amount;
 };
-
-/* The largest sphere inside the shape: how thick a trunk and how long a leaf it holds. */
-static double inradius(const struct shape *sh)
-{
-	switch (sh->kind) {
-	case SHAPE_BOX:
-		return fmin(sh->half[0], fmin(sh->half[1], sh->half[2]));
-	case SHAPE_CONE:
-		return sh->r * sh->h / (sh->r + hypot(sh->r, sh->h));
-	case SHAPE_SPHERE:
-		break;
-	}
-	return sh->r;
-}
 
 /* A random point at least `margin` inside the shape (false when none was found). */
 static bool inside_point(uint64_t *s, const struct shape *sh, double margin, double x[3])
@@ -109,7 +71,7 @@ static bool inside_point(uint64_t *s, const struct shape *sh, double margin, dou
 	}
 	for (int tries = 0; tries < 1000; tries++) {
 		for (int k = 0; k < 3; k++)
-			x[k] = span(s, lo[k], hi[k]);
+			x[k] = draw_span(s, lo[k], hi[k]);
 		if (shape_distance(sh, x) < -margin)
 			return true;
 	}
@@ -124,44 +86,44 @@ static bool draw_file(uint64_t *s, enum shape_kind kind, struct file *f)
 	struct shape *sh = &f->sh;
 	double top[3], ratio, thickness, amin, amax, in, trunk_h;
 	char ratios[96];
-	int levels = 1 + (int)(uni(s) * 12), children = uni(s) < 0.5 ? 2 : 3, len;
-	double u = uni(s);
+	int levels = 1 + (int)(draw_uni(s) * 12), children = draw_uni(s) < 0.5 ? 2 : 3, len;
+	double u = draw_uni(s);
 
 	memset(sh, 0, sizeof(*sh));
 	sh->kind = kind;
 	for (int k = 0; k < 3; k++)
-		sh->c[k] = uni(s) < 0.2 ? span(s, -900, 900) : span(s, -3, 3);
+		sh->c[k] = draw_uni(s) < 0.2 ? draw_span(s, -900, 900) : draw_span(s, -3, 3);
 	switch (kind) {
 	case SHAPE_SPHERE:
-		sh->r = logspan(s, 0.1, 20);
+		sh->r = draw_logspan(s, 0.1, 20);
 		break;
 	case SHAPE_BOX:
 		for (int k = 0; k < 3; k++)
-			sh->half[k] = 0.5 * logspan(s, 0.1, 40);
+			sh->half[k] = 0.5 * draw_logspan(s, 0.1, 40);
 		break;
 	case SHAPE_CONE:
-		sh->r = logspan(s, 0.1, 20);
-		sh->h = logspan(s, 0.1, 40);
+		sh->r = draw_logspan(s, 0.1, 20);
+		sh->h = draw_logspan(s, 0.1, 40);
 		break;
 	}
-	in = inradius(sh);
+	in = shape_inradius(sh);
 	/* sparse settings often: one leaf a tip, few levels */
-	f->amount = u < 0.3 ? 1 : u < 0.4 ? 0 : u < 0.9 ? 1 + (int)(uni(s) * 10) : (int)span(s, 11, 201);
+	f->amount = u < 0.3 ? 1 : u < 0.4 ? 0 : u < 0.9 ? 1 + (int)(draw_uni(s) * 10) : (int)draw_span(s, 11, 201);
 	/* leaves at most a third of the shape's inradius long (and 5 m) */
-	f->leaf_size = logspan(s, 0.005, fmin(5.0, in / 3.0));
-	ratio = span(s, 0.01, 1.0);
+	f->leaf_size = draw_logspan(s, 0.005, fmin(5.0, in / 3.0));
+	ratio = draw_span(s, 0.01, 1.0);
 	/* the crown's first twigs at most a tenth of the inradius thick, and its fifth
 	 * generation's at most half a leaf */
-	thickness = logspan(s, 0.001, fmin(5.0, fmin(in / 10.0 / ratio, 0.5 * f->leaf_size / pow(ratio, 6))));
+	thickness = draw_logspan(s, 0.001, fmin(5.0, fmin(in / 10.0 / ratio, 0.5 * f->leaf_size / pow(ratio, 6))));
 	/* the trunk's top well inside (2.2 of the crown's radii: tree-params.md) */
 	if (!inside_point(s, sh, 2.2 * thickness * ratio * 1.01, top))
 		return false;
-	trunk_h = logspan(s, 0.05, 20);
-	amin = span(s, 0, 180);
-	amax = span(s, amin, 180);
-	len = snprintf(ratios, sizeof(ratios), "%.17g, %.17g", span(s, 0.01, 1.5), span(s, 0.01, 1.5));
+	trunk_h = draw_logspan(s, 0.05, 20);
+	amin = draw_span(s, 0, 180);
+	amax = draw_span(s, amin, 180);
+	len = snprintf(ratios, sizeof(ratios), "%.17g, %.17g", draw_span(s, 0.01, 1.5), draw_span(s, 0.01, 1.5));
 	if (children == 3)
-		len = snprintf(ratios + len, sizeof(ratios) - (size_t)len, ", %.17g", span(s, 0.01, 1.5));
+		len = snprintf(ratios + len, sizeof(ratios) - (size_t)len, ", %.17g", draw_span(s, 0.01, 1.5));
 	len = snprintf(f->yaml, sizeof(f->yaml),
 		       "edaha-tree: 1\ntype: shrub\nprecision: %d\n"
 		       "trunk: {start: [%.17g, %.17g, %.17g]}\ntrunk_height: %.17g\n"
@@ -170,28 +132,11 @@ static bool draw_file(uint64_t *s, enum shape_kind kind, struct file *f)
 		       "ratios: [%s]\nspread: %.17g\ntwist: %.17g\n"
 		       "thickness: %.17g\nthickness_ratio: %.17g\n"
 		       "leaves: {amount: %d, size: %.17g, type: %s}\n",
-		       3 + (int)(uni(s) * 14), top[0], top[1] - trunk_h, top[2], trunk_h, levels, children,
-		       amin, amax, uni(s), ratios, span(s, 0, 360), span(s, -360, 360), thickness, ratio,
-		       f->amount, f->leaf_size, leaf_types[mix(s) % 5]);
+		       3 + (int)(draw_uni(s) * 14), top[0], top[1] - trunk_h, top[2], trunk_h, levels, children,
+		       amin, amax, draw_uni(s), ratios, draw_span(s, 0, 360), draw_span(s, -360, 360),
+		       thickness, ratio, f->amount, f->leaf_size, leaf_types[draw_mix(s) % 5]);
 	CHECK(len > 0 && (size_t)len < sizeof(f->yaml));
-	switch (kind) {
-	case SHAPE_SPHERE:
-		len = snprintf(f->yaml + strlen(f->yaml), sizeof(f->yaml) - strlen(f->yaml),
-			       "clip: {shape: sphere, center: [%.17g, %.17g, %.17g], radius: %.17g}\n",
-			       sh->c[0], sh->c[1], sh->c[2], sh->r);
-		break;
-	case SHAPE_BOX:
-		len = snprintf(f->yaml + strlen(f->yaml), sizeof(f->yaml) - strlen(f->yaml),
-			       "clip: {shape: box, center: [%.17g, %.17g, %.17g], size: [%.17g, %.17g, %.17g]}\n",
-			       sh->c[0], sh->c[1], sh->c[2], 2 * sh->half[0], 2 * sh->half[1], 2 * sh->half[2]);
-		break;
-	case SHAPE_CONE:
-		len = snprintf(f->yaml + strlen(f->yaml), sizeof(f->yaml) - strlen(f->yaml),
-			       "clip: {shape: cone, center: [%.17g, %.17g, %.17g], radius: %.17g, height: %.17g}\n",
-			       sh->c[0], sh->c[1], sh->c[2], sh->r, sh->h);
-		break;
-	}
-	CHECK(len > 0 && strlen(f->yaml) + 1 < sizeof(f->yaml));
+	draw_put_clip(f->yaml, sizeof(f->yaml), sh);
 	return true;
 }
 
@@ -449,7 +394,7 @@ static int property(enum shape_kind kind, uint64_t seed)
 		}
 		drawn++;
 		bare += f.amount == 0;
-		seed_of_tree = mix(&s);
+		seed_of_tree = draw_mix(&s);
 		CHECK_INT(gen_build(&t, &p, seed_of_tree), 0);
 		/* deterministic: the same file and seed, the same tree (every tenth file) */
 		if (drawn % 10 == 0) {

@@ -28,7 +28,7 @@ bool scene_japanese(const char *name);
  * branch and whorl-added, another drawn there, propagated onto every branch (fixed
  * count), then one more leaf drawn by hand: 2 shapes with copies, one leaf of its own
  * (without copies: 3 leaves of their own). Meshes and their marks as app.c builds them.
- * Checks as it goes (tests/test.h).
+ * Checks as it goes (tests/lib/test.h).
  */
 void scene_leafy(struct app *app, int width, int height, struct camera cam, bool copies);
 void scene_leafy_finish(struct app *app);

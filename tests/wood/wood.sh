@@ -3,14 +3,14 @@
 # The grow button on the command line (issue 17, seed 002): edaha --headless ... --press
 # grow [--wood FILE] [--dump-voxels] --out DIR, end to end: wood.sh TEST. Paths come from
 # meson's environment: EDAHA, IMGCMP, GLTF_VALIDATE, SRC (the source tree). With
-# EDAHA_UPDATE_GOLDEN=1, `golden` writes tests/golden/wood/ instead of comparing: look at
+# EDAHA_UPDATE_GOLDEN=1, `golden` writes tests/wood/golden/ instead of comparing: look at
 # every picture before committing it.
 set -uo pipefail
 : "${EDAHA:?}" "${IMGCMP:?}" "${GLTF_VALIDATE:?}" "${SRC:?}"
 T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-wood.XXXXXX")
 trap 'rm -rf "$T"' EXIT
 DEMO=$SRC/tests/data/demo.edaha-trace
-CHECK=$SRC/tests/wood_cli/check_voxels.py
+CHECK=$SRC/tests/wood/check_voxels.py
 
 # fail, and edaha (the GL driver preloaded under ASan)
 . "$(dirname "$0")/../tools/edaha.sh"
@@ -71,19 +71,19 @@ PY
 	echo "settings in the drawing, still without gravity, bad input refused"
 }
 
-# golden NAME DIR: DIR/screen.png against tests/golden/wood/NAME.png (or written there)
+# golden NAME DIR: DIR/screen.png against tests/wood/golden/NAME.png (or written there)
 golden() {
 	if [ "${EDAHA_UPDATE_GOLDEN:-0}" = 1 ]; then
-		mkdir -p "$SRC/tests/golden/wood"
-		cp "$2/screen.png" "$SRC/tests/golden/wood/$1.png"
-		echo "wood.sh: updated tests/golden/wood/$1.png"
-	elif ! "$IMGCMP" "$SRC/tests/golden/wood/$1.png" "$2/screen.png"; then
-		fail "$1: screen.png differs from its golden tests/golden/wood/$1.png"
+		mkdir -p "$SRC/tests/wood/golden"
+		cp "$2/screen.png" "$SRC/tests/wood/golden/$1.png"
+		echo "wood.sh: updated tests/wood/golden/$1.png"
+	elif ! "$IMGCMP" "$SRC/tests/wood/golden/$1.png" "$2/screen.png"; then
+		fail "$1: screen.png differs from its golden tests/wood/golden/$1.png"
 	fi
 }
 
 # The pictures: the demo's tree after 0, 3 and 8 presses; a trunk leaning 45 degrees
-# (tests/data/leaning-trunk.json) after 5 as a conifer and as a broadleaf tree; their
+# (tests/wood/data/leaning-trunk.json) after 5 as a conifer and as a broadleaf tree; their
 # exports validate.
 t_golden() {
 	local presses n
@@ -96,8 +96,8 @@ t_golden() {
 	done
 	"$GLTF_VALIDATE" "$T/d8/model.glb" || fail "the grown tree's glb does not validate"
 	for m in conifer broadleaf; do
-		run --size 640x400 --skeleton "$SRC/tests/data/leaning-trunk.json" \
-			--wood "$SRC/tests/data/wood-$m.yaml" --press grow --press grow --press grow \
+		run --size 640x400 --skeleton "$SRC/tests/wood/data/leaning-trunk.json" \
+			--wood "$SRC/tests/wood/data/wood-$m.yaml" --press grow --press grow --press grow \
 			--press grow --press grow --view 0,10 --out "$T/$m"
 		golden "leaning-$m-5" "$T/$m"
 		"$GLTF_VALIDATE" "$T/$m/model.glb" || fail "the leaning $m's glb does not validate"

@@ -4,7 +4,7 @@
 #include <stdbool.h>
 
 /*
- * Allocation failures on purpose: tests/fail_alloc.c replaces malloc, calloc, realloc and
+ * Allocation failures on purpose: tests/lib/fail_alloc.c replaces malloc, calloc, realloc and
  * free the way glibc documents ("Replacing malloc"), counts the allocations and fails the
  * one a test asks for (NULL and errno ENOMEM, as POSIX describes it). Sanitizers replace
  * malloc themselves, so under them nothing is replaced and FAIL_ALLOC_HOOK is 0: tests

@@ -6,7 +6,7 @@ set -uo pipefail
 : "${EDAHA:?}" "${SRC:?}"
 T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-skeleton.XXXXXX")
 trap 'rm -rf "$T"' EXIT
-HERE=$SRC/tests/skeleton
+HERE=$SRC/tests/doc/skeleton
 DEMO=$SRC/tests/data/demo.edaha-trace
 OUTPUTS="screen.png model.glb model.obj model.mtl skeleton.json drawing.edaha"
 

@@ -10,8 +10,8 @@
 #include "vine_support.h"
 
 /*
- * What the vine tests (tests/vine_grow, vine_shape, vine_effects) share: supports made of
- * capped cylinders, and the helix a shoot winds round a pole standing on the y axis.
+ * What the vine tests (test_vine_grow, test_vine_shape, test_vine_effects) share: supports
+ * made of capped cylinders, and the helix a shoot winds round a pole standing on the y axis.
  * Every failure exits as test.h's CHECK does.
  */
 

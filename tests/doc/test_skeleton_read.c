@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * skeleton_read (--skeleton): a valid file's branches read exactly, leaves and vines
- * ignored; the limits; every malformed file in tests/skeleton/malformed refused with
+ * ignored; the limits; every malformed file in tests/doc/skeleton/malformed refused with
  * -EINVAL at the line its EXPECT file names, the tree untouched; allocations failing.
- * argv[1]: tests/skeleton (valid.json and malformed/ in it).
+ * argv[1]: tests/doc/skeleton (valid.json and malformed/ in it).
  */
 #include <errno.h>
 #include <json-c/json.h>

@@ -2,14 +2,14 @@
 # SPDX-License-Identifier: MIT
 # edaha --headless --leaf NAME|FILE --opening T --out DIR (issue 15, seed 003), end to end:
 # leaf.sh TEST. Paths come from meson's environment: EDAHA, IMGCMP, GLTF_VALIDATE, SRC (the
-# source tree). With EDAHA_UPDATE_GOLDEN=1, `presets` writes tests/golden/leaves/ instead of
+# source tree). With EDAHA_UPDATE_GOLDEN=1, `presets` writes tests/ori/golden/ instead of
 # comparing: look at every picture before committing it.
 set -uo pipefail
 : "${EDAHA:?}" "${IMGCMP:?}" "${GLTF_VALIDATE:?}" "${SRC:?}"
 T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-leaf.XXXXXX")
 trap 'rm -rf "$T"' EXIT
-HERE=$SRC/tests/ori_cli
-GOLDEN=$SRC/tests/golden/leaves
+HERE=$SRC/tests/ori
+GOLDEN=$SRC/tests/ori/golden
 MALFORMED=$SRC/tests/ori/malformed
 PRESETS="entire hop maple"
 OPENINGS="0.1 0.5 1"

@@ -3,13 +3,13 @@
 # edaha --headless --support FILE.obj --vine NAME|FILE --plant X,Y,Z --out DIR (issue 16,
 # seed 004), end to end: vine.sh TEST. Paths come from meson's environment: EDAHA, IMGCMP,
 # GLTF_VALIDATE, SRC (the source tree). With EDAHA_UPDATE_GOLDEN=1, `pole` and `cross`
-# write tests/golden/vines/ instead of comparing: look at every picture before committing it.
+# write tests/vine/golden/ instead of comparing: look at every picture before committing it.
 set -uo pipefail
 : "${EDAHA:?}" "${IMGCMP:?}" "${GLTF_VALIDATE:?}" "${SRC:?}"
 T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-vine.XXXXXX")
 trap 'rm -rf "$T"' EXIT
-HERE=$SRC/tests/vine_cli
-GOLDEN=$SRC/tests/golden/vines
+HERE=$SRC/tests/vine
+GOLDEN=$SRC/tests/vine/golden
 FILES="skeleton.json model.glb model.obj model.mtl screen.png"
 # small, so the repository can keep the pictures; upright, as a pole is
 SIZE=360x480
@@ -30,7 +30,7 @@ vine() {
 	[ "$(ls "$out" | wc -l)" -eq 5 ] || fail "edaha $*: wrote $(ls "$out"), wanted five files"
 }
 
-# golden NAME OUT: OUT/screen.png against tests/golden/vines/NAME.png (or written there)
+# golden NAME OUT: OUT/screen.png against tests/vine/golden/NAME.png (or written there)
 golden() {
 	if [ "${EDAHA_UPDATE_GOLDEN:-0}" = 1 ]; then
 		mkdir -p "$GOLDEN"
@@ -150,7 +150,7 @@ t_malformed() {
 	refused "edaha: $T/pole.stl: not a Wavefront OBJ" --support "$T/pole.stl" --vine default \
 		--plant "$PLANT"
 	# a picture named .obj: assimp's OBJ reader says why
-	cp "$SRC/tests/golden/leaves/maple-1.png" "$T/picture.obj" || fail "no picture to copy"
+	cp "$SRC/tests/ori/golden/maple-1.png" "$T/picture.obj" || fail "no picture to copy"
 	refused "edaha: $T/picture.obj: " --support "$T/picture.obj" --vine default --plant "$PLANT"
 	refused "edaha: $T/empty.obj: not an OBJ file assimp can read" --support "$T/empty.obj" \
 		--vine default --plant "$PLANT"

@@ -22,7 +22,7 @@
 #define DEG (VEC_PI / 180.0)
 
 /* The pole: radius R, 1 m tall, 64 sides; the vine planted GAP from its side (as
- * tests/vine_grow's), its twined part measured below the top's rim. */
+ * test_vine_grow's), its twined part measured below the top's rim. */
 static const double R = 0.02, H = 1.0, GAP = 0.015, RIM = 0.95;
 
 /* Fig. 4.5(a) and 4.6(a): Table 4.1 (4.2 is the same), one thesis unit a millimetre:
