@@ -74,7 +74,7 @@ static double iso_edge_t(double a, double b, double iso)
  * averaged over the 3 x 3 samples across it with weights 1 2 1 (Sobel's, or Zucker and
  * Hummel's, smoothing). Plain central differences on the voxelised wood's one-voxel
  * ramp, clamped at 0 and 1, leave a ball's normals 7 degrees from radial on average and
- * 20 at worst; smoothed, 1.4 and 4.4 (tests/wood_iso).
+ * 20 at worst; smoothed, 1.4 and 4.4 (tests/wood/test_wood_iso.c).
  */
 static const double iso_smooth[3] = { 0.25, 0.5, 0.25 };
 
