@@ -1,11 +1,16 @@
 /* SPDX-License-Identifier: MIT */
-#include "kiosk.h"
+/*
+ * The kiosk's loop (kiosk.h): create and destroy, the poll set and the handler each fd's
+ * wake-up goes to, and the decisions to draw (frame_due) and to wake (the UI timer). What
+ * the handlers do is in kiosk_*.c, sharing struct kiosk (kiosk_private.h): what a frame
+ * shows (kiosk_look.c).
+ */
+#include "kiosk_private.h"
 
 #include <errno.h>
 #include <inttypes.h>
 #include <poll.h>
 #include <signal.h>
-#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,111 +20,16 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "app.h"
-#include "app_mode.h"
-#include "autosave.h"
 #include "buf.h"
 #include "fileio.h"
-#include "grow_worker.h"
-#include "latency.h"
 #include "notify.h"
 #include "pngio.h"
-#include "render.h"
-#include "trace.h"
-#include "usb_export.h"
 
 /* A flip that has not completed in this long will not: the display is gone (it is
  * probed again, and the kiosk goes on). */
 #define KIOSK_FLIP_TIMEOUT_MS 1000
-#define KIOSK_MAX_SOURCES 16
-/* Pen events waiting for the frame that shows them; a slow frame under a fast pen
- * drops the excess from the figures, not from the drawing. */
-#define KIOSK_MAX_PENDING 1024
 /* How often the journal gets the pen-to-screen figures while visitors draw. */
 #define KIOSK_STATS_LOG_US (300u * 1000000u)
-
-/* A place of the side strip as the screen shows it (ui/render_ui.c draws a parameter
- * button that would change nothing disabled). */
-struct kiosk_side_look {
-	bool thumbnail, lit, enabled;
-	enum button button;
-	int tap;
-	const struct tree_mesh *preview;
-};
-
-/*
- * What a frame shows, apart from the clock: when none of it changed since the last
- * frame, the screen is already right and nothing is drawn.
- */
-struct kiosk_look {
-	uint64_t mesh_serial, previews_serial;
-	size_t stroke_points;
-	bool stroke_active, pen_in, orbiting, turning, ui_held, side_held;
-	enum event_tool pen_tool;
-	double pen_x, pen_y;
-	enum app_mode mode;
-	enum app_pattern pattern;
-	bool buttons[BUTTON_COUNT];
-	enum button ui_button;
-	struct camera camera;
-	int selected;
-	unsigned suggestions;
-	enum app_status status; /* the message on screen */
-	bool attract;           /* the attract screen */
-	enum season season;     /* the season button's picture, the leaves' colours */
-	size_t nside;           /* the side strip: what it holds, and how each place shows */
-	struct kiosk_side_look side[APP_SIDE_MAX];
-};
-
-/* A pen event on its way to the screen: its kernel time, and frames shown before it. */
-struct kiosk_pending {
-	uint64_t time_us, shown;
-};
-
-struct kiosk {
-	struct kiosk_config cfg;
-	struct display *display;
-	struct render *render;
-	struct app *app;
-	struct trace_writer *rec;
-	struct kiosk_source sources[KIOSK_MAX_SOURCES];
-	size_t nsources;
-	int signal_fd, timer_fd;
-	int ui_timer_fd;         /* wakes the loop when a message or the attract screen changes */
-	int watchdog_fd;         /* the service's watchdog: pinged from the loop, -1 without */
-	uint64_t ui_deadline_us; /* what it is set to; UINT64_MAX: nothing to wait for */
-	sigset_t old_mask;
-	bool mask_set;
-	struct kiosk_look drawn; /* what the screen shows */
-	bool drawn_valid;        /* false until the first frame */
-	bool animating;          /* the last frame was a step of the 3D turn */
-	bool quit;
-	int status;
-	/* counts and times for the log line at the end */
-	unsigned long frames;
-	uint64_t start_us, first_frame_us, last_frame_us;
-	uint8_t *shot; /* the last frame's pixels, with --screenshot */
-	/* pen-to-screen latency: events not drawn yet, events in the frame being flipped */
-	struct latency *lat;
-	struct latency *frame_time; /* from starting to draw a frame to it being on screen */
-	uint64_t frame_start_us;
-	struct kiosk_pending *pending, *inflight;
-	size_t npending, ninflight;
-	uint64_t shown;          /* frames that reached the screen */
-	uint64_t stats_logged_us, stats_logged_n;
-	/* export: asked for; the next frame is read back for its picture, then written */
-	bool export_asked, export_ready;
-	uint8_t *pixels;
-	struct usb_export *usb;  /* where the export goes: sticks, the local copy */
-	struct grow_worker *grow; /* grow presses, off the loop */
-	/* the press's start, and frames drawn and shown by then */
-	uint64_t grow_started_us, grow_frames, grow_shown;
-	struct autosave *autosave; /* NULL: none */
-	bool autosave_failing;     /* said once, not at every stroke */
-	enum button mode_lit;    /* what mode_changed was last told */
-	void (*mode_changed)(void *data, enum button mode);
-	void *mode_data;
-};
 
 static uint64_t now_us(void)
 {
@@ -128,121 +38,6 @@ static uint64_t now_us(void)
 	/* the clock libinput stamps events with, so that app times compare */
 	clock_gettime(CLOCK_MONOTONIC, &ts);
 	return (uint64_t)ts.tv_sec * 1000000u + (uint64_t)ts.tv_nsec / 1000u;
-}
-
-static void look_of(const struct app *app, uint64_t now_us, struct kiosk_look *l)
-{
-	struct app_side_item items[APP_SIDE_MAX];
-
-	memset(l, 0, sizeof(*l)); /* padding too, though only fields are compared */
-	l->status = app_status_at(app, now_us, NULL);
-	l->attract = app_attract_at(app, now_us, NULL);
-	l->mesh_serial = app->mesh_serial;
-	l->previews_serial = app->previews_serial;
-	l->stroke_points = app->stroke.npoints;
-	l->stroke_active = app->stroke.active;
-	l->pen_in = app->pen.in_proximity;
-	l->pen_tool = app->pen.tool;
-	l->pen_x = app->pen.x;
-	l->pen_y = app->pen.y;
-	l->orbiting = app->orbiting;
-	l->turning = app->turning;
-	l->ui_held = app->ui_button_held;
-	l->ui_button = app->ui_button;
-	l->side_held = app->side_held;
-	l->mode = app->mode;
-	l->pattern = app->pattern;
-	memcpy(l->buttons, app->buttons_down, sizeof(l->buttons));
-	l->camera = app->camera;
-	l->selected = app->selected;
-	l->suggestions = app->suggestions;
-	l->season = app->tree.season;
-	l->nside = app_side_items(app, items);
-	for (size_t i = 0; i < l->nside; i++) {
-		enum button b = items[i].button;
-
-		l->side[i] = (struct kiosk_side_look){
-			.thumbnail = items[i].thumbnail,
-			.lit = items[i].lit,
-			.enabled = b < BUTTON_GEN_MORE || b > BUTTON_GEN_BARER || app_gen_possible(app, b),
-			.button = b,
-			.tap = items[i].tap,
-			.preview = items[i].preview,
-		};
-	}
-}
-
-static bool side_equal(const struct kiosk_look *a, const struct kiosk_look *b)
-{
-	if (a->nside != b->nside)
-		return false;
-	for (size_t i = 0; i < a->nside; i++) {
-		const struct kiosk_side_look *x = &a->side[i], *y = &b->side[i];
-
-		if (x->thumbnail != y->thumbnail || x->lit != y->lit || x->enabled != y->enabled ||
-		    x->button != y->button || x->tap != y->tap || x->preview != y->preview)
-			return false;
-	}
-	return true;
-}
-
-static bool look_equal(const struct kiosk_look *a, const struct kiosk_look *b)
-{
-	return a->mesh_serial == b->mesh_serial && a->previews_serial == b->previews_serial &&
-	       a->stroke_points == b->stroke_points && a->stroke_active == b->stroke_active &&
-	       a->pen_in == b->pen_in && a->pen_tool == b->pen_tool && a->pen_x == b->pen_x &&
-	       a->pen_y == b->pen_y && a->orbiting == b->orbiting && a->turning == b->turning &&
-	       a->ui_held == b->ui_held && a->ui_button == b->ui_button &&
-	       a->side_held == b->side_held && a->mode == b->mode && a->pattern == b->pattern &&
-	       memcmp(a->buttons, b->buttons, sizeof(a->buttons)) == 0 &&
-	       a->camera.yaw == b->camera.yaw && a->camera.pitch == b->camera.pitch &&
-	       a->selected == b->selected && a->suggestions == b->suggestions &&
-	       a->status == b->status && a->attract == b->attract && a->season == b->season &&
-	       side_equal(a, b);
-}
-
-/* Whether frames must keep coming at now_us without any input: the turn into 3D, new
- * leaves unfolding, a grown bark swelling, a message fading out (a vine growing:
- * app_vines_advance). */
-static bool animating_at(const struct app *app, uint64_t now_us, bool turning)
-{
-	uint64_t until;
-
-	struct app_unfold_span span;
-
-	if (turning || app_unfold_at(app, now_us, &span, 1) > 0)
-		return true;
-	/* a grow press under way (its message's dots move) or its bark swelling */
-	if (app->grow_waiting)
-		return true;
-	if (app->swell_start_us != UINT64_MAX &&
-	    (now_us < app->swell_start_us || now_us - app->swell_start_us < APP_SWELL_US))
-		return true;
-	return app_status_at(app, now_us, &until) != APP_STATUS_NONE &&
-	       now_us + APP_STATUS_FADE_US >= until;
-}
-
-/* When the idle reset is due for the drawing there is (UINT64_MAX: never). */
-static uint64_t reset_at(const struct app *app, uint64_t reset_after_us)
-{
-	/* an empty canvas has nothing to archive; a pen on the tablet is someone there */
-	if (!reset_after_us || !app->doc.nops || app->stroke.active || app->pen.in_proximity)
-		return UINT64_MAX;
-	return app->last_time_us + reset_after_us;
-}
-
-/* The next moment the screen changes with no input (UINT64_MAX: none): a message
- * starts fading or ends, the attract screen begins, the idle reset. */
-static uint64_t next_change(const struct app *app, uint64_t now_us, uint64_t reset_after_us)
-{
-	uint64_t until, from, next = reset_at(app, reset_after_us);
-
-	/* a held message (saving) changes when its result comes, not by the clock */
-	if (app_status_at(app, now_us, &until) != APP_STATUS_NONE && until != UINT64_MAX)
-		next = now_us + APP_STATUS_FADE_US < until ? until - APP_STATUS_FADE_US : until;
-	if (!app_attract_at(app, now_us, &from) && from < next)
-		next = from;
-	return next;
 }
 
 /* Whether the next vblank should show a new frame. */
@@ -254,8 +49,8 @@ static bool frame_due(const struct kiosk *k)
 	if (k->cfg.frames || !k->drawn_valid || k->animating || k->export_asked ||
 	    display_needs_frame(k->display))
 		return true;
-	look_of(k->app, now_us(), &now);
-	return !look_equal(&now, &k->drawn);
+	kiosk_look_of(k->app, now_us(), &now);
+	return !kiosk_look_equal(&now, &k->drawn);
 }
 
 static void feed_from_display(void *data, const struct event *ev)
@@ -626,8 +421,8 @@ static void draw_frame(struct kiosk *k)
 	k->frame_start_us = t;
 	/* a vine planted grows by the clock, as the turn into 3D turns */
 	k->animating = app_vines_advance(k->app, t);
-	k->animating = animating_at(k->app, t, app_camera_at(k->app, t, &cam)) || k->animating;
-	look_of(k->app, t, &k->drawn);
+	k->animating = kiosk_animating_at(k->app, t, app_camera_at(k->app, t, &cam)) || k->animating;
+	kiosk_look_of(k->app, t, &k->drawn);
 	k->drawn_valid = true;
 	ret = render_frame_at(k->render, k->app, t);
 	if (ret == 0 && last && k->shot)
@@ -761,7 +556,7 @@ static void idle_reset(struct kiosk *k, uint64_t now)
 	struct error err = { { 0 } };
 	char name[64] = "";
 
-	if (now < reset_at(k->app, k->cfg.reset_after_us))
+	if (now < kiosk_reset_at(k->app, k->cfg.reset_after_us))
 		return;
 	if (k->autosave && autosave_archive(k->autosave, &k->app->doc, &k->app->tree,
 					    k->cfg.archive_keep, name, sizeof(name), &err) < 0)
@@ -864,7 +659,7 @@ static void take_requests(struct kiosk *k)
  * screen): the loop sleeps in poll() until then. */
 static void arm_ui_timer(struct kiosk *k)
 {
-	uint64_t next = next_change(k->app, now_us(), k->cfg.reset_after_us);
+	uint64_t next = kiosk_next_change(k->app, now_us(), k->cfg.reset_after_us);
 	struct itimerspec it = { { 0, 0 }, { 0, 0 } };
 
 	if (next == k->ui_deadline_us)
