@@ -2,8 +2,8 @@
 /*
  * The kiosk's loop (kiosk.h): create and destroy, the poll set and the handler each fd's
  * wake-up goes to, and the decisions to draw (frame_due) and to wake (the UI timer). What
- * the handlers do is in kiosk_*.c, sharing struct kiosk (kiosk_private.h): what a frame
- * shows (kiosk_look.c).
+ * the handlers do is in kiosk_*.c, sharing struct kiosk (kiosk_private.h): a frame and its
+ * figures (kiosk_frame.c); what a frame shows (kiosk_look.c).
  */
 #include "kiosk_private.h"
 
@@ -20,18 +20,9 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "buf.h"
-#include "fileio.h"
 #include "notify.h"
-#include "pngio.h"
 
-/* A flip that has not completed in this long will not: the display is gone (it is
- * probed again, and the kiosk goes on). */
-#define KIOSK_FLIP_TIMEOUT_MS 1000
-/* How often the journal gets the pen-to-screen figures while visitors draw. */
-#define KIOSK_STATS_LOG_US (300u * 1000000u)
-
-static uint64_t now_us(void)
+uint64_t kiosk_now_us(void)
 {
 	struct timespec ts;
 
@@ -49,7 +40,7 @@ static bool frame_due(const struct kiosk *k)
 	if (k->cfg.frames || !k->drawn_valid || k->animating || k->export_asked ||
 	    display_needs_frame(k->display))
 		return true;
-	kiosk_look_of(k->app, now_us(), &now);
+	kiosk_look_of(k->app, kiosk_now_us(), &now);
 	return !kiosk_look_equal(&now, &k->drawn);
 }
 
@@ -72,13 +63,6 @@ static int open_signals(struct kiosk *k)
 	k->mask_set = true;
 	k->signal_fd = signalfd(-1, &mask, SFD_NONBLOCK | SFD_CLOEXEC);
 	return k->signal_fd < 0 ? -errno : 0;
-}
-
-static int set_timer(struct kiosk *k, int ms)
-{
-	struct itimerspec it = { .it_value = { ms / 1000, (long)(ms % 1000) * 1000000 } };
-
-	return timerfd_settime(k->timer_fd, 0, &it, NULL) < 0 ? -errno : 0;
 }
 
 /* A periodic timer at half the service's WatchdogSec=: each expiry the loop is still
@@ -106,9 +90,9 @@ static void usb_status(void *data, enum app_status status, bool held)
 	struct kiosk *k = data;
 
 	if (held)
-		app_hold_status(k->app, status, now_us());
+		app_hold_status(k->app, status, kiosk_now_us());
 	else
-		app_set_status(k->app, status, now_us());
+		app_set_status(k->app, status, kiosk_now_us());
 }
 
 /* The export's writer (usb_export.c), its fds in the poll. 0 or -1 (said why). */
@@ -147,7 +131,7 @@ static uint64_t fresh_seed(void)
 	uint64_t seed;
 
 	if (getrandom(&seed, sizeof(seed), GRND_NONBLOCK) != (ssize_t)sizeof(seed))
-		seed = now_us() ^ ((uint64_t)getpid() << 32);
+		seed = kiosk_now_us() ^ ((uint64_t)getpid() << 32);
 	return seed;
 }
 
@@ -208,7 +192,7 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 	k->signal_fd = k->timer_fd = k->ui_timer_fd = k->watchdog_fd = -1;
 	k->ui_deadline_us = UINT64_MAX;
 	k->mode_lit = (enum button)-1; /* tells the LEDs the first mode, whatever it is */
-	k->start_us = now_us();
+	k->start_us = kiosk_now_us();
 	if (open_signals(k) < 0) {
 		fprintf(stderr, "edaha: cannot watch for signals: %s\n", strerror(errno));
 		goto fail;
@@ -372,120 +356,11 @@ void kiosk_feed(struct kiosk *k, const struct event *ev)
 	app_handle_event(k->app, ev);
 }
 
-static void fail(struct kiosk *k, const char *what, int err)
+void kiosk_fail(struct kiosk *k, const char *what, int err)
 {
 	fprintf(stderr, "edaha: %s: %s\n", what, strerror(-err));
 	k->status = 1;
 	k->quit = true;
-}
-
-static void log_latency(struct kiosk *k, FILE *f)
-{
-	char line[256];
-
-	latency_format(k->lat, line, sizeof(line));
-	fprintf(f, "edaha: %s\n", line);
-	k->stats_logged_n = k->lat->n;
-}
-
-/* A frame reached the screen at now: the pen events it carried have their latency. */
-static void frame_shown(struct kiosk *k, uint64_t now)
-{
-	k->shown++;
-	k->last_frame_us = now;
-	if (k->shown == 1)
-		notify_ready(); /* the visitor sees the kiosk: the service is up */
-	latency_add(k->frame_time, now - k->frame_start_us, 1);
-	for (size_t i = 0; i < k->ninflight; i++) {
-		const struct kiosk_pending *e = &k->inflight[i];
-
-		/* a timestamp from the future (a clock mismatch) counts as no wait */
-		latency_add(k->lat, now > e->time_us ? now - e->time_us : 0,
-			    (unsigned)(k->shown - e->shown));
-	}
-	k->ninflight = 0;
-	if (k->lat->n > k->stats_logged_n && now - k->stats_logged_us >= KIOSK_STATS_LOG_US) {
-		k->stats_logged_us = now;
-		log_latency(k, stderr);
-	}
-}
-
-static void draw_frame(struct kiosk *k)
-{
-	uint64_t t = now_us();
-	struct camera cam;
-	bool last = k->cfg.frames && k->frames + 1 == k->cfg.frames;
-	size_t room, n;
-	int ret;
-
-	k->frame_start_us = t;
-	/* a vine planted grows by the clock, as the turn into 3D turns */
-	k->animating = app_vines_advance(k->app, t);
-	k->animating = kiosk_animating_at(k->app, t, app_camera_at(k->app, t, &cam)) || k->animating;
-	kiosk_look_of(k->app, t, &k->drawn);
-	k->drawn_valid = true;
-	ret = render_frame_at(k->render, k->app, t);
-	if (ret == 0 && last && k->shot)
-		ret = display_read_rgba(k->display, k->shot);
-	if (ret == 0 && k->export_asked) {
-		int w, h;
-
-		/* the export's picture is the frame the visitor sees as the button is pressed */
-		kiosk_size(k, &w, &h);
-		if (!k->pixels)
-			k->pixels = malloc((size_t)w * (size_t)h * 4);
-		if (k->pixels && display_read_rgba(k->display, k->pixels) < 0) {
-			fputs("edaha: export: cannot read the screen back; no picture\n", stderr);
-			free(k->pixels);
-			k->pixels = NULL;
-		}
-		k->export_asked = false;
-		k->export_ready = true;
-	}
-	if (ret == 0)
-		ret = display_present(k->display);
-	if (ret == -ENODEV)
-		return; /* not shown: the display said why; it asks for a frame when back */
-	if (ret == 0 && display_flip_pending(k->display))
-		ret = set_timer(k, KIOSK_FLIP_TIMEOUT_MS);
-	if (ret < 0) {
-		fail(k, "cannot show a frame", ret);
-		return;
-	}
-	/* the pen events so far are in this frame */
-	room = KIOSK_MAX_PENDING - k->ninflight;
-	n = k->npending < room ? k->npending : room;
-	memcpy(k->inflight + k->ninflight, k->pending, n * sizeof(*k->pending));
-	k->ninflight += n;
-	k->npending = 0;
-	k->frames++;
-	/* a modeset shows its frame at once, with no flip event */
-	if (!display_flip_pending(k->display))
-		frame_shown(k, now_us());
-	if (k->frames == 1) {
-		k->first_frame_us = now_us();
-		/* the kiosk is up: a line for the journal (and for tests to wait on) */
-		fprintf(stderr, "edaha: first frame on screen %.1f ms after start\n",
-			(double)(k->first_frame_us - k->start_us) / 1000.0);
-	}
-}
-
-/* Page flips, seat switches and hotplug events on the display's fds. */
-static void on_display(struct kiosk *k, const struct pollfd *fds, size_t n)
-{
-	bool pending = display_flip_pending(k->display);
-	int ret = display_dispatch(k->display, fds, n);
-
-	if (ret < 0) {
-		fail(k, "display", ret);
-		return;
-	}
-	if (pending && !display_flip_pending(k->display)) {
-		frame_shown(k, now_us());
-		ret = set_timer(k, 0); /* disarms the flip watchdog */
-		if (ret < 0)
-			fail(k, "timer", ret);
-	}
 }
 
 static void on_signal(struct kiosk *k)
@@ -495,20 +370,6 @@ static void on_signal(struct kiosk *k)
 	if (read(k->signal_fd, &si, sizeof(si)) == (ssize_t)sizeof(si))
 		fprintf(stderr, "edaha: %s, stopping\n", strsignal((int)si.ssi_signo));
 	k->quit = true;
-}
-
-static void on_timer(struct kiosk *k)
-{
-	uint64_t expirations;
-
-	if (read(k->timer_fd, &expirations, sizeof(expirations)) < 0)
-		return; /* spurious wake-up (EAGAIN): nothing expired */
-	if (display_flip_pending(k->display)) {
-		int ret = display_flip_timeout(k->display);
-
-		if (ret < 0)
-			fail(k, "display", ret);
-	}
 }
 
 static void on_source(struct kiosk *k, size_t i)
@@ -562,7 +423,7 @@ static void idle_reset(struct kiosk *k, uint64_t now)
 					    k->cfg.archive_keep, name, sizeof(name), &err) < 0)
 		fprintf(stderr, "edaha: warning: idle reset: cannot archive the drawing: %s\n", err.msg);
 	if (app_reset(k->app, fresh_seed()) < 0) {
-		fail(k, "idle reset", -ENOMEM);
+		kiosk_fail(k, "idle reset", -ENOMEM);
 		return;
 	}
 	fprintf(stderr, "edaha: idle for %.0f s: %s%s%s; a new canvas\n",
@@ -587,7 +448,7 @@ static void start_grow(struct kiosk *k)
 	if (ret == 0)
 		ret = grow_worker_start(k->grow, t, &p, serial);
 	if (ret == 0 && !k->grow_started_us) {
-		k->grow_started_us = now_us();
+		k->grow_started_us = kiosk_now_us();
 		k->grow_frames = k->frames;
 		k->grow_shown = k->shown;
 	}
@@ -599,7 +460,7 @@ static void start_grow(struct kiosk *k)
 		fprintf(stderr, "edaha: warning: a grow press could not start: %s\n", strerror(-ret));
 		k->grow_started_us = 0;
 		k->app->grow_waiting = false;
-		app_set_status(k->app, APP_STATUS_NONE, now_us());
+		app_set_status(k->app, APP_STATUS_NONE, kiosk_now_us());
 	}
 }
 
@@ -612,14 +473,14 @@ static void on_grow(struct kiosk *k)
 
 	if (grow_worker_take(k->grow, &t, &result, &serial) < 0)
 		return;
-	ret = result < 0 ? result : app_grow_done(k->app, t, serial, now_us());
+	ret = result < 0 ? result : app_grow_done(k->app, t, serial, kiosk_now_us());
 	tree_finish(t);
 	free(t);
 	if (ret == 0) {
 		/* the technician's proof that the loop went on while the worker grew: frames
 		 * drawn count, as a frame's flip can land just after the worker's result */
 		fprintf(stderr, "edaha: grew a year in %.2f s, %" PRIu64 " frames drawn and %" PRIu64
-			" shown meanwhile\n", (double)(now_us() - k->grow_started_us) / 1e6,
+			" shown meanwhile\n", (double)(kiosk_now_us() - k->grow_started_us) / 1e6,
 			k->frames - k->grow_frames, k->shown - k->grow_shown);
 		k->grow_started_us = 0;
 	}
@@ -629,7 +490,7 @@ static void on_grow(struct kiosk *k)
 		k->grow_started_us = 0;
 		fprintf(stderr, "edaha: warning: a grow press failed: %s\n", strerror(-ret));
 		k->app->grow_waiting = false;
-		app_set_status(k->app, APP_STATUS_NONE, now_us());
+		app_set_status(k->app, APP_STATUS_NONE, kiosk_now_us());
 	}
 	save_edits(k);
 }
@@ -650,7 +511,7 @@ static void take_requests(struct kiosk *k)
 			k->mode_changed(k->mode_data, mode);
 	}
 	if (k->app->failed) {
-		fail(k, "the app failed", k->app->failed);
+		kiosk_fail(k, "the app failed", k->app->failed);
 	}
 	save_edits(k);
 }
@@ -659,7 +520,7 @@ static void take_requests(struct kiosk *k)
  * screen): the loop sleeps in poll() until then. */
 static void arm_ui_timer(struct kiosk *k)
 {
-	uint64_t next = kiosk_next_change(k->app, now_us(), k->cfg.reset_after_us);
+	uint64_t next = kiosk_next_change(k->app, kiosk_now_us(), k->cfg.reset_after_us);
 	struct itimerspec it = { { 0, 0 }, { 0, 0 } };
 
 	if (next == k->ui_deadline_us)
@@ -669,7 +530,7 @@ static void arm_ui_timer(struct kiosk *k)
 		it.it_value = (struct timespec){ (time_t)(next / 1000000u),
 						 (long)(next % 1000000u) * 1000 };
 	if (timerfd_settime(k->ui_timer_fd, TFD_TIMER_ABSTIME, &it, NULL) < 0)
-		fail(k, "timer", -errno);
+		kiosk_fail(k, "timer", -errno);
 }
 
 static void on_watchdog(struct kiosk *k)
@@ -687,71 +548,7 @@ static void on_ui_timer(struct kiosk *k)
 	/* frame_due() sees what else changed */
 	if (read(k->ui_timer_fd, &expirations, sizeof(expirations)) == (ssize_t)sizeof(expirations))
 		k->ui_deadline_us = UINT64_MAX;
-	idle_reset(k, now_us());
-}
-
-static int write_screenshot(struct kiosk *k)
-{
-	struct error err = { { 0 } };
-	struct buf png;
-	char *dir = strdup(k->cfg.screenshot), *slash;
-	const char *name;
-	int w, h, ret = -ENOMEM;
-
-	if (!dir) {
-		fputs("edaha: out of memory\n", stderr);
-		return -ENOMEM;
-	}
-	/* fileio writes a name inside a directory, atomically */
-	slash = strrchr(dir, '/');
-	if (slash) {
-		*slash = '\0';
-		name = slash + 1;
-	} else {
-		name = dir;
-	}
-	buf_init(&png);
-	kiosk_size(k, &w, &h);
-	ret = pngio_encode_rgba(k->shot, w, h, &png, &err);
-	if (ret == 0)
-		ret = fileio_write_atomic(slash ? (dir[0] ? dir : "/") : ".", name, png.data, png.len,
-					  &err);
-	if (ret < 0)
-		fprintf(stderr, "edaha: screenshot: %s\n", err.msg);
-	buf_finish(&png);
-	free(dir);
-	return ret;
-}
-
-static void print_stats(struct kiosk *k, FILE *f)
-{
-	double first_ms = (double)(k->first_frame_us - k->start_us) / 1000.0;
-
-	if (!k->frames)
-		return;
-	/* the kiosk draws only on change: frames/s means something with --kiosk-frames only */
-	fprintf(f, "edaha: %lu frame%s; first on screen %.1f ms after start", k->frames,
-		k->frames == 1 ? "" : "s", first_ms);
-	if (k->cfg.frames && k->frames > 1 && k->last_frame_us > k->first_frame_us)
-		fprintf(f, "; %.1f frames/s after it",
-			(double)(k->frames - 1) * 1e6 / (double)(k->last_frame_us - k->first_frame_us));
-	fprintf(f, "; drawing to on screen: median %.1f ms, p90 %.1f ms, max %.1f ms\n",
-		(double)latency_percentile(k->frame_time, 0.5) / 1000.0,
-		(double)latency_percentile(k->frame_time, 0.9) / 1000.0,
-		(double)k->frame_time->max_us / 1000.0);
-	log_latency(k, f);
-}
-
-/* The screen as it is now, for --screenshot when the kiosk stops (not shown: read). */
-static int take_final_shot(struct kiosk *k)
-{
-	int ret = render_frame_at(k->render, k->app, now_us());
-
-	if (ret == 0)
-		ret = display_read_rgba(k->display, k->shot);
-	if (ret < 0)
-		fprintf(stderr, "edaha: screenshot: cannot read the screen: %s\n", strerror(-ret));
-	return ret;
+	idle_reset(k, kiosk_now_us());
 }
 
 int kiosk_run(struct kiosk *k)
@@ -768,7 +565,7 @@ int kiosk_run(struct kiosk *k)
 			if (k->cfg.frames && k->frames >= k->cfg.frames)
 				break;
 			if (frame_due(k))
-				draw_frame(k);
+				kiosk_draw_frame(k);
 			else
 				k->npending = 0; /* pen events that changed nothing on the screen */
 			if (k->export_ready)
@@ -799,14 +596,14 @@ int kiosk_run(struct kiosk *k)
 			fds[n++] = (struct pollfd){ .fd = k->sources[i].fd, .events = POLLIN };
 		if (poll(fds, n, -1) < 0) {
 			if (errno != EINTR)
-				fail(k, "poll", -errno);
+				kiosk_fail(k, "poll", -errno);
 			continue;
 		}
 		if (fds[nd].revents)
 			on_signal(k);
-		on_display(k, fds, nd);
+		kiosk_on_display(k, fds, nd);
 		if (fds[nd + 1].revents)
-			on_timer(k);
+			kiosk_on_timer(k);
 		if (fds[nd + 2].revents)
 			on_ui_timer(k);
 		if (fds[nd + 3].revents)
@@ -821,13 +618,13 @@ int kiosk_run(struct kiosk *k)
 		take_requests(k);
 	}
 	notify_stopping();
-	print_stats(k, stderr);
+	kiosk_print_stats(k, stderr);
 	if (k->cfg.stats)
-		print_stats(k, stdout);
-	if (k->status == 0 && k->shot && !k->cfg.frames && k->frames && take_final_shot(k) < 0)
+		kiosk_print_stats(k, stdout);
+	if (k->status == 0 && k->shot && !k->cfg.frames && k->frames && kiosk_take_final_shot(k) < 0)
 		k->status = 1;
 	if (k->status == 0 && k->shot && k->frames >= k->cfg.frames && k->frames &&
-	    write_screenshot(k) < 0)
+	    kiosk_write_screenshot(k) < 0)
 		k->status = 1;
 	return k->status;
 }

@@ -109,9 +109,21 @@ struct kiosk {
 	void *mode_data;
 };
 
+/* kiosk.c */
+uint64_t kiosk_now_us(void);
+void kiosk_fail(struct kiosk *k, const char *what, int err);
+
 /* kiosk_look.c */
 void kiosk_look_of(const struct app *app, uint64_t now_us, struct kiosk_look *l);
 bool kiosk_look_equal(const struct kiosk_look *a, const struct kiosk_look *b);
 bool kiosk_animating_at(const struct app *app, uint64_t now_us, bool turning);
 uint64_t kiosk_reset_at(const struct app *app, uint64_t reset_after_us);
 uint64_t kiosk_next_change(const struct app *app, uint64_t now_us, uint64_t reset_after_us);
+
+/* kiosk_frame.c */
+void kiosk_draw_frame(struct kiosk *k);
+void kiosk_on_display(struct kiosk *k, const struct pollfd *fds, size_t n);
+void kiosk_on_timer(struct kiosk *k);
+int kiosk_write_screenshot(struct kiosk *k);
+void kiosk_print_stats(struct kiosk *k, FILE *f);
+int kiosk_take_final_shot(struct kiosk *k);
