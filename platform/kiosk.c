@@ -4,12 +4,11 @@
  * wake-up goes to, and the decisions to draw (frame_due) and to wake (the UI timer). What
  * the handlers do is in kiosk_*.c, sharing struct kiosk (kiosk_private.h): a frame and its
  * figures (kiosk_frame.c); what a frame shows (kiosk_look.c); events into the app
- * (kiosk_feed.c).
+ * (kiosk_feed.c); the grow press (kiosk_grow.c).
  */
 #include "kiosk_private.h"
 
 #include <errno.h>
-#include <inttypes.h>
 #include <poll.h>
 #include <signal.h>
 #include <stdio.h>
@@ -361,7 +360,7 @@ static void run_export(struct kiosk *k)
 }
 
 /* Every committed stroke and edit goes to the journal before anything else happens. */
-static void save_edits(struct kiosk *k)
+void kiosk_save_edits(struct kiosk *k)
 {
 	struct error err = { { 0 } };
 
@@ -398,69 +397,7 @@ static void idle_reset(struct kiosk *k, uint64_t now)
 		(double)(now - k->app->last_time_us) / 1e6,
 		name[0] ? "the drawing is archived as " : "the drawing is cleared",
 		name[0] ? AUTOSAVE_ARCHIVE_DIR "/" : "", name);
-	save_edits(k);
-}
-
-/* A grow press the app waits for, on the worker: a copy of the tree as it is now. */
-static void start_grow(struct kiosk *k)
-{
-	struct tree *t = malloc(sizeof(*t));
-	struct wood_params p;
-	uint64_t serial;
-	int ret = t ? 0 : -ENOMEM;
-
-	if (t) {
-		tree_init(t);
-		ret = app_grow_job(k->app, t, &p, &serial);
-	}
-	if (ret == 0)
-		ret = grow_worker_start(k->grow, t, &p, serial);
-	if (ret == 0 && !k->grow_started_us) {
-		k->grow_started_us = kiosk_now_us();
-		k->grow_frames = k->frames;
-		k->grow_shown = k->shown;
-	}
-	if (ret < 0) {
-		if (t) {
-			tree_finish(t);
-			free(t);
-		}
-		fprintf(stderr, "edaha: warning: a grow press could not start: %s\n", strerror(-ret));
-		k->grow_started_us = 0;
-		k->app->grow_waiting = false;
-		app_set_status(k->app, APP_STATUS_NONE, kiosk_now_us());
-	}
-}
-
-/* The worker's press done: to the app, or again if the tree changed meanwhile. */
-static void on_grow(struct kiosk *k)
-{
-	struct tree *t;
-	uint64_t serial;
-	int result, ret;
-
-	if (grow_worker_take(k->grow, &t, &result, &serial) < 0)
-		return;
-	ret = result < 0 ? result : app_grow_done(k->app, t, serial, kiosk_now_us());
-	tree_finish(t);
-	free(t);
-	if (ret == 0) {
-		/* the technician's proof that the loop went on while the worker grew: frames
-		 * drawn count, as a frame's flip can land just after the worker's result */
-		fprintf(stderr, "edaha: grew a year in %.2f s, %" PRIu64 " frames drawn and %" PRIu64
-			" shown meanwhile\n", (double)(kiosk_now_us() - k->grow_started_us) / 1e6,
-			k->frames - k->grow_frames, k->shown - k->grow_shown);
-		k->grow_started_us = 0;
-	}
-	if (ret == -EAGAIN) {
-		start_grow(k);
-	} else if (ret < 0) {
-		k->grow_started_us = 0;
-		fprintf(stderr, "edaha: warning: a grow press failed: %s\n", strerror(-ret));
-		k->app->grow_waiting = false;
-		app_set_status(k->app, APP_STATUS_NONE, kiosk_now_us());
-	}
-	save_edits(k);
+	kiosk_save_edits(k);
 }
 
 /* Things the app asks of the platform between frames. */
@@ -472,7 +409,7 @@ static void take_requests(struct kiosk *k)
 	if (req & APP_REQUEST_EXPORT)
 		k->export_asked = true;
 	if ((req & APP_REQUEST_GROW) && !grow_worker_busy(k->grow))
-		start_grow(k);
+		kiosk_start_grow(k);
 	if (mode != k->mode_lit) {
 		k->mode_lit = mode;
 		if (k->mode_changed)
@@ -481,7 +418,7 @@ static void take_requests(struct kiosk *k)
 	if (k->app->failed) {
 		kiosk_fail(k, "the app failed", k->app->failed);
 	}
-	save_edits(k);
+	kiosk_save_edits(k);
 }
 
 /* Sets the UI timer for the next change nobody causes (a message fading, the attract
@@ -577,7 +514,7 @@ int kiosk_run(struct kiosk *k)
 		if (fds[nd + 3].revents)
 			on_watchdog(k);
 		if (fds[nd + 4].revents)
-			on_grow(k);
+			kiosk_on_grow(k);
 		/* backwards, so that dropping a failed source leaves the rest in place */
 		for (size_t i = nsrc; i-- > 0;) {
 			if (fds[nd + 5 + i].revents)

@@ -112,6 +112,7 @@ struct kiosk {
 /* kiosk.c */
 uint64_t kiosk_now_us(void);
 void kiosk_fail(struct kiosk *k, const char *what, int err);
+void kiosk_save_edits(struct kiosk *k);
 
 /* kiosk_look.c */
 void kiosk_look_of(const struct app *app, uint64_t now_us, struct kiosk_look *l);
@@ -127,3 +128,7 @@ void kiosk_on_timer(struct kiosk *k);
 int kiosk_write_screenshot(struct kiosk *k);
 void kiosk_print_stats(struct kiosk *k, FILE *f);
 int kiosk_take_final_shot(struct kiosk *k);
+
+/* kiosk_grow.c */
+void kiosk_start_grow(struct kiosk *k);
+void kiosk_on_grow(struct kiosk *k);
