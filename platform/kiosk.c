@@ -4,7 +4,7 @@
  * wake-up goes to, and the decisions to draw (frame_due) and to wake (the UI timer). What
  * the handlers do is in kiosk_*.c, sharing struct kiosk (kiosk_private.h): a frame and its
  * figures (kiosk_frame.c); what a frame shows (kiosk_look.c); events into the app
- * (kiosk_feed.c); the grow press (kiosk_grow.c).
+ * (kiosk_feed.c); the grow press (kiosk_grow.c); export (kiosk_export.c).
  */
 #include "kiosk_private.h"
 
@@ -82,46 +82,6 @@ static int open_watchdog(struct kiosk *k)
 	if (timerfd_settime(k->watchdog_fd, 0, &it, NULL) < 0)
 		return -errno;
 	fprintf(stderr, "edaha: watchdog: the loop checks in every %.1f s\n", (double)us / 1e6);
-	return 0;
-}
-
-static void usb_status(void *data, enum app_status status, bool held)
-{
-	struct kiosk *k = data;
-
-	if (held)
-		app_hold_status(k->app, status, kiosk_now_us());
-	else
-		app_set_status(k->app, status, kiosk_now_us());
-}
-
-/* The export's writer (usb_export.c), its fds in the poll. 0 or -1 (said why). */
-static int open_usb(struct kiosk *k)
-{
-	const struct usb_export_config uc = {
-		.usb = k->cfg.usb,
-		.helper_socket = k->cfg.usb_socket,
-		.local_dir = k->cfg.export_dir && k->cfg.export_dir[0] ? k->cfg.export_dir : NULL,
-		.monitor = true,
-		.status = usb_status,
-		.data = k,
-	};
-	struct kiosk_source src[2];
-	struct error err = { { 0 } };
-	size_t n;
-
-	k->usb = usb_export_create(&uc, &err);
-	if (!k->usb) {
-		fprintf(stderr, "edaha: %s\n", err.msg);
-		return -1;
-	}
-	n = usb_export_sources(k->usb, src, 2);
-	for (size_t i = 0; i < n; i++) {
-		if (kiosk_add_source(k, &src[i]) < 0) {
-			fputs("edaha: too many sources to poll\n", stderr);
-			return -1;
-		}
-	}
 	return 0;
 }
 
@@ -253,7 +213,7 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 		fprintf(stderr, "edaha: %s\n", err.msg);
 		goto fail;
 	}
-	if (open_usb(k) < 0)
+	if (kiosk_open_usb(k) < 0)
 		goto fail;
 	k->grow = grow_worker_create(&err);
 	if (!k->grow) {
@@ -349,14 +309,6 @@ static void on_source(struct kiosk *k, size_t i)
 			strerror(-ret));
 		k->sources[i] = k->sources[--k->nsources];
 	}
-}
-
-/* Hands the export the last frame was read back for to usb_export.c, which tells the
- * visitor how it went. */
-static void run_export(struct kiosk *k)
-{
-	k->export_ready = false;
-	usb_export_start(k->usb, k->app, k->pixels);
 }
 
 /* Every committed stroke and edit goes to the journal before anything else happens. */
@@ -474,7 +426,7 @@ int kiosk_run(struct kiosk *k)
 			else
 				k->npending = 0; /* pen events that changed nothing on the screen */
 			if (k->export_ready)
-				run_export(k);
+				kiosk_run_export(k);
 			if (k->quit)
 				break;
 			/* a modeset shows its frame at once: go round for the next one */
@@ -487,7 +439,7 @@ int kiosk_run(struct kiosk *k)
 			k->export_asked = false;
 			free(k->pixels);
 			k->pixels = NULL;
-			run_export(k);
+			kiosk_run_export(k);
 		}
 		arm_ui_timer(k);
 		n = nd = display_pollfds(k->display, fds, DISPLAY_MAX_POLLFDS);

@@ -132,3 +132,7 @@ int kiosk_take_final_shot(struct kiosk *k);
 /* kiosk_grow.c */
 void kiosk_start_grow(struct kiosk *k);
 void kiosk_on_grow(struct kiosk *k);
+
+/* kiosk_export.c */
+int kiosk_open_usb(struct kiosk *k);
+void kiosk_run_export(struct kiosk *k);
