@@ -4,7 +4,8 @@
  * wake-up goes to, and the decisions to draw (frame_due) and to wake (the UI timer). What
  * the handlers do is in kiosk_*.c, sharing struct kiosk (kiosk_private.h): a frame and its
  * figures (kiosk_frame.c); what a frame shows (kiosk_look.c); events into the app
- * (kiosk_feed.c); the grow press (kiosk_grow.c); export (kiosk_export.c).
+ * (kiosk_feed.c); the grow press (kiosk_grow.c); export (kiosk_export.c); the journal and
+ * the idle reset (kiosk_autosave.c).
  */
 #include "kiosk_private.h"
 
@@ -14,7 +15,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/random.h>
 #include <sys/signalfd.h>
 #include <sys/timerfd.h>
 #include <time.h>
@@ -85,57 +85,6 @@ static int open_watchdog(struct kiosk *k)
 	return 0;
 }
 
-/* A new drawing's seed: a different tree for each visitor's same strokes. */
-static uint64_t fresh_seed(void)
-{
-	uint64_t seed;
-
-	if (getrandom(&seed, sizeof(seed), GRND_NONBLOCK) != (ssize_t)sizeof(seed))
-		seed = kiosk_now_us() ^ ((uint64_t)getpid() << 32);
-	return seed;
-}
-
-/* The journal: the drawing it holds comes back (unless one was loaded), then it starts
- * afresh from what the app shows. Only an out-of-memory stops the kiosk: a kiosk that
- * cannot save still draws. */
-static int start_autosave(struct kiosk *k)
-{
-	struct error err = { { 0 } }, warn = { { 0 } };
-	struct doc doc;
-	int ret;
-
-	k->autosave = autosave_create(k->cfg.state_dir, &err);
-	if (!k->autosave) {
-		fprintf(stderr, "edaha: warning: autosave: %s; drawings are not kept\n", err.msg);
-		return 0;
-	}
-	if (!k->cfg.doc) {
-		doc_init(&doc, 0);
-		ret = autosave_restore(k->autosave, &doc, &warn, &err);
-		if (warn.msg[0])
-			fprintf(stderr, "edaha: warning: autosave: %s\n", warn.msg);
-		if (ret < 0)
-			fprintf(stderr, "edaha: warning: autosave: %s; starting a new drawing\n",
-				err.msg);
-		if (ret > 0) {
-			size_t nops = doc.nops, cursor = doc.cursor;
-
-			if (app_load_doc(k->app, &doc) < 0) {
-				fputs("edaha: out of memory restoring the drawing\n", stderr);
-				return -ENOMEM;
-			}
-			fprintf(stderr, "edaha: autosave: the drawing is back from %s (%zu edits, %zu in effect)\n",
-				autosave_path(k->autosave), nops, cursor);
-		}
-		doc_finish(&doc);
-	}
-	if (autosave_start(k->autosave, &k->app->doc, &err) < 0) {
-		fprintf(stderr, "edaha: warning: autosave: %s\n", err.msg);
-		k->autosave_failing = true;
-	}
-	return 0;
-}
-
 struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 {
 	struct kiosk *k = calloc(1, sizeof(*k));
@@ -200,7 +149,7 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 		}
 		k->cfg.doc = NULL; /* the app has it now */
 	}
-	if (cfg->state_dir && start_autosave(k) < 0)
+	if (cfg->state_dir && kiosk_start_autosave(k) < 0)
 		goto fail;
 	/* idle time counts from the start: a kiosk nobody uses shows its attract screen */
 	k->app->attract_after_us = cfg->attract_after_us;
@@ -311,47 +260,6 @@ static void on_source(struct kiosk *k, size_t i)
 	}
 }
 
-/* Every committed stroke and edit goes to the journal before anything else happens. */
-void kiosk_save_edits(struct kiosk *k)
-{
-	struct error err = { { 0 } };
-
-	if (!k->autosave || !autosave_pending(k->autosave, &k->app->doc))
-		return;
-	if (autosave_sync(k->autosave, &k->app->doc, &err) < 0) {
-		if (!k->autosave_failing)
-			fprintf(stderr, "edaha: warning: autosave: %s; trying again at the next edit\n",
-				err.msg);
-		k->autosave_failing = true;
-	} else if (k->autosave_failing) {
-		fputs("edaha: autosave works again\n", stderr);
-		k->autosave_failing = false;
-	}
-}
-
-/* Nobody drew for reset_after: the drawing goes to the archive, the next visitor gets
- * a clean canvas (the attract screen stays up). */
-static void idle_reset(struct kiosk *k, uint64_t now)
-{
-	struct error err = { { 0 } };
-	char name[64] = "";
-
-	if (now < kiosk_reset_at(k->app, k->cfg.reset_after_us))
-		return;
-	if (k->autosave && autosave_archive(k->autosave, &k->app->doc, &k->app->tree,
-					    k->cfg.archive_keep, name, sizeof(name), &err) < 0)
-		fprintf(stderr, "edaha: warning: idle reset: cannot archive the drawing: %s\n", err.msg);
-	if (app_reset(k->app, fresh_seed()) < 0) {
-		kiosk_fail(k, "idle reset", -ENOMEM);
-		return;
-	}
-	fprintf(stderr, "edaha: idle for %.0f s: %s%s%s; a new canvas\n",
-		(double)(now - k->app->last_time_us) / 1e6,
-		name[0] ? "the drawing is archived as " : "the drawing is cleared",
-		name[0] ? AUTOSAVE_ARCHIVE_DIR "/" : "", name);
-	kiosk_save_edits(k);
-}
-
 /* Things the app asks of the platform between frames. */
 static void take_requests(struct kiosk *k)
 {
@@ -405,7 +313,7 @@ static void on_ui_timer(struct kiosk *k)
 	/* frame_due() sees what else changed */
 	if (read(k->ui_timer_fd, &expirations, sizeof(expirations)) == (ssize_t)sizeof(expirations))
 		k->ui_deadline_us = UINT64_MAX;
-	idle_reset(k, kiosk_now_us());
+	kiosk_idle_reset(k, kiosk_now_us());
 }
 
 int kiosk_run(struct kiosk *k)

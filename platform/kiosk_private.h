@@ -112,7 +112,6 @@ struct kiosk {
 /* kiosk.c */
 uint64_t kiosk_now_us(void);
 void kiosk_fail(struct kiosk *k, const char *what, int err);
-void kiosk_save_edits(struct kiosk *k);
 
 /* kiosk_look.c */
 void kiosk_look_of(const struct app *app, uint64_t now_us, struct kiosk_look *l);
@@ -136,3 +135,8 @@ void kiosk_on_grow(struct kiosk *k);
 /* kiosk_export.c */
 int kiosk_open_usb(struct kiosk *k);
 void kiosk_run_export(struct kiosk *k);
+
+/* kiosk_autosave.c */
+int kiosk_start_autosave(struct kiosk *k);
+void kiosk_save_edits(struct kiosk *k);
+void kiosk_idle_reset(struct kiosk *k, uint64_t now);
