@@ -5,7 +5,7 @@
  * the handlers do is in kiosk_*.c, sharing struct kiosk (kiosk_private.h): a frame and its
  * figures (kiosk_frame.c); what a frame shows (kiosk_look.c); events into the app
  * (kiosk_feed.c); the grow press (kiosk_grow.c); export (kiosk_export.c); the journal and
- * the idle reset (kiosk_autosave.c).
+ * the idle reset (kiosk_autosave.c); signals and the watchdog (kiosk_service.c).
  */
 #include "kiosk_private.h"
 
@@ -15,7 +15,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/signalfd.h>
 #include <sys/timerfd.h>
 #include <time.h>
 #include <unistd.h>
@@ -49,42 +48,6 @@ static void feed_from_display(void *data, const struct event *ev)
 	kiosk_feed(data, ev);
 }
 
-static int open_signals(struct kiosk *k)
-{
-	sigset_t mask;
-
-	/* blocked before the display opens: GL driver threads inherit the mask, so the
-	 * signals wait for our signalfd instead of landing in a random thread */
-	sigemptyset(&mask);
-	sigaddset(&mask, SIGINT);
-	sigaddset(&mask, SIGTERM);
-	if (sigprocmask(SIG_BLOCK, &mask, &k->old_mask) < 0)
-		return -errno;
-	k->mask_set = true;
-	k->signal_fd = signalfd(-1, &mask, SFD_NONBLOCK | SFD_CLOEXEC);
-	return k->signal_fd < 0 ? -errno : 0;
-}
-
-/* A periodic timer at half the service's WatchdogSec=: each expiry the loop is still
- * turning pings systemd; a loop stuck anywhere stops the pings and gets restarted. */
-static int open_watchdog(struct kiosk *k)
-{
-	uint64_t us = notify_watchdog_interval_us();
-	struct itimerspec it;
-
-	if (!us)
-		return 0;
-	k->watchdog_fd = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
-	if (k->watchdog_fd < 0)
-		return -errno;
-	it.it_value = (struct timespec){ (time_t)(us / 1000000u), (long)(us % 1000000u) * 1000 };
-	it.it_interval = it.it_value;
-	if (timerfd_settime(k->watchdog_fd, 0, &it, NULL) < 0)
-		return -errno;
-	fprintf(stderr, "edaha: watchdog: the loop checks in every %.1f s\n", (double)us / 1e6);
-	return 0;
-}
-
 struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 {
 	struct kiosk *k = calloc(1, sizeof(*k));
@@ -102,7 +65,7 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 	k->ui_deadline_us = UINT64_MAX;
 	k->mode_lit = (enum button)-1; /* tells the LEDs the first mode, whatever it is */
 	k->start_us = kiosk_now_us();
-	if (open_signals(k) < 0) {
+	if (kiosk_open_signals(k) < 0) {
 		fprintf(stderr, "edaha: cannot watch for signals: %s\n", strerror(errno));
 		goto fail;
 	}
@@ -112,7 +75,7 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 		fprintf(stderr, "edaha: no timerfd: %s\n", strerror(errno));
 		goto fail;
 	}
-	if (open_watchdog(k) < 0) {
+	if (kiosk_open_watchdog(k) < 0) {
 		fprintf(stderr, "edaha: no timerfd for the watchdog: %s\n", strerror(errno));
 		goto fail;
 	}
@@ -239,15 +202,6 @@ void kiosk_fail(struct kiosk *k, const char *what, int err)
 	k->quit = true;
 }
 
-static void on_signal(struct kiosk *k)
-{
-	struct signalfd_siginfo si;
-
-	if (read(k->signal_fd, &si, sizeof(si)) == (ssize_t)sizeof(si))
-		fprintf(stderr, "edaha: %s, stopping\n", strsignal((int)si.ssi_signo));
-	k->quit = true;
-}
-
 static void on_source(struct kiosk *k, size_t i)
 {
 	int ret = k->sources[i].dispatch(k->sources[i].data);
@@ -296,14 +250,6 @@ static void arm_ui_timer(struct kiosk *k)
 						 (long)(next % 1000000u) * 1000 };
 	if (timerfd_settime(k->ui_timer_fd, TFD_TIMER_ABSTIME, &it, NULL) < 0)
 		kiosk_fail(k, "timer", -errno);
-}
-
-static void on_watchdog(struct kiosk *k)
-{
-	uint64_t expirations;
-
-	if (read(k->watchdog_fd, &expirations, sizeof(expirations)) == (ssize_t)sizeof(expirations))
-		notify_watchdog();
 }
 
 static void on_ui_timer(struct kiosk *k)
@@ -365,14 +311,14 @@ int kiosk_run(struct kiosk *k)
 			continue;
 		}
 		if (fds[nd].revents)
-			on_signal(k);
+			kiosk_on_signal(k);
 		kiosk_on_display(k, fds, nd);
 		if (fds[nd + 1].revents)
 			kiosk_on_timer(k);
 		if (fds[nd + 2].revents)
 			on_ui_timer(k);
 		if (fds[nd + 3].revents)
-			on_watchdog(k);
+			kiosk_on_watchdog(k);
 		if (fds[nd + 4].revents)
 			kiosk_on_grow(k);
 		/* backwards, so that dropping a failed source leaves the rest in place */

@@ -140,3 +140,9 @@ void kiosk_run_export(struct kiosk *k);
 int kiosk_start_autosave(struct kiosk *k);
 void kiosk_save_edits(struct kiosk *k);
 void kiosk_idle_reset(struct kiosk *k, uint64_t now);
+
+/* kiosk_service.c */
+int kiosk_open_signals(struct kiosk *k);
+int kiosk_open_watchdog(struct kiosk *k);
+void kiosk_on_signal(struct kiosk *k);
+void kiosk_on_watchdog(struct kiosk *k);
