@@ -1,248 +1,33 @@
 /* SPDX-License-Identifier: MIT */
-#include "kiosk.h"
+/*
+ * The kiosk's loop (kiosk.h): create and destroy, the poll set and the handler each fd's
+ * wake-up goes to, and the decisions to draw (frame_due) and to wake (the UI timer). What
+ * the handlers do is in kiosk_*.c, sharing struct kiosk (kiosk_private.h): a frame and its
+ * figures (kiosk_frame.c); what a frame shows (kiosk_look.c); events into the app
+ * (kiosk_feed.c); the grow press (kiosk_grow.c); export (kiosk_export.c); the journal and
+ * the idle reset (kiosk_autosave.c); signals and the watchdog (kiosk_service.c).
+ */
+#include "kiosk_private.h"
 
 #include <errno.h>
-#include <inttypes.h>
 #include <poll.h>
 #include <signal.h>
-#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/random.h>
-#include <sys/signalfd.h>
 #include <sys/timerfd.h>
 #include <time.h>
 #include <unistd.h>
 
-#include "app.h"
-#include "app_mode.h"
-#include "autosave.h"
-#include "buf.h"
-#include "fileio.h"
-#include "grow_worker.h"
-#include "latency.h"
 #include "notify.h"
-#include "pngio.h"
-#include "render.h"
-#include "trace.h"
-#include "usb_export.h"
 
-/* A flip that has not completed in this long will not: the display is gone (it is
- * probed again, and the kiosk goes on). */
-#define KIOSK_FLIP_TIMEOUT_MS 1000
-#define KIOSK_MAX_SOURCES 16
-/* Pen events waiting for the frame that shows them; a slow frame under a fast pen
- * drops the excess from the figures, not from the drawing. */
-#define KIOSK_MAX_PENDING 1024
-/* How often the journal gets the pen-to-screen figures while visitors draw. */
-#define KIOSK_STATS_LOG_US (300u * 1000000u)
-
-/* A place of the side strip as the screen shows it (ui/render_ui.c draws a parameter
- * button that would change nothing disabled). */
-struct kiosk_side_look {
-	bool thumbnail, lit, enabled;
-	enum button button;
-	int tap;
-	const struct tree_mesh *preview;
-};
-
-/*
- * What a frame shows, apart from the clock: when none of it changed since the last
- * frame, the screen is already right and nothing is drawn.
- */
-struct kiosk_look {
-	uint64_t mesh_serial, previews_serial;
-	size_t stroke_points;
-	bool stroke_active, pen_in, orbiting, turning, ui_held, side_held;
-	enum event_tool pen_tool;
-	double pen_x, pen_y;
-	enum app_mode mode;
-	enum app_pattern pattern;
-	bool buttons[BUTTON_COUNT];
-	enum button ui_button;
-	struct camera camera;
-	int selected;
-	unsigned suggestions;
-	enum app_status status; /* the message on screen */
-	bool attract;           /* the attract screen */
-	enum season season;     /* the season button's picture, the leaves' colours */
-	size_t nside;           /* the side strip: what it holds, and how each place shows */
-	struct kiosk_side_look side[APP_SIDE_MAX];
-};
-
-/* A pen event on its way to the screen: its kernel time, and frames shown before it. */
-struct kiosk_pending {
-	uint64_t time_us, shown;
-};
-
-struct kiosk {
-	struct kiosk_config cfg;
-	struct display *display;
-	struct render *render;
-	struct app *app;
-	struct trace_writer *rec;
-	struct kiosk_source sources[KIOSK_MAX_SOURCES];
-	size_t nsources;
-	int signal_fd, timer_fd;
-	int ui_timer_fd;         /* wakes the loop when a message or the attract screen changes */
-	int watchdog_fd;         /* the service's watchdog: pinged from the loop, -1 without */
-	uint64_t ui_deadline_us; /* what it is set to; UINT64_MAX: nothing to wait for */
-	sigset_t old_mask;
-	bool mask_set;
-	struct kiosk_look drawn; /* what the screen shows */
-	bool drawn_valid;        /* false until the first frame */
-	bool animating;          /* the last frame was a step of the 3D turn */
-	bool quit;
-	int status;
-	/* counts and times for the log line at the end */
-	unsigned long frames;
-	uint64_t start_us, first_frame_us, last_frame_us;
-	uint8_t *shot; /* the last frame's pixels, with --screenshot */
-	/* pen-to-screen latency: events not drawn yet, events in the frame being flipped */
-	struct latency *lat;
-	struct latency *frame_time; /* from starting to draw a frame to it being on screen */
-	uint64_t frame_start_us;
-	struct kiosk_pending *pending, *inflight;
-	size_t npending, ninflight;
-	uint64_t shown;          /* frames that reached the screen */
-	uint64_t stats_logged_us, stats_logged_n;
-	/* export: asked for; the next frame is read back for its picture, then written */
-	bool export_asked, export_ready;
-	uint8_t *pixels;
-	struct usb_export *usb;  /* where the export goes: sticks, the local copy */
-	struct grow_worker *grow; /* grow presses, off the loop */
-	/* the press's start, and frames drawn and shown by then */
-	uint64_t grow_started_us, grow_frames, grow_shown;
-	struct autosave *autosave; /* NULL: none */
-	bool autosave_failing;     /* said once, not at every stroke */
-	enum button mode_lit;    /* what mode_changed was last told */
-	void (*mode_changed)(void *data, enum button mode);
-	void *mode_data;
-};
-
-static uint64_t now_us(void)
+uint64_t kiosk_now_us(void)
 {
 	struct timespec ts;
 
 	/* the clock libinput stamps events with, so that app times compare */
 	clock_gettime(CLOCK_MONOTONIC, &ts);
 	return (uint64_t)ts.tv_sec * 1000000u + (uint64_t)ts.tv_nsec / 1000u;
-}
-
-static void look_of(const struct app *app, uint64_t now_us, struct kiosk_look *l)
-{
-	struct app_side_item items[APP_SIDE_MAX];
-
-	memset(l, 0, sizeof(*l)); /* padding too, though only fields are compared */
-	l->status = app_status_at(app, now_us, NULL);
-	l->attract = app_attract_at(app, now_us, NULL);
-	l->mesh_serial = app->mesh_serial;
-	l->previews_serial = app->previews_serial;
-	l->stroke_points = app->stroke.npoints;
-	l->stroke_active = app->stroke.active;
-	l->pen_in = app->pen.in_proximity;
-	l->pen_tool = app->pen.tool;
-	l->pen_x = app->pen.x;
-	l->pen_y = app->pen.y;
-	l->orbiting = app->orbiting;
-	l->turning = app->turning;
-	l->ui_held = app->ui_button_held;
-	l->ui_button = app->ui_button;
-	l->side_held = app->side_held;
-	l->mode = app->mode;
-	l->pattern = app->pattern;
-	memcpy(l->buttons, app->buttons_down, sizeof(l->buttons));
-	l->camera = app->camera;
-	l->selected = app->selected;
-	l->suggestions = app->suggestions;
-	l->season = app->tree.season;
-	l->nside = app_side_items(app, items);
-	for (size_t i = 0; i < l->nside; i++) {
-		enum button b = items[i].button;
-
-		l->side[i] = (struct kiosk_side_look){
-			.thumbnail = items[i].thumbnail,
-			.lit = items[i].lit,
-			.enabled = b < BUTTON_GEN_MORE || b > BUTTON_GEN_BARER || app_gen_possible(app, b),
-			.button = b,
-			.tap = items[i].tap,
-			.preview = items[i].preview,
-		};
-	}
-}
-
-static bool side_equal(const struct kiosk_look *a, const struct kiosk_look *b)
-{
-	if (a->nside != b->nside)
-		return false;
-	for (size_t i = 0; i < a->nside; i++) {
-		const struct kiosk_side_look *x = &a->side[i], *y = &b->side[i];
-
-		if (x->thumbnail != y->thumbnail || x->lit != y->lit || x->enabled != y->enabled ||
-		    x->button != y->button || x->tap != y->tap || x->preview != y->preview)
-			return false;
-	}
-	return true;
-}
-
-static bool look_equal(const struct kiosk_look *a, const struct kiosk_look *b)
-{
-	return a->mesh_serial == b->mesh_serial && a->previews_serial == b->previews_serial &&
-	       a->stroke_points == b->stroke_points && a->stroke_active == b->stroke_active &&
-	       a->pen_in == b->pen_in && a->pen_tool == b->pen_tool && a->pen_x == b->pen_x &&
-	       a->pen_y == b->pen_y && a->orbiting == b->orbiting && a->turning == b->turning &&
-	       a->ui_held == b->ui_held && a->ui_button == b->ui_button &&
-	       a->side_held == b->side_held && a->mode == b->mode && a->pattern == b->pattern &&
-	       memcmp(a->buttons, b->buttons, sizeof(a->buttons)) == 0 &&
-	       a->camera.yaw == b->camera.yaw && a->camera.pitch == b->camera.pitch &&
-	       a->selected == b->selected && a->suggestions == b->suggestions &&
-	       a->status == b->status && a->attract == b->attract && a->season == b->season &&
-	       side_equal(a, b);
-}
-
-/* Whether frames must keep coming at now_us without any input: the turn into 3D, new
- * leaves unfolding, a grown bark swelling, a message fading out (a vine growing:
- * app_vines_advance). */
-static bool animating_at(const struct app *app, uint64_t now_us, bool turning)
-{
-	uint64_t until;
-
-	struct app_unfold_span span;
-
-	if (turning || app_unfold_at(app, now_us, &span, 1) > 0)
-		return true;
-	/* a grow press under way (its message's dots move) or its bark swelling */
-	if (app->grow_waiting)
-		return true;
-	if (app->swell_start_us != UINT64_MAX &&
-	    (now_us < app->swell_start_us || now_us - app->swell_start_us < APP_SWELL_US))
-		return true;
-	return app_status_at(app, now_us, &until) != APP_STATUS_NONE &&
-	       now_us + APP_STATUS_FADE_US >= until;
-}
-
-/* When the idle reset is due for the drawing there is (UINT64_MAX: never). */
-static uint64_t reset_at(const struct app *app, uint64_t reset_after_us)
-{
-	/* an empty canvas has nothing to archive; a pen on the tablet is someone there */
-	if (!reset_after_us || !app->doc.nops || app->stroke.active || app->pen.in_proximity)
-		return UINT64_MAX;
-	return app->last_time_us + reset_after_us;
-}
-
-/* The next moment the screen changes with no input (UINT64_MAX: none): a message
- * starts fading or ends, the attract screen begins, the idle reset. */
-static uint64_t next_change(const struct app *app, uint64_t now_us, uint64_t reset_after_us)
-{
-	uint64_t until, from, next = reset_at(app, reset_after_us);
-
-	/* a held message (saving) changes when its result comes, not by the clock */
-	if (app_status_at(app, now_us, &until) != APP_STATUS_NONE && until != UINT64_MAX)
-		next = now_us + APP_STATUS_FADE_US < until ? until - APP_STATUS_FADE_US : until;
-	if (!app_attract_at(app, now_us, &from) && from < next)
-		next = from;
-	return next;
 }
 
 /* Whether the next vblank should show a new frame. */
@@ -254,147 +39,13 @@ static bool frame_due(const struct kiosk *k)
 	if (k->cfg.frames || !k->drawn_valid || k->animating || k->export_asked ||
 	    display_needs_frame(k->display))
 		return true;
-	look_of(k->app, now_us(), &now);
-	return !look_equal(&now, &k->drawn);
+	kiosk_look_of(k->app, kiosk_now_us(), &now);
+	return !kiosk_look_equal(&now, &k->drawn);
 }
 
 static void feed_from_display(void *data, const struct event *ev)
 {
 	kiosk_feed(data, ev);
-}
-
-static int open_signals(struct kiosk *k)
-{
-	sigset_t mask;
-
-	/* blocked before the display opens: GL driver threads inherit the mask, so the
-	 * signals wait for our signalfd instead of landing in a random thread */
-	sigemptyset(&mask);
-	sigaddset(&mask, SIGINT);
-	sigaddset(&mask, SIGTERM);
-	if (sigprocmask(SIG_BLOCK, &mask, &k->old_mask) < 0)
-		return -errno;
-	k->mask_set = true;
-	k->signal_fd = signalfd(-1, &mask, SFD_NONBLOCK | SFD_CLOEXEC);
-	return k->signal_fd < 0 ? -errno : 0;
-}
-
-static int set_timer(struct kiosk *k, int ms)
-{
-	struct itimerspec it = { .it_value = { ms / 1000, (long)(ms % 1000) * 1000000 } };
-
-	return timerfd_settime(k->timer_fd, 0, &it, NULL) < 0 ? -errno : 0;
-}
-
-/* A periodic timer at half the service's WatchdogSec=: each expiry the loop is still
- * turning pings systemd; a loop stuck anywhere stops the pings and gets restarted. */
-static int open_watchdog(struct kiosk *k)
-{
-	uint64_t us = notify_watchdog_interval_us();
-	struct itimerspec it;
-
-	if (!us)
-		return 0;
-	k->watchdog_fd = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
-	if (k->watchdog_fd < 0)
-		return -errno;
-	it.it_value = (struct timespec){ (time_t)(us / 1000000u), (long)(us % 1000000u) * 1000 };
-	it.it_interval = it.it_value;
-	if (timerfd_settime(k->watchdog_fd, 0, &it, NULL) < 0)
-		return -errno;
-	fprintf(stderr, "edaha: watchdog: the loop checks in every %.1f s\n", (double)us / 1e6);
-	return 0;
-}
-
-static void usb_status(void *data, enum app_status status, bool held)
-{
-	struct kiosk *k = data;
-
-	if (held)
-		app_hold_status(k->app, status, now_us());
-	else
-		app_set_status(k->app, status, now_us());
-}
-
-/* The export's writer (usb_export.c), its fds in the poll. 0 or -1 (said why). */
-static int open_usb(struct kiosk *k)
-{
-	const struct usb_export_config uc = {
-		.usb = k->cfg.usb,
-		.helper_socket = k->cfg.usb_socket,
-		.local_dir = k->cfg.export_dir && k->cfg.export_dir[0] ? k->cfg.export_dir : NULL,
-		.monitor = true,
-		.status = usb_status,
-		.data = k,
-	};
-	struct kiosk_source src[2];
-	struct error err = { { 0 } };
-	size_t n;
-
-	k->usb = usb_export_create(&uc, &err);
-	if (!k->usb) {
-		fprintf(stderr, "edaha: %s\n", err.msg);
-		return -1;
-	}
-	n = usb_export_sources(k->usb, src, 2);
-	for (size_t i = 0; i < n; i++) {
-		if (kiosk_add_source(k, &src[i]) < 0) {
-			fputs("edaha: too many sources to poll\n", stderr);
-			return -1;
-		}
-	}
-	return 0;
-}
-
-/* A new drawing's seed: a different tree for each visitor's same strokes. */
-static uint64_t fresh_seed(void)
-{
-	uint64_t seed;
-
-	if (getrandom(&seed, sizeof(seed), GRND_NONBLOCK) != (ssize_t)sizeof(seed))
-		seed = now_us() ^ ((uint64_t)getpid() << 32);
-	return seed;
-}
-
-/* The journal: the drawing it holds comes back (unless one was loaded), then it starts
- * afresh from what the app shows. Only an out-of-memory stops the kiosk: a kiosk that
- * cannot save still draws. */
-static int start_autosave(struct kiosk *k)
-{
-	struct error err = { { 0 } }, warn = { { 0 } };
-	struct doc doc;
-	int ret;
-
-	k->autosave = autosave_create(k->cfg.state_dir, &err);
-	if (!k->autosave) {
-		fprintf(stderr, "edaha: warning: autosave: %s; drawings are not kept\n", err.msg);
-		return 0;
-	}
-	if (!k->cfg.doc) {
-		doc_init(&doc, 0);
-		ret = autosave_restore(k->autosave, &doc, &warn, &err);
-		if (warn.msg[0])
-			fprintf(stderr, "edaha: warning: autosave: %s\n", warn.msg);
-		if (ret < 0)
-			fprintf(stderr, "edaha: warning: autosave: %s; starting a new drawing\n",
-				err.msg);
-		if (ret > 0) {
-			size_t nops = doc.nops, cursor = doc.cursor;
-
-			if (app_load_doc(k->app, &doc) < 0) {
-				fputs("edaha: out of memory restoring the drawing\n", stderr);
-				return -ENOMEM;
-			}
-			fprintf(stderr, "edaha: autosave: the drawing is back from %s (%zu edits, %zu in effect)\n",
-				autosave_path(k->autosave), nops, cursor);
-		}
-		doc_finish(&doc);
-	}
-	if (autosave_start(k->autosave, &k->app->doc, &err) < 0) {
-		fprintf(stderr, "edaha: warning: autosave: %s\n", err.msg);
-		k->autosave_failing = true;
-	}
-	return 0;
 }
 
 struct kiosk *kiosk_create(const struct kiosk_config *cfg)
@@ -413,8 +64,8 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 	k->signal_fd = k->timer_fd = k->ui_timer_fd = k->watchdog_fd = -1;
 	k->ui_deadline_us = UINT64_MAX;
 	k->mode_lit = (enum button)-1; /* tells the LEDs the first mode, whatever it is */
-	k->start_us = now_us();
-	if (open_signals(k) < 0) {
+	k->start_us = kiosk_now_us();
+	if (kiosk_open_signals(k) < 0) {
 		fprintf(stderr, "edaha: cannot watch for signals: %s\n", strerror(errno));
 		goto fail;
 	}
@@ -424,7 +75,7 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 		fprintf(stderr, "edaha: no timerfd: %s\n", strerror(errno));
 		goto fail;
 	}
-	if (open_watchdog(k) < 0) {
+	if (kiosk_open_watchdog(k) < 0) {
 		fprintf(stderr, "edaha: no timerfd for the watchdog: %s\n", strerror(errno));
 		goto fail;
 	}
@@ -461,7 +112,7 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 		}
 		k->cfg.doc = NULL; /* the app has it now */
 	}
-	if (cfg->state_dir && start_autosave(k) < 0)
+	if (cfg->state_dir && kiosk_start_autosave(k) < 0)
 		goto fail;
 	/* idle time counts from the start: a kiosk nobody uses shows its attract screen */
 	k->app->attract_after_us = cfg->attract_after_us;
@@ -474,7 +125,7 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 		fprintf(stderr, "edaha: %s\n", err.msg);
 		goto fail;
 	}
-	if (open_usb(k) < 0)
+	if (kiosk_open_usb(k) < 0)
 		goto fail;
 	k->grow = grow_worker_create(&err);
 	if (!k->grow) {
@@ -544,176 +195,11 @@ void kiosk_size(const struct kiosk *k, int *width, int *height)
 	display_size(k->display, width, height);
 }
 
-static bool is_pen(const struct event *ev)
-{
-	return ev->type == EVENT_PROXIMITY_IN || ev->type == EVENT_PROXIMITY_OUT ||
-	       ev->type == EVENT_TIP_DOWN || ev->type == EVENT_TIP_UP ||
-	       ev->type == EVENT_MOTION || ev->type == EVENT_PEN_BUTTON;
-}
-
-/* What may still reach the app while another VT is in front: what ends a stroke or a
- * press begun before the switch. */
-static bool ends_something(const struct event *ev)
-{
-	return ev->type == EVENT_TIP_UP || ev->type == EVENT_PROXIMITY_OUT ||
-	       ((ev->type == EVENT_BUTTON || ev->type == EVENT_PEN_BUTTON) && !ev->pressed);
-}
-
-void kiosk_feed(struct kiosk *k, const struct event *ev)
-{
-	/* libinput and the GPIO lines stay open across a VT switch: the pen must not draw on
-	 * a screen the visitor cannot see */
-	if (!display_seat_active(k->display) && !ends_something(ev))
-		return;
-	if (is_pen(ev) && k->npending < KIOSK_MAX_PENDING)
-		k->pending[k->npending++] = (struct kiosk_pending){ ev->time_us, k->shown };
-	if (k->rec && trace_writer_write(k->rec, ev) < 0) {
-		fprintf(stderr, "edaha: %s: cannot write the recording; recording stops\n",
-			k->cfg.record);
-		if (trace_writer_destroy(k->rec) < 0)
-			fprintf(stderr, "edaha: %s: cannot write the recording\n", k->cfg.record);
-		k->rec = NULL;
-	}
-	app_handle_event(k->app, ev);
-}
-
-static void fail(struct kiosk *k, const char *what, int err)
+void kiosk_fail(struct kiosk *k, const char *what, int err)
 {
 	fprintf(stderr, "edaha: %s: %s\n", what, strerror(-err));
 	k->status = 1;
 	k->quit = true;
-}
-
-static void log_latency(struct kiosk *k, FILE *f)
-{
-	char line[256];
-
-	latency_format(k->lat, line, sizeof(line));
-	fprintf(f, "edaha: %s\n", line);
-	k->stats_logged_n = k->lat->n;
-}
-
-/* A frame reached the screen at now: the pen events it carried have their latency. */
-static void frame_shown(struct kiosk *k, uint64_t now)
-{
-	k->shown++;
-	k->last_frame_us = now;
-	if (k->shown == 1)
-		notify_ready(); /* the visitor sees the kiosk: the service is up */
-	latency_add(k->frame_time, now - k->frame_start_us, 1);
-	for (size_t i = 0; i < k->ninflight; i++) {
-		const struct kiosk_pending *e = &k->inflight[i];
-
-		/* a timestamp from the future (a clock mismatch) counts as no wait */
-		latency_add(k->lat, now > e->time_us ? now - e->time_us : 0,
-			    (unsigned)(k->shown - e->shown));
-	}
-	k->ninflight = 0;
-	if (k->lat->n > k->stats_logged_n && now - k->stats_logged_us >= KIOSK_STATS_LOG_US) {
-		k->stats_logged_us = now;
-		log_latency(k, stderr);
-	}
-}
-
-static void draw_frame(struct kiosk *k)
-{
-	uint64_t t = now_us();
-	struct camera cam;
-	bool last = k->cfg.frames && k->frames + 1 == k->cfg.frames;
-	size_t room, n;
-	int ret;
-
-	k->frame_start_us = t;
-	/* a vine planted grows by the clock, as the turn into 3D turns */
-	k->animating = app_vines_advance(k->app, t);
-	k->animating = animating_at(k->app, t, app_camera_at(k->app, t, &cam)) || k->animating;
-	look_of(k->app, t, &k->drawn);
-	k->drawn_valid = true;
-	ret = render_frame_at(k->render, k->app, t);
-	if (ret == 0 && last && k->shot)
-		ret = display_read_rgba(k->display, k->shot);
-	if (ret == 0 && k->export_asked) {
-		int w, h;
-
-		/* the export's picture is the frame the visitor sees as the button is pressed */
-		kiosk_size(k, &w, &h);
-		if (!k->pixels)
-			k->pixels = malloc((size_t)w * (size_t)h * 4);
-		if (k->pixels && display_read_rgba(k->display, k->pixels) < 0) {
-			fputs("edaha: export: cannot read the screen back; no picture\n", stderr);
-			free(k->pixels);
-			k->pixels = NULL;
-		}
-		k->export_asked = false;
-		k->export_ready = true;
-	}
-	if (ret == 0)
-		ret = display_present(k->display);
-	if (ret == -ENODEV)
-		return; /* not shown: the display said why; it asks for a frame when back */
-	if (ret == 0 && display_flip_pending(k->display))
-		ret = set_timer(k, KIOSK_FLIP_TIMEOUT_MS);
-	if (ret < 0) {
-		fail(k, "cannot show a frame", ret);
-		return;
-	}
-	/* the pen events so far are in this frame */
-	room = KIOSK_MAX_PENDING - k->ninflight;
-	n = k->npending < room ? k->npending : room;
-	memcpy(k->inflight + k->ninflight, k->pending, n * sizeof(*k->pending));
-	k->ninflight += n;
-	k->npending = 0;
-	k->frames++;
-	/* a modeset shows its frame at once, with no flip event */
-	if (!display_flip_pending(k->display))
-		frame_shown(k, now_us());
-	if (k->frames == 1) {
-		k->first_frame_us = now_us();
-		/* the kiosk is up: a line for the journal (and for tests to wait on) */
-		fprintf(stderr, "edaha: first frame on screen %.1f ms after start\n",
-			(double)(k->first_frame_us - k->start_us) / 1000.0);
-	}
-}
-
-/* Page flips, seat switches and hotplug events on the display's fds. */
-static void on_display(struct kiosk *k, const struct pollfd *fds, size_t n)
-{
-	bool pending = display_flip_pending(k->display);
-	int ret = display_dispatch(k->display, fds, n);
-
-	if (ret < 0) {
-		fail(k, "display", ret);
-		return;
-	}
-	if (pending && !display_flip_pending(k->display)) {
-		frame_shown(k, now_us());
-		ret = set_timer(k, 0); /* disarms the flip watchdog */
-		if (ret < 0)
-			fail(k, "timer", ret);
-	}
-}
-
-static void on_signal(struct kiosk *k)
-{
-	struct signalfd_siginfo si;
-
-	if (read(k->signal_fd, &si, sizeof(si)) == (ssize_t)sizeof(si))
-		fprintf(stderr, "edaha: %s, stopping\n", strsignal((int)si.ssi_signo));
-	k->quit = true;
-}
-
-static void on_timer(struct kiosk *k)
-{
-	uint64_t expirations;
-
-	if (read(k->timer_fd, &expirations, sizeof(expirations)) < 0)
-		return; /* spurious wake-up (EAGAIN): nothing expired */
-	if (display_flip_pending(k->display)) {
-		int ret = display_flip_timeout(k->display);
-
-		if (ret < 0)
-			fail(k, "display", ret);
-	}
 }
 
 static void on_source(struct kiosk *k, size_t i)
@@ -728,117 +214,6 @@ static void on_source(struct kiosk *k, size_t i)
 	}
 }
 
-/* Hands the export the last frame was read back for to usb_export.c, which tells the
- * visitor how it went. */
-static void run_export(struct kiosk *k)
-{
-	k->export_ready = false;
-	usb_export_start(k->usb, k->app, k->pixels);
-}
-
-/* Every committed stroke and edit goes to the journal before anything else happens. */
-static void save_edits(struct kiosk *k)
-{
-	struct error err = { { 0 } };
-
-	if (!k->autosave || !autosave_pending(k->autosave, &k->app->doc))
-		return;
-	if (autosave_sync(k->autosave, &k->app->doc, &err) < 0) {
-		if (!k->autosave_failing)
-			fprintf(stderr, "edaha: warning: autosave: %s; trying again at the next edit\n",
-				err.msg);
-		k->autosave_failing = true;
-	} else if (k->autosave_failing) {
-		fputs("edaha: autosave works again\n", stderr);
-		k->autosave_failing = false;
-	}
-}
-
-/* Nobody drew for reset_after: the drawing goes to the archive, the next visitor gets
- * a clean canvas (the attract screen stays up). */
-static void idle_reset(struct kiosk *k, uint64_t now)
-{
-	struct error err = { { 0 } };
-	char name[64] = "";
-
-	if (now < reset_at(k->app, k->cfg.reset_after_us))
-		return;
-	if (k->autosave && autosave_archive(k->autosave, &k->app->doc, &k->app->tree,
-					    k->cfg.archive_keep, name, sizeof(name), &err) < 0)
-		fprintf(stderr, "edaha: warning: idle reset: cannot archive the drawing: %s\n", err.msg);
-	if (app_reset(k->app, fresh_seed()) < 0) {
-		fail(k, "idle reset", -ENOMEM);
-		return;
-	}
-	fprintf(stderr, "edaha: idle for %.0f s: %s%s%s; a new canvas\n",
-		(double)(now - k->app->last_time_us) / 1e6,
-		name[0] ? "the drawing is archived as " : "the drawing is cleared",
-		name[0] ? AUTOSAVE_ARCHIVE_DIR "/" : "", name);
-	save_edits(k);
-}
-
-/* A grow press the app waits for, on the worker: a copy of the tree as it is now. */
-static void start_grow(struct kiosk *k)
-{
-	struct tree *t = malloc(sizeof(*t));
-	struct wood_params p;
-	uint64_t serial;
-	int ret = t ? 0 : -ENOMEM;
-
-	if (t) {
-		tree_init(t);
-		ret = app_grow_job(k->app, t, &p, &serial);
-	}
-	if (ret == 0)
-		ret = grow_worker_start(k->grow, t, &p, serial);
-	if (ret == 0 && !k->grow_started_us) {
-		k->grow_started_us = now_us();
-		k->grow_frames = k->frames;
-		k->grow_shown = k->shown;
-	}
-	if (ret < 0) {
-		if (t) {
-			tree_finish(t);
-			free(t);
-		}
-		fprintf(stderr, "edaha: warning: a grow press could not start: %s\n", strerror(-ret));
-		k->grow_started_us = 0;
-		k->app->grow_waiting = false;
-		app_set_status(k->app, APP_STATUS_NONE, now_us());
-	}
-}
-
-/* The worker's press done: to the app, or again if the tree changed meanwhile. */
-static void on_grow(struct kiosk *k)
-{
-	struct tree *t;
-	uint64_t serial;
-	int result, ret;
-
-	if (grow_worker_take(k->grow, &t, &result, &serial) < 0)
-		return;
-	ret = result < 0 ? result : app_grow_done(k->app, t, serial, now_us());
-	tree_finish(t);
-	free(t);
-	if (ret == 0) {
-		/* the technician's proof that the loop went on while the worker grew: frames
-		 * drawn count, as a frame's flip can land just after the worker's result */
-		fprintf(stderr, "edaha: grew a year in %.2f s, %" PRIu64 " frames drawn and %" PRIu64
-			" shown meanwhile\n", (double)(now_us() - k->grow_started_us) / 1e6,
-			k->frames - k->grow_frames, k->shown - k->grow_shown);
-		k->grow_started_us = 0;
-	}
-	if (ret == -EAGAIN) {
-		start_grow(k);
-	} else if (ret < 0) {
-		k->grow_started_us = 0;
-		fprintf(stderr, "edaha: warning: a grow press failed: %s\n", strerror(-ret));
-		k->app->grow_waiting = false;
-		app_set_status(k->app, APP_STATUS_NONE, now_us());
-	}
-	save_edits(k);
-}
-
 /* Things the app asks of the platform between frames. */
 static void take_requests(struct kiosk *k)
 {
@@ -848,23 +223,23 @@ static void take_requests(struct kiosk *k)
 	if (req & APP_REQUEST_EXPORT)
 		k->export_asked = true;
 	if ((req & APP_REQUEST_GROW) && !grow_worker_busy(k->grow))
-		start_grow(k);
+		kiosk_start_grow(k);
 	if (mode != k->mode_lit) {
 		k->mode_lit = mode;
 		if (k->mode_changed)
 			k->mode_changed(k->mode_data, mode);
 	}
 	if (k->app->failed) {
-		fail(k, "the app failed", k->app->failed);
+		kiosk_fail(k, "the app failed", k->app->failed);
 	}
-	save_edits(k);
+	kiosk_save_edits(k);
 }
 
 /* Sets the UI timer for the next change nobody causes (a message fading, the attract
  * screen): the loop sleeps in poll() until then. */
 static void arm_ui_timer(struct kiosk *k)
 {
-	uint64_t next = next_change(k->app, now_us(), k->cfg.reset_after_us);
+	uint64_t next = kiosk_next_change(k->app, kiosk_now_us(), k->cfg.reset_after_us);
 	struct itimerspec it = { { 0, 0 }, { 0, 0 } };
 
 	if (next == k->ui_deadline_us)
@@ -874,15 +249,7 @@ static void arm_ui_timer(struct kiosk *k)
 		it.it_value = (struct timespec){ (time_t)(next / 1000000u),
 						 (long)(next % 1000000u) * 1000 };
 	if (timerfd_settime(k->ui_timer_fd, TFD_TIMER_ABSTIME, &it, NULL) < 0)
-		fail(k, "timer", -errno);
-}
-
-static void on_watchdog(struct kiosk *k)
-{
-	uint64_t expirations;
-
-	if (read(k->watchdog_fd, &expirations, sizeof(expirations)) == (ssize_t)sizeof(expirations))
-		notify_watchdog();
+		kiosk_fail(k, "timer", -errno);
 }
 
 static void on_ui_timer(struct kiosk *k)
@@ -892,71 +259,7 @@ static void on_ui_timer(struct kiosk *k)
 	/* frame_due() sees what else changed */
 	if (read(k->ui_timer_fd, &expirations, sizeof(expirations)) == (ssize_t)sizeof(expirations))
 		k->ui_deadline_us = UINT64_MAX;
-	idle_reset(k, now_us());
-}
-
-static int write_screenshot(struct kiosk *k)
-{
-	struct error err = { { 0 } };
-	struct buf png;
-	char *dir = strdup(k->cfg.screenshot), *slash;
-	const char *name;
-	int w, h, ret = -ENOMEM;
-
-	if (!dir) {
-		fputs("edaha: out of memory\n", stderr);
-		return -ENOMEM;
-	}
-	/* fileio writes a name inside a directory, atomically */
-	slash = strrchr(dir, '/');
-	if (slash) {
-		*slash = '\0';
-		name = slash + 1;
-	} else {
-		name = dir;
-	}
-	buf_init(&png);
-	kiosk_size(k, &w, &h);
-	ret = pngio_encode_rgba(k->shot, w, h, &png, &err);
-	if (ret == 0)
-		ret = fileio_write_atomic(slash ? (dir[0] ? dir : "/") : ".", name, png.data, png.len,
-					  &err);
-	if (ret < 0)
-		fprintf(stderr, "edaha: screenshot: %s\n", err.msg);
-	buf_finish(&png);
-	free(dir);
-	return ret;
-}
-
-static void print_stats(struct kiosk *k, FILE *f)
-{
-	double first_ms = (double)(k->first_frame_us - k->start_us) / 1000.0;
-
-	if (!k->frames)
-		return;
-	/* the kiosk draws only on change: frames/s means something with --kiosk-frames only */
-	fprintf(f, "edaha: %lu frame%s; first on screen %.1f ms after start", k->frames,
-		k->frames == 1 ? "" : "s", first_ms);
-	if (k->cfg.frames && k->frames > 1 && k->last_frame_us > k->first_frame_us)
-		fprintf(f, "; %.1f frames/s after it",
-			(double)(k->frames - 1) * 1e6 / (double)(k->last_frame_us - k->first_frame_us));
-	fprintf(f, "; drawing to on screen: median %.1f ms, p90 %.1f ms, max %.1f ms\n",
-		(double)latency_percentile(k->frame_time, 0.5) / 1000.0,
-		(double)latency_percentile(k->frame_time, 0.9) / 1000.0,
-		(double)k->frame_time->max_us / 1000.0);
-	log_latency(k, f);
-}
-
-/* The screen as it is now, for --screenshot when the kiosk stops (not shown: read). */
-static int take_final_shot(struct kiosk *k)
-{
-	int ret = render_frame_at(k->render, k->app, now_us());
-
-	if (ret == 0)
-		ret = display_read_rgba(k->display, k->shot);
-	if (ret < 0)
-		fprintf(stderr, "edaha: screenshot: cannot read the screen: %s\n", strerror(-ret));
-	return ret;
+	kiosk_idle_reset(k, kiosk_now_us());
 }
 
 int kiosk_run(struct kiosk *k)
@@ -973,11 +276,11 @@ int kiosk_run(struct kiosk *k)
 			if (k->cfg.frames && k->frames >= k->cfg.frames)
 				break;
 			if (frame_due(k))
-				draw_frame(k);
+				kiosk_draw_frame(k);
 			else
 				k->npending = 0; /* pen events that changed nothing on the screen */
 			if (k->export_ready)
-				run_export(k);
+				kiosk_run_export(k);
 			if (k->quit)
 				break;
 			/* a modeset shows its frame at once: go round for the next one */
@@ -990,7 +293,7 @@ int kiosk_run(struct kiosk *k)
 			k->export_asked = false;
 			free(k->pixels);
 			k->pixels = NULL;
-			run_export(k);
+			kiosk_run_export(k);
 		}
 		arm_ui_timer(k);
 		n = nd = display_pollfds(k->display, fds, DISPLAY_MAX_POLLFDS);
@@ -1004,20 +307,20 @@ int kiosk_run(struct kiosk *k)
 			fds[n++] = (struct pollfd){ .fd = k->sources[i].fd, .events = POLLIN };
 		if (poll(fds, n, -1) < 0) {
 			if (errno != EINTR)
-				fail(k, "poll", -errno);
+				kiosk_fail(k, "poll", -errno);
 			continue;
 		}
 		if (fds[nd].revents)
-			on_signal(k);
-		on_display(k, fds, nd);
+			kiosk_on_signal(k);
+		kiosk_on_display(k, fds, nd);
 		if (fds[nd + 1].revents)
-			on_timer(k);
+			kiosk_on_timer(k);
 		if (fds[nd + 2].revents)
 			on_ui_timer(k);
 		if (fds[nd + 3].revents)
-			on_watchdog(k);
+			kiosk_on_watchdog(k);
 		if (fds[nd + 4].revents)
-			on_grow(k);
+			kiosk_on_grow(k);
 		/* backwards, so that dropping a failed source leaves the rest in place */
 		for (size_t i = nsrc; i-- > 0;) {
 			if (fds[nd + 5 + i].revents)
@@ -1026,13 +329,13 @@ int kiosk_run(struct kiosk *k)
 		take_requests(k);
 	}
 	notify_stopping();
-	print_stats(k, stderr);
+	kiosk_print_stats(k, stderr);
 	if (k->cfg.stats)
-		print_stats(k, stdout);
-	if (k->status == 0 && k->shot && !k->cfg.frames && k->frames && take_final_shot(k) < 0)
+		kiosk_print_stats(k, stdout);
+	if (k->status == 0 && k->shot && !k->cfg.frames && k->frames && kiosk_take_final_shot(k) < 0)
 		k->status = 1;
 	if (k->status == 0 && k->shot && k->frames >= k->cfg.frames && k->frames &&
-	    write_screenshot(k) < 0)
+	    kiosk_write_screenshot(k) < 0)
 		k->status = 1;
 	return k->status;
 }

@@ -2,15 +2,25 @@
 # test_layers.py NM LIBEDAHA_UI.A: the renderer's files call one another one way only.
 #
 # From the symbols each object of ui's library defines and uses (nm): the frame (render.c)
-# is the top, which no other file calls back into; the GL helpers (render_gl.c) and the
-# lit programs' sources (render_shaders.c) are the bottom, which call no other file of
+# is the top, which no other file calls back into; the GL helpers (gl/render_gl.c) and the
+# lit programs' sources (gl/render_shaders.c) are the bottom, which call no other file of
 # ui's; and no files call each other round in a circle. Prints the files floor by floor.
 import re
 import subprocess
 import sys
 
 TOP = "render"
-BOTTOM = ("render_gl", "render_shaders")
+BOTTOM = ("gl/render_gl", "gl/render_shaders")
+# ui's folders: meson names the object of gl/batch.c gl_batch.c.o
+FOLDERS = ("gl", "text")
+
+
+def source(obj):
+    """The source's path in ui/ (without .c) of an object's name."""
+    for folder in FOLDERS:
+        if obj.startswith(folder + "_"):
+            return folder + "/" + obj[len(folder) + 1:]
+    return obj
 
 
 def symbols(nm, archive):
@@ -23,6 +33,7 @@ def symbols(nm, archive):
         if not m:
             continue
         obj, name, kind = m.groups()
+        obj = source(obj)
         defined, used = objs.setdefault(obj, (set(), set()))
         if kind == "U":
             used.add(name)

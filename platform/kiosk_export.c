@@ -1,0 +1,55 @@
+/* SPDX-License-Identifier: MIT */
+/* Export to the stick and the local copy (usb_export.h): the writer opened with its fds in
+ * the loop's poll, its messages on the screen, and the export started once a frame was read
+ * back for its picture. */
+#include "kiosk_private.h"
+
+#include <stdio.h>
+
+static void usb_status(void *data, enum app_status status, bool held)
+{
+	struct kiosk *k = data;
+
+	if (held)
+		app_hold_status(k->app, status, kiosk_now_us());
+	else
+		app_set_status(k->app, status, kiosk_now_us());
+}
+
+/* The export's writer (usb_export.c), its fds in the poll. 0 or -1 (said why). */
+int kiosk_open_usb(struct kiosk *k)
+{
+	const struct usb_export_config uc = {
+		.usb = k->cfg.usb,
+		.helper_socket = k->cfg.usb_socket,
+		.local_dir = k->cfg.export_dir && k->cfg.export_dir[0] ? k->cfg.export_dir : NULL,
+		.monitor = true,
+		.status = usb_status,
+		.data = k,
+	};
+	struct kiosk_source src[2];
+	struct error err = { { 0 } };
+	size_t n;
+
+	k->usb = usb_export_create(&uc, &err);
+	if (!k->usb) {
+		fprintf(stderr, "edaha: %s\n", err.msg);
+		return -1;
+	}
+	n = usb_export_sources(k->usb, src, 2);
+	for (size_t i = 0; i < n; i++) {
+		if (kiosk_add_source(k, &src[i]) < 0) {
+			fputs("edaha: too many sources to poll\n", stderr);
+			return -1;
+		}
+	}
+	return 0;
+}
+
+/* Hands the export the last frame was read back for to usb_export.c, which tells the
+ * visitor how it went. */
+void kiosk_run_export(struct kiosk *k)
+{
+	k->export_ready = false;
+	usb_export_start(k->usb, k->app, k->pixels);
+}
