@@ -269,6 +269,7 @@ int kiosk_run(struct kiosk *k)
 	take_requests(k); /* the LEDs show the first mode */
 	while (!k->quit) {
 		size_t n, nd, nsrc = k->nsources;
+		int timeout = -1;
 
 		/* nothing is drawn while a flip is in flight, the seat is away or the
 		 * display unplugged */
@@ -283,9 +284,12 @@ int kiosk_run(struct kiosk *k)
 				kiosk_run_export(k);
 			if (k->quit)
 				break;
-			/* a modeset shows its frame at once: go round for the next one */
+			/* a modeset or a window's swap shows its frame at once: the next one is
+			 * due now, but what came meanwhile is read first (poll without waiting),
+			 * or an animation that lasts until an event (a grow press waiting for its
+			 * worker) would never see it */
 			if (display_can_draw(k->display) && (k->cfg.frames || frame_due(k)))
-				continue;
+				timeout = 0;
 		}
 		/* an export while the display is away goes without its picture */
 		if (k->export_asked && !display_can_draw(k->display) &&
@@ -305,7 +309,7 @@ int kiosk_run(struct kiosk *k)
 		fds[n++] = (struct pollfd){ .fd = grow_worker_fd(k->grow), .events = POLLIN };
 		for (size_t i = 0; i < nsrc; i++)
 			fds[n++] = (struct pollfd){ .fd = k->sources[i].fd, .events = POLLIN };
-		if (poll(fds, n, -1) < 0) {
+		if (poll(fds, n, timeout) < 0) {
 			if (errno != EINTR)
 				kiosk_fail(k, "poll", -errno);
 			continue;

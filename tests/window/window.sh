@@ -2,7 +2,8 @@
 # The window on a desktop (issue 18), under Xvfb: xdotool draws the demo drawing's strokes
 # with the pointer into `edaha --window` made smaller than its picture (the app keeps its
 # size, the picture is scaled, the pointer mapped back), presses the 3D button with the
-# key 1, and stops it with SIGTERM. Then: the recording has the strokes where the demo
+# key 1 and grow with the key 7 (its worker's result must be taken while frames go on),
+# and stops it with SIGTERM. Then: the recording has the strokes where the demo
 # has them and the key's press; the window's screenshot matches the headless replay of its
 # own recording as the system tests' kiosk does; and the window's frame figures (--stats)
 # are printed. Skips (77) only without Xvfb or xdotool, or in a build without the window.
@@ -76,11 +77,23 @@ xdotool "$T/draw.xdo" || fail "xdotool could not draw"
 xdotool key 1 || fail "xdotool could not press a key"
 # the turn into 3D takes 2.4 s; the screenshot is the screen when the kiosk stops
 sleep 4
+# grow (key 7) runs on its worker while the window keeps drawing (a window's swap is done
+# at once, unlike a DRM flip: the loop must still read the worker's result and signals)
+xdotool key 7 || fail "xdotool could not press a key"
+for _ in $(seq 600); do
+	grep -q "^edaha: grew a year" "$T/stderr" && break
+	sleep 0.1
+done
+grep -q "^edaha: grew a year" "$T/stderr" ||
+	{ cat "$T/stderr" >&2; fail "the window never took the grow press's result"; }
 kill -TERM $APP
+for _ in $(seq 100); do kill -0 $APP 2>/dev/null || break; sleep 0.1; done
+kill -0 $APP 2>/dev/null && { kill -KILL $APP; fail "edaha did not stop within 10 s of SIGTERM"; }
 wait $APP
 rc=$?
 APP=
 [ $rc -eq 0 ] || { cat "$T/stderr" >&2; fail "edaha exited $rc after SIGTERM"; }
+grep "^edaha: grew a year" "$T/stderr"
 
 rec=$T/window.edaha-trace
 grep -q "^screen 1280 800" "$rec" || fail "the recording's screen is not the picture's 1280x800"
@@ -89,6 +102,7 @@ n=$(grep -c " tip-down " "$rec")
 	fail "$n strokes recorded, not the demo's"
 grep -q " button 3d pressed" "$rec" || fail "the key 1 did not press the 3D button"
 grep -q " button 3d released" "$rec" || fail "the key 1's release is not recorded"
+grep -q " button grow pressed" "$rec" || fail "the key 7 did not press the grow button"
 # the first stroke starts where the demo's does: the scaled pointer mapped back
 read -r x y < <(awk '$2 == "tip-down" { print $4, $5; exit }' "$rec")
 awk -v x="$x" -v y="$y" 'BEGIN { exit !((x - 640)^2 + (y - 736)^2 <= 4) }' ||
@@ -99,8 +113,8 @@ edaha --headless --out "$T/headless" --seed 7 --replay "$rec" >/dev/null 2>"$T/h
 "$IMGCMP" --max-diff 64 --max-fraction 0.005 --diff "$T/diff.png" \
 	"$T/window.png" "$T/headless/screen.png" ||
 	fail "the window's screen differs from the headless replay of its recording"
-# and the window showed the 3D tree, not the sketch: the replay without the key differs
-grep -v " button 3d " "$rec" >"$T/no-key.edaha-trace"
+# and the window showed the 3D tree, not the sketch: the replay without the keys differs
+grep -v -e " button 3d " -e " button grow " "$rec" >"$T/no-key.edaha-trace"
 edaha --headless --out "$T/no-key" --seed 7 --replay "$T/no-key.edaha-trace" >/dev/null 2>&1 ||
 	fail "the headless replay without the key failed"
 ! "$IMGCMP" --max-diff 64 --max-fraction 0.005 "$T/window.png" "$T/no-key/screen.png" \
