@@ -1,0 +1,202 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The living tree (src/live/, docs/living-trees.md): what binding a tree's meshes to its
+ * skeleton costs, and what a frame of wind and growth costs.
+ *
+ * Synthetic trees (tests/tools/synth_tree.c) of 62 and 1,000 branches with 20,000 leaves
+ * in all (323 and 20 a branch), then 62..1,000 branches with 20 leaves each for the
+ * growth with size. For each: the skeleton (live_skeleton_init), binding the bark by its
+ * marks and without them (meshing again to find them), the leaves, and the bark by the
+ * nearest skeleton point (what the wood's iso-surface and vines take); the vertices and
+ * the bytes their data takes. Per frame: live_wind_frame + live_wind_weights +
+ * live_grow_front (what the app computes a frame: it must not grow with the tree), and
+ * live_wind_frame_offset per vertex (the reference the shader mirrors, on the CPU).
+ * Medians.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench_util.h"
+#include "live.h"
+#include "mesh.h"
+#include "synth_tree.h"
+
+#define REPS 5
+#define SEED 26
+#define FRAME_CALLS 100000
+
+struct fixture {
+	struct tree t;
+	struct tree_mesh tm;
+	struct tree_mesh_marks mk;
+	struct live_skeleton sk;
+	struct live_attrs bark, leaves;
+	struct live_wind w;
+	struct live_grow g;
+};
+
+static void setup(struct fixture *f, int nbranches, int leaves_per_branch)
+{
+	struct live_wind_params p = { LIVE_WIND_DEFAULT_STRENGTH, 0.0 };
+
+	tree_init(&f->t);
+	tree_mesh_init(&f->tm);
+	tree_mesh_marks_init(&f->mk);
+	live_attrs_init(&f->bark);
+	live_attrs_init(&f->leaves);
+	if (synth_tree(&f->t, nbranches, leaves_per_branch, SEED) < 0 ||
+	    tree_mesh_build_marked(&f->tm, &f->t, &f->mk) < 0 ||
+	    live_skeleton_init(&f->sk, &f->t, SEED) < 0 || live_wind_setup(&f->w, &f->sk, &p) < 0) {
+		fprintf(stderr, "bench_live: no memory\n");
+		exit(1);
+	}
+	live_grow_setup(&f->g, &f->sk);
+}
+
+static void teardown(struct fixture *f)
+{
+	live_attrs_finish(&f->leaves);
+	live_attrs_finish(&f->bark);
+	live_skeleton_finish(&f->sk);
+	tree_mesh_marks_finish(&f->mk);
+	tree_mesh_finish(&f->tm);
+	tree_finish(&f->t);
+}
+
+static void must(int r, const char *what)
+{
+	if (r < 0) {
+		fprintf(stderr, "bench_live: %s failed (%d)\n", what, r);
+		exit(1);
+	}
+}
+
+static void skeleton(void *arg)
+{
+	struct fixture *f = arg;
+
+	live_skeleton_finish(&f->sk);
+	must(live_skeleton_init(&f->sk, &f->t, SEED), "live_skeleton_init");
+}
+
+static void bind_bark(void *arg)
+{
+	struct fixture *f = arg;
+
+	must(live_attrs_bind_bark(&f->bark, &f->sk, &f->t, &f->tm.bark, &f->mk), "bind bark");
+}
+
+static void bind_bark_unmarked(void *arg)
+{
+	struct fixture *f = arg;
+
+	must(live_attrs_bind_bark(&f->bark, &f->sk, &f->t, &f->tm.bark, NULL), "bind bark");
+}
+
+static void bind_leaves(void *arg)
+{
+	struct fixture *f = arg;
+
+	must(live_attrs_bind_leaves(&f->leaves, &f->sk, &f->t, &f->tm.leaves, &f->mk), "bind leaves");
+}
+
+static void bind_nearest(void *arg)
+{
+	struct fixture *f = arg;
+
+	must(live_attrs_bind_nearest(&f->bark, &f->sk, &f->t, &f->tm.bark), "bind nearest");
+}
+
+static volatile double sink;
+
+/* What the app computes a frame: the wind's frame, the weights (an export's, here as a
+ * stand-in for a morph-target player's), the growth's front. */
+static void per_frame(void *arg)
+{
+	struct fixture *f = arg;
+	struct live_wind_frame fr;
+	double g[LIVE_WIND_TARGETS], acc = 0.0;
+
+	for (int i = 0; i < FRAME_CALLS; i++) {
+		double t = 0.0333 * i;
+
+		live_wind_frame(&f->w, t, live_wind_angle(&f->w, t), &fr);
+		live_wind_weights(&f->w, t, g);
+		acc += fr.theta[1] + g[3] + live_grow_front(&f->g, t);
+	}
+	sink = acc;
+}
+
+static void offsets(void *arg)
+{
+	struct fixture *f = arg;
+	struct live_wind_frame fr;
+	double acc = 0.0;
+
+	live_wind_frame(&f->w, 1.25, f->w.angle, &fr);
+	for (size_t i = 0; i < f->leaves.n; i++)
+		acc += live_wind_frame_offset(&fr, &f->leaves.v[i]).x;
+	for (size_t i = 0; i < f->bark.n; i++)
+		acc += live_wind_frame_offset(&fr, &f->bark.v[i]).x;
+	sink = acc;
+}
+
+static void one_tree(int nbranches, int leaves_per_branch, int reps)
+{
+	struct fixture f;
+	double s, nv;
+	size_t bytes;
+
+	setup(&f, nbranches, leaves_per_branch);
+	printf("\n%d branches, %zu leaves: %zu bark + %zu leaf vertices\n", nbranches, f.t.nleaves,
+	       f.tm.bark.nvertices, f.tm.leaves.nvertices);
+	printf("  skeleton                    %10.3f ms\n", bench_run(skeleton, &f, reps) * 1e3);
+	printf("  bind bark (marks)           %10.3f ms\n", bench_run(bind_bark, &f, reps) * 1e3);
+	printf("  bind bark (no marks)        %10.3f ms\n", bench_run(bind_bark_unmarked, &f, reps) * 1e3);
+	printf("  bind leaves (marks)         %10.3f ms\n", bench_run(bind_leaves, &f, reps) * 1e3);
+	printf("  bind bark by nearest        %10.3f ms\n", bench_run(bind_nearest, &f, reps) * 1e3);
+	bind_bark(&f);
+	nv = (double)(f.bark.n + f.leaves.n);
+	bytes = (f.bark.n + f.leaves.n) * sizeof(struct live_vertex);
+	printf("  per-vertex data             %10zu B a vertex, %.1f MB in all (positions and "
+	       "normals: %.1f MB)\n",
+	       sizeof(struct live_vertex), bytes / 1e6, nv * 24 / 1e6);
+	s = bench_run(per_frame, &f, reps);
+	printf("  a frame's numbers           %10.1f ns (wind frame, weights, growth front)\n",
+	       s / FRAME_CALLS * 1e9);
+	s = bench_run(offsets, &f, reps);
+	printf("  offset on the CPU           %10.1f ns a vertex (%.1f ms for all)\n", s / nv * 1e9,
+	       s * 1e3);
+	teardown(&f);
+}
+
+int main(int argc, char **argv)
+{
+	static const int sizes[] = { 62, 125, 250, 500, 1000 };
+	double prev_size = 0.0, prev_s = 0.0, nprev = 0.0, nprev_s = 0.0;
+	int reps;
+
+	if (bench_init(&argc, argv, NULL))
+		return 1;
+	reps = bench_reps(REPS);
+	printf("bench_live: binding meshes to the skeleton, a frame's wind and growth (medians of %d)\n",
+	       reps);
+	one_tree(62, 323, reps);
+	if (!bench_quick)
+		one_tree(1000, 20, reps);
+
+	printf("\ngrowth with size (20 leaves a branch): bark and leaves bound by marks; by nearest\n");
+	for (size_t i = 0; i < BENCH_COUNT(sizes); i++) {
+		struct fixture f;
+		double s;
+
+		setup(&f, sizes[i], 20);
+		s = bench_run(bind_bark, &f, reps) + bench_run(bind_leaves, &f, reps);
+		bench_row("bind (marks)", sizes[i], s, &prev_size, &prev_s);
+		s = bench_run(bind_nearest, &f, reps);
+		bench_row("bind bark by nearest", sizes[i], s, &nprev, &nprev_s);
+		teardown(&f);
+	}
+	return 0;
+}
