@@ -87,10 +87,11 @@ struct live_skeleton {
 };
 
 /*
- * The skeleton of t: every branch's band, base path length, band weights and phases
- * (phases from rng.h seeded by `seed` and the element's id: the document's seed makes
- * them, so a replay gives the same). A branch whose parent is missing or not before it is
- * treated as a trunk. 0 or -ENOMEM (sk then empty, and finish-able).
+ * The skeleton of t: every branch's band, base path length, chain heights, exit, band
+ * weights and phases (phases from rng.h seeded by `seed` and the element's id: the
+ * document's seed makes them, so a replay gives the same). A branch whose parent is
+ * missing or not before it is treated as a trunk. The functions that take sk take the
+ * same t. 0 or -ENOMEM (sk then empty, and finish-able).
  */
 int live_skeleton_init(struct live_skeleton *sk, const struct tree *t, uint64_t seed);
 void live_skeleton_finish(struct live_skeleton *sk);
@@ -112,6 +113,7 @@ struct live_vertex {
 	uint8_t phase[LIVE_BANDS]; /* [1..3] bands 1..3, [0] the leaf's flutter: 1/256 turns */
 	int8_t flutter[4]; /* a leaf's flutter direction (its mean normal), snorm / 127; else 0 */
 };
+_Static_assert(sizeof(struct live_vertex) == 44, "a vertex buffer's stride");
 
 /*
  * The data of skeleton point (branch b, arc length s from its base; clamped to the
@@ -185,7 +187,10 @@ int live_attrs_bind_nearest(struct live_attrs *a, const struct live_skeleton *sk
  *   amp_k = S * LIVE_WIND_BAND_SWAY[k] along E_k = unit(D + LIVE_WIND_BAND_BOB[k] y), as
  *   sin(2 pi f_k t + phi_k): phi_k the band-entry branch's phase; f_k the harmonic
  *   nearest LIVE_WIND_BAND_HZ[k] above the lower bands' (never 2n: the across motion's).
- *   A small branch sways at a rate of its own size, whatever tree it is on.
+ *   A small branch sways at a rate of its own size, whatever tree it is on. Limbs sway
+ *   least a metre (they mostly ride the whole tree's bending), twigs most: a twig's
+ *   0.20 S exceeds the whole tree's steepest bend along it, 2 * 0.075 S * sqrt(1 + 0.3^2)
+ *   = 0.157 S, so what a twig adds is its own faster sway.
  * - leaves: their distance from the anchor times amp_L = S * LIVE_WIND_LEAF_SWAY along
  *   their flutter direction, at the harmonic nearest LIVE_WIND_LEAF_HZ (above band 3's),
  *   with the leaf's own phase.
@@ -208,7 +213,7 @@ int live_attrs_bind_nearest(struct live_attrs *a, const struct live_skeleton *sk
 #define LIVE_WIND_DRIFT_PERIOD_S 47.0
 /* per band 1..3, as array initialisers ([0] unused) */
 #define LIVE_WIND_BAND_HZ { 0.0, 1.0, 1.6, 2.4 }
-#define LIVE_WIND_BAND_SWAY { 0.0, 0.17, 0.20, 0.25 }
+#define LIVE_WIND_BAND_SWAY { 0.0, 0.06, 0.12, 0.20 }
 #define LIVE_WIND_BAND_BOB { 0.0, 0.25, 0.35, 0.5 }
 
 struct live_wind_params {
