@@ -11,13 +11,21 @@
  * the bytes their data takes. Per frame: live_wind_frame + live_wind_weights +
  * live_grow_front (what the app computes a frame: it must not grow with the tree), and
  * live_wind_frame_offset per vertex (the reference the shader mirrors, on the CPU).
- * Medians.
+ * Medians. Last, what the wind would add to model.glb as morph targets (cherry, the
+ * trees above): the still model's bytes against LIVE_WIND_TARGETS targets as floats, and
+ * quantised (KHR_mesh_quantization: normalised BYTE deltas padded to 4 bytes, each
+ * target's scale in its weights; a primitive's all-zero targets, the bark's leaf flutter,
+ * with no buffer view), plus the weights' keyframes (a cubic spline, 8 keys a cycle of
+ * the fastest harmonic).
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "bench_util.h"
+#include "buf.h"
+#include "export.h"
+#include "gen.h"
 #include "live.h"
 #include "mesh.h"
 #include "synth_tree.h"
@@ -142,6 +150,42 @@ static void offsets(void *arg)
 	sink = acc;
 }
 
+/* model.glb's bytes for t, and what the wind's morph targets would add to it. */
+static void export_sizes(const char *name, const struct tree *t)
+{
+	struct tree_mesh tm;
+	struct tree_mesh_marks mk;
+	struct live_skeleton sk;
+	struct live_wind w;
+	struct live_wind_params p = { LIVE_WIND_DEFAULT_STRENGTH, 0.0 };
+	struct buf glb;
+	double nb, nl, floats, quant, keys, sampler;
+
+	tree_mesh_init(&tm);
+	tree_mesh_marks_init(&mk);
+	buf_init(&glb);
+	must(tree_mesh_build_marked(&tm, t, &mk), "tree_mesh_build_marked");
+	must(export_glb(t, &tm, &mk, &glb), "export_glb");
+	must(live_skeleton_init(&sk, t, SEED), "live_skeleton_init");
+	must(live_wind_setup(&w, &sk, &p), "live_wind_setup");
+	nb = (double)tm.bark.nvertices;
+	nl = (double)tm.leaves.nvertices;
+	floats = (nb + nl) * LIVE_WIND_TARGETS * 12.0;
+	/* BYTE x 3 + 1 of padding a target; the bark's two flutter targets: no buffer view */
+	quant = nb * (LIVE_WIND_TARGETS - 2) * 4.0 + nl * LIVE_WIND_TARGETS * 4.0;
+	keys = 8.0 * w.harmonic[LIVE_BANDS] + 1;
+	sampler = keys * 4.0 + keys * LIVE_WIND_TARGETS * 3 * 4.0;
+	printf("%-14s model.glb %8.1f KB (%zu + %zu vertices); wind as float targets +%.1f KB, "
+	       "quantised +%.1f KB (%.0f%% of the still model), keyframes %.1f KB\n",
+	       name, glb.len / 1e3, tm.bark.nvertices, tm.leaves.nvertices, floats / 1e3,
+	       (quant + sampler) / 1e3, 100.0 * (quant + sampler) / (double)glb.len,
+	       sampler / 1e3);
+	live_skeleton_finish(&sk);
+	buf_finish(&glb);
+	tree_mesh_marks_finish(&mk);
+	tree_mesh_finish(&tm);
+}
+
 static void one_tree(int nbranches, int leaves_per_branch, int reps)
 {
 	struct fixture f;
@@ -197,6 +241,25 @@ int main(int argc, char **argv)
 		s = bench_run(bind_nearest, &f, reps);
 		bench_row("bind bark by nearest", sizes[i], s, &nprev, &nprev_s);
 		teardown(&f);
+	}
+
+	printf("\nthe wind in model.glb (estimated from the meshes)\n");
+	{
+		struct tree t;
+		struct gen_params gp;
+		struct error err = { { 0 } };
+
+		tree_init(&t);
+		must(gen_preset(GEN_PRESET_CHERRY, &gp, &err), "gen_preset");
+		must(gen_build(&t, &gp, 1), "gen_build");
+		export_sizes("cherry", &t);
+		must(synth_tree(&t, 62, 10, SEED), "synth_tree");
+		export_sizes("62 branches", &t);
+		if (!bench_quick) {
+			must(synth_tree(&t, 1000, 20, SEED), "synth_tree");
+			export_sizes("1,000 branches", &t);
+		}
+		tree_finish(&t);
 	}
 	return 0;
 }
