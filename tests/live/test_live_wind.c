@@ -21,7 +21,8 @@
  * - what a twig (a branch entering band 3) adds past where it leaves its parent's bark,
  *   and what a leaf adds, have a higher dominant frequency than the point they sit on (and
  *   their band's own);
- * - the decomposition into morph targets sums to the offset within 1e-9 m.
+ * - the decomposition into morph targets sums to the offset within 1e-9 m;
+ * - strength 0 is still, out-of-range parameters are refused; the seed makes the phases.
  *
  * It prints the worst margins.
  */
@@ -357,6 +358,33 @@ static void test_strength(void)
 	tree_finish(&t);
 }
 
+/* The phases come from the seed: the same seed gives the same skeleton, another seed
+ * other phases (and the same bands and weights). */
+static void test_seed(void)
+{
+	struct tree t;
+	struct live_skeleton a, b, c;
+	size_t differ = 0;
+
+	tree_init(&t);
+	live_trees_random(&t, 80, 3, 9, 8.0);
+	CHECK_INT(live_skeleton_init(&a, &t, 11), 0);
+	CHECK_INT(live_skeleton_init(&b, &t, 11), 0);
+	CHECK_INT(live_skeleton_init(&c, &t, 12), 0);
+	CHECK(memcmp(a.branches, b.branches, t.nbranches * sizeof(*a.branches)) == 0);
+	CHECK(memcmp(a.leaf_phase, b.leaf_phase, t.nleaves) == 0);
+	for (size_t i = 0; i < t.nbranches; i++) {
+		CHECK(a.branches[i].band == c.branches[i].band);
+		CHECK(memcmp(a.branches[i].wb, c.branches[i].wb, sizeof(a.branches[i].wb)) == 0);
+		differ += memcmp(a.branches[i].phase, c.branches[i].phase, LIVE_BANDS) != 0;
+	}
+	CHECK(differ > t.nbranches / 2);
+	live_skeleton_finish(&c);
+	live_skeleton_finish(&b);
+	live_skeleton_finish(&a);
+	tree_finish(&t);
+}
+
 int main(int argc, char **argv)
 {
 	struct tree t;
@@ -399,5 +427,6 @@ int main(int argc, char **argv)
 	printf("decomposition: %.3g m; loop: %.3g m (limit 1e-9)\n", worst.decomp, worst.loop);
 	test_periods();
 	test_strength();
+	test_seed();
 	return 0;
 }
