@@ -5,6 +5,9 @@
  */
 #pragma once
 
+#include <stdbool.h>
+#include <stdint.h>
+
 #include "buf.h"
 #include "mesh.h"
 #include "tree.h"
@@ -43,6 +46,42 @@
  * accessors' names. */
 int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
 	       struct buf *out);
+
+/*
+ * The wind a model carries home (issue 26, docs/living-trees.md, "The wind in model.glb"):
+ * the screen's sway (src/live/) at this strength and angle, the skeleton's phases from
+ * this seed (the document's, so a replay exports the same file).
+ */
+struct export_wind {
+	double strength; /* 0..1; 0 (a still screen) exports LIVE_WIND_DEFAULT_STRENGTH, so
+			  * every model carries its wind */
+	double angle;    /* radians: the wind's direction at t = 0, (cos, 0, sin) */
+	uint64_t seed;   /* the document's seed */
+	bool floats;     /* the targets as FLOAT deltas, not KHR_mesh_quantization's bytes
+			  * (for importers without the extension; 3 times the bytes) */
+};
+/* The wind's direction an export takes, until the app says otherwise: along +x, across
+ * the front view, where the sway shows best. */
+#define EXPORT_WIND_ANGLE 0.0
+/* The strength an export uses for w: w->strength, or LIVE_WIND_DEFAULT_STRENGTH for 0. */
+double export_wind_strength(const struct export_wind *w);
+/*
+ * export_glb with the tree's sway as a looping animation named "wind" (NULL: export_glb).
+ * Every primitive gets LIVE_WIND_TARGETS morph targets (live_wind_targets of its
+ * vertices, bound to the skeleton as the renderer binds them: the bark and leaves by mk,
+ * the wood's bark and the vines by the nearest skeleton point), as normalised BYTE
+ * deltas (KHR_mesh_quantization, each target's scale folded into its animated weight) or
+ * floats; the mesh's weights are 0, so the rest pose is export_glb's: its POSITION,
+ * NORMAL, COLOR_0 and indices are the same bytes at the same offsets, the BIN chunk
+ * begins with export_glb's, and the wind's data follows. One CUBICSPLINE sampler
+ * (live_wind_weights_at, live_wind_rates_at as tangents) over the loop T_loop <= 8 s,
+ * its first and last keys equal. A tree without branches has no skeleton to sway: its
+ * file is export_glb's. 0, -EINVAL (strength outside 0..1, angle not finite), -ENOMEM
+ * or -EFBIG.
+ */
+int export_glb_wind(const struct tree *t, const struct tree_mesh *m,
+		    const struct tree_mesh_marks *mk, const struct export_wind *wind,
+		    struct buf *out);
 /* The same for one mesh of leaves alone (an origami leaf, ori_mesh_append): the leaves'
  * green, double-sided material, the node and mesh named name. */
 int export_glb_leaf(const struct mesh *m, const char *name, struct buf *out);
@@ -62,6 +101,10 @@ int export_obj_mtllib(struct buf *obj, const char *mtl_name);
 /* skeleton.json, see docs/skeleton-format.md: the tree, its "wood" when it was grown, and
  * its "vines" (vine_json.c) when it has any. */
 int export_skeleton(const struct tree *t, struct buf *out);
+/* skeleton.json with a "wind" object (docs/skeleton-format.md, "Wind"): the parameters
+ * export_glb_wind's animation uses; none for a tree without branches or wind NULL (then
+ * export_skeleton's bytes). 0, -EINVAL (as export_glb_wind) or -ENOMEM. */
+int export_skeleton_wind(const struct tree *t, const struct export_wind *wind, struct buf *out);
 struct vine;
 /*
  * skeleton.json with a "vines" section (docs/skeleton-format.md, "Vines"; vine_json.h):

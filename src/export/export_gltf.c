@@ -2,6 +2,7 @@
 #include "export.h"
 #include "export_leaves.h"
 #include "export_vines.h"
+#include "export_wind.h"
 #include "numfmt.h"
 
 #include <errno.h>
@@ -20,6 +21,7 @@
 #define GLB_HEADER_LEN 12u
 #define GLB_CHUNK_HEADER_LEN 8u
 
+#define GL_BYTE 5120
 #define GL_UNSIGNED_BYTE 5121
 #define GL_FLOAT 5126
 #define GL_UNSIGNED_INT 5125
@@ -85,6 +87,8 @@ enum glb_data {
 	GLB_FLOATS,
 	GLB_U32,
 	GLB_LEAF_RGBA, /* data is a struct export_leaves: each vertex its leaf's colour */
+	GLB_BYTES,     /* data is the bytes as they go, 4 an element */
+	GLB_ZEROS,     /* no data: zeros */
 };
 
 /* What goes into the BIN chunk, in order. */
@@ -107,6 +111,20 @@ enum glb_mat { GLB_MAT_BARK, GLB_MAT_LEAVES, GLB_MAT_VINE, GLB_NMATS };
 static const enum glb_mat glb_prim_mat[GLB_NPRIMS] = { GLB_MAT_BARK, GLB_MAT_BARK, GLB_MAT_LEAVES,
 						       GLB_MAT_VINE, GLB_MAT_LEAVES };
 
+/* How the primitives' vertices move with the wind (export_wind.h). */
+static const enum export_wind_bind glb_prim_bind[GLB_NPRIMS] = {
+	EXPORT_WIND_BARK, EXPORT_WIND_NEAREST, EXPORT_WIND_LEAVES, EXPORT_WIND_NEAREST,
+	EXPORT_WIND_NEAREST
+};
+
+/* The morph targets' names (the mesh's extras.targetNames, which Blender and three.js
+ * give the shape keys), in live_wind_targets' order. */
+static const char *const glb_target_names[LIVE_WIND_TARGETS] = {
+	"wind-trunk-along", "wind-trunk-across", "wind-limbs-sin",  "wind-limbs-cos",
+	"wind-branches-sin", "wind-branches-cos", "wind-twigs-sin", "wind-twigs-cos",
+	"wind-flutter-sin", "wind-flutter-cos",
+};
+
 /* What one GLB is made of. */
 struct glb_input {
 	const struct mesh *mesh[GLB_NPRIMS];            /* NULL: none */
@@ -114,17 +132,29 @@ struct glb_input {
 	enum export_look how;
 	enum season season;
 	const char *name; /* the node's and the mesh's */
+	/* the wind, the used primitives' targets in order; NULL: a still model */
+	const struct export_wind_anim *anim;
 };
+
+/* POSITION, NORMAL, COLOR_0, indices; with the wind, the targets of every primitive, the
+ * zero targets' sparse index and value, the keys' times and values */
+#define GLB_MAX_VIEWS (4 * GLB_NPRIMS + GLB_NPRIMS * LIVE_WIND_TARGETS + 2 + 2)
+/* A zero target's one sparse value: 3 floats (or 3 bytes) of zeros. */
+#define GLB_SPARSE_ZERO_WORDS 3
 
 struct glb {
 	struct json_object *root;
-	struct glb_view views[4 * GLB_NPRIMS]; /* POSITION, NORMAL, COLOR_0, indices */
+	struct glb_view views[GLB_MAX_VIEWS];
 	size_t nviews;
+	size_t naccessors; /* the wind's: the still model's are numbered as its views */
+	size_t sparse_view; /* the zero targets' index view (the value's next); 0: none yet */
 	size_t bin_len;
 };
 
-static struct json_object *glb_add_view(struct glb *g, struct json_object *views, const void *data,
-					size_t count, enum glb_data kind, int target)
+/* A bufferView of count 4-byte elements; target 0: none (animation data), stride 0: none. */
+static struct json_object *glb_add_view_ex(struct glb *g, struct json_object *views,
+					   const void *data, size_t count, enum glb_data kind,
+					   int target, size_t stride)
 {
 	struct json_object *v = json_object_new_object();
 	size_t len = 4 * count;
@@ -132,11 +162,20 @@ static struct json_object *glb_add_view(struct glb *g, struct json_object *views
 	v = json_out_set(v, "buffer", jint(0));
 	v = json_out_set(v, "byteOffset", jint(g->bin_len));
 	v = json_out_set(v, "byteLength", jint(len));
-	v = json_out_set(v, "target", jint((size_t)target));
+	if (stride)
+		v = json_out_set(v, "byteStride", jint(stride));
+	if (target)
+		v = json_out_set(v, "target", jint((size_t)target));
 	g->views[g->nviews++] = (struct glb_view){ data, count, kind };
 	/* Every element is 4 bytes, so every view stays 4-byte aligned. */
 	g->bin_len += len;
 	return json_out_push(views, v);
+}
+
+static struct json_object *glb_add_view(struct glb *g, struct json_object *views, const void *data,
+					size_t count, enum glb_data kind, int target)
+{
+	return glb_add_view_ex(g, views, data, count, kind, target, 0);
 }
 
 static struct json_object *glb_accessor(const char *prim, const char *what, size_t view,
@@ -210,11 +249,11 @@ static struct json_object *glb_new_material(enum glb_mat k, enum export_look how
 	return glb_leaves_material(how, s);
 }
 
-/* One primitive's accessors, views and its entry in primitives; colors: its COLOR_0. */
-static struct json_object *glb_add_prim(struct glb *g, struct json_object *primitives,
-					struct json_object **accessors, struct json_object **views,
-					const struct mesh *m, const char *prim_name,
-					const struct export_leaves *colors, size_t material)
+/* One primitive's accessors and views, and its entry for primitives; colors: its COLOR_0. */
+static struct json_object *glb_add_prim(struct glb *g, struct json_object **accessors,
+					struct json_object **views, const struct mesh *m,
+					const char *prim_name, const struct export_leaves *colors,
+					size_t material)
 {
 	size_t first = g->nviews, idx = first + (colors ? 3 : 2);
 	struct json_object *prim, *attrs, *pos;
@@ -248,8 +287,177 @@ static struct json_object *glb_add_prim(struct glb *g, struct json_object *primi
 	prim = json_out_set(prim, "attributes", attrs);
 	prim = json_out_set(prim, "indices", jint(idx));
 	prim = json_out_set(prim, "material", jint(material));
-	prim = json_out_set(prim, "mode", jint(GL_TRIANGLES));
-	return json_out_push(primitives, prim);
+	return json_out_set(prim, "mode", jint(GL_TRIANGLES));
+}
+
+/* A target's bounds: the stored values', integers for bytes. */
+static struct json_object *glb_target_bounds(const double v[3], bool floats)
+{
+	struct json_object *arr = json_object_new_array_ext(3);
+
+	for (int c = 0; c < 3; c++)
+		arr = json_out_push(arr, floats ? jfloat(v[c]) : json_object_new_int((int)v[c]));
+	return arr;
+}
+
+/*
+ * The targets zero at every vertex of a primitive: one accessor without a view (zeros,
+ * glTF says), with one sparse element, vertex 0 set to 0, as Debian's assimp 5.2 refuses
+ * an accessor with neither view nor sparse. Every such accessor of the file shares that
+ * index and value (16 bytes in all), where a view of zeros would cost 4 bytes a vertex.
+ */
+static struct json_object *glb_zero_accessor(struct glb *g, struct json_object **views,
+					     const char *prim_name, size_t n, bool floats)
+{
+	static const double zero[3] = { 0.0, 0.0, 0.0 };
+	struct json_object *a = json_object_new_object(), *sparse, *indices, *values;
+	char name[64];
+
+	if (!g->sparse_view) {
+		g->sparse_view = g->nviews;
+		*views = glb_add_view(g, *views, NULL, 1, GLB_ZEROS, 0);
+		*views = glb_add_view(g, *views, NULL, GLB_SPARSE_ZERO_WORDS, GLB_ZEROS, 0);
+	}
+	indices = json_object_new_object();
+	indices = json_out_set(indices, "bufferView", jint(g->sparse_view));
+	indices = json_out_set(indices, "componentType", jint(GL_UNSIGNED_INT));
+	values = json_out_set(json_object_new_object(), "bufferView", jint(g->sparse_view + 1));
+	sparse = json_object_new_object();
+	sparse = json_out_set(sparse, "count", jint(1));
+	sparse = json_out_set(sparse, "indices", indices);
+	sparse = json_out_set(sparse, "values", values);
+	snprintf(name, sizeof(name), "%s.wind-zero", prim_name);
+	a = json_out_set(a, "name", jstr(name));
+	a = json_out_set(a, "componentType", jint(floats ? GL_FLOAT : GL_BYTE));
+	if (!floats)
+		a = json_out_set(a, "normalized", json_object_new_boolean(1));
+	a = json_out_set(a, "count", jint(n));
+	a = json_out_set(a, "type", jstr("VEC3"));
+	a = json_out_set(a, "min", glb_target_bounds(zero, floats));
+	a = json_out_set(a, "max", glb_target_bounds(zero, floats));
+	return json_out_set(a, "sparse", sparse);
+}
+
+/*
+ * Primitive k's morph targets (its entry in primitives gets "targets"): each target's
+ * view and accessor, after every view of the still model, so that its bytes stay where
+ * they were; the targets zero at every vertex of k share one accessor without data
+ * (glb_zero_accessor).
+ */
+static struct json_object *glb_add_targets(struct glb *g, struct json_object *prim,
+					   struct json_object **accessors,
+					   struct json_object **views, const char *prim_name,
+					   const struct export_wind_prim *p, bool floats)
+{
+	struct json_object *targets = json_object_new_array_ext(LIVE_WIND_TARGETS);
+	size_t n = p->nvertices, count = floats ? 3 * n : n, stride = floats ? 0 : 4;
+	size_t zero = SIZE_MAX; /* the zero accessor's index, once made */
+
+	for (int j = 0; j < LIVE_WIND_TARGETS; j++) {
+		struct json_object *a, *target;
+		size_t index;
+
+		if (!p->data[j]) {
+			if (zero == SIZE_MAX) {
+				zero = g->naccessors++;
+				*accessors = json_out_push(*accessors,
+							   glb_zero_accessor(g, views, prim_name, n,
+									     floats));
+			}
+			target = json_out_set(json_object_new_object(), "POSITION", jint(zero));
+			targets = json_out_push(targets, target);
+			continue;
+		}
+		index = g->naccessors++;
+		a = glb_accessor(prim_name, glb_target_names[j], g->nviews,
+				 floats ? GL_FLOAT : GL_BYTE, n, "VEC3");
+		*views = glb_add_view_ex(g, *views, p->data[j], count,
+					 floats ? GLB_FLOATS : GLB_BYTES, GL_ARRAY_BUFFER, stride);
+		if (!floats)
+			a = json_out_set(a, "normalized", json_object_new_boolean(1));
+		a = json_out_set(a, "min", glb_target_bounds(p->lo[j], floats));
+		a = json_out_set(a, "max", glb_target_bounds(p->hi[j], floats));
+		*accessors = json_out_push(*accessors, a);
+		target = json_out_set(json_object_new_object(), "POSITION", jint(index));
+		targets = json_out_push(targets, target);
+	}
+	return json_out_set(prim, "targets", targets);
+}
+
+/* The animations: "wind", one channel (the node's weights), one CUBICSPLINE sampler. */
+static struct json_object *glb_add_animation(struct glb *g, struct json_object **accessors,
+					     struct json_object **views,
+					     const struct export_wind_anim *a)
+{
+	struct json_object *in, *out, *sampler, *channel, *target, *anim;
+	size_t first = g->naccessors;
+	double lo = 0.0, hi = a->times[a->nkeys - 1];
+
+	g->naccessors += 2;
+
+	in = glb_accessor("wind", "time", g->nviews, GL_FLOAT, a->nkeys, "SCALAR");
+	in = json_out_set(in, "min", jvec(&lo, 1));
+	in = json_out_set(in, "max", jvec(&hi, 1));
+	*accessors = json_out_push(*accessors, in);
+	*views = glb_add_view(g, *views, a->times, a->nkeys, GLB_FLOATS, 0);
+	out = glb_accessor("wind", "weights", g->nviews, GL_FLOAT,
+			   a->nkeys * 3 * LIVE_WIND_TARGETS, "SCALAR");
+	*accessors = json_out_push(*accessors, out);
+	*views = glb_add_view(g, *views, a->values, a->nkeys * 3 * LIVE_WIND_TARGETS, GLB_FLOATS,
+			      0);
+
+	sampler = json_object_new_object();
+	sampler = json_out_set(sampler, "input", jint(first));
+	sampler = json_out_set(sampler, "interpolation", jstr("CUBICSPLINE"));
+	sampler = json_out_set(sampler, "output", jint(first + 1));
+	target = json_object_new_object();
+	target = json_out_set(target, "node", jint(0));
+	target = json_out_set(target, "path", jstr("weights"));
+	channel = json_object_new_object();
+	channel = json_out_set(channel, "sampler", jint(0));
+	channel = json_out_set(channel, "target", target);
+	anim = json_object_new_object();
+	anim = json_out_set(anim, "name", jstr("wind"));
+	anim = json_out_set(anim, "channels", json_out_push(json_object_new_array(), channel));
+	anim = json_out_set(anim, "samplers", json_out_push(json_object_new_array(), sampler));
+	return json_out_push(json_object_new_array(), anim);
+}
+
+/* The mesh's default weights (0: the rest pose) and its targets' names. */
+static struct json_object *glb_mesh_weights(struct json_object *mesh)
+{
+	struct json_object *weights = json_object_new_array_ext(LIVE_WIND_TARGETS);
+	struct json_object *names = json_object_new_array_ext(LIVE_WIND_TARGETS);
+	struct json_object *extras = json_object_new_object();
+
+	for (int j = 0; j < LIVE_WIND_TARGETS; j++) {
+		weights = json_out_push(weights, jint(0));
+		names = json_out_push(names, jstr(glb_target_names[j]));
+	}
+	mesh = json_out_set(mesh, "weights", weights);
+	extras = json_out_set(extras, "targetNames", names);
+	return json_out_set(mesh, "extras", extras);
+}
+
+/* KHR_mesh_quantization: byte targets; required, as the extension says (a reader that
+ * lacks it cannot read them as floats). */
+static struct json_object *glb_quantization(struct json_object *root)
+{
+	static const char ext[] = "KHR_mesh_quantization";
+
+	root = json_out_set(root, "extensionsUsed",
+			    json_out_push(json_object_new_array(), jstr(ext)));
+	return json_out_set(root, "extensionsRequired",
+			    json_out_push(json_object_new_array(), jstr(ext)));
+}
+
+/* Whether primitive i goes into the file: an empty primitive is invalid glTF. */
+static bool glb_prim_used(const struct glb_input *in, size_t i)
+{
+	const struct mesh *m = in->mesh[i];
+
+	return m && m->nindices >= 3 && m->nvertices > 0 &&
+	       !(glb_prim_mat[i] == GLB_MAT_LEAVES && in->how == EXPORT_LEAVES_NONE);
 }
 
 /* Builds the JSON document and the list of BIN views. */
@@ -257,14 +465,19 @@ static int glb_build_json(struct glb *g, const struct glb_input *in)
 {
 	struct json_object *root, *asset, *scene, *scenes;
 	struct json_object *primitives, *accessors, *views, *materials;
+	struct json_object *prims[GLB_NPRIMS];
+	const char *prim_names[GLB_NPRIMS];
 	size_t nprims = 0, nmats = 0, mat_index[GLB_NMATS];
 	bool have_mat[GLB_NMATS] = { false };
+	const struct export_wind_anim *anim = in->anim;
 
 	root = json_object_new_object();
 	asset = json_object_new_object();
 	asset = json_out_set(asset, "version", jstr("2.0"));
 	asset = json_out_set(asset, "generator", jstr("edaha"));
 	root = json_out_set(root, "asset", asset);
+	if (anim && !anim->floats)
+		root = glb_quantization(root);
 	root = json_out_set(root, "scene", jint(0));
 
 	primitives = json_object_new_array();
@@ -272,25 +485,30 @@ static int glb_build_json(struct glb *g, const struct glb_input *in)
 	views = json_object_new_array();
 	materials = json_object_new_array();
 	for (size_t i = 0; i < GLB_NPRIMS; i++) {
-		const struct mesh *m = in->mesh[i];
 		enum glb_mat k = glb_prim_mat[i];
 		bool leaves = k == GLB_MAT_LEAVES;
 
-		/* An empty primitive is invalid glTF: leave it out. */
-		if (!m || m->nindices < 3 || m->nvertices == 0 ||
-		    (leaves && in->how == EXPORT_LEAVES_NONE))
+		if (!glb_prim_used(in, i))
 			continue;
 		if (!have_mat[k]) {
 			materials = json_out_push(materials, glb_new_material(k, in->how, in->season));
 			mat_index[k] = nmats++;
 			have_mat[k] = true;
 		}
-		primitives = glb_add_prim(g, primitives, &accessors, &views, m, glb_prim_names[i],
-					  leaves && in->how == EXPORT_LEAVES_COLORED ? in->colors[i]
-										     : NULL,
-					  mat_index[k]);
-		nprims++;
+		prim_names[nprims] = glb_prim_names[i];
+		prims[nprims++] = glb_add_prim(g, &accessors, &views, in->mesh[i],
+					       glb_prim_names[i],
+					       leaves && in->how == EXPORT_LEAVES_COLORED
+						       ? in->colors[i] : NULL,
+					       mat_index[k]);
 	}
+	/* the wind's data after all the still model's: its bytes stay where they were */
+	g->naccessors = g->nviews;
+	for (size_t p = 0; anim && p < nprims; p++)
+		prims[p] = glb_add_targets(g, prims[p], &accessors, &views, prim_names[p],
+					   &anim->prims[p], anim->floats);
+	for (size_t p = 0; p < nprims; p++)
+		primitives = json_out_push(primitives, prims[p]);
 
 	scene = json_object_new_object();
 	scenes = json_object_new_array();
@@ -305,6 +523,7 @@ static int glb_build_json(struct glb *g, const struct glb_input *in)
 		struct json_object *node = json_object_new_object();
 		struct json_object *mesh = json_object_new_object();
 		struct json_object *buffer = json_object_new_object();
+		struct json_object *animations = NULL;
 
 		scene = json_out_set(scene, "nodes", json_out_push(json_object_new_array(), jint(0)));
 		root = json_out_set(root, "scenes", json_out_push(scenes, scene));
@@ -313,12 +532,19 @@ static int glb_build_json(struct glb *g, const struct glb_input *in)
 		root = json_out_set(root, "nodes", json_out_push(json_object_new_array(), node));
 		mesh = json_out_set(mesh, "name", jstr(in->name));
 		mesh = json_out_set(mesh, "primitives", primitives);
+		if (anim) {
+			mesh = glb_mesh_weights(mesh);
+			/* its accessors and views last: after every primitive's */
+			animations = glb_add_animation(g, &accessors, &views, anim);
+		}
 		root = json_out_set(root, "meshes", json_out_push(json_object_new_array(), mesh));
 		root = json_out_set(root, "accessors", accessors);
 		root = json_out_set(root, "bufferViews", views);
 		buffer = json_out_set(buffer, "byteLength", jint(g->bin_len));
 		root = json_out_set(root, "buffers", json_out_push(json_object_new_array(), buffer));
 		root = json_out_set(root, "materials", materials);
+		if (anim)
+			root = json_out_set(root, "animations", animations);
 	}
 	g->root = root;
 	return root ? 0 : -ENOMEM;
@@ -364,8 +590,13 @@ static int glb_append_view(struct buf *out, const struct glb_view *v)
 	if (r < 0)
 		return r;
 	p = out->data + out->len;
-	if (v->kind == GLB_LEAF_RGBA) {
-		glb_write_leaf_rgba(p, v->data);
+	if (v->kind == GLB_LEAF_RGBA || v->kind == GLB_BYTES || v->kind == GLB_ZEROS) {
+		if (v->kind == GLB_LEAF_RGBA)
+			glb_write_leaf_rgba(p, v->data);
+		else if (v->kind == GLB_BYTES)
+			memcpy(p, v->data, 4 * v->count);
+		else
+			memset(p, 0, 4 * v->count);
 		out->len += 4 * v->count;
 		return 0;
 	}
@@ -455,8 +686,37 @@ static int glb_export(const struct glb_input *in, struct buf *out)
 	return r;
 }
 
-int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
-	       struct buf *out)
+/* The wind's targets and keys for in's used primitives; in->anim stays NULL for a tree
+ * without branches or whose meshes cannot be bound (no segment to bind them to). */
+static int glb_wind(struct glb_input *in, struct export_wind_anim *anim,
+		    struct export_wind_tree *wt, const struct tree *t,
+		    const struct tree_mesh_marks *mk, const struct export_wind *wind)
+{
+	const struct mesh *meshes[GLB_NPRIMS];
+	enum export_wind_bind bind[GLB_NPRIMS];
+	size_t n = 0;
+	int r = export_wind_tree_init(wt, t, wind);
+
+	if (r == -ENODATA)
+		return 0;
+	for (size_t i = 0; r == 0 && i < GLB_NPRIMS; i++) {
+		if (!glb_prim_used(in, i))
+			continue;
+		meshes[n] = in->mesh[i];
+		bind[n++] = glb_prim_bind[i];
+	}
+	if (r < 0 || n == 0)
+		return r;
+	r = export_wind_anim_build(anim, wt, t, mk, meshes, bind, n, wind->floats);
+	if (r == 0)
+		in->anim = anim;
+	return r == -EINVAL ? 0 : r;
+}
+
+/* The tree's GLB, with its wind when given. */
+static int glb_tree(const struct tree *t, const struct tree_mesh *m,
+		    const struct tree_mesh_marks *mk, const struct export_wind *wind,
+		    struct buf *out)
 {
 	struct glb_input in = {
 		.mesh = { [GLB_BARK] = &m->bark,
@@ -469,8 +729,13 @@ int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tre
 	};
 	struct export_leaves el, vel;
 	struct export_vines ev;
-	int r = export_vines_build(&ev, t);
+	struct export_wind_tree wt;
+	struct export_wind_anim anim;
+	int r;
 
+	memset(&wt, 0, sizeof(wt));
+	memset(&anim, 0, sizeof(anim));
+	r = export_vines_build(&ev, t);
 	if (r == 0) {
 		in.mesh[GLB_VINE] = &ev.stems;
 		in.mesh[GLB_VINE_LEAVES] = &ev.leaves;
@@ -481,10 +746,28 @@ int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tre
 			in.colors[GLB_LEAVES] = &el;
 			in.colors[GLB_VINE_LEAVES] = &vel;
 		}
-		r = glb_export(&in, out);
+		if (wind)
+			r = glb_wind(&in, &anim, &wt, t, mk, wind);
+		if (r == 0)
+			r = glb_export(&in, out);
 	}
+	export_wind_anim_finish(&anim);
+	export_wind_tree_finish(&wt);
 	export_vines_finish(&ev);
 	return r;
+}
+
+int export_glb(const struct tree *t, const struct tree_mesh *m, const struct tree_mesh_marks *mk,
+	       struct buf *out)
+{
+	return glb_tree(t, m, mk, NULL, out);
+}
+
+int export_glb_wind(const struct tree *t, const struct tree_mesh *m,
+		    const struct tree_mesh_marks *mk, const struct export_wind *wind,
+		    struct buf *out)
+{
+	return glb_tree(t, m, mk, wind, out);
 }
 
 int export_glb_leaf(const struct mesh *m, const char *name, struct buf *out)

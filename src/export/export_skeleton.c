@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 #include "export.h"
+#include "export_wind.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -120,6 +121,67 @@ static struct json_object *skeleton_object(const struct tree *t)
 	if (t->nvines > 0)
 		root = vine_json_set(root, t->vines, t->nvines);
 	return root;
+}
+
+/* One motion of the wind: its harmonic, frequency and amplitude. */
+static struct json_object *jmotion(const struct live_wind *w, const char *name, int harmonic,
+				   double amplitude)
+{
+	struct json_object *o = json_object_new_object();
+
+	o = json_out_set(o, "name", json_object_new_string(name));
+	o = json_out_set(o, "harmonic", json_object_new_int(harmonic));
+	o = json_out_set(o, "hz", json_out_num(live_wind_hz(w, harmonic)));
+	return json_out_set(o, "amplitude", json_out_num(amplitude));
+}
+
+/* The wind model.glb's animation carries (docs/skeleton-format.md, "Wind"). */
+static struct json_object *jwind(const struct live_wind *w, uint64_t seed)
+{
+	static const char *const bands[LIVE_BANDS] = { "trunk", "limbs", "branches", "twigs" };
+	struct json_object *o = json_object_new_object();
+	struct json_object *motions = json_object_new_array_ext(LIVE_BANDS + 2);
+
+	motions = json_out_push(motions, jmotion(w, "trunk", w->harmonic[0], w->amp0));
+	motions = json_out_push(motions, jmotion(w, "trunk-across", 2 * w->harmonic[0],
+						 LIVE_WIND_FIGURE_EIGHT * w->amp0));
+	for (int k = 1; k < LIVE_BANDS; k++)
+		motions = json_out_push(motions, jmotion(w, bands[k], w->harmonic[k], w->amp[k]));
+	motions = json_out_push(motions,
+				jmotion(w, "flutter", w->harmonic[LIVE_BANDS], w->amp_leaf));
+	o = json_out_set(o, "strength", json_out_num(w->strength));
+	o = json_out_set(o, "angle", json_out_num(w->angle * 180.0 / VEC_PI));
+	/* exactly: a seed past 2^53 would round as a double */
+	o = json_out_set(o, "seed", json_object_new_uint64(seed));
+	o = json_out_set(o, "height", json_out_num(w->height));
+	o = json_out_set(o, "period", json_out_num(w->period));
+	o = json_out_set(o, "loop", json_out_num(w->loop));
+	return json_out_set(o, "motions", motions);
+}
+
+int export_skeleton_wind(const struct tree *t, const struct export_wind *wind, struct buf *out)
+{
+	struct export_wind_tree wt;
+	struct json_object *root;
+	int r;
+
+	if (!wind)
+		return export_skeleton(t, out);
+	r = export_wind_tree_init(&wt, t, wind);
+	if (r == -ENODATA) {
+		export_wind_tree_finish(&wt);
+		return export_skeleton(t, out);
+	}
+	/* last, after "vines": the keys before it are export_skeleton's */
+	root = r == 0 ? json_out_set(skeleton_object(t), "wind", jwind(&wt.w, wind->seed)) : NULL;
+	export_wind_tree_finish(&wt);
+	if (r < 0)
+		return r;
+	if (!root)
+		return -ENOMEM;
+	r = json_out_append(root, "\n", out);
+	json_object_put(root);
+	return r;
 }
 
 int export_skeleton(const struct tree *t, struct buf *out)
