@@ -262,7 +262,12 @@ static int render_and_write(struct run *r)
 	render_destroy(render);
 	egl_headless_destroy(egl);
 	if (ret == 0) {
-		ret = output_write_all(r->app, o->out_dir, rgba, &err);
+		/* the screen's wind; the file's is the breeze where that is still */
+		const struct export_wind wind = { .strength = o->wind > 0 ? o->wind : 0.0,
+						  .angle = EXPORT_WIND_ANGLE,
+						  .seed = r->app->doc.seed };
+
+		ret = output_write_all(r->app, o->out_dir, rgba, &wind, &err);
 		if (ret < 0)
 			fprintf(stderr, "edaha: %s\n", err.msg);
 	}

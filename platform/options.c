@@ -92,6 +92,10 @@ void options_usage(FILE *f)
 	      "                      screen (percentiles) and the frame rate\n"
 	      "\n"
 	      "Any mode:\n"
+	      "  --wind S            the wind's strength, from 0 (still) to 1 (a gale);\n"
+	      "                      headless default 0, the kiosk's kiosk.wind (default\n"
+	      "                      0.35, a breeze); model.glb sways at it, or at 0.35\n"
+	      "                      where it is 0 (docs/living-trees.md)\n"
 	      "  --lang en|ja        language of the on-screen labels (default: the\n"
 	      "                      configuration's, else en)\n"
 	      "  --record FILE       write every input event to FILE as an edaha trace\n"
@@ -222,11 +226,21 @@ static bool parse_idle(const char *s, double *seconds)
 	return !errno && end != s && !*end && *seconds >= 0.0 && *seconds <= 86400.0;
 }
 
+/* A wind's strength: a number from 0 to 1. */
+static bool parse_wind(const char *s, double *strength)
+{
+	char *end;
+
+	errno = 0;
+	*strength = strtod(s, &end) + 0.0; /* + 0: -0 is 0 */
+	return !errno && end != s && !*end && *strength >= 0.0 && *strength <= 1.0;
+}
+
 enum {
 	OPT_HEADLESS = 256, OPT_SIZE, OPT_SEED, OPT_OUT, OPT_LOAD, OPT_REPLAY, OPT_PRESS, OPT_VIEW,
 	OPT_RECORD, OPT_HELP, OPT_VERSION, OPT_KIOSK_FRAMES, OPT_SCREENSHOT, OPT_CONFIG, OPT_STATS,
 	OPT_LANG, OPT_IDLE, OPT_GENERATE, OPT_LEAF, OPT_OPENING, OPT_SUPPORT, OPT_VINE, OPT_PLANT,
-	OPT_WOOD, OPT_DUMP_VOXELS, OPT_SKELETON, OPT_WINDOW, OPT_KIOSK,
+	OPT_WOOD, OPT_DUMP_VOXELS, OPT_SKELETON, OPT_WINDOW, OPT_KIOSK, OPT_WIND,
 };
 
 static const struct option longopts[] = {
@@ -256,6 +270,7 @@ static const struct option longopts[] = {
 	{ "plant", required_argument, NULL, OPT_PLANT },
 	{ "wood", required_argument, NULL, OPT_WOOD },
 	{ "dump-voxels", no_argument, NULL, OPT_DUMP_VOXELS },
+	{ "wind", required_argument, NULL, OPT_WIND },
 	{ "help", no_argument, NULL, OPT_HELP },
 	{ "version", no_argument, NULL, OPT_VERSION },
 	{ NULL, 0, NULL, 0 },
@@ -410,6 +425,11 @@ static int parse_common_option(struct options *o, int c, const char *arg)
 	case OPT_RECORD:
 		o->record = arg;
 		return 0;
+	case OPT_WIND:
+		if (!parse_wind(arg, &o->wind))
+			return usage_error("bad --wind \"%s\" (expected a strength from 0, still, "
+					   "to 1)", arg);
+		return 0;
 	case OPT_HELP:
 		o->help = true;
 		return 0;
@@ -495,14 +515,14 @@ static int check_leaf(const struct options *o)
 {
 	if (o->opening_given && !o->leaf)
 		return usage_error("%s is for a --leaf", "--opening");
-	/* a leaf alone: no drawing, so nothing to load, feed, turn or record */
+	/* a leaf alone: no drawing, so nothing to load, feed, turn, record or sway */
 	if (o->leaf && (o->load || o->generate || o->nsteps || o->view_given || o->idle_given ||
-			o->record || o->seed_given || o->lang))
+			o->record || o->seed_given || o->lang || o->wind >= 0))
 		return usage_error("%s does not go with --leaf (only --out, --opening and --size do)",
 				   o->load ? "--load" : o->generate ? "--generate" :
 				   o->nsteps ? "--replay/--press" : o->view_given ? "--view" :
 				   o->idle_given ? "--idle" : o->record ? "--record" :
-				   o->seed_given ? "--seed" : "--lang");
+				   o->seed_given ? "--seed" : o->lang ? "--lang" : "--wind");
 	return 0;
 }
 
@@ -512,16 +532,17 @@ static int check_vine(const struct options *o)
 		return usage_error("%s is for a --support", o->vine ? "--vine" : "--plant");
 	if (o->support && (!o->vine || !o->plant_given))
 		return usage_error("%s needs --vine NAME|FILE and --plant X,Y,Z", "--support");
-	/* a vine alone: no drawing, no leaf */
+	/* a vine alone: no drawing, no leaf, no tree to sway */
 	if (o->support && (o->leaf || o->opening_given || o->load || o->generate || o->nsteps ||
-			   o->view_given || o->idle_given || o->record || o->seed_given || o->lang))
+			   o->view_given || o->idle_given || o->record || o->seed_given ||
+			   o->lang || o->wind >= 0))
 		return usage_error("%s does not go with --support (only --out, --vine, --plant and "
 				   "--size do)",
 				   o->leaf ? "--leaf" : o->opening_given ? "--opening" :
 				   o->load ? "--load" : o->generate ? "--generate" :
 				   o->nsteps ? "--replay/--press" : o->view_given ? "--view" :
 				   o->idle_given ? "--idle" : o->record ? "--record" :
-				   o->seed_given ? "--seed" : "--lang");
+				   o->seed_given ? "--seed" : o->lang ? "--lang" : "--wind");
 	return 0;
 }
 
@@ -549,6 +570,7 @@ static void options_init(struct options *o)
 	o->width = DEFAULT_WIDTH;
 	o->height = DEFAULT_HEIGHT;
 	o->seed = DEFAULT_SEED;
+	o->wind = -1.0;
 }
 
 int options_parse(struct options *o, int argc, char **argv)

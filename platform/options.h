@@ -53,6 +53,10 @@ struct options {
 	const char *vine;       /* ...a vine preset's name or a vine file... */
 	bool plant_given;       /* ...planted here, metres */
 	double plant[3];
+	/* --wind S: the wind's strength, 0 (still) to 1; -1: not given (headless: a still
+	 * screen; the kiosk: kiosk.wind). model.glb carries LIVE_WIND_DEFAULT_STRENGTH where
+	 * it is 0 or not given (docs/living-trees.md). */
+	double wind;
 };
 
 /* Parses argv. Returns 0, or 2 (usage error, message printed) as an exit status. */

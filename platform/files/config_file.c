@@ -12,6 +12,7 @@
 #include <yaml.h>
 
 #include "fileio.h"
+#include "live.h"
 #include "yaml_in.h"
 #include "yaml_node.h"
 
@@ -468,6 +469,8 @@ static int kiosk_pair(struct cfg_parser *p, const yaml_node_t *key, const char *
 			p->c->kiosk.archive_keep = (int)n;
 		return r;
 	}
+	if (strcmp(k, "wind") == 0)
+		return get_fraction(p, v, "kiosk.wind", &p->c->kiosk.wind);
 	warn_unknown(p, key, "kiosk");
 	return 0;
 }
@@ -548,6 +551,7 @@ void config_defaults(struct config *c)
 	c->kiosk.reset_after_s = CONFIG_RESET_S_DEFAULT;
 	c->kiosk.autosave = true;
 	c->kiosk.archive_keep = CONFIG_ARCHIVE_KEEP_DEFAULT;
+	c->kiosk.wind = LIVE_WIND_DEFAULT_STRENGTH;
 }
 
 static int yaml_fail(struct cfg_parser *p, const yaml_parser_t *y, const char *data,

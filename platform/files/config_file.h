@@ -80,6 +80,9 @@ struct config {
 		int reset_after_s;    /* idle seconds before the drawing is archived and the
 				       * canvas cleared; 0: never */
 		int archive_keep;     /* archived drawings kept; 0: all */
+		double wind;          /* the wind's strength, 0 (still) to 1; default
+				       * LIVE_WIND_DEFAULT_STRENGTH, a breeze. Exports sway at
+				       * it, or at the breeze where it is 0 */
 	} kiosk;
 	struct {
 		bool enabled; /* save to USB sticks */

@@ -22,6 +22,7 @@ void export_set_init(struct export_set *s)
 {
 	for (size_t i = 0; i < EXPORT_NAMES_NSUFFIXES; i++)
 		buf_init(&s->files[i]);
+	s->wind = 0.0;
 }
 
 void export_set_finish(struct export_set *s)
@@ -33,12 +34,15 @@ void export_set_finish(struct export_set *s)
 int export_set_build(struct export_set *s, const struct app *app, const uint8_t *rgba,
 		     struct error *err)
 {
+	const struct export_wind wind = { .strength = s->wind, .angle = EXPORT_WIND_ANGLE,
+					  .seed = app->doc.seed };
 	struct buf *f = s->files;
 	int r;
 
 	for (size_t i = 0; i < EXPORT_NAMES_NSUFFIXES; i++)
 		buf_reset(&f[i]);
-	if ((r = export_glb(&app->tree, &app->mesh, &app->mesh_marks, &f[EXPORT_SET_GLB])) < 0)
+	r = export_glb_wind(&app->tree, &app->mesh, &app->mesh_marks, &wind, &f[EXPORT_SET_GLB]);
+	if (r < 0)
 		return error_set(err, r, "cannot build the .glb: %s", strerror(-r));
 	r = export_obj(&app->tree, &app->mesh, &app->mesh_marks, EXPORT_SET_MTL_PLACEHOLDER,
 		       &f[EXPORT_SET_OBJ], &f[EXPORT_SET_MTL]);

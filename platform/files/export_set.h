@@ -34,6 +34,9 @@ enum export_set_file { EXPORT_SET_GLB, EXPORT_SET_OBJ, EXPORT_SET_MTL, EXPORT_SE
 
 struct export_set {
 	struct buf files[EXPORT_NAMES_NSUFFIXES];
+	/* the strength the .glb sways at (kiosk.wind); 0, as export_set_init leaves it: the
+	 * default breeze (export_glb_wind) */
+	double wind;
 };
 
 void export_set_init(struct export_set *s);

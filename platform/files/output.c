@@ -16,7 +16,7 @@ static int write_buf(const char *dir, const char *name, struct buf *b, int ret, 
 }
 
 int output_write(const struct app *app, const char *dir, const struct output_names *n,
-		 const uint8_t *rgba, struct error *err)
+		 const uint8_t *rgba, const struct export_wind *wind, struct error *err)
 {
 	struct buf a, b;
 	int ret;
@@ -25,7 +25,9 @@ int output_write(const struct app *app, const char *dir, const struct output_nam
 	buf_init(&b);
 	ret = fileio_mkdirs(dir, err);
 	if (ret == 0 && n->glb)
-		ret = write_buf(dir, n->glb, &a, export_glb(&app->tree, &app->mesh, &app->mesh_marks, &a), err);
+		ret = write_buf(dir, n->glb, &a,
+				export_glb_wind(&app->tree, &app->mesh, &app->mesh_marks, wind, &a),
+				err);
 	if (ret == 0 && n->obj && n->mtl) {
 		buf_reset(&a);
 		ret = export_obj(&app->tree, &app->mesh, &app->mesh_marks, n->mtl, &a, &b);
@@ -35,7 +37,8 @@ int output_write(const struct app *app, const char *dir, const struct output_nam
 	}
 	if (ret == 0 && n->skeleton) {
 		buf_reset(&a);
-		ret = write_buf(dir, n->skeleton, &a, export_skeleton(&app->tree, &a), err);
+		ret = write_buf(dir, n->skeleton, &a, export_skeleton_wind(&app->tree, wind, &a),
+				err);
 	}
 	if (ret == 0 && n->drawing) {
 		buf_reset(&a);
@@ -53,12 +56,12 @@ int output_write(const struct app *app, const char *dir, const struct output_nam
 }
 
 int output_write_all(const struct app *app, const char *dir, const uint8_t *rgba,
-		     struct error *err)
+		     const struct export_wind *wind, struct error *err)
 {
 	static const struct output_names headless = {
 		.glb = "model.glb", .obj = "model.obj", .mtl = "model.mtl",
 		.skeleton = "skeleton.json", .drawing = "drawing.edaha", .png = "screen.png",
 	};
 
-	return output_write(app, dir, &headless, rgba, err);
+	return output_write(app, dir, &headless, rgba, wind, err);
 }

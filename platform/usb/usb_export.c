@@ -401,6 +401,7 @@ void usb_export_start(struct usb_export *ux, const struct app *app, const uint8_
 		return;
 	}
 	export_set_init(job.set);
+	job.set->wind = ux->cfg.wind;
 	if (export_set_build(job.set, app, rgba, &err) < 0) {
 		fprintf(stderr, "edaha: export failed: %s\n", err.msg);
 		free_job(&job);

@@ -28,6 +28,7 @@ struct usb_export_config {
 	bool usb;                  /* watch for sticks and save to them (usb.enabled) */
 	const char *helper_socket; /* usb.helper_socket */
 	const char *local_dir;     /* kiosk.export_dir, a copy of every export; NULL: none */
+	double wind;               /* kiosk.wind: the .glb's sway; 0: the default breeze */
 	bool monitor;              /* false: no udev monitor, sticks come by usb_export_added */
 	const char *sys_block;     /* NULL: /sys/class/block, where a stick is seen to be gone */
 	/* tells the visitor (on the main thread): held until the next, while under way */

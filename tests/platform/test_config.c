@@ -12,6 +12,7 @@
 
 #include "config_file.h"
 #include "fileio.h"
+#include "live.h"
 #include "test.h"
 
 static char *path_of(const char *dir, const char *name)
@@ -36,6 +37,7 @@ static void check_defaults(const struct config *c)
 	CHECK_INT(c->language, CONFIG_LANG_EN);
 	CHECK_INT(c->kiosk.attract_after_s, CONFIG_ATTRACT_S_DEFAULT);
 	CHECK(strcmp(c->kiosk.export_dir, CONFIG_EXPORT_DIR_DEFAULT) == 0);
+	CHECK(c->kiosk.wind == LIVE_WIND_DEFAULT_STRENGTH);
 	CHECK(c->usb.enabled);
 	CHECK(strcmp(c->usb.helper_socket, CONFIG_USB_SOCKET_DEFAULT) == 0);
 	CHECK(c->font[0] == '\0');
@@ -159,6 +161,19 @@ static void test_good(const char *dir)
 	static const char grow_led[] = "gpio:\n  leds:\n    grow: { chip: a, line: 1 }\n";
 	CHECK_INT(config_parse(grow_led, strlen(grow_led), "grow-led", &c, NULL, &err), -EINVAL);
 	CHECK(strstr(err.msg, "grow-led:3:") && strstr(err.msg, "not grow"));
+	/* the wind (issue 26): 0..1, 0 still */
+	static const char wind[] = "kiosk:\n  wind: 0.8\n";
+	CHECK_INT(config_parse(wind, strlen(wind), "wind", &c, NULL, &err), 0);
+	CHECK(c.kiosk.wind == 0.8);
+	static const char still[] = "kiosk:\n  wind: 0\n";
+	CHECK_INT(config_parse(still, strlen(still), "still", &c, NULL, &err), 0);
+	CHECK(c.kiosk.wind == 0.0);
+	static const char gale[] = "kiosk:\n  wind: 1.5\n";
+	CHECK_INT(config_parse(gale, strlen(gale), "gale", &c, NULL, &err), -EINVAL);
+	CHECK(strstr(err.msg, "gale:2:") && strstr(err.msg, "kiosk.wind 1.5 out of range 0..1"));
+	static const char word[] = "kiosk:\n  wind: strong\n";
+	CHECK_INT(config_parse(word, strlen(word), "word", &c, NULL, &err), -EINVAL);
+	CHECK(strstr(err.msg, "word:2:") && strstr(err.msg, "is not a number"));
 	static const char mode[] = "display:\n  mode: 800x480\n";
 	CHECK_INT(config_parse(mode, strlen(mode), "mode", &c, NULL, &err), 0);
 	CHECK_INT(c.display.mode_w, 800);
