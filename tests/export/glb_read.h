@@ -3,6 +3,7 @@
 
 /* Reading back a GLB the exporter wrote, for the export tests (header-only, static). */
 
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -214,7 +215,75 @@ static inline int glb_same_accessor(const struct glb *a, int64_t ia, const struc
 	return la == lb && !memcmp(da, db, la);
 }
 
-/* Accessors agree with the BIN chunk: views in range, bounds exact, indices in range. */
+/* Float i of an accessor's data. */
+static inline float glb_float(const unsigned char *data, size_t i)
+{
+	uint32_t bits = u32(data + 4 * i);
+	float f;
+
+	memcpy(&f, &bits, sizeof(f));
+	return f;
+}
+
+/* The printed bounds of a VEC3 accessor read back as exactly its data's extremes: floats
+ * (12 bytes a vertex) or, for normalised bytes (4 a vertex, glTF's bounds being the
+ * stored integers whatever `normalized` says), -127..127 with the fourth byte 0. */
+static inline void check_vec3_bounds(struct json_object *a, const unsigned char *data, int64_t n,
+				     int bytes)
+{
+	for (int c = 0; c < 3; c++) {
+		double lo = 0, hi = 0;
+
+		for (int64_t k = 0; k < n; k++) {
+			double f = bytes ? (double)(int8_t)data[4 * k + c]
+					 : (double)glb_float(data, (size_t)(3 * k + c));
+
+			if (bytes) {
+				CHECK(f >= -127 && f <= 127);
+				CHECK_INT(data[4 * k + 3], 0);
+			}
+			lo = k == 0 || f < lo ? f : lo;
+			hi = k == 0 || f > hi ? f : hi;
+		}
+		double min = json_object_get_double(at(get(a, "min"), (size_t)c));
+		double max = json_object_get_double(at(get(a, "max"), (size_t)c));
+
+		CHECK(bytes ? min == lo : (float)min == (float)lo);
+		CHECK(bytes ? max == hi : (float)max == (float)hi);
+	}
+}
+
+/* A morph target zero at every vertex (export_gltf.c): no view, so zeros, and one sparse
+ * element, vertex 0, set to zero too, from views without a target; bounds 0. */
+static inline void check_zero_target(const struct glb *g, struct json_object *a)
+{
+	struct json_object *sparse = get(a, "sparse"), *views = get(g->json, "bufferViews");
+	struct json_object *iv = at(views, (size_t)get_int(get(sparse, "indices"), "bufferView"));
+	struct json_object *vv = at(views, (size_t)get_int(get(sparse, "values"), "bufferView"));
+	int64_t comp = get_int(a, "componentType");
+
+	CHECK(!strcmp(get_str(a, "type"), "VEC3"));
+	CHECK(comp == 5126 || (comp == 5120 && json_object_get_boolean(get(a, "normalized"))));
+	CHECK_INT(get_int(sparse, "count"), 1);
+	CHECK_INT(get_int(get(sparse, "indices"), "componentType"), 5125);
+	CHECK(!json_object_object_get_ex(iv, "target", NULL));
+	CHECK(!json_object_object_get_ex(vv, "target", NULL));
+	CHECK(get_int(iv, "byteLength") >= 4 && get_int(vv, "byteLength") >= 12);
+	CHECK_INT(u32(g->bin + get_int(iv, "byteOffset")), 0);
+	for (int k = 0; k < 12; k++)
+		CHECK_INT(g->bin[get_int(vv, "byteOffset") + k], 0);
+	for (int c = 0; c < 3; c++) {
+		CHECK(json_num(at(get(a, "min"), (size_t)c)) == 0.0);
+		CHECK(json_num(at(get(a, "max"), (size_t)c)) == 0.0);
+	}
+}
+
+/*
+ * Accessors agree with the BIN chunk: views in range, bounds exact, indices in range; the
+ * wind's morph targets (VEC3 normalised BYTE, stride 4, or FLOAT; zero ones sparse, without
+ * a view) and its animation's keys (SCALAR FLOAT in views without a target; times from 0
+ * rising, as min and max say).
+ */
 static inline void check_accessors(const struct glb *g)
 {
 	struct json_object *accessors = get(g->json, "accessors");
@@ -224,33 +293,69 @@ static inline void check_accessors(const struct glb *g)
 	CHECK_INT(get_int(buffer, "byteLength"), g->bin_len);
 	CHECK(!json_object_object_get_ex(buffer, "uri", NULL));
 	for (size_t i = 0; i < json_object_array_length(views); i++) {
-		struct json_object *v = at(views, i);
-		int64_t target = get_int(v, "target");
+		struct json_object *v = at(views, i), *target;
 
 		CHECK_INT(get_int(v, "buffer"), 0);
 		CHECK(get_int(v, "byteOffset") % 4 == 0);
 		CHECK(get_int(v, "byteOffset") + get_int(v, "byteLength") <= (int64_t)g->bin_len);
-		CHECK(target == 34962 || target == 34963);
+		if (json_object_object_get_ex(v, "target", &target))
+			CHECK(json_object_get_int64(target) == 34962 ||
+			      json_object_get_int64(target) == 34963);
 	}
 	for (size_t i = 0; i < json_object_array_length(accessors); i++) {
-		struct json_object *a = at(accessors, i);
-		struct json_object *v = at(views, (size_t)get_int(a, "bufferView"));
-		const unsigned char *data = g->bin + get_int(v, "byteOffset");
+		struct json_object *a = at(accessors, i), *v;
+		const unsigned char *data;
 		int64_t n = get_int(a, "count");
 		int64_t comp = get_int(a, "componentType");
 		const char *type = get_str(a, "type");
+		int has_target;
 
 		CHECK(n > 0);
-		if (!strcmp(type, "VEC3")) {
+		if (!json_object_object_get_ex(a, "bufferView", NULL)) {
+			check_zero_target(g, a);
+			continue;
+		}
+		v = at(views, (size_t)get_int(a, "bufferView"));
+		data = g->bin + get_int(v, "byteOffset");
+		has_target = json_object_object_get_ex(v, "target", NULL);
+		if (!strcmp(type, "VEC3") && comp == 5120) {
+			/* a morph target's deltas, KHR_mesh_quantization */
+			CHECK(json_object_get_boolean(get(a, "normalized")));
+			CHECK_INT(get_int(v, "byteStride"), 4);
+			CHECK_INT(get_int(v, "byteLength"), 4 * n);
+			CHECK_INT(get_int(v, "target"), 34962);
+			check_vec3_bounds(a, data, n, 1);
+		} else if (!strcmp(type, "VEC3")) {
 			CHECK_INT(comp, 5126);
 			CHECK_INT(get_int(v, "byteLength"), 12 * n);
+			CHECK(!json_object_object_get_ex(v, "byteStride", NULL));
+			CHECK_INT(get_int(v, "target"), 34962);
+			if (json_object_object_get_ex(a, "min", NULL))
+				check_vec3_bounds(a, data, n, 0);
 		} else if (!strcmp(type, "VEC4")) {
 			/* COLOR_0: RGBA bytes, 0..255 meaning 0..1, opaque */
 			CHECK_INT(comp, 5121);
 			CHECK(json_object_get_boolean(get(a, "normalized")));
 			CHECK_INT(get_int(v, "byteLength"), 4 * n);
+			CHECK(has_target);
 			for (int64_t k = 0; k < n; k++)
 				CHECK_INT(data[4 * k + 3], 255);
+		} else if (comp == 5126) {
+			/* an animation's keys: no vertex data, so no target */
+			CHECK(!strcmp(type, "SCALAR"));
+			CHECK(!has_target);
+			CHECK_INT(get_int(v, "byteLength"), 4 * n);
+			for (int64_t k = 0; k < n; k++)
+				CHECK(isfinite(glb_float(data, (size_t)k)));
+			if (json_object_object_get_ex(a, "min", NULL)) {
+				float last = glb_float(data, (size_t)(n - 1));
+
+				CHECK(glb_float(data, 0) == 0.0f);
+				for (size_t k = 1; k < (size_t)n; k++)
+					CHECK(glb_float(data, k) > glb_float(data, k - 1));
+				CHECK((float)json_num(at(get(a, "min"), 0)) == 0.0f);
+				CHECK((float)json_num(at(get(a, "max"), 0)) == last);
+			}
 		} else {
 			/* indices: in range of the primitive's vertex count (the accessor before) */
 			int64_t nv = get_int(at(accessors, i - 1), "count");
@@ -258,26 +363,10 @@ static inline void check_accessors(const struct glb *g)
 			CHECK(!strcmp(type, "SCALAR"));
 			CHECK_INT(comp, 5125);
 			CHECK_INT(get_int(v, "byteLength"), 4 * n);
+			CHECK_INT(get_int(v, "target"), 34963);
 			CHECK(n % 3 == 0);
 			for (int64_t k = 0; k < n; k++)
 				CHECK(u32(data + 4 * k) < nv);
-		}
-		if (json_object_object_get_ex(a, "min", NULL)) {
-			/* the printed bounds read back as exactly the float extremes */
-			for (int c = 0; c < 3; c++) {
-				float lo = 0, hi = 0;
-
-				for (int64_t k = 0; k < n; k++) {
-					uint32_t bits = u32(data + 12 * k + 4 * c);
-					float f;
-
-					memcpy(&f, &bits, sizeof(f));
-					lo = k == 0 || f < lo ? f : lo;
-					hi = k == 0 || f > hi ? f : hi;
-				}
-				CHECK((float)json_object_get_double(at(get(a, "min"), (size_t)c)) == lo);
-				CHECK((float)json_object_get_double(at(get(a, "max"), (size_t)c)) == hi);
-			}
 		}
 	}
 }

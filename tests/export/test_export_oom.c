@@ -2,8 +2,9 @@
 /*
  * Allocation failure: fails the 1st, 2nd, ... allocation of tree_mesh_build and every
  * exporter in turn, the glTF and OBJ exporters in every season, a tree with a vine too
- * (the exporters mesh it) and a grown tree (its wood's bark, skeleton.json's "wood");
- * each must return -ENOMEM, leave nothing half-built and leak nothing.
+ * (the exporters mesh it) and a grown tree (its wood's bark, skeleton.json's "wood"),
+ * with the wind too (export_glb_wind's bindings, targets and keys; skeleton.json's
+ * "wind"); each must return -ENOMEM, leave nothing half-built and leak nothing.
  * Allocations fail through tests/lib/fail_alloc.c, which replaces malloc & co., so it is not
  * built with sanitizers, which replace them too.
  */
@@ -50,6 +51,35 @@ static int op_glb(const struct job *j)
 
 	buf_init(&b);
 	r = export_glb(j->tree, j->mesh, j->marks, &b);
+	if (r < 0)
+		CHECK_INT(b.len, 0);
+	buf_finish(&b);
+	return r;
+}
+
+/* The glb with the wind at the default breeze: targets, keys, bindings. */
+static int op_glb_wind(const struct job *j)
+{
+	const struct export_wind ew = { .strength = 0.0, .angle = EXPORT_WIND_ANGLE, .seed = 3 };
+	struct buf b;
+	int r;
+
+	buf_init(&b);
+	r = export_glb_wind(j->tree, j->mesh, j->marks, &ew, &b);
+	if (r < 0)
+		CHECK_INT(b.len, 0);
+	buf_finish(&b);
+	return r;
+}
+
+static int op_skeleton_wind(const struct job *j)
+{
+	const struct export_wind ew = { .strength = 0.0, .angle = EXPORT_WIND_ANGLE, .seed = 3 };
+	struct buf b;
+	int r;
+
+	buf_init(&b);
+	r = export_skeleton_wind(j->tree, &ew, &b);
 	if (r < 0)
 		CHECK_INT(b.len, 0);
 	buf_finish(&b);
@@ -128,6 +158,10 @@ static void vine_tree(void)
 		printf("export_glb of a vine in %s: %ld allocations, each failed once\n",
 		       season_name(t.season), n);
 		CHECK(n > 0);
+		n = exhaust(op_glb_wind, &j);
+		printf("export_glb_wind of a vine in %s: %ld allocations, each failed once\n",
+		       season_name(t.season), n);
+		CHECK(n > 0);
 		n = exhaust(op_obj, &j);
 		printf("export_obj of a vine in %s: %ld allocations, each failed once\n",
 		       season_name(t.season), n);
@@ -158,6 +192,9 @@ static void wood_tree(void)
 	CHECK_INT(tree_mesh_build_marked(&tm, &t, &mk), 0);
 	n = exhaust(op_glb, &j);
 	printf("export_glb of a grown tree: %ld allocations, each failed once\n", n);
+	CHECK(n > 0);
+	n = exhaust(op_glb_wind, &j);
+	printf("export_glb_wind of a grown tree: %ld allocations, each failed once\n", n);
 	CHECK(n > 0);
 	n = exhaust(op_obj, &j);
 	printf("export_obj of a grown tree: %ld allocations, each failed once\n", n);
@@ -194,6 +231,10 @@ int main(void)
 		printf("export_glb in %s: %ld allocations, each failed once\n",
 		       season_name(t.season), n);
 		CHECK(n > 0);
+		n = exhaust(op_glb_wind, &j);
+		printf("export_glb_wind in %s: %ld allocations, each failed once\n",
+		       season_name(t.season), n);
+		CHECK(n > 0);
 		n = exhaust(op_obj, &j);
 		printf("export_obj in %s: %ld allocations, each failed once\n",
 		       season_name(t.season), n);
@@ -202,6 +243,9 @@ int main(void)
 	t.season = SEASON_SUMMER;
 	n = exhaust(op_skeleton, &j);
 	printf("export_skeleton: %ld allocations, each failed once\n", n);
+	CHECK(n > 0);
+	n = exhaust(op_skeleton_wind, &j);
+	printf("export_skeleton_wind: %ld allocations, each failed once\n", n);
 	CHECK(n > 0);
 
 	tree_mesh_marks_finish(&mk);

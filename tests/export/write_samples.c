@@ -7,9 +7,12 @@
  * and winter; a trunk with two vines (synth_vine_tree) in every season,
  * vines-SEASON.glb/.obj/.mtl; and a tree grown a press (synth_wood_tree: the wood's bark
  * beside the twigs' swept tubes) in summer and winter, wood-SEASON.glb/.obj/.mtl, with
- * wood.skeleton.json. See validate_samples.sh.
+ * wood.skeleton.json. Every NAME.glb also as NAME-wind.glb, with the tree's sway at the
+ * default breeze (export_glb_wind: KHR_mesh_quantization's byte targets), and
+ * synth-500-wind-floats.glb with float targets. See validate_samples.sh.
  */
 #include <errno.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -59,8 +62,12 @@ static void unbuild(struct tree_mesh *tm, struct tree_mesh_marks *mk)
 	tree_mesh_finish(tm);
 }
 
-static int write_glb(const char *dir, const char *name, const struct tree *t)
+/* NAME.glb, and NAME-wind.glb with the wind (plus NAME-wind-floats.glb if floats). */
+static int write_glb_ex(const char *dir, const char *name, const struct tree *t, bool floats)
 {
+	struct export_wind ew = { .strength = 0.0, .angle = EXPORT_WIND_ANGLE, .seed = 1 };
+	char wind_name[256];
+	size_t len = strlen(name) - strlen(".glb");
 	struct tree_mesh tm;
 	struct tree_mesh_marks mk;
 	struct buf b;
@@ -72,9 +79,23 @@ static int write_glb(const char *dir, const char *name, const struct tree *t)
 		r = export_glb(t, &tm, &mk, &b);
 	if (r >= 0)
 		r = write_file(dir, name, &b);
+	for (int f = 0; f <= (int)floats && r >= 0; f++) {
+		ew.floats = f;
+		snprintf(wind_name, sizeof(wind_name), "%.*s-wind%s.glb", (int)len, name,
+			 f ? "-floats" : "");
+		buf_reset(&b);
+		r = export_glb_wind(t, &tm, &mk, &ew, &b);
+		if (r >= 0)
+			r = write_file(dir, wind_name, &b);
+	}
 	buf_finish(&b);
 	unbuild(&tm, &mk);
 	return r;
+}
+
+static int write_glb(const char *dir, const char *name, const struct tree *t)
+{
+	return write_glb_ex(dir, name, t, false);
 }
 
 /* NAME.obj and NAME.mtl */
@@ -216,7 +237,7 @@ int main(int argc, char **argv)
 	if (r >= 0)
 		r = synth_tree(&t, 500, 10, 1);
 	if (r >= 0)
-		r = write_glb(argv[1], "synth-500.glb", &t);
+		r = write_glb_ex(argv[1], "synth-500.glb", &t, true);
 	if (r >= 0)
 		r = synth_extras(argv[1], &t);
 	if (r >= 0)

@@ -1,9 +1,11 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# validate_samples.sh khronos|assimp|summer WRITE_SAMPLES OUTDIR [GLTF_VALIDATE|SHA256S]
+# validate_samples.sh khronos|assimp|summer WRITE_SAMPLES OUTDIR [GLTF_VALIDATE|SHA256S] [wind]
 # Writes the sample exports with write_samples, then
-# - khronos: checks every .glb with the Khronos validator: no error and no warning;
-# - assimp: reads every .glb and .obj with `assimp info`;
+# - khronos: checks every .glb with the Khronos validator: no error and no warning; with
+#   `wind`, every NAME.glb has its NAME-wind.glb (the tree's sway, export_glb_wind), which
+#   carries the animation "wind" unless NAME is the empty drawing;
+# - assimp: reads every .glb and .obj with `assimp info` (the wind's too);
 # - summer: checks that the summer samples are byte for byte what the exporters made
 #   before trees had seasons (SHA256S, made at commit d67c552). Should the meshes change
 #   on purpose (src/mesh/mesh.c, tests/tools/synth_tree.c), make it anew from that change's
@@ -21,7 +23,7 @@ assimp)
 		exit 77
 	fi
 	;;
-khronos) validator=$4 ;;
+khronos) validator=$4 wind=${5:-} ;;
 summer) sums=$4 ;;
 *)
 	echo "usage: validate_samples.sh khronos|assimp|summer WRITE_SAMPLES OUTDIR [GLTF_VALIDATE|SHA256S]" >&2
@@ -36,6 +38,16 @@ if [ "$mode" = summer ]; then
 	cd "$out" && exec sha256sum --strict -c "$sums"
 fi
 
+if [ "$mode" = khronos ] && [ "$wind" = wind ]; then
+	for f in "$out"/*.glb; do
+		case $f in *-wind.glb | *-wind-floats.glb) continue ;; esac
+		w=${f%.glb}-wind.glb
+		[ -f "$w" ] || { echo "validate_samples.sh: no ${w##*/}" >&2; exit 1; }
+		[ "${f##*/}" = empty.glb ] && continue
+		grep -aq '"animations":\[{"name":"wind",' "$w" ||
+			{ echo "validate_samples.sh: ${w##*/} has no wind" >&2; exit 1; }
+	done
+fi
 if [ "$mode" = khronos ]; then
 	# gltf-validate fails on errors only; a warning fails here too
 	"$validator" "$out"/*.glb >"$out/validator.log" 2>&1
@@ -53,8 +65,8 @@ if [ "$mode" = khronos ]; then
 fi
 
 # Raw import (-r) of everything, plus the full post-processed import that applications
-# use, except for empty.glb: assimp's post-processing rejects any scene without meshes
-# ("No materials remaining"), valid or not.
+# use, except for empty.glb and empty-wind.glb (the same): assimp's post-processing
+# rejects any scene without meshes ("No materials remaining"), valid or not.
 status=0
 check() {
 	log="$1.assimp$2.log"
@@ -68,6 +80,6 @@ check() {
 }
 for f in "$out"/*.glb "$out"/*.obj; do
 	check "$f" -r
-	[ "${f##*/}" = empty.glb ] || check "$f" ""
+	case ${f##*/} in empty.glb | empty-wind.glb) ;; *) check "$f" "" ;; esac
 done
 exit $status
