@@ -26,7 +26,7 @@ same_files() { # dir1 dir2 files...
 t_help() {
 	edaha --help >"$T/help" || fail "--help exited $?"
 	for o in --headless --size --seed --out --replay --press --view --load --record --help \
-		--idle --lang --config --stats --kiosk-frames --screenshot --window --kiosk; do
+		--idle --lang --config --stats --kiosk-frames --screenshot --window --kiosk --wind; do
 		grep -q -- "$o" "$T/help" || fail "--help does not mention $o"
 	done
 	edaha --version | grep -q '^edaha ' || fail "--version"
@@ -332,6 +332,51 @@ t_hostile() {
 		run --out "$T/$name.again" --load "$T/$name/drawing.edaha"
 		same_files "$T/$name" "$T/$name.again" skeleton.json model.glb drawing.edaha
 	done
+}
+
+# The wind in the files (issue 26, docs/living-trees.md): model.glb's animation "wind" at
+# the breeze without --wind and with --wind 0 (a still screen), at S with --wind S, the
+# 2D sketch's too, none for an empty drawing; skeleton.json's "wind"; model.obj and the
+# drawing the same whatever the wind; the Khronos validator; --wind's usage errors.
+t_wind() {
+	local d
+	run --out "$T/w" --replay "$DEMO" --press 3d
+	run --out "$T/w0" --replay "$DEMO" --press 3d --wind 0
+	run --out "$T/w8" --replay "$DEMO" --press 3d --wind 0.8
+	same_files "$T/w" "$T/w0" model.glb model.obj model.mtl skeleton.json drawing.edaha screen.png
+	same_files "$T/w" "$T/w8" model.obj model.mtl drawing.edaha
+	cmp -s "$T/w/model.glb" "$T/w8/model.glb" && fail "--wind 0.8 exported the breeze"
+	for d in w w8; do
+		grep -aq '"animations":\[{"name":"wind",' "$T/$d/model.glb" || fail "$d: no wind in model.glb"
+		grep -aq '"extensionsRequired":\["KHR_mesh_quantization"\]' "$T/$d/model.glb" ||
+			fail "$d: model.glb's targets are not quantised"
+		[ "$(grep -ao '"targets":\[' "$T/$d/model.glb" | wc -l)" -eq 2 ] ||
+			fail "$d: not the bark's and the leaves' targets"
+	done
+	grep -q '"wind":{"strength":0.35,"angle":0,"seed":1,"height":' "$T/w/skeleton.json" ||
+		fail "skeleton.json: no breeze"
+	grep -q '"wind":{"strength":0.8,' "$T/w8/skeleton.json" || fail "skeleton.json: not --wind 0.8"
+	"$GLTF_VALIDATE" "$T/w/model.glb" "$T/w8/model.glb" >"$T/validate.log" ||
+		{ cat "$T/validate.log"; fail "glTF validator"; }
+	grep -c ': 0 errors, 0 warnings,' "$T/validate.log" | grep -qx 2 ||
+		{ cat "$T/validate.log"; fail "validator warnings"; }
+	# a sketch is exported as a tree, swaying; an empty drawing has nothing to sway
+	run --out "$T/flat" --replay "$DEMO"
+	grep -aq '"animations":\[{"name":"wind",' "$T/flat/model.glb" || fail "the sketch does not sway"
+	run --out "$T/empty"
+	grep -aq '"animations"' "$T/empty/model.glb" && fail "an empty drawing with an animation"
+	grep -q '"wind"' "$T/empty/skeleton.json" && fail "an empty drawing with a wind"
+	usage_says 'bad --wind "1.5" (expected a strength from 0, still, to 1)' --headless --out "$T/x" \
+		--wind 1.5
+	usage_says 'bad --wind "-0.1" (expected a strength from 0, still, to 1)' --wind -0.1
+	usage_says 'bad --wind "nan" (expected a strength from 0, still, to 1)' --wind nan
+	usage_says 'bad --wind "" (expected a strength from 0, still, to 1)' --wind=
+	usage_says "--wind does not go with --leaf (only --out, --opening and --size do)" --headless \
+		--out "$T/x" --leaf maple --wind 0.5
+	usage_says "--wind does not go with --support (only --out, --vine, --plant and --size do)" \
+		--headless --out "$T/x" --support s.obj --vine default --plant 0,0,0 --wind 0.5
+	[ ! -e "$T/x" ] || fail "a usage error wrote files"
+	echo "model.glb sways at the breeze or --wind; model.obj and the drawing do not change"
 }
 
 t_malformed() {
