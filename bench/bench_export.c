@@ -4,6 +4,10 @@
  * leaves each: median of REPS runs per stage and in total, growth with size, and what
  * came out (triangles, bytes). Then the mesh alone for drawings made through pen events
  * (bench_draw: 5 cm samples, the kiosk's real input), whose tubes have many more rings.
+ * Last, the wind in model.glb (issue 26): export_glb against export_glb_wind (byte
+ * targets, the default; float targets) and export_skeleton against export_skeleton_wind,
+ * median times and sizes, on the demo (its trace replayed through the app, as drawn and
+ * in 3D), cherry and a 1,000-branch tree with 20 leaves a branch.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,6 +16,7 @@
 #include "bench_util.h"
 #include "buf.h"
 #include "export.h"
+#include "live_trees.h"
 #include "mesh.h"
 #include "synth_tree.h"
 #include "tree.h"
@@ -139,6 +144,96 @@ static int run_drawn(int nbranches, struct result *res)
 	return r;
 }
 
+/* One export of the wind bench: export_glb, export_glb_wind (bytes, floats), skeletons. */
+enum wind_op { STILL, WIND, FLOATS, SKEL_STILL, SKEL_WIND, NWIND_OPS };
+
+struct wind_job {
+	const struct tree *t;
+	struct tree_mesh tm;
+	struct tree_mesh_marks mk;
+	enum wind_op op;
+	size_t bytes;
+};
+
+static void wind_export(void *arg)
+{
+	struct wind_job *j = arg;
+	struct export_wind ew = { .strength = 0.0, .angle = EXPORT_WIND_ANGLE, .seed = 1,
+				  .floats = j->op == FLOATS };
+	struct buf b;
+	int r;
+
+	buf_init(&b);
+	if (j->op == STILL)
+		r = export_glb(j->t, &j->tm, &j->mk, &b);
+	else if (j->op == SKEL_STILL)
+		r = export_skeleton(j->t, &b);
+	else if (j->op == SKEL_WIND)
+		r = export_skeleton_wind(j->t, &ew, &b);
+	else
+		r = export_glb_wind(j->t, &j->tm, &j->mk, &ew, &b);
+	if (r < 0) {
+		fprintf(stderr, "bench_export: the wind's export failed: %d\n", r);
+		exit(1);
+	}
+	j->bytes = b.len;
+	buf_finish(&b);
+}
+
+static void wind_row(const char *name, const struct tree *t)
+{
+	struct wind_job j = { .t = t };
+	double ms[NWIND_OPS];
+	size_t bytes[NWIND_OPS];
+	int reps = bench_reps(REPS);
+
+	tree_mesh_init(&j.tm);
+	tree_mesh_marks_init(&j.mk);
+	if (tree_mesh_build_marked(&j.tm, t, &j.mk) < 0) {
+		fprintf(stderr, "bench_export: no memory\n");
+		exit(1);
+	}
+	for (int op = 0; op < NWIND_OPS; op++) {
+		j.op = (enum wind_op)op;
+		ms[op] = bench_run(wind_export, &j, reps) * 1e3;
+		bytes[op] = j.bytes;
+	}
+	printf("%-15s %7zu %9.2f %9.1f %9.2f %9.1f %5.0f%% %9.2f %9.1f %5.0f%% %7.2f %7.2f %6.1f\n",
+	       name, j.tm.bark.nvertices + j.tm.leaves.nvertices, ms[STILL], bytes[STILL] / 1e3,
+	       ms[WIND], bytes[WIND] / 1e3, 100.0 * (bytes[WIND] - bytes[STILL]) / bytes[STILL],
+	       ms[FLOATS], bytes[FLOATS] / 1e3,
+	       100.0 * (bytes[FLOATS] - bytes[STILL]) / bytes[STILL], ms[SKEL_STILL],
+	       ms[SKEL_WIND], (double)(bytes[SKEL_WIND] - bytes[SKEL_STILL]));
+	tree_mesh_marks_finish(&j.mk);
+	tree_mesh_finish(&j.tm);
+}
+
+static void run_wind(void)
+{
+	struct tree t;
+
+	printf("\nbench_export: the wind in model.glb, median of %d runs (ms, KB; + the wind's "
+	       "share of the still file)\n\n", bench_reps(REPS));
+	printf("%-15s %7s %9s %9s %9s %9s %6s %9s %9s %6s %7s %7s %6s\n", "tree", "verts",
+	       "still ms", "still KB", "wind ms", "wind KB", "+", "float ms", "float KB", "+",
+	       "skel ms", "+wind", "+bytes");
+	tree_init(&t);
+	live_trees_demo(&t, BENCH_DATA_DIR, false);
+	wind_row("demo (2D)", &t);
+	tree_clear(&t);
+	live_trees_demo(&t, BENCH_DATA_DIR, true);
+	wind_row("demo (3D)", &t);
+	tree_clear(&t);
+	live_trees_preset(&t, GEN_PRESET_CHERRY);
+	wind_row("cherry", &t);
+	if (!bench_quick) {
+		tree_clear(&t);
+		live_trees_random(&t, 1000, 20, SEED, 12.0);
+		wind_row("1,000 branches", &t);
+	}
+	tree_finish(&t);
+}
+
 int main(int argc, char **argv)
 {
 	static const int sizes[NSIZES] = { 100, 250, 500, 1000 };
@@ -204,5 +299,6 @@ int main(int argc, char **argv)
 		printf("%8zu %8zu %10zu %10zu %9.1f %10zu\n", drawn[i].branches, drawn[i].points,
 		       drawn[i].bark_tris, drawn[i].bark_verts,
 		       (double)drawn[i].bark_tris / (double)drawn[i].branches, drawn[i].leaf_tris);
+	run_wind();
 	return 0;
 }
