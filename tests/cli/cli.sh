@@ -306,7 +306,7 @@ t_vine() {
 # moment T s after the last input (the 3D press's release), the same picture every time; the
 # files are the settled tree's; without --idle the screen is the settled tree's, as a run
 # long after; a button pressed after it finishes the growth at once; a loaded 3D drawing
-# grows in too.
+# grows in too, its vine climbing after it.
 t_grow_in() {
 	run --out "$T/g" --replay "$DEMO" --press 3d
 	for s in 0.2 1.8 1.8b 30; do
@@ -334,6 +334,17 @@ t_grow_in() {
 	run --out "$T/l0" --load "$T/g/drawing.edaha"
 	cmp -s "$T/l/screen.png" "$T/l0/screen.png" && fail "a loaded 3D drawing does not grow in"
 	same_files "$T/l" "$T/l0" skeleton.json model.glb model.obj drawing.edaha
+	# its vines climb after it: none while it grows (the same picture as without the vine),
+	# the last one climbing after, grown in the end
+	run --out "$T/v" --replay "$DEMO" --press 3d --press vine --replay "$SRC/data/vine-tap.edaha-trace"
+	run --out "$T/l-2.5" --load "$T/g/drawing.edaha" --idle 2.5
+	run --out "$T/v-2.5" --load "$T/v/drawing.edaha" --idle 2.5
+	run --out "$T/v-4" --load "$T/v/drawing.edaha" --idle 4
+	run --out "$T/v-30" --load "$T/v/drawing.edaha" --idle 30
+	run --out "$T/v-settled" --load "$T/v/drawing.edaha"
+	same_files "$T/l-2.5" "$T/v-2.5" screen.png
+	cmp -s "$T/v-4/screen.png" "$T/v-30/screen.png" && fail "the vine does not climb after the tree"
+	same_files "$T/v-30" "$T/v-settled" screen.png
 	echo "a tree growing in: its moments repeatable, settled without --idle, finished by a press"
 }
 
