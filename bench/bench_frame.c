@@ -13,9 +13,10 @@
  * merged (one mesh of every leaf, as on GLES 2): the frame's time and draw calls, the
  * upload alone (what follows an edit: grouping the leaves included) and the bytes it
  * sends to the GPU. Then the main thread's CPU time a frame by leaf count, and on the
- * smallest tree what the labels cost: frames with and without them, interleaved. Last, the
+ * smallest tree what the labels cost: frames with and without them, interleaved. Then the
  * functional trees' presets in summer and in autumn; and 20,000 origami leaves of each
- * preset, at rest and unfolding.
+ * preset, at rest and unfolding. Last, the living tree (issue 26): still, growing in and in
+ * the wind, edaha's own CPU time a frame apart from the whole frame.
  */
 #include <GLES2/gl2.h>
 #include <errno.h>
@@ -25,6 +26,7 @@
 #include <time.h>
 
 #include "app.h"
+#include "app_private.h"
 #include "bench_util.h"
 #include "egl_headless.h"
 #include "font_file.h"
@@ -486,6 +488,154 @@ static int origami(struct bench *b)
 	return 0;
 }
 
+/*
+ * Issue 26, the living tree: trees of 62 and 1,000 branches with 20,000 leaves (synthetic,
+ * made 3D), still, growing in and in the wind at the default breeze, frames a 60th of a
+ * second apart. edaha's own work a frame: app_live_at (the front, the wind's frame) and
+ * the living program's uniforms (render_live_uniforms, the GL calls included), timed
+ * over 10,000 frames, the bytes a frame uploads and its draw calls; apart, the main
+ * thread's CPU in render_frame_at, which holds llvmpipe's vertex shading (Mesa's draw
+ * module runs the vertex shader on the calling thread; a board's GPU does it on the GPU),
+ * and the whole frame's wall time to glFinish. And what a change of the meshes costs once
+ * with the wind on: the upload with the vertices' data bound and packed, against the
+ * still upload.
+ */
+static const int live_trees[][2] = { { 62, 323 }, { 1000, 20 } };
+
+enum live_mode { LIVE_STILL, LIVE_GROWING, LIVE_WIND, LIVE_MODES };
+static const char *const live_names[] = { "still", "growing", "wind" };
+
+#define OWN_FRAMES 10000
+
+/* edaha's own per-frame work for the living tree, the frame's program in use: seconds a
+ * frame, and the bytes the last frame uploaded. */
+static double live_own(struct bench *b, uint64_t from, uint64_t dur)
+{
+	struct render *r = b->render;
+	int n = bench_quick ? 100 : OWN_FRAMES;
+	double t0;
+
+	if (!r->live.on)
+		return 0.0;
+	glUseProgram(r->live.merged.tree.program);
+	t0 = thread_cpu_s();
+	for (int k = 0; k < n; k++) {
+		(void)app_live_at(b->app, from + dur * (uint64_t)k / (uint64_t)n, &r->live.frame);
+		render_live_uniforms(r, &r->live.merged);
+	}
+	t0 = (thread_cpu_s() - t0) / n;
+	glUseProgram(0);
+	return t0;
+}
+
+static int live_frames(struct bench *b, enum live_mode m, double *cpu_s, double *wall_s,
+		       double *own_s, size_t *bytes)
+{
+	double cpu[FRAMES_MAX], wall[FRAMES_MAX];
+	uint64_t start = 1000000, dur;
+	int ret = app_set_wind(b->app, m == LIVE_WIND ? LIVE_WIND_DEFAULT_STRENGTH : 0.0);
+
+	if (ret == 0 && m == LIVE_GROWING)
+		ret = app_live_grow_start(b->app, start);
+	else
+		b->app->live.growing = false;
+	if (ret < 0)
+		return ret;
+	dur = m == LIVE_GROWING ? app_live_grow_end(b->app) - start : 6000000;
+	frame(b); /* the data bound and uploaded, as on the first frame after a change */
+	for (int k = 0; k < frames; k++) {
+		uint64_t now = start + dur * (uint64_t)(k + 1) / (uint64_t)(frames + 2);
+		struct app_live_frame f;
+		double t0 = thread_cpu_s(), w0 = bench_now();
+
+		/* the kiosk asks whether to keep drawing; the renderer asks again inside */
+		(void)app_live_at(b->app, now, &f);
+		if (render_frame_at(b->render, b->app, now) < 0)
+			return -EIO;
+		cpu[k] = thread_cpu_s() - t0;
+		glFinish();
+		wall[k] = bench_now() - w0;
+		if ((m != LIVE_STILL) != b->render->live.on)
+			return -EINVAL; /* not drawn as it should be */
+	}
+	*bytes = b->render->live.bytes + (b->render->stats.uploads ? b->render->upload_bytes : 0);
+	*cpu_s = bench_median(cpu, frames);
+	*wall_s = bench_median(wall, frames);
+	*own_s = live_own(b, start, dur);
+	return 0;
+}
+
+/* One change of the meshes with the wind on or off: its frame's main-thread CPU. */
+static int live_edit(struct bench *b, bool wind, double *cpu_s)
+{
+	double cpu[FRAMES_MAX];
+	int ret = app_set_wind(b->app, wind ? LIVE_WIND_DEFAULT_STRENGTH : 0.0);
+
+	b->app->live.growing = false;
+	for (int k = 0; k < frames && ret == 0; k++) {
+		double t0 = thread_cpu_s();
+
+		b->app->mesh_serial++;
+		ret = app_live_sync(b->app); /* the skeleton, as app.c makes it after an edit */
+		if (ret == 0 && render_frame_at(b->render, b->app, 2000000 + 16667 * (uint64_t)k) < 0)
+			ret = -EIO;
+		cpu[k] = thread_cpu_s() - t0;
+		glFinish();
+	}
+	*cpu_s = bench_median(cpu, frames);
+	return ret;
+}
+
+static int living(struct bench *b)
+{
+	printf("\nthe living tree (issue 26), median of %d frames: edaha's own work a frame "
+	       "(app_live_at and the uniforms, over %d frames; bytes uploaded), apart the main "
+	       "thread's CPU in render_frame_at and the whole frame with llvmpipe; leaves %s\n",
+	       frames, OWN_FRAMES,
+	       b->render->instanced ? "instanced (GLES 3)" : "merged (GLES 2)");
+	for (size_t i = 0; i < BENCH_COUNT(live_trees); i++) {
+		int nb = bench_quick ? 10 * (int)(i + 1) : live_trees[i][0];
+		int nl = bench_quick ? 5 : live_trees[i][1];
+		double cpu[LIVE_MODES], wall[LIVE_MODES], own[LIVE_MODES], edit[2];
+		size_t bytes[LIVE_MODES];
+		struct render_stats st;
+		struct tree t;
+		int r;
+
+		tree_init(&t);
+		r = synth_tree(&t, nb, nl, SEED);
+		t.lifted = true;
+		if (r == 0)
+			r = set_tree(b, &t);
+		tree_finish(&t);
+		for (int m = 0; m < LIVE_MODES && r == 0; m++)
+			r = live_frames(b, (enum live_mode)m, &cpu[m], &wall[m], &own[m], &bytes[m]);
+		render_get_stats(b->render, &st);
+		if (r == 0)
+			r = live_edit(b, false, &edit[0]);
+		if (r == 0)
+			r = live_edit(b, true, &edit[1]);
+		if (r < 0) {
+			fprintf(stderr, "bench_frame: the living tree on %d branches: %s\n", nb,
+				strerror(-r));
+			return r;
+		}
+		printf("  %4d branches, %6zu leaves, %7zu + %7zu vertices, %u draw calls:\n", nb,
+		       b->app->tree.nleaves, b->app->mesh.bark.nvertices,
+		       b->app->mesh.leaves.nvertices, st.draw_calls);
+		for (int m = 0; m < LIVE_MODES; m++)
+			printf("      %-8s edaha's own %6.3f us a frame, %zu bytes uploaded; main "
+			       "thread (with llvmpipe's vertex shading) %7.3f ms; whole frame %8.3f ms\n",
+			       live_names[m], 1e6 * own[m], bytes[m], 1e3 * cpu[m], 1e3 * wall[m]);
+		printf("      after a change of the meshes: frame CPU %.3f ms still, %.3f ms with "
+		       "the wind (the data bound, %.1f MB uploaded)\n", 1e3 * edit[0], 1e3 * edit[1],
+		       (double)b->render->live.bytes / 1e6);
+	}
+	(void)app_set_wind(b->app, 0.0);
+	tree_clear(&b->app->tree);
+	return 0;
+}
+
 int main(int argc, char **argv)
 {
 	struct bench b = { .now_us = UINT64_MAX };
@@ -571,6 +721,8 @@ int main(int argc, char **argv)
 	if (presets(&b) < 0)
 		goto out;
 	if (origami(&b) < 0)
+		goto out;
+	if (living(&b) < 0)
 		goto out;
 	status = 0;
 out:

@@ -291,6 +291,12 @@ int headless_run(const struct options *o)
 		status = 1;
 		goto out;
 	}
+	/* the screen's wind (headless: still unless --wind) */
+	if (o->wind > 0 && app_set_wind(r.app, o->wind) < 0) {
+		fprintf(stderr, "edaha: out of memory\n");
+		status = 1;
+		goto out;
+	}
 	status = load_traces(o, traces);
 	if (status == 0 && o->generate)
 		status = read_params(o->generate, &params);

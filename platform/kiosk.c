@@ -30,17 +30,35 @@ uint64_t kiosk_now_us(void)
 	return (uint64_t)ts.tv_sec * 1000000u + (uint64_t)ts.tv_nsec / 1000u;
 }
 
-/* Whether the next vblank should show a new frame. */
-static bool frame_due(const struct kiosk *k)
+/*
+ * Whether the next vblank should show a new frame. A tree that moves by itself (the wind,
+ * growing in) and nothing else new: at the display's rate, but no sooner than 1 /
+ * max_fps after the last frame began; *timeout_ms (poll's, -1: none) is lowered to when
+ * that is.
+ */
+static bool frame_due(const struct kiosk *k, int *timeout_ms)
 {
 	struct kiosk_look now;
+	uint64_t t = kiosk_now_us(), next;
 
 	/* the display asks for one when it came back (VT switch, replug) */
 	if (k->cfg.frames || !k->drawn_valid || k->animating || k->export_asked ||
 	    display_needs_frame(k->display))
 		return true;
-	kiosk_look_of(k->app, kiosk_now_us(), &now);
-	return !kiosk_look_equal(&now, &k->drawn);
+	kiosk_look_of(k->app, t, &now);
+	if (!kiosk_look_equal(&now, &k->drawn))
+		return true;
+	if (!k->living)
+		return false;
+	next = kiosk_living_next_us(k);
+	if (t >= next)
+		return true;
+	if (timeout_ms) {
+		int ms = (int)((next - t + 999) / 1000);
+
+		*timeout_ms = *timeout_ms < 0 || ms < *timeout_ms ? ms : *timeout_ms;
+	}
+	return false;
 }
 
 static void feed_from_display(void *data, const struct event *ev)
@@ -95,6 +113,8 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 		fputs("edaha: warning: the labels' font cannot be used: icons only\n", stderr);
 	k->cfg.font = NULL; /* the renderer's copy is the one that lasts */
 	k->app = app_create(w, h, cfg->doc ? cfg->doc->seed : cfg->seed);
+	if (k->app && kiosk_live_setup(k) < 0)
+		goto fail;
 	k->lat = calloc(1, sizeof(*k->lat));
 	k->frame_time = calloc(1, sizeof(*k->frame_time));
 	k->pending = calloc(KIOSK_MAX_PENDING, sizeof(*k->pending));
@@ -105,6 +125,8 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 	}
 	latency_init(k->lat);
 	latency_init(k->frame_time);
+	/* a drawing brought back grows in from the start, by the app's clock */
+	k->app->last_time_us = k->start_us;
 	if (cfg->doc) {
 		if (app_load_doc(k->app, cfg->doc) < 0) {
 			fputs("edaha: out of memory loading the drawing\n", stderr);
@@ -276,7 +298,7 @@ int kiosk_run(struct kiosk *k)
 		if (display_can_draw(k->display)) {
 			if (k->cfg.frames && k->frames >= k->cfg.frames)
 				break;
-			if (frame_due(k))
+			if (frame_due(k, &timeout))
 				kiosk_draw_frame(k);
 			else
 				k->npending = 0; /* pen events that changed nothing on the screen */
@@ -288,7 +310,7 @@ int kiosk_run(struct kiosk *k)
 			 * due now, but what came meanwhile is read first (poll without waiting),
 			 * or an animation that lasts until an event (a grow press waiting for its
 			 * worker) would never see it */
-			if (display_can_draw(k->display) && (k->cfg.frames || frame_due(k)))
+			if (display_can_draw(k->display) && (k->cfg.frames || frame_due(k, &timeout)))
 				timeout = 0;
 		}
 		/* an export while the display is away goes without its picture */

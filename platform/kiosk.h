@@ -20,6 +20,9 @@
  */
 struct kiosk;
 
+/* The most frames a second the kiosk draws while the tree moves by itself (kiosk.max_fps). */
+#define KIOSK_MAX_FPS_DEFAULT 30u
+
 struct kiosk_config {
 	struct display_config display; /* which display, and its settings */
 	uint64_t seed;          /* of a new drawing */
@@ -41,6 +44,13 @@ struct kiosk_config {
 	/* The last frame as a PNG: with frames, after them; otherwise the screen as it was
 	 * when the kiosk stopped (a signal). */
 	const char *screenshot;
+	/* The living tree (docs/living-trees.md): the wind's strength, 0..1 (0 still; below
+	 * 0: LIVE_WIND_DEFAULT_STRENGTH, a breeze); whether trees grow in when they become 3D
+	 * (grow_in_off: not); while the tree moves the kiosk draws at the display's rate, at
+	 * most max_fps frames a second (0: KIOSK_MAX_FPS_DEFAULT). */
+	double wind;
+	bool grow_in_off;
+	unsigned max_fps;
 	enum render_lang language; /* of the words on the screen */
 	const void *font;       /* the labels' font file's bytes, NULL: icons alone; */
 	size_t font_len;        /* the renderer keeps a copy */

@@ -22,6 +22,7 @@ int kiosk_open_usb(struct kiosk *k)
 	const struct usb_export_config uc = {
 		.usb = k->cfg.usb,
 		.helper_socket = k->cfg.usb_socket,
+		.wind = k->cfg.wind > 0 ? k->cfg.wind : 0.0, /* 0: the file's breeze */
 		.local_dir = k->cfg.export_dir && k->cfg.export_dir[0] ? k->cfg.export_dir : NULL,
 		.monitor = true,
 		.status = usb_status,

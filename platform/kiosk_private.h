@@ -81,6 +81,7 @@ struct kiosk {
 	struct kiosk_look drawn; /* what the screen shows */
 	bool drawn_valid;        /* false until the first frame */
 	bool animating;          /* the last frame was a step of the 3D turn */
+	bool living;             /* ...or the tree moved by itself (the wind, growing in) */
 	bool quit;
 	int status;
 	/* counts and times for the log line at the end */
@@ -119,6 +120,11 @@ bool kiosk_look_equal(const struct kiosk_look *a, const struct kiosk_look *b);
 bool kiosk_animating_at(const struct app *app, uint64_t now_us, bool turning);
 uint64_t kiosk_reset_at(const struct app *app, uint64_t reset_after_us);
 uint64_t kiosk_next_change(const struct app *app, uint64_t now_us, uint64_t reset_after_us);
+
+/* kiosk_live.c: the wind and growing in from the configuration (0, or -ENOMEM: said);
+ * when the next frame of a tree moving by itself is due (max_fps after the last began). */
+int kiosk_live_setup(struct kiosk *k);
+uint64_t kiosk_living_next_us(const struct kiosk *k);
 
 /* kiosk_frame.c */
 void kiosk_draw_frame(struct kiosk *k);

@@ -84,6 +84,9 @@ static int kiosk_main(const struct options *o)
 	cfg.state_dir = conf.kiosk.autosave ? conf.kiosk.state_dir : NULL;
 	cfg.reset_after_us = (uint64_t)conf.kiosk.reset_after_s * 1000000u;
 	cfg.archive_keep = (unsigned)conf.kiosk.archive_keep;
+	cfg.wind = o->wind >= 0 ? o->wind : conf.kiosk.wind;
+	cfg.grow_in_off = !conf.kiosk.grow_in;
+	cfg.max_fps = (unsigned)conf.kiosk.max_fps;
 	if (o->load) {
 		int ret = docfile_read(o->load, &doc, &err);
 

@@ -87,6 +87,8 @@ struct render *render_create(void)
 			  render_has_extension("GL_OES_element_index_uint");
 	/* a program that will not build leaves the merged leaves, as on GLES 2 */
 	r->instanced = render_gl_major_version() >= 3 && render_instanced_create(r) == 0;
+	/* without its programs the tree stands still (it said why) */
+	(void)render_live_create(r);
 	if (glGetError() != GL_NO_ERROR) {
 		fprintf(stderr, "render: GL error while setting up\n");
 		goto fail;
@@ -106,6 +108,7 @@ void render_destroy(struct render *r)
 	render_mesh_finish(&r->leaves);
 	render_vines_finish(r);
 	render_instanced_finish(r);
+	render_live_finish(r);
 	render_previews_finish(r);
 	render_text_finish(r);
 	glDeleteBuffers(1, &r->flat_vbo);
@@ -206,6 +209,7 @@ int render_upload_tree(struct render *r, const struct app *app)
 		return 0;
 	/* not marked uploaded until both succeed, so a failure is retried next frame */
 	r->uploaded = false;
+	r->live.tree_ok = false; /* the living data is bound again for the new meshes */
 	r->upload_bytes = 0;
 	ret = render_mesh_upload(&r->bark, &app->mesh.bark, r->uint_indices);
 	r->upload_bytes += r->bark.bytes;
@@ -233,6 +237,21 @@ int render_upload_tree(struct render *r, const struct app *app)
 	return 0;
 }
 
+/* The lit program for the tree, still or living, with the frame's matrix and light. */
+static void use_lit(struct render *r, bool tinted, const float mvp[16], const float light[3])
+{
+	if (r->live.on) {
+		render_live_use(r, tinted ? &r->live.merged_tinted : &r->live.merged, mvp, light);
+		return;
+	}
+	r->lit = tinted ? r->tinted
+			: (struct render_program_tree){ r->tree_program, r->tree_mvp, r->tree_color,
+							r->tree_light, r->tree_two_sided };
+	glUseProgram(r->lit.program);
+	glUniformMatrix4fv(r->lit.mvp, 1, GL_FALSE, mvp);
+	glUniform3fv(r->lit.light, 1, light);
+}
+
 /* The leaves in the tree's season: one colour (summer), a colour each (spring, autumn: the
  * tinted programs), or none (winter). */
 static void draw_leaves(struct render *r, const struct app *app, const float mvp[16],
@@ -243,26 +262,24 @@ static void draw_leaves(struct render *r, const struct app *app, const float mvp
 	if (!leaf_tint_uniform(app->tree.season, colour))
 		return;
 	if (!r->uploaded_tinted) {
-		glUniform1i(r->tree_two_sided, 1);
-		glUniform3fv(r->tree_color, 1, colour);
+		glUniform1i(r->lit.two_sided, 1);
+		glUniform3fv(r->lit.color, 1, colour);
 		if (r->uploaded_instanced) {
 			/* the leaves that are no shape's copies, merged; then a call a shape */
-			render_mesh_draw(r, &r->inst.loose);
+			render_live_draw(r, &r->inst.loose, &r->live.loose, false);
 			render_instanced_draw(r, mvp, light, colour, r->unfold, r->nunfold);
 		} else {
-			render_mesh_draw(r, &r->leaves);
+			render_live_draw(r, &r->leaves, &r->live.leaves, false);
 		}
 		return;
 	}
-	glUseProgram(r->tinted.program);
-	glUniformMatrix4fv(r->tinted.mvp, 1, GL_FALSE, mvp);
-	glUniform3fv(r->tinted.light, 1, light);
-	glUniform1i(r->tinted.two_sided, 1);
+	use_lit(r, true, mvp, light);
+	glUniform1i(r->lit.two_sided, 1);
 	if (r->uploaded_instanced) {
-		render_mesh_draw_tinted(r, &r->inst.loose);
+		render_live_draw(r, &r->inst.loose, &r->live.loose, true);
 		render_instanced_draw(r, mvp, light, NULL, r->unfold, r->nunfold);
 	} else {
-		render_mesh_draw_tinted(r, &r->leaves);
+		render_live_draw(r, &r->leaves, &r->live.leaves, true);
 	}
 }
 
@@ -293,23 +310,24 @@ static int draw_tree(struct render *r, const struct app *app, const struct camer
 	r2 = upload_wood(r, app);
 	if (ret == 0)
 		ret = r2;
+	/* the wind or a growth: the living programs, with the meshes' data bound when they
+	 * changed; otherwise the still ones, as always */
+	(void)render_live_begin(r, app, r->frame_us);
 
 	screen_clip_matrix(&app->screen, xf, mvp);
 	glEnable(GL_DEPTH_TEST);
 	glDepthFunc(GL_LESS);
 	glDisable(GL_BLEND);
-	glUseProgram(r->tree_program);
-	glUniformMatrix4fv(r->tree_mvp, 1, GL_FALSE, mvp);
-	glUniform3fv(r->tree_light, 1, light);
+	use_lit(r, false, mvp, light);
 	glEnableVertexAttribArray(ATTR_NORMAL);
 
 	/* branches are closed tubes: their back faces are never seen */
 	glEnable(GL_CULL_FACE);
 	glCullFace(GL_BACK);
-	glUniform1i(r->tree_two_sided, 0);
-	glUniform3fv(r->tree_color, 1, bark_color);
-	render_mesh_draw(r, &r->bark);
-	render_mesh_draw(r, &r->wood);
+	glUniform1i(r->lit.two_sided, 0);
+	glUniform3fv(r->lit.color, 1, bark_color);
+	render_live_draw(r, &r->bark, &r->live.bark, false);
+	render_live_draw(r, &r->wood, &r->live.wood, false);
 	r2 = render_vines_draw(r, app);
 	if (ret == 0)
 		ret = r2;

@@ -31,18 +31,25 @@
 	"attribute vec4 a_row2;\n"                                                         \
 	"varying vec3 v_normal;\n"                                                         \
 	RENDER_TINT_VS_DECLS                                                               \
+	RENDER_LIVE_VS_DECLS                                                               \
 	"void main() {\n"                                                                  \
 	RENDER_TINT_VS_PASS                                                                \
 	"	vec4 p = vec4(a_position, 1.0);\n"                                        \
 	"	vec3 world = vec3(dot(a_row0, p), dot(a_row1, p), dot(a_row2, p));\n"     \
 	"	v_normal = normalize(vec3(dot(a_row0.xyz, a_normal), dot(a_row1.xyz, a_normal),\n" \
 	"				  dot(a_row2.xyz, a_normal)));\n"                 \
+	"#ifdef LIVE\n"                                                                    \
+	"	world = live_move(world);\n"                                              \
+	"#endif\n"                                                                         \
 	"	gl_Position = u_mvp * vec4(world, 1.0);\n"                                \
 	"}\n"
 
 static const char instanced_vs[] = INSTANCED_VS;
 /* the colour of each instance comes per instance too (spring, autumn) */
 static const char instanced_tinted_vs[] = "#define TINT\n" INSTANCED_VS;
+/* the living leaves: a leaf's skeleton data per instance (render_live.c) */
+static const char instanced_live_vs[] = "#define LIVE\n" INSTANCED_VS;
+static const char instanced_live_tinted_vs[] = "#define LIVE\n#define TINT\n" INSTANCED_VS;
 
 #define MATRIX_BYTES (12 * sizeof(float))
 
@@ -52,6 +59,13 @@ int render_instanced_create(struct render *r)
 					       "a_row2", "a_tint" };
 	static const GLuint locations[] = { ATTR_POSITION, ATTR_NORMAL, ATTR_ROW0, ATTR_ROW0 + 1,
 					    ATTR_ROW0 + 2, ATTR_TINT };
+	static const char *const live_attribs[] = { "a_position", "a_normal", "a_row0", "a_row1",
+						    "a_row2", "a_tint", "a_live0", "a_live1",
+						    "a_phase", "a_flutter" };
+	static const GLuint live_locations[] = { ATTR_POSITION, ATTR_NORMAL, ATTR_ROW0,
+						 ATTR_ROW0 + 1, ATTR_ROW0 + 2, ATTR_TINT,
+						 ATTR_INST_LIVE, ATTR_INST_LIVE + 1,
+						 ATTR_INST_LIVE + 2, ATTR_INST_LIVE + 3 };
 	struct render_instanced *in = &r->inst;
 
 	leaf_instances_init(&in->li);
@@ -60,6 +74,18 @@ int render_instanced_create(struct render *r)
 	    !render_program_tree_init(&in->tinted, "instanced tinted leaves", instanced_tinted_vs,
 				      render_tinted_fs, attribs, locations, 6))
 		return -1;
+	/* without them, a tree with instanced leaves stands still (render_live_begin) */
+	if (render_program_tree_init(&in->live.tree, "instanced living leaves", instanced_live_vs,
+				     render_live_fs, live_attribs, live_locations, 10) &&
+	    render_program_tree_init(&in->live_tinted.tree, "instanced living tinted leaves",
+				     instanced_live_tinted_vs, render_live_tinted_fs, live_attribs,
+				     live_locations, 10)) {
+		render_live_program_locate(&in->live);
+		render_live_program_locate(&in->live_tinted);
+	} else {
+		glDeleteProgram(in->live.tree.program);
+		in->live.tree.program = 0;
+	}
 	return 0;
 }
 
@@ -87,8 +113,12 @@ void render_instanced_finish(struct render *r)
 	render_instanced_clear(r);
 	glDeleteProgram(r->inst.plain.program);
 	glDeleteProgram(r->inst.tinted.program);
+	glDeleteProgram(r->inst.live.tree.program);
+	glDeleteProgram(r->inst.live_tinted.tree.program);
 	r->inst.plain.program = 0;
 	r->inst.tinted.program = 0;
+	r->inst.live.tree.program = 0;
+	r->inst.live_tinted.tree.program = 0;
 }
 
 static int upload(struct render *r, const struct leaf_instances *li, const struct mesh *merged)
@@ -223,6 +253,8 @@ static void draw_range(struct render *r, const struct render_mesh *rm, size_t st
 		glVertexAttribPointer(ATTR_TINT, 3, GL_FLOAT, GL_FALSE, 0,
 				      (const char *)(uintptr_t)(start * 3 * sizeof(float)));
 	}
+	if (r->live.on)
+		render_live_pointers(r->live.instances.vbo, ATTR_INST_LIVE, start);
 	if (rm->indexed) {
 		glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, rm->indices);
 		glDrawElementsInstanced(GL_TRIANGLES, rm->count, GL_UNSIGNED_INT, NULL, (GLsizei)n);
@@ -274,13 +306,23 @@ void render_instanced_draw(struct render *r, const float mvp[16], const float li
 			   size_t nspans)
 {
 	struct render_instanced *in = &r->inst;
-	const struct render_program_tree *p = color ? &in->plain : &in->tinted;
+	const struct render_live_program *lp = color ? &in->live : &in->live_tinted;
+	const struct render_program_tree *p = r->live.on ? &lp->tree
+					      : color	   ? &in->plain
+							   : &in->tinted;
 
-	if (in->nshapes == 0)
+	if (in->nshapes == 0 || (r->live.on && !r->live.instances.ok))
 		return;
 	glUseProgram(p->program);
 	glUniformMatrix4fv(p->mvp, 1, GL_FALSE, mvp);
 	glUniform3fv(p->light, 1, light);
+	if (r->live.on) {
+		render_live_uniforms(r, lp);
+		for (GLuint i = 0; i < ATTR_LIVE_COUNT; i++) {
+			glEnableVertexAttribArray(ATTR_INST_LIVE + i);
+			glVertexAttribDivisor(ATTR_INST_LIVE + i, 1);
+		}
+	}
 	if (color)
 		glUniform3fv(p->color, 1, color);
 	glUniform1i(p->two_sided, 1);
@@ -304,5 +346,11 @@ void render_instanced_draw(struct render *r, const float mvp[16], const float li
 	if (!color) {
 		glVertexAttribDivisor(ATTR_TINT, 0);
 		glDisableVertexAttribArray(ATTR_TINT);
+	}
+	if (r->live.on) {
+		for (GLuint i = 0; i < ATTR_LIVE_COUNT; i++) {
+			glVertexAttribDivisor(ATTR_INST_LIVE + i, 0);
+			glDisableVertexAttribArray(ATTR_INST_LIVE + i);
+		}
 	}
 }

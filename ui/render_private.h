@@ -20,6 +20,7 @@
 #include "camera.h"
 #include "gen.h"
 #include "leaf_instances.h"
+#include "live.h"
 #include "ori.h"
 #include "render.h"
 #include "render_gl.h"
@@ -47,6 +48,12 @@ struct render_mesh {
 	size_t bytes;      /* uploaded by the last render_mesh_upload */
 };
 
+/* A living program (render_live.c): a lit program's uniforms and the frame's. */
+struct render_live_program {
+	struct render_program_tree tree;
+	GLint along, across, sway, dir, theta, amp_leaf, front, swell, wscale;
+};
+
 /*
  * Leaves drawn instanced (GLES 3, render_instanced.c): each shape leaf_instances finds
  * with copies is one mesh drawn once for all of them, each instance's 3x4 matrix a vertex
@@ -54,8 +61,9 @@ struct render_mesh {
  * as before with the tree program.
  */
 struct render_instanced {
-	/* plain (one colour) and tinted (a colour an instance, tints) */
+	/* plain (one colour) and tinted (a colour an instance, tints); and the living ones */
 	struct render_program_tree plain, tinted;
+	struct render_live_program live, live_tinted;
 	GLuint tints;
 	struct render_mesh shapes[LEAF_INSTANCES_MAX_SHAPES];
 	size_t first[LEAF_INSTANCES_MAX_SHAPES], count[LEAF_INSTANCES_MAX_SHAPES];
@@ -81,6 +89,35 @@ struct render_picture {
 };
 #define RENDER_PICTURES (ARRANGE_COUNT + GEN_PRESET_COUNT)
 
+/* A mesh's living data on the GPU (render_live.c), 32 bytes a vertex or an instance. */
+#define RENDER_LIVE_STRIDE 32
+struct render_live_data {
+	GLuint vbo;
+	bool ok; /* holds the data of the mesh it is for */
+};
+
+/* The living tree's programs and data (render_live.c). */
+struct render_live {
+	struct render_live_program merged, merged_tinted;
+	/* the data of the tree's meshes as uploaded (tree_ok: bound since the last upload),
+	 * of the wood's bark (wood_of at wood_serial) and of the vines (at vines_of) */
+	struct render_live_data bark, leaves, loose, instances, wood, vine[4];
+	bool tree_ok, wood_ok, vines_ok;
+	const struct mesh *wood_of;
+	uint64_t wood_serial, vines_of, vines_mesh_of;
+	float wscale[4];               /* the band weights' scales (the shader's u_wscale) */
+	struct app_live_frame frame;   /* this frame's */
+	bool on;                       /* this frame is drawn by the living programs */
+	size_t bytes;                  /* the data this frame uploaded */
+	/* scratch, kept between bindings */
+	struct live_attrs attrs;
+	struct live_vertex *gather;
+	size_t gather_cap;
+	void *packed;
+	size_t packed_cap;
+	bool *inst_mark;
+};
+
 struct render {
 	/* this frame's unfolding leaves (app_unfold_at) */
 	struct app_unfold_span unfold[APP_UNFOLD_MAX];
@@ -90,6 +127,9 @@ struct render {
 	GLint tree_mvp, tree_color, tree_light, tree_two_sided;
 	/* the same with a colour a vertex (ATTR_TINT): leaves in spring and autumn */
 	struct render_program_tree tinted;
+	/* the lit program the tree is being drawn with: the tree program, or a living one */
+	struct render_program_tree lit;
+	struct render_live live;
 	/* screen-space triangles, flat or showing the atlas's glyphs */
 	GLuint flat_program;
 	GLint flat_proj, flat_texel, flat_atlas;
@@ -150,6 +190,30 @@ int render_upload_tree(struct render *r, const struct app *app);
 extern const float render_vine_stem[3];
 int render_vines_draw(struct render *r, const struct app *app);
 void render_vines_finish(struct render *r);
+
+/*
+ * render_live.c: the living tree. create: the merged living programs (0, or -1: stderr
+ * says why; the tree then stands still); clear: the data's GPU copies; finish: all.
+ * begin: whether this frame is drawn living (the app's tree moves at now_us, its
+ * skeleton is the uploaded meshes' and their data is bound: bound here when they
+ * changed); vines: whether the vines are drawn (not while the tree grows in; their data
+ * bound when they changed). use: a living program in use with the frame's uniforms
+ * (r->lit its lit uniforms). draw: rm with its data d (the still way when the frame is
+ * not living). pointers: the data's four attributes from vbo at instance or vertex
+ * `first`, at locations base..base + 3.
+ */
+int render_live_create(struct render *r);
+void render_live_clear(struct render *r);
+void render_live_finish(struct render *r);
+void render_live_program_locate(struct render_live_program *p);
+bool render_live_begin(struct render *r, const struct app *app, uint64_t now_us);
+bool render_live_vines(struct render *r, const struct app *app);
+void render_live_uniforms(const struct render *r, const struct render_live_program *p);
+void render_live_use(struct render *r, const struct render_live_program *p, const float mvp[16],
+		     const float light[3]);
+void render_live_draw(struct render *r, const struct render_mesh *rm,
+		      const struct render_live_data *d, bool tinted);
+void render_live_pointers(GLuint vbo, GLuint base, size_t first);
 
 /* render_mesh.c */
 int render_mesh_upload(struct render_mesh *rm, const struct mesh *m, bool uint_indices);

@@ -113,20 +113,24 @@ int render_vines_draw(struct render *r, const struct app *app)
 	ret = vines_upload(r, app);
 	if (ret < 0)
 		return ret;
-	/* the stems are closed tubes, as the bark */
+	/* a tree growing in has its vines climb after it */
+	if (!render_live_vines(r, app))
+		return 0;
+	/* the stems are closed tubes, as the bark; drawn by the tree's lit program, still or
+	 * living */
 	glEnable(GL_CULL_FACE);
-	glUniform1i(r->tree_two_sided, 0);
-	glUniform3fv(r->tree_color, 1, render_vine_stem);
-	render_mesh_draw(r, &r->vine_stems);
-	render_mesh_draw(r, &r->grow_stems);
+	glUniform1i(r->lit.two_sided, 0);
+	glUniform3fv(r->lit.color, 1, render_vine_stem);
+	render_live_draw(r, &r->vine_stems, &r->live.vine[0], false);
+	render_live_draw(r, &r->grow_stems, &r->live.vine[2], false);
 	/* a vine's leaves in the tree's season's colour; in winter it has none, as the tree */
 	if (!leaf_tint_uniform(app->tree.season, leaf))
 		return 0;
 	glDisable(GL_CULL_FACE);
-	glUniform1i(r->tree_two_sided, 1);
-	glUniform3fv(r->tree_color, 1, leaf);
-	render_mesh_draw(r, &r->vine_leaves);
-	render_mesh_draw(r, &r->grow_leaves);
+	glUniform1i(r->lit.two_sided, 1);
+	glUniform3fv(r->lit.color, 1, leaf);
+	render_live_draw(r, &r->vine_leaves, &r->live.vine[1], false);
+	render_live_draw(r, &r->grow_leaves, &r->live.vine[3], false);
 	return 0;
 }
 

@@ -471,6 +471,16 @@ static int kiosk_pair(struct cfg_parser *p, const yaml_node_t *key, const char *
 	}
 	if (strcmp(k, "wind") == 0)
 		return get_fraction(p, v, "kiosk.wind", &p->c->kiosk.wind);
+	if (strcmp(k, "grow_in") == 0)
+		return get_bool(p, v, "kiosk.grow_in", &p->c->kiosk.grow_in);
+	if (strcmp(k, "max_fps") == 0) {
+		long n;
+		int r = get_int(p, v, "kiosk.max_fps", 1, CONFIG_MAX_FPS_MAX, &n);
+
+		if (r == 0)
+			p->c->kiosk.max_fps = (int)n;
+		return r;
+	}
 	warn_unknown(p, key, "kiosk");
 	return 0;
 }
@@ -552,6 +562,8 @@ void config_defaults(struct config *c)
 	c->kiosk.autosave = true;
 	c->kiosk.archive_keep = CONFIG_ARCHIVE_KEEP_DEFAULT;
 	c->kiosk.wind = LIVE_WIND_DEFAULT_STRENGTH;
+	c->kiosk.grow_in = true;
+	c->kiosk.max_fps = CONFIG_MAX_FPS_DEFAULT;
 }
 
 static int yaml_fail(struct cfg_parser *p, const yaml_parser_t *y, const char *data,

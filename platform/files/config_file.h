@@ -34,6 +34,8 @@
 #define CONFIG_RESET_S_MAX (7 * 86400)
 #define CONFIG_ARCHIVE_KEEP_DEFAULT 10000
 #define CONFIG_ARCHIVE_KEEP_MAX 1000000
+#define CONFIG_MAX_FPS_DEFAULT 30
+#define CONFIG_MAX_FPS_MAX 240
 
 enum config_language { CONFIG_LANG_EN = 0, CONFIG_LANG_JA };
 
@@ -83,6 +85,8 @@ struct config {
 		double wind;          /* the wind's strength, 0 (still) to 1; default
 				       * LIVE_WIND_DEFAULT_STRENGTH, a breeze. Exports sway at
 				       * it, or at the breeze where it is 0 */
+		bool grow_in;         /* a tree grows in when it becomes 3D */
+		int max_fps;          /* frames a second at most while the tree moves */
 	} kiosk;
 	struct {
 		bool enabled; /* save to USB sticks */

@@ -45,6 +45,7 @@ struct app *app_create(int width, int height, uint64_t seed)
 	tree_mesh_init(&app->growth.mesh);
 	wood_params_default(&app->wood_settings);
 	app->swell_start_us = UINT64_MAX;
+	app_live_init(app);
 	return app;
 }
 
@@ -66,6 +67,7 @@ void app_destroy(struct app *app)
 	vine_support_destroy(app->bark_index);
 	tree_mesh_finish(&app->vines_mesh);
 	tree_mesh_finish(&app->growth.mesh);
+	app_live_finish(app);
 	free(app->stroke.points);
 	free(app);
 }
@@ -94,6 +96,9 @@ int app_load_doc(struct app *app, struct doc *doc)
 	app->camera = app->doc.view; /* kept if the drawing is a 3D tree */
 	ret = app_rebuild(app);
 	r2 = app_vines_refresh(app);
+	ret = ret < 0 ? ret : r2;
+	/* a 3D drawing grows in as it comes on the screen */
+	r2 = app_live_loaded(app);
 	return ret < 0 ? ret : r2;
 }
 
@@ -113,12 +118,16 @@ int app_reset(struct app *app, uint64_t seed)
 
 int app_show_tree(struct app *app, struct tree *t)
 {
+	int ret, r2;
+
 	tree_finish(&app->tree);
 	app->tree = *t;
 	tree_init(t);
 	app_op_hooks_clear(app);
 	app->mesh_serial++;
-	return tree_mesh_build_marked(&app->mesh, &app->tree, &app->mesh_marks);
+	ret = tree_mesh_build_marked(&app->mesh, &app->tree, &app->mesh_marks);
+	r2 = app_live_sync(app);
+	return ret < 0 ? ret : r2;
 }
 
 /* Records an edit and applies it on top of the current tree (same result as a rebuild).
@@ -257,6 +266,8 @@ static int history_step(struct app *app, bool undo)
 	ret = undo ? app_undo(app) : app_redo(app);
 	if (ret == 0)
 		ret = app_vines_refresh(app);
+	if (ret == 0)
+		ret = app_live_sync(app);
 	return ret < 0 ? ret : app_refresh_mode_state(app);
 }
 
@@ -365,6 +376,8 @@ void app_handle_event(struct app *app, const struct event *ev)
 	struct app_side_item item;
 
 	app->last_time_us = ev->time_us;
+	/* a pen tip or a button put down finishes a tree growing in: nobody waits to draw */
+	app_live_input(app, ev);
 	switch (ev->type) {
 	case EVENT_PROXIMITY_IN:
 		update_pen(app, ev);

@@ -15,6 +15,7 @@
 #include "event.h"
 #include "gen.h"
 #include "history.h"
+#include "live.h"
 #include "mesh.h"
 #include "rng.h"
 #include "tree.h"
@@ -156,6 +157,36 @@ struct app_vine_growth {
 	struct tree_mesh mesh;        /* v as grown so far: stems (bark) and leaves */
 };
 
+/*
+ * The living tree (app_live.c, docs/living-trees.md): the wind, and a tree growing in from
+ * the trunk's foot when it becomes 3D, by the events' clock. The skeleton (live.h) is kept
+ * in step with the meshes (sk_of: the mesh_serial it is of) while the wind blows or a
+ * tree grows in; the renderer binds its meshes' vertices to it.
+ */
+/* The wind's direction at t = 0 (radians about y: +x, across the screen); it drifts. */
+#define APP_WIND_ANGLE 0.0
+struct app_live {
+	double strength;         /* the wind, 0..1; 0 (the default): still */
+	bool grow_in;            /* trees grow in (default true) */
+	bool growing;            /* a growth from grow_start_us, for grow_us */
+	uint64_t grow_start_us, grow_us;
+	struct live_grow grow;   /* its front */
+	struct live_skeleton sk; /* of the tree at mesh_serial sk_of, when sk_valid */
+	struct live_wind wind;   /* sk's, at strength */
+	bool sk_valid;
+	uint64_t sk_of;
+	/* a loaded drawing's vine op whose vine climbs once the growth ends (SIZE_MAX: none) */
+	size_t vine_op;
+};
+
+/* What the renderer's living programs need at a moment (app_live_at). */
+struct app_live_frame {
+	bool moving;  /* the wind blows or the tree grows in: drawn by the living programs */
+	bool growing; /* the tree grows in: no vine is drawn yet */
+	double front, swell;         /* the growth's front and swell (live_grow.c), metres */
+	struct live_wind_frame wind; /* all amplitudes 0 when still */
+};
+
 struct app {
 	struct screen screen; /* pixels <-> the sketch plane */
 	struct doc doc;       /* strokes, history, seed: what drawing.edaha holds */
@@ -228,6 +259,7 @@ struct app {
 	uint64_t status_us;
 	bool status_held;          /* shown until the next one, not for APP_STATUS_US */
 	uint32_t requests;
+	struct app_live live;      /* the wind and growing in (app_live.c) */
 	int failed; /* first negative errno from an allocation, sticky */
 };
 
@@ -276,6 +308,27 @@ int app_grow_done(struct app *app, struct tree *grown, uint64_t serial, uint64_t
 /* The wood's bark to show at now_us (UINT64_MAX: at rest): a frame of the last press's
  * swelling while it lasts, else the bark; NULL without wood. */
 const struct mesh *app_wood_bark_at(const struct app *app, uint64_t now_us);
+/*
+ * The living tree (app_live.c). app_set_wind: the wind's strength, 0..1 (0: still, the
+ * default; LIVE_WIND_DEFAULT_STRENGTH a breeze); 0, -EINVAL (outside 0..1: nothing
+ * changes) or -ENOMEM (the tree stands still until the next change). app_set_grow_in:
+ * whether a tree grows in when it becomes 3D (default true); off stops a growth.
+ */
+int app_set_wind(struct app *app, double strength);
+void app_set_grow_in(struct app *app, bool on);
+/*
+ * Whether the tree moves at now_us (UINT64_MAX, the settled view: never), and, out not
+ * NULL, what the living programs need then: the growth's front while the tree grows in
+ * (a pen tip or button put down finishes it), the wind's frame at its drifting angle.
+ * O(1): the same few numbers whatever the tree.
+ */
+bool app_live_at(const struct app *app, uint64_t now_us, struct app_live_frame *out);
+/* Whether the tree grows in at now_us; and when its growth ends (0: none runs). */
+bool app_live_growing_at(const struct app *app, uint64_t now_us);
+uint64_t app_live_grow_end(const struct app *app);
+/* The skeleton of the tree as meshed now (mesh_serial), or NULL when nothing lives (or
+ * it could not be made). */
+const struct live_skeleton *app_live_skeleton(const struct app *app);
 /* Turns a 3D tree's camera (as orbiting would). False, and nothing changes, for a sketch. */
 bool app_set_camera(struct app *app, struct camera c);
 /* The suggestion thumbnails shown, in order: how many, and their patterns. */

@@ -4,7 +4,7 @@
  * function that applies it (in its system's file: app_mode_*.c, app_generate.c,
  * app_vine.c, app_wood.c) and the facts app.c, app_history.c, app_generate.c and the
  * hooks ask. And the systems that follow every op (leaves unfolding, the bark swelling, a
- * vine growing), walked by app_push_op after each op and cleared when the tree changes
+ * vine growing, the tree growing in), walked by app_push_op after each op and cleared when the tree changes
  * otherwise. A new op kind is its apply function and a row here; a new system that
  * follows the ops is its hook and a line in app_op_hooks.
  */
@@ -14,7 +14,8 @@
 static const struct app_op_kind kinds[] = {
 	[DOC_OP_STROKE] = { .apply = app_stroke_apply },
 	[DOC_OP_NEW] = { .apply = app_new_apply, .replaces_tree = true },
-	[DOC_OP_LIFT] = { .apply = app_lift_apply, .edits_in_place = true, .replaces_tree = true },
+	[DOC_OP_LIFT] = { .apply = app_lift_apply, .edits_in_place = true, .replaces_tree = true,
+			  .grows_in = true },
 	[DOC_OP_CLONE_ADD] = { .apply = app_clone_add_apply },
 	[DOC_OP_CLONE_REMOVE] = { .apply = app_clone_remove_apply },
 	/* moves leaves, not branches */
@@ -22,7 +23,7 @@ static const struct app_op_kind kinds[] = {
 	[DOC_OP_PROPAGATE] = { .apply = app_propagate_apply },
 	/* a generated tree replaces every leaf */
 	[DOC_OP_GENERATE] = { .apply = app_generate_apply, .replaces_tree = true,
-			      .new_leaves = true },
+			      .new_leaves = true, .grows_in = true },
 	[DOC_OP_SEASON] = { .apply = app_season_apply, .keeps_wood = true, .setting_only = true },
 	[DOC_OP_LEAFTYPE] = { .apply = app_leaftype_apply, .keeps_wood = true,
 			      .setting_only = true },
@@ -45,6 +46,7 @@ static const struct app_op_hook *const hooks[] = {
 	&app_unfold_hook,
 	&app_wood_hook,
 	&app_vine_hook,
+	&app_live_hook,
 };
 
 size_t app_op_hooks(const struct app_op_hook *const **out)

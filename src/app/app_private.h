@@ -36,6 +36,8 @@ struct app_op_kind {
 	bool new_leaves;
 	/* Its bark swells on screen (a grow press). */
 	bool swells;
+	/* The tree becomes 3D by it: it grows in on screen (app_live.c). */
+	bool grows_in;
 };
 /* The row of kind; a kind without one applies as nothing (apply NULL). */
 const struct app_op_kind *app_op_kind(enum doc_op_kind kind);
@@ -58,6 +60,7 @@ struct app_op_hook {
 extern const struct app_op_hook app_unfold_hook;
 extern const struct app_op_hook app_wood_hook;
 extern const struct app_op_hook app_vine_hook;
+extern const struct app_op_hook app_live_hook;
 /* The hooks, in the order they run: how many, and the list in *out. */
 size_t app_op_hooks(const struct app_op_hook *const **out);
 /* Every hook's after_op: meshed, or the first hook's failure. */
@@ -84,6 +87,22 @@ int app_mesh_after_op(struct app *app, size_t nb, size_t nl, int applied);
  * -ENOMEM. */
 int app_undo(struct app *app);
 int app_redo(struct app *app);
+
+/* app_live.c: set up (grow_in on) and freed with the app; the skeleton and wind brought
+ * in step with the meshes while anything lives (0 or -ENOMEM: then nothing moves); a
+ * growth of the tree as it is from time_us (none unless 3D and grow_in); a loaded
+ * drawing's growth (its last vine to climb after it); an input that finishes a growth (a
+ * pen tip or a button put down), taken before the app handles it. */
+void app_live_init(struct app *app);
+void app_live_finish(struct app *app);
+int app_live_sync(struct app *app);
+int app_live_grow_start(struct app *app, uint64_t time_us);
+int app_live_loaded(struct app *app);
+/* The loaded drawing's last vine starts climbing once its growth ended by now_us (the
+ * settled view, UINT64_MAX, or a growth finished early: it shows grown); called before the
+ * vines advance. 0 or -ENOMEM. */
+int app_live_vines(struct app *app, uint64_t now_us);
+void app_live_input(struct app *app, const struct event *ev);
 
 /* app_unfold.c: new origami leaves unfolding, noted by app_unfold_hook; clear: the tree
  * changed otherwise (undo, redo, load). */

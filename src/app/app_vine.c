@@ -156,7 +156,8 @@ bool app_vines_advance(struct app *app, uint64_t now_us)
 	double until;
 	int ret;
 
-	if (app_vines_refresh(app) < 0)
+	/* a loaded drawing's vine climbs once its tree has grown in (app_live.c) */
+	if (app_live_vines(app, now_us) < 0 || app_vines_refresh(app) < 0)
 		app->failed = app->failed ? app->failed : -ENOMEM;
 	if (!g->on)
 		return false;

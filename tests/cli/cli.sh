@@ -302,6 +302,52 @@ t_vine() {
 	echo "a vine planted, replayed, grown on screen and exported"
 }
 
+# Issue 26: a tree made 3D grows in from its foot, by the events' time: --idle T shows the
+# moment T s after the last input (the 3D press's release), the same picture every time; the
+# files are the settled tree's; without --idle the screen is the settled tree's, as a run
+# long after; a button pressed after it finishes the growth at once; a loaded 3D drawing
+# grows in too, its vine climbing after it.
+t_grow_in() {
+	run --out "$T/g" --replay "$DEMO" --press 3d
+	for s in 0.2 1.8 1.8b 30; do
+		run --out "$T/g-$s" --replay "$DEMO" --press 3d --idle "${s%b}"
+	done
+	cmp -s "$T/g-1.8/screen.png" "$T/g-1.8b/screen.png" || fail "growing in is not repeatable"
+	cmp -s "$T/g-0.2/screen.png" "$T/g-1.8/screen.png" && fail "the tree does not grow"
+	cmp -s "$T/g/screen.png" "$T/g-1.8/screen.png" && fail "no growth 1.8 s after 3d"
+	same_files "$T/g" "$T/g-30" $OUTPUTS
+	same_files "$T/g" "$T/g-1.8" skeleton.json model.glb model.obj drawing.edaha
+	"$IMGCMP" "$SRC/golden/demo-3d-front.png" "$T/g/screen.png" ||
+		fail "the settled 3D tree differs from golden"
+	if [ -n "${EDAHA_UPDATE_GOLDEN:-}" ]; then
+		cp "$T/g-1.8/screen.png" "$SRC/golden/demo-grow.png"
+	else
+		"$IMGCMP" "$SRC/golden/demo-grow.png" "$T/g-1.8/screen.png" ||
+			fail "the growing demo tree differs from golden"
+	fi
+	# a button put down finishes it: the same as with no --idle
+	run --out "$T/f" --replay "$DEMO" --press 3d --press view --idle 1.2
+	run --out "$T/f0" --replay "$DEMO" --press 3d --press view
+	same_files "$T/f" "$T/f0" screen.png
+	# a loaded 3D drawing grows in from the start of the run
+	run --out "$T/l" --load "$T/g/drawing.edaha" --idle 0.5
+	run --out "$T/l0" --load "$T/g/drawing.edaha"
+	cmp -s "$T/l/screen.png" "$T/l0/screen.png" && fail "a loaded 3D drawing does not grow in"
+	same_files "$T/l" "$T/l0" skeleton.json model.glb model.obj drawing.edaha
+	# its vines climb after it: none while it grows (the same picture as without the vine),
+	# the last one climbing after, grown in the end
+	run --out "$T/v" --replay "$DEMO" --press 3d --press vine --replay "$SRC/data/vine-tap.edaha-trace"
+	run --out "$T/l-2.5" --load "$T/g/drawing.edaha" --idle 2.5
+	run --out "$T/v-2.5" --load "$T/v/drawing.edaha" --idle 2.5
+	run --out "$T/v-4" --load "$T/v/drawing.edaha" --idle 4
+	run --out "$T/v-30" --load "$T/v/drawing.edaha" --idle 30
+	run --out "$T/v-settled" --load "$T/v/drawing.edaha"
+	same_files "$T/l-2.5" "$T/v-2.5" screen.png
+	cmp -s "$T/v-4/screen.png" "$T/v-30/screen.png" && fail "the vine does not climb after the tree"
+	same_files "$T/v-30" "$T/v-settled" screen.png
+	echo "a tree growing in: its moments repeatable, settled without --idle, finished by a press"
+}
+
 t_exports_valid() {
 	run --out "$T/demo" --replay "$DEMO"
 	run --out "$T/demo3d" --replay "$DEMO" --press 3d

@@ -459,6 +459,8 @@ static void test_turn(void)
 	pen_line(app, &t, 140, 184, 140, 60);
 	pen_line(app, &t, 140, 130, 200, 90);
 	pen_line(app, &t, 140, 110, 90, 70);
+	/* the turn alone (the growing in that comes with it: live_scene.c's tests) */
+	app_set_grow_in(app, false);
 	t0 = press.time_us = t;
 	app_handle_event(app, &press);
 	CHECK(app->tree.lifted && app->turning);

@@ -20,6 +20,13 @@ enum {
 	ATTR_ROW0 = 2,   /* instanced leaves: the rows of each instance's 3x4 matrix, 2..4 */
 	ATTR_UV = 5,     /* flat program: the atlas texel; clear of the instanced rows */
 	ATTR_TINT = 6,   /* tinted programs: a leaf's colour, per vertex or per instance */
+	/* The living programs' vertex data (a_live0, a_live1, a_phase, a_flutter): per vertex
+	 * in the places of the instanced rows and the atlas texel, which they do not read,
+	 * so that the merged ones need no more than GLES 2's 8 attributes; per instance
+	 * after the tint (GLES 3 has 16). */
+	ATTR_LIVE = 2,
+	ATTR_INST_LIVE = 7,
+	ATTR_LIVE_COUNT = 4,
 };
 
 /* A lit program: the tree program's uniforms. */

@@ -14,10 +14,15 @@
 	"attribute vec3 a_normal;\n"                                                       \
 	"varying vec3 v_normal;\n"                                                         \
 	RENDER_TINT_VS_DECLS                                                               \
+	RENDER_LIVE_VS_DECLS                                                               \
 	"void main() {\n"                                                                  \
 	"	v_normal = a_normal;\n"                                                   \
 	RENDER_TINT_VS_PASS                                                                \
+	"#ifdef LIVE\n"                                                                    \
+	"	gl_Position = u_mvp * vec4(live_move(a_position), 1.0);\n"                \
+	"#else\n"                                                                          \
 	"	gl_Position = u_mvp * vec4(a_position, 1.0);\n"                           \
+	"#endif\n"                                                                         \
 	"}\n"
 
 #define TREE_FS                                                                            \
@@ -32,7 +37,15 @@
 	"uniform vec3 u_light;\n"                                                          \
 	"uniform bool u_two_sided;\n"                                                      \
 	"varying vec3 v_normal;\n"                                                         \
+	"#ifdef LIVE\n"                                                                    \
+	"varying float v_front;\n"                                                         \
+	"#endif\n"                                                                         \
 	"void main() {\n"                                                                  \
+	/* growing in: nothing past the front */                                           \
+	"#ifdef LIVE\n"                                                                    \
+	"	if (v_front < 0.0)\n"                                                     \
+	"		discard;\n"                                                     \
+	"#endif\n"                                                                         \
 	"	vec3 n = normalize(v_normal);\n"                                          \
 	/* a leaf seen from behind is lit like its front */                                \
 	"	if (u_two_sided && !gl_FrontFacing)\n"                                    \
@@ -45,6 +58,10 @@ const char render_tree_vs[] = TREE_VS;
 const char render_tinted_vs[] = "#define TINT\n" TREE_VS;
 const char render_tree_fs[] = TREE_FS;
 const char render_tinted_fs[] = "#define TINT\n" TREE_FS;
+const char render_live_vs[] = "#define LIVE\n" TREE_VS;
+const char render_live_tinted_vs[] = "#define LIVE\n#define TINT\n" TREE_VS;
+const char render_live_fs[] = "#define LIVE\n" TREE_FS;
+const char render_live_tinted_fs[] = "#define LIVE\n#define TINT\n" TREE_FS;
 
 /* Warm paper, like the sheet a child would draw on. */
 const float render_paper[3] = { 0.975f, 0.953f, 0.898f };

@@ -15,6 +15,13 @@ extern const char render_tree_vs[];
 extern const char render_tree_fs[];
 extern const char render_tinted_vs[];
 extern const char render_tinted_fs[];
+/* The living programs (LIVE defined; docs/living-trees.md, "The shader"): the same with
+ * each vertex moved by the wind and the growth's pull (RENDER_LIVE_VS_DECLS) and, past the
+ * growth's front, not drawn. */
+extern const char render_live_vs[];
+extern const char render_live_tinted_vs[];
+extern const char render_live_fs[];
+extern const char render_live_tinted_fs[];
 
 /* The paper behind every picture. */
 extern const float render_paper[3];
@@ -29,4 +36,45 @@ extern const float render_paper[3];
 #define RENDER_TINT_VS_PASS                                                                \
 	"#ifdef TINT\n"                                                                    \
 	"	v_tint = a_tint;\n"                                                       \
+	"#endif\n"
+
+/*
+ * What the living vertex shaders (LIVE defined) declare: a vertex's skeleton data
+ * (render_live.c packs it: a_live0 the skeleton point and its path length d, a_live1 the
+ * band weights w0..w3 as normalised shorts times u_wscale, a_phase the leaf's and bands'
+ * phases in 1/256 turns, a_flutter the leaf's flutter direction x 127) and the frame's
+ * uniforms (app_live_at). live_move(p) is where the vertex at rest at p is drawn: pulled
+ * towards its skeleton point behind the growth's front (exactly p a swell behind it) plus
+ * the wind, the sum live_wind_frame_offset computes (src/live/live_wind.c), its leaf
+ * distance taken from p. v_front < 0: past the front, not drawn (the fragment shader).
+ */
+#define RENDER_LIVE_VS_DECLS                                                               \
+	"#ifdef LIVE\n"                                                                    \
+	"uniform vec3 u_along;\n"                                                          \
+	"uniform vec3 u_across;\n"                                                         \
+	"uniform vec2 u_sway;\n"                                                           \
+	"uniform vec3 u_dir[3];\n"                                                         \
+	"uniform vec4 u_theta;\n"                                                          \
+	"uniform float u_amp_leaf;\n"                                                      \
+	"uniform float u_front;\n"                                                         \
+	"uniform float u_swell;\n"                                                         \
+	"uniform vec4 u_wscale;\n"                                                         \
+	"attribute vec4 a_live0;\n"                                                        \
+	"attribute vec4 a_live1;\n"                                                        \
+	"attribute vec4 a_phase;\n"                                                        \
+	"attribute vec4 a_flutter;\n"                                                      \
+	"varying float v_front;\n"                                                         \
+	"vec3 live_move(vec3 p) {\n"                                                       \
+	"	float k = 6.283185307179586 / 256.0;\n"                                    \
+	"	vec4 w = a_live1 * u_wscale;\n"                                            \
+	"	vec3 wind = w.x * (u_sway.x * u_along + u_sway.y * u_across)\n"            \
+	"		+ w.y * sin(u_theta.x + a_phase.y * k) * u_dir[0]\n"             \
+	"		+ w.z * sin(u_theta.y + a_phase.z * k) * u_dir[1]\n"             \
+	"		+ w.w * sin(u_theta.z + a_phase.w * k) * u_dir[2]\n"             \
+	"		+ u_amp_leaf * length(p - a_live0.xyz)\n"                        \
+	"		  * sin(u_theta.w + a_phase.x * k) * (a_flutter.xyz / 127.0);\n" \
+	"	float f = smoothstep(0.0, u_swell, u_front - a_live0.w);\n"                \
+	"	v_front = u_front - a_live0.w;\n"                                          \
+	"	return p * f + a_live0.xyz * (1.0 - f) + wind;\n"                          \
+	"}\n"                                                                              \
 	"#endif\n"
