@@ -38,6 +38,8 @@ static void check_defaults(const struct config *c)
 	CHECK_INT(c->kiosk.attract_after_s, CONFIG_ATTRACT_S_DEFAULT);
 	CHECK(strcmp(c->kiosk.export_dir, CONFIG_EXPORT_DIR_DEFAULT) == 0);
 	CHECK(c->kiosk.wind == LIVE_WIND_DEFAULT_STRENGTH);
+	CHECK(c->kiosk.grow_in);
+	CHECK_INT(c->kiosk.max_fps, CONFIG_MAX_FPS_DEFAULT);
 	CHECK(c->usb.enabled);
 	CHECK(strcmp(c->usb.helper_socket, CONFIG_USB_SOCKET_DEFAULT) == 0);
 	CHECK(c->font[0] == '\0');
@@ -174,6 +176,17 @@ static void test_good(const char *dir)
 	static const char word[] = "kiosk:\n  wind: strong\n";
 	CHECK_INT(config_parse(word, strlen(word), "word", &c, NULL, &err), -EINVAL);
 	CHECK(strstr(err.msg, "word:2:") && strstr(err.msg, "is not a number"));
+	/* growing in and the frame cap (issue 26) */
+	static const char live[] = "kiosk:\n  grow_in: false\n  max_fps: 60\n";
+	CHECK_INT(config_parse(live, strlen(live), "live", &c, NULL, &err), 0);
+	CHECK(!c.kiosk.grow_in);
+	CHECK_INT(c.kiosk.max_fps, 60);
+	static const char fast[] = "kiosk:\n  max_fps: 1000\n";
+	CHECK_INT(config_parse(fast, strlen(fast), "fast", &c, NULL, &err), -EINVAL);
+	CHECK(strstr(err.msg, "fast:2:") && strstr(err.msg, "kiosk.max_fps"));
+	static const char maybe[] = "kiosk:\n  grow_in: maybe\n";
+	CHECK_INT(config_parse(maybe, strlen(maybe), "maybe", &c, NULL, &err), -EINVAL);
+	CHECK(strstr(err.msg, "maybe:2:") && strstr(err.msg, "kiosk.grow_in"));
 	static const char mode[] = "display:\n  mode: 800x480\n";
 	CHECK_INT(config_parse(mode, strlen(mode), "mode", &c, NULL, &err), 0);
 	CHECK_INT(c.display.mode_w, 800);
