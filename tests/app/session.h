@@ -8,6 +8,7 @@
 #include "app.h"
 #include "pen.h"
 #include "rng.h"
+#include "same.h"
 #include "test.h"
 
 /*
@@ -22,10 +23,6 @@
 
 /* d: a copy of src's ops, cursor and view, to load into another app. */
 void session_copy_doc(struct doc *d, const struct doc *src);
-/* The same vertices, normals and indices, bit for bit. */
-void session_same_mesh(const struct mesh *a, const struct mesh *b);
-/* The same tree: every field of its branches and leaves, its wood and its vines. */
-void session_same_tree(const struct tree *a, const struct tree *b);
 
 /* A stroke of n pen events from (x0, y0) to (x1, y1), wavering a little; the clock then
  * moves on pause_us more. */

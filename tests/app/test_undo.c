@@ -54,12 +54,12 @@ static void same_as_replay(const struct app *a, bool mesh_may_be_empty)
 {
 	struct app *b = loaded(a);
 
-	session_same_tree(&a->tree, &b->tree);
+	same_tree(&a->tree, &b->tree);
 	SAME(a->rng, b->rng);
 	SAME(a->camera, b->camera);
 	if (!(mesh_may_be_empty && a->mesh.bark.nvertices == 0 && a->mesh.leaves.nvertices == 0)) {
-		session_same_mesh(&a->mesh.bark, &b->mesh.bark);
-		session_same_mesh(&a->mesh.leaves, &b->mesh.leaves);
+		same_mesh(&a->mesh.bark, &b->mesh.bark);
+		same_mesh(&a->mesh.leaves, &b->mesh.leaves);
 	}
 	if (!a->tree.lifted) {
 		/* a sketch is drawn on (the New strip may be open on an empty canvas) */

@@ -45,11 +45,11 @@ static void same_as_replay(const struct app *a)
 	session_copy_doc(&d, &a->doc);
 	CHECK_INT(app_load_doc(ref, &d), 0);
 	doc_finish(&d);
-	session_same_tree(&a->tree, &ref->tree);
+	same_tree(&a->tree, &ref->tree);
 	SAME(a->rng, ref->rng);
 	SAME(a->camera, ref->camera);
-	session_same_mesh(&a->mesh.bark, &ref->mesh.bark);
-	session_same_mesh(&a->mesh.leaves, &ref->mesh.leaves);
+	same_mesh(&a->mesh.bark, &ref->mesh.bark);
+	same_mesh(&a->mesh.leaves, &ref->mesh.leaves);
 	states++;
 }
 

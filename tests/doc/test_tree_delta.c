@@ -18,58 +18,13 @@
 #include "rng.h"
 #include "synth_tree.h"
 #include "synth_wood.h"
+#include "same.h"
 #include "test.h"
 #include "tree_delta.h"
 #include "vine.h"
 #include "wood.h"
 
 static long swaps, stashed_parts, built_parts, kept_parts;
-
-#define SAME(a, b) CHECK(memcmp(&(a), &(b), sizeof(a)) == 0)
-
-static void same_tree(const struct tree *a, const struct tree *b)
-{
-	CHECK_INT(a->nbranches, b->nbranches);
-	CHECK_INT(a->nleaves, b->nleaves);
-	for (size_t i = 0; i < a->nbranches; i++) {
-		const struct branch *x = &a->branches[i], *y = &b->branches[i];
-
-		CHECK_INT(x->id, y->id);
-		CHECK_INT(x->parent, y->parent);
-		SAME(x->parent_t, y->parent_t);
-		CHECK_INT(x->generation, y->generation);
-		CHECK_INT(x->level, y->level);
-		CHECK_INT(x->origin, y->origin);
-		CHECK_INT(x->npoints, y->npoints);
-		CHECK(memcmp(x->points, y->points, x->npoints * sizeof(*x->points)) == 0);
-		CHECK(memcmp(x->radii, y->radii, x->npoints * sizeof(*x->radii)) == 0);
-	}
-	for (size_t i = 0; i < a->nleaves; i++) {
-		const struct leaf *x = &a->leaves[i], *y = &b->leaves[i];
-
-		CHECK_INT(x->id, y->id);
-		CHECK_INT(x->branch, y->branch);
-		SAME(x->branch_t, y->branch_t);
-		CHECK_INT(x->kind, y->kind);
-		CHECK_INT(x->origin, y->origin);
-		CHECK_INT(x->npoints, y->npoints);
-		CHECK(memcmp(x->points, y->points, x->npoints * sizeof(*x->points)) == 0);
-		CHECK((x->local == NULL) == (y->local == NULL));
-		CHECK(!x->local || memcmp(x->local, y->local, x->npoints * sizeof(*x->local)) == 0);
-	}
-	CHECK_INT(a->nvines, b->nvines);
-	for (size_t i = 0; i < a->nvines; i++)
-		SAME(a->vines[i].plant, b->vines[i].plant);
-}
-
-static void same_mesh(const struct mesh *a, const struct mesh *b)
-{
-	CHECK_INT(a->nvertices, b->nvertices);
-	CHECK_INT(a->nindices, b->nindices);
-	CHECK(!a->nvertices || memcmp(a->positions, b->positions, a->nvertices * 3 * sizeof(float)) == 0);
-	CHECK(!a->nvertices || memcmp(a->normals, b->normals, a->nvertices * 3 * sizeof(float)) == 0);
-	CHECK(!a->nindices || memcmp(a->indices, b->indices, a->nindices * sizeof(uint32_t)) == 0);
-}
 
 static void copy(struct tree *dst, const struct tree *src)
 {
