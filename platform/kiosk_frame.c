@@ -194,10 +194,12 @@ void kiosk_print_stats(struct kiosk *k, FILE *f)
 
 	if (!k->frames)
 		return;
-	/* the kiosk draws only on change: frames/s means something with --kiosk-frames only */
+	/* a still kiosk draws only on change: frames/s means something with --kiosk-frames
+	 * or while the tree moves by itself (the wind) */
 	fprintf(f, "edaha: %lu frame%s; first on screen %.1f ms after start", k->frames,
 		k->frames == 1 ? "" : "s", first_ms);
-	if (k->cfg.frames && k->frames > 1 && k->last_frame_us > k->first_frame_us)
+	if ((k->cfg.frames || k->app->live.strength > 0.0) && k->frames > 1 &&
+	    k->last_frame_us > k->first_frame_us)
 		fprintf(f, "; %.1f frames/s after it",
 			(double)(k->frames - 1) * 1e6 / (double)(k->last_frame_us - k->first_frame_us));
 	fprintf(f, "; drawing to on screen: median %.1f ms, p90 %.1f ms, max %.1f ms\n",

@@ -14,6 +14,9 @@ TEST_PKGS="clang libclang-rt-14-dev assimp-utils
 # numpy for the importer: 150 packages, 168 MB to download, 633 MB installed on a machine
 # that has the rest
 TEST_PKGS+=" blender python3-numpy"
+# tests/export/threejs.sh: three.js (Debian's libjs-three) plays the same wind in headless
+# Chromium
+TEST_PKGS+=" chromium libjs-three"
 
 deps_install() {
 	local missing=() p

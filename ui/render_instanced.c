@@ -9,6 +9,7 @@
 #include <errno.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "leaf_instances.h"
@@ -105,12 +106,18 @@ void render_instanced_clear(struct render *r)
 	in->matrices = 0;
 	in->tints = 0;
 	in->nshapes = 0;
+	render_instanced_grow_drop(r);
 	leaf_instances_finish(&in->li);
 }
 
 void render_instanced_finish(struct render *r)
 {
 	render_instanced_clear(r);
+	free(r->inst.grow_order);
+	free(r->inst.grow_d);
+	r->inst.grow_order = NULL;
+	r->inst.grow_d = NULL;
+	r->inst.grow_cap = 0;
 	glDeleteProgram(r->inst.plain.program);
 	glDeleteProgram(r->inst.tinted.program);
 	glDeleteProgram(r->inst.live.tree.program);
@@ -231,9 +238,10 @@ int render_instanced_upload(struct render *r, const struct tree *t, const struct
 	return ret;
 }
 
-/* Instances [start, start + n) of the shapes' matrices (and tints) drawn with mesh rm. */
+/* Instances [start, start + n) of the shapes' matrices (and tints) drawn with mesh rm;
+ * grown: of the growth's copies, in its order (render_instanced_grow.c). */
 static void draw_range(struct render *r, const struct render_mesh *rm, size_t start, size_t n,
-		       bool tinted)
+		       bool tinted, bool grown)
 {
 	struct render_instanced *in = &r->inst;
 	const char *at = (const char *)(uintptr_t)(start * MATRIX_BYTES);
@@ -244,17 +252,18 @@ static void draw_range(struct render *r, const struct render_mesh *rm, size_t st
 	glVertexAttribPointer(ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 0, NULL);
 	glBindBuffer(GL_ARRAY_BUFFER, rm->normals);
 	glVertexAttribPointer(ATTR_NORMAL, 3, GL_FLOAT, GL_FALSE, 0, NULL);
-	glBindBuffer(GL_ARRAY_BUFFER, in->matrices);
+	glBindBuffer(GL_ARRAY_BUFFER, grown ? in->grow_matrices : in->matrices);
 	for (GLuint i = 0; i < 3; i++)
 		glVertexAttribPointer(ATTR_ROW0 + i, 4, GL_FLOAT, GL_FALSE, MATRIX_BYTES,
 				      at + 4 * sizeof(float) * i);
 	if (tinted) {
-		glBindBuffer(GL_ARRAY_BUFFER, in->tints);
+		glBindBuffer(GL_ARRAY_BUFFER, grown ? in->grow_tints : in->tints);
 		glVertexAttribPointer(ATTR_TINT, 3, GL_FLOAT, GL_FALSE, 0,
 				      (const char *)(uintptr_t)(start * 3 * sizeof(float)));
 	}
 	if (r->live.on)
-		render_live_pointers(r->live.instances.vbo, ATTR_INST_LIVE, start);
+		render_live_pointers(grown ? r->live.grow_instances.vbo : r->live.instances.vbo,
+				     ATTR_INST_LIVE, start);
 	if (rm->indexed) {
 		glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, rm->indices);
 		glDrawElementsInstanced(GL_TRIANGLES, rm->count, GL_UNSIGNED_INT, NULL, (GLsizei)n);
@@ -281,24 +290,67 @@ static size_t first_from(const struct leaf_instances *li, size_t from, size_t to
 	return from;
 }
 
+/* The first of the growth's instances [from, to) whose d is past `bound` (grow_d rises). */
+static size_t first_past(const float *d, size_t from, size_t to, double bound)
+{
+	while (from < to) {
+		size_t mid = from + (to - from) / 2;
+
+		if (d[mid] <= bound)
+			from = mid + 1;
+		else
+			to = mid;
+	}
+	return from;
+}
+
+/* An origami shape while the tree grows in: the leaves the front passed long enough ago
+ * at rest, the others at the keyframe their pull has reached, unscaled (u_unfolding), and
+ * none past the front. A few binary searches, whatever the number of leaves. */
+static void draw_growing(struct render *r, size_t k, bool tinted, GLint unfolding)
+{
+	struct render_instanced *in = &r->inst;
+	const struct app_live_frame *f = &r->live.frame;
+	double bound[ORI_UNFOLD_FRAMES + 1];
+	size_t at = in->first[k], end = in->first[k] + in->count[k], hi;
+
+	live_grow_unfold_bounds(f->front, f->swell, ORI_UNFOLD_FRAMES, bound);
+	glUniform1f(unfolding, 1.0f);
+	hi = first_past(in->grow_d, at, end, bound[ORI_UNFOLD_FRAMES]);
+	draw_range(r, &in->shapes[k], at, hi - at, tinted, true);
+	for (unsigned j = ORI_UNFOLD_FRAMES; j-- > 0;) {
+		size_t lo = hi;
+
+		hi = first_past(in->grow_d, lo, end, bound[j]);
+		draw_range(r, &in->frames[k][j], lo, hi - lo, tinted, true);
+	}
+	glUniform1f(unfolding, 0.0f);
+}
+
 /* Shape k's instances: at rest with its mesh, those of unfolding leaves with the
- * keyframe their span is at (a shape without keyframes draws them all at rest). */
+ * keyframe their span is at (a shape without keyframes draws them all at rest); while
+ * the tree grows in, an origami shape's by the growth (draw_growing). */
 static void draw_shape(struct render *r, size_t k, const struct app_unfold_span *spans,
-		       size_t nspans, bool tinted)
+		       size_t nspans, bool tinted, GLint unfolding)
 {
 	struct render_instanced *in = &r->inst;
 	size_t at = in->first[k], end = in->first[k] + in->count[k];
 
+	if (r->live.on && r->live.frame.growing && in->grow_ok && in->has_frames[k] &&
+	    r->live.grow_instances.ok) {
+		draw_growing(r, k, tinted, unfolding);
+		return;
+	}
 	for (size_t s = 0; s < nspans && in->has_frames[k]; s++) {
 		size_t lo = first_from(&in->li, at, end, spans[s].first);
 		size_t hi = first_from(&in->li, lo, end, spans[s].end);
 		unsigned f = spans[s].frame < ORI_UNFOLD_FRAMES ? spans[s].frame : 0;
 
-		draw_range(r, &in->shapes[k], at, lo - at, tinted);
-		draw_range(r, &in->frames[k][f], lo, hi - lo, tinted);
+		draw_range(r, &in->shapes[k], at, lo - at, tinted, false);
+		draw_range(r, &in->frames[k][f], lo, hi - lo, tinted, false);
 		at = hi;
 	}
-	draw_range(r, &in->shapes[k], at, end - at, tinted);
+	draw_range(r, &in->shapes[k], at, end - at, tinted, false);
 }
 
 void render_instanced_draw(struct render *r, const float mvp[16], const float light[3],
@@ -336,7 +388,7 @@ void render_instanced_draw(struct render *r, const float mvp[16], const float li
 		glVertexAttribDivisor(ATTR_TINT, 1);
 	}
 	for (size_t k = 0; k < in->nshapes; k++)
-		draw_shape(r, k, spans, nspans, !color);
+		draw_shape(r, k, spans, nspans, !color, lp->unfolding);
 	glBindBuffer(GL_ARRAY_BUFFER, 0);
 	/* the other programs read attributes 0 and 1 only, per vertex */
 	for (GLuint i = 0; i < 3; i++) {

@@ -48,6 +48,7 @@ void render_live_program_locate(struct render_live_program *p)
 	p->front = glGetUniformLocation(g, "u_front");
 	p->swell = glGetUniformLocation(g, "u_swell");
 	p->wscale = glGetUniformLocation(g, "u_wscale");
+	p->unfolding = glGetUniformLocation(g, "u_unfolding");
 }
 
 int render_live_create(struct render *r)
@@ -78,7 +79,7 @@ void render_live_clear(struct render *r)
 	struct render_live *l = &r->live;
 	struct render_live_data *all[] = { &l->bark, &l->leaves, &l->loose, &l->instances,
 					   &l->wood, &l->vine[0], &l->vine[1], &l->vine[2],
-					   &l->vine[3] };
+					   &l->vine[3], &l->grow_instances };
 
 	for (size_t i = 0; i < sizeof(all) / sizeof(*all); i++)
 		data_finish(all[i]);
@@ -193,6 +194,35 @@ static struct live_vertex *gathered(struct render_live *l, size_t n)
 	return l->gather;
 }
 
+/* While the tree grows in, the instances again in the growth's order, so that origami
+ * leaves unfold by keyframes (render_instanced_grow.c); otherwise none. v: their data in
+ * instance order. A failure leaves them scaling in like the others. */
+static int bind_growing(struct render *r, const struct app *app, const struct live_vertex *v,
+			size_t n)
+{
+	struct render_live *l = &r->live;
+	struct live_vertex *sorted;
+	int ret;
+
+	l->grow_instances.ok = false;
+	if (!l->frame.growing) {
+		render_instanced_grow_drop(r);
+		data_finish(&l->grow_instances);
+		return 0;
+	}
+	ret = render_instanced_grow_order(r, &app->tree, v, r->uploaded_tinted);
+	if (ret < 0)
+		return ret;
+	sorted = malloc(n * sizeof(*sorted) + 1);
+	if (!sorted)
+		return -ENOMEM;
+	for (size_t i = 0; i < n; i++)
+		sorted[i] = v[r->inst.grow_order[i]];
+	ret = upload(r, &l->grow_instances, sorted, n, NULL, false);
+	free(sorted);
+	return ret;
+}
+
 /* Instanced leaves: a leaf's data per instance (its first vertex's, which all of its
  * vertices share but for the distance from the anchor, the shader's), and the loose
  * leaves' per vertex, in leaf order as leaf_instances lays them out. la: the merged
@@ -218,6 +248,8 @@ static int bind_instanced(struct render *r, const struct app *app, const struct 
 		v[i].leaf = 0.0f;
 	}
 	ret = upload(r, &l->instances, v, li->ninstanced, NULL, false);
+	if (ret == 0)
+		ret = bind_growing(r, app, v, li->ninstanced);
 	/* nothing instanced: the loose mesh is the merged one */
 	if (ret < 0 || r->inst.nshapes == 0)
 		return ret < 0 ? ret : upload(r, &l->loose, la->v, la->n, &app->mesh.leaves,
@@ -313,6 +345,9 @@ bool render_live_begin(struct render *r, const struct app *app, uint64_t now_us)
 	s = sk->d_max > 1e-6 ? sk->d_max : 1e-6;
 	l->wscale[0] = 1.0f;
 	l->wscale[1] = l->wscale[2] = l->wscale[3] = (float)s;
+	/* a growth began on meshes bound still: bound again, in its order too */
+	if (l->frame.growing && r->uploaded_instanced && !r->inst.grow_ok)
+		l->tree_ok = false;
 	/* the meshes went up since the data was bound: bind it again (the same skeleton as
 	 * the meshes: both are of mesh_serial) */
 	if (!l->tree_ok && bind_tree(r, app, sk) < 0)

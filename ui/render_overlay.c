@@ -251,6 +251,36 @@ static void illustration(struct batch *b, double cx, double base, double u)
 /* The invitation's words: 6% of the screen's height (48 px, 3 cm on the kiosk). */
 #define INVITE_OF_HEIGHT 0.06
 
+/* A tree in the wind stays in sight: the invitation is a band along the canvas's foot
+ * (the trunk's foot does not move; the crown does), the little tree on its left, and the
+ * drawing is faded only a little. */
+static void attract_band(struct batch *b, const struct ui_text *t, const struct app *app)
+{
+	const struct screen *v = &app->screen;
+	struct layout_rect canvas = layout_canvas(v);
+	/* the little tree with its pen stands 51 units tall and 42 wide: us, pixels a unit */
+	double u = 0.01 * v->height, ch = 16.0 * u, us = ch / 56.0, radius = 3.0 * u;
+	double pic = 44.0 * us, y = round(canvas.y + canvas.h - ch - 3.0 * u), cw, x;
+	const char *msg = t->font ? labels_attract(t->lang) : NULL;
+	struct text_extent e = { 0 };
+	int px = (int)fmax(1.0, round(INVITE_OF_HEIGHT * v->height));
+
+	if (msg) {
+		px = text_fit(t->font, msg, px, (int)fmax(1.0, 0.4 * px),
+			      0.9 * canvas.w - pic - 6.0 * u);
+		text_measure(t->font, msg, px, &e);
+	}
+	cw = fmin(0.9 * canvas.w, pic + e.width + 6.0 * u);
+	x = round(canvas.x + 0.5 * (canvas.w - cw));
+	batch_rect(b, canvas.x, canvas.y, canvas.w, canvas.h, faded(paper, 0.25f));
+	batch_rounded_rect(b, x, y + 0.8 * u, cw, ch, radius, shadow);
+	batch_rounded_rect(b, x, y, cw, ch, radius, card);
+	illustration(b, x + 2.0 * u + 18.0 * us, y + ch - 3.0 * us, us);
+	if (msg)
+		text_draw(b, t->font, msg, px, x + pic + 2.0 * u,
+			  y + 0.5 * ch + 0.5 * (e.ascent - e.descent), ink);
+}
+
 void render_ui_attract(struct batch *b, const struct ui_text *t, const struct app *app)
 {
 	const struct screen *v = &app->screen;
@@ -262,6 +292,10 @@ void render_ui_attract(struct batch *b, const struct ui_text *t, const struct ap
 	struct text_extent e = { 0 };
 	int px = (int)fmax(1.0, round(INVITE_OF_HEIGHT * v->height));
 
+	if (app->live.strength > 0.0 && app->tree.nbranches > 0) {
+		attract_band(b, t, app);
+		return;
+	}
 	if (msg) {
 		px = text_fit(t->font, msg, px, (int)fmax(1.0, 0.4 * px), 0.9 * canvas.w - 6.0 * u);
 		text_measure(t->font, msg, px, &e);

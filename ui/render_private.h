@@ -52,6 +52,7 @@ struct render_mesh {
 struct render_live_program {
 	struct render_program_tree tree;
 	GLint along, across, sway, dir, theta, amp_leaf, front, swell, wscale;
+	GLint unfolding; /* 1: no pull, the leaf is drawn at its keyframe (instanced only) */
 };
 
 /*
@@ -76,6 +77,16 @@ struct render_instanced {
 	/* the grouping, kept between uploads: its arrays are reused (an edit regroups every
 	 * leaf; warm, that is ~0.3 us a leaf on the 2-core VM) */
 	struct leaf_instances li;
+	/* While a tree grows in (render_instanced_grow.c): every instance again, an origami
+	 * shape's sorted by their anchors' path length d (grow_d, ascending), so that the
+	 * leaves at one unfolding keyframe are one range; grow_order[i] is the instance at
+	 * i; the matrices and tints in that order (the living data: render_live's
+	 * grow_instances). grow_ok: built for the instances uploaded. */
+	size_t *grow_order;
+	float *grow_d;
+	size_t grow_cap;
+	GLuint grow_matrices, grow_tints;
+	bool grow_ok;
 };
 
 /* A side strip picture on the GPU: a copy of one of the app's previews[] or templates[]
@@ -102,6 +113,8 @@ struct render_live {
 	/* the data of the tree's meshes as uploaded (tree_ok: bound since the last upload),
 	 * of the wood's bark (wood_of at wood_serial) and of the vines (at vines_of) */
 	struct render_live_data bark, leaves, loose, instances, wood, vine[4];
+	/* the instances' data in the growth's order (render_instanced's grow_order) */
+	struct render_live_data grow_instances;
 	bool tree_ok, wood_ok, vines_ok;
 	const struct mesh *wood_of;
 	uint64_t wood_serial, vines_of, vines_mesh_of;
@@ -240,6 +253,13 @@ int render_instanced_upload(struct render *r, const struct tree *t, const struct
 void render_instanced_draw(struct render *r, const float mvp[16], const float light[3],
 			   const float color[3], const struct app_unfold_span *spans,
 			   size_t nspans);
+/* render_instanced_grow.c: the growth's order of the instances uploaded, from v, their
+ * living data in instance order; their matrices and tints (tinted) uploaded in it. 0 or
+ * -ENOMEM (grow_ok false: the origami leaves then scale in like the others). drop: its
+ * GPU copies freed, grow_ok false. */
+int render_instanced_grow_order(struct render *r, const struct tree *t,
+				const struct live_vertex *v, bool tinted);
+void render_instanced_grow_drop(struct render *r);
 /* Frees the GPU copies (the program stays until finish). */
 void render_instanced_clear(struct render *r);
 void render_instanced_finish(struct render *r);

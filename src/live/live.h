@@ -341,3 +341,16 @@ double live_grow_pull(const struct live_grow *g, double front, double d);
  */
 struct vec3 live_grow_position(const struct live_grow *g, double front, const struct live_vertex *v,
 			       struct vec3 pos);
+/*
+ * An origami leaf unfolds as the front passes its anchor (at path length d): its progress
+ * is the pull ease((front - d) / swell), and it is drawn at keyframe k of nframes
+ * (ori_unfold_frames: the bud first) while the progress is in [k / nframes, (k + 1) /
+ * nframes), at rest (k = nframes) from 1. live_grow_unfold_bounds gives the path lengths
+ * where the keyframes change, bound[k] = front - swell ease^-1(k / nframes) for k = 0 ..
+ * nframes (falling): a leaf is at keyframe k or later when d <= bound[k], so leaves sorted
+ * by d are at one keyframe in runs, a few binary searches a frame whatever their number.
+ * live_grow_unfold_frame is the same for one d (by the same bounds). Not drawn at all
+ * past the front (d > bound[0] = front).
+ */
+void live_grow_unfold_bounds(double front, double swell, unsigned nframes, double *bound);
+unsigned live_grow_unfold_frame(double front, double swell, unsigned nframes, double d);

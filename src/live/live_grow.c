@@ -53,3 +53,39 @@ struct vec3 live_grow_position(const struct live_grow *g, double front, const st
 	return vec3(pos.x * f + v->point[0] * k, pos.y * f + v->point[1] * k,
 		    pos.z * f + v->point[2] * k);
 }
+
+/* ease^-1(y) for y in [0, 1], by bisection: ease is increasing there. */
+static double ease_inverse(double y)
+{
+	double lo = 0.0, hi = 1.0;
+
+	if (!(y > 0.0))
+		return 0.0;
+	if (y >= 1.0)
+		return 1.0;
+	for (int i = 0; i < 60; i++) {
+		double mid = 0.5 * (lo + hi);
+
+		if (ease(mid) < y)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return hi;
+}
+
+void live_grow_unfold_bounds(double front, double swell, unsigned nframes, double *bound)
+{
+	for (unsigned k = 0; k <= nframes; k++)
+		bound[k] = front - swell * ease_inverse((double)k / (double)(nframes ? nframes : 1));
+}
+
+unsigned live_grow_unfold_frame(double front, double swell, unsigned nframes, double d)
+{
+	unsigned k = 0;
+
+	/* the bounds fall with k: count those at or past d */
+	while (k < nframes && d <= front - swell * ease_inverse((double)(k + 1) / (double)nframes))
+		k++;
+	return k;
+}

@@ -12,7 +12,11 @@
  * - the front rises from 0, never goes back, and is D_max + swell exactly at the duration;
  *   there every vertex is drawn with pull 1 exactly and lies where the mesh has it, to
  *   the bit (the settled tree is today's mesh);
- * - the duration lies in [2, 6] s.
+ * - the duration lies in [2, 6] s;
+ * - an origami leaf's unfolding keyframe (live_grow_unfold_*), at 20,000 seeded random
+ *   fronts, swells, keyframe counts and anchors: the keyframe is floor(nframes x pull)
+ *   (at rest once the pull is 1) but within 1e-9 of a keyframe's change; the bounds fall
+ *   from the front, and a leaf's keyframe never goes back as the front runs on.
  *
  * It prints the durations' range.
  */
@@ -189,6 +193,50 @@ static void test_pull(void)
 	CHECK_NEAR(p.x, 1.0, 1e-12);
 }
 
+/* The unfolding keyframe is the pull's: floor(nframes f), nframes once f = 1. */
+static void test_unfold(void)
+{
+	struct rng r;
+	double bound[33];
+	size_t near_change = 0;
+
+	rng_seed(&r, 2626);
+	for (int i = 0; i < 20000; i++) {
+		unsigned nf = 1 + (unsigned)(rng_next(&r) % 32);
+		double swell = rng_range(&r, 0.01, 3.0), front = rng_range(&r, 0.0, 25.0);
+		double d = rng_range(&r, -0.5, 1.2) * front;
+		struct live_skeleton sk = { .d_max = swell / LIVE_GROW_SWELL };
+		struct live_grow g;
+		unsigned k = live_grow_unfold_frame(front, swell, nf, d), lo = 0;
+		double f, want;
+
+		live_grow_setup(&g, &sk);
+		CHECK_NEAR(g.swell, swell, 1e-9 * swell + 1e-12);
+		g.swell = swell;
+		f = live_grow_pull(&g, front, d);
+		want = f >= 1.0 ? nf : floor(nf * f);
+		live_grow_unfold_bounds(front, swell, nf, bound);
+		CHECK(bound[0] == front);
+		for (unsigned j = 0; j < nf; j++)
+			CHECK(bound[j + 1] < bound[j]);
+		/* the bounds say the same as the frame */
+		while (lo < nf && d <= bound[lo + 1])
+			lo++;
+		CHECK(lo == k);
+		if ((double)k != want) {
+			/* only on a change, where rounding decides */
+			double edge = fmin(fabs(nf * f - floor(nf * f + 0.5)), fabs(1.0 - f));
+
+			CHECK(edge < 1e-9);
+			near_change++;
+		}
+		/* the front runs on: the leaf opens further, never folds back */
+		CHECK(live_grow_unfold_frame(front + 0.01 * swell, swell, nf, d) >= k);
+	}
+	printf("unfolding keyframes: 20000 random leaves as their pull says (%zu on a change)\n",
+	       near_change);
+}
+
 int main(int argc, char **argv)
 {
 	struct tree t;
@@ -197,6 +245,7 @@ int main(int argc, char **argv)
 
 	CHECK(argc == 2);
 	test_pull();
+	test_unfold();
 	tree_init(&t);
 	live_trees_demo(&t, argv[1], false);
 	check_tree("demo", &t, 1, false);

@@ -15,7 +15,15 @@
  *   drawn by the living programs against the same meshes moved on the CPU by the
  *   reference and drawn by the still programs, within imgcmp's default tolerance (8
  *   levels, 0.1% of the pixels), while the wind itself moves far more pixels than that;
- * - the frame uploads nothing while the tree moves (no mesh rebuilt per frame).
+ * - the frame uploads nothing while the tree moves (no mesh rebuilt per frame);
+ * - origami leaves unfold as the tree grows in (a maple tree: edit-propagate-count's
+ *   drawing with maple leaves, instanced): the growth's order holds every instance once,
+ *   an origami shape's by their anchors' d; at 40 moments each leaf is drawn at the
+ *   keyframe live_grow_unfold_frame gives its d (the ranges the frame draws, counted),
+ *   none past the front; the picture differs from the same moment with the leaves only
+ *   scaled in; and the end of the growth is the settled frame byte for byte.
+ *
+ *   live-scene SCENE also makes live-unfold (the maple tree three quarters into its growth).
  */
 #include <errno.h>
 #include <math.h>
@@ -85,6 +93,38 @@ static struct app *leafy(uint64_t *press_us)
 	CHECK(app_live_grow_start(&leafy_app, *press_us) == 0);
 	CHECK(leafy_app.live.growing);
 	return &leafy_app;
+}
+
+/* A maple tree: the leaf-maple card, then edit-propagate-count's drawing (its strokes,
+ * 3D, leaves arranged and propagated) as the headless run replays it; growing in from
+ * 100 ms after its last event, as a loaded drawing would. */
+static struct app *maple(uint64_t *press_us)
+{
+	struct app *app = app_create(WIDTH, HEIGHT, SEED);
+	struct trace t;
+	struct error err;
+	struct event ev = { .type = EVENT_BUTTON, .button = BUTTON_LEAF_MAPLE, .pressed = true };
+
+	CHECK(app);
+	app_handle_event(app, &ev);
+	ev.pressed = false;
+	ev.time_us = 50000;
+	app_handle_event(app, &ev);
+	trace_init(&t);
+	CHECK(trace_load(PROPAGATE_TRACE, WIDTH, HEIGHT, &t, &err) == 0);
+	for (size_t i = 0; i < t.nevents; i++) {
+		t.events[i].time_us += 100000;
+		app_handle_event(app, &t.events[i]);
+	}
+	CHECK(t.nevents > 0);
+	*press_us = t.events[t.nevents - 1].time_us + 100000;
+	trace_finish(&t);
+	CHECK(app->tree.lifted && !app->failed);
+	CHECK(app->tree.nleaves > 10 && app->tree.leaf_kind >= 0);
+	app->live.grow_in = true;
+	CHECK(app_live_grow_start(app, *press_us) == 0);
+	CHECK(app->live.growing);
+	return app;
 }
 
 static void done(struct app *app)
@@ -268,6 +308,96 @@ static void check_wind(struct scene *s, maker make, bool instanced)
 	s->r->instanced = could;
 }
 
+/* The origami leaves unfold by keyframes as the tree grows in. */
+static void check_unfold(struct scene *s)
+{
+	struct render_instanced *in = &s->r->inst;
+	uint64_t end;
+	size_t origami = 0, ranges = 0, at_keyframe = 0, open = 0, unborn = 0, most = 0;
+	bool frames[LEAF_INSTANCES_MAX_SHAPES];
+	double scaled = 0.0;
+
+	if (!s->r->instanced) {
+		printf("unfolding: no GLES 3 here, no instanced leaves: skipped\n");
+		return;
+	}
+	s->app = maple(&s->press_us);
+	s->app->turning = false;
+	end = app_live_grow_end(s->app);
+	for (int m = 1; m < 40; m++) {
+		uint64_t now = s->press_us + (end - s->press_us) * (uint64_t)m / 40;
+		const struct app_live_frame *f = &s->r->live.frame;
+		struct render_stats st;
+		size_t drawn = 0, kf_before = at_keyframe;
+
+		draw(s, now, 0);
+		CHECK(s->r->live.on && f->growing && in->grow_ok && s->r->live.grow_instances.ok);
+		render_get_stats(s->r, &st);
+		CHECK(m == 1 || (st.uploads == 0 && s->r->live.bytes == 0));
+		/* the order: each instance once, an origami shape's by d, each at the keyframe
+		 * its d gives, in the range the frame draws it */
+		for (size_t k = 0; k < in->nshapes; k++) {
+			size_t a = in->first[k], b = a + in->count[k];
+
+			if (!in->has_frames[k])
+				continue;
+			origami += m == 1 ? in->count[k] : 0;
+			for (size_t i = a; i < b; i++) {
+				unsigned kf = live_grow_unfold_frame(f->front, f->swell, ORI_UNFOLD_FRAMES,
+								     in->grow_d[i]);
+
+				CHECK(in->grow_order[i] >= a && in->grow_order[i] < b);
+				CHECK(i == a || in->grow_d[i - 1] <= in->grow_d[i]);
+				CHECK(i == a || in->grow_order[i - 1] != in->grow_order[i]);
+				if (in->grow_d[i] > f->front) {
+					unborn++;
+					continue;
+				}
+				drawn++;
+				if (kf == ORI_UNFOLD_FRAMES)
+					open++;
+				else
+					at_keyframe++;
+				/* a new range wherever the keyframe changes */
+				if (i == a || in->grow_d[i - 1] > f->front ||
+				    kf != live_grow_unfold_frame(f->front, f->swell, ORI_UNFOLD_FRAMES,
+								 in->grow_d[i - 1]))
+					ranges++;
+			}
+		}
+		/* the same moment with the leaves only scaling in, as the others: where the
+		 * most leaves are unfolding */
+		if (at_keyframe - kf_before > most) {
+			double d;
+
+			most = at_keyframe - kf_before;
+			draw(s, now, 1);
+			for (size_t k = 0; k < in->nshapes; k++) {
+				frames[k] = in->has_frames[k];
+				in->has_frames[k] = false;
+			}
+			draw(s, now, 2);
+			for (size_t k = 0; k < in->nshapes; k++)
+				in->has_frames[k] = frames[k];
+			d = differing(s->rgba[1], s->rgba[2]);
+			scaled = d > scaled ? d : scaled;
+		}
+		(void)drawn;
+	}
+	CHECK(origami > 0 && at_keyframe > 0 && open > 0 && unborn > 0);
+	CHECK(scaled > 0.0002);
+	/* and its end is the settled frame */
+	draw(s, UINT64_MAX, 0);
+	draw(s, end - 1, 1);
+	CHECK(s->r->live.on);
+	CHECK(memcmp(s->rgba[0], s->rgba[1], (size_t)WIDTH * HEIGHT * 4) == 0);
+	printf("unfolding (maple tree, %zu origami leaves instanced): at 39 moments %zu leaves "
+	       "drawn at a keyframe, %zu open, %zu not yet, in %zu ranges; against scaling in "
+	       "%.2f%% of the pixels differ; the end the settled frame byte for byte\n",
+	       origami, at_keyframe, open, unborn, ranges, 100.0 * scaled);
+	done(s->app);
+}
+
 static int write_png(const char *path, const uint8_t *rgba)
 {
 	struct buf b;
@@ -293,15 +423,19 @@ static int picture(struct scene *s, const char *name, const char *out, bool twic
 {
 	uint64_t now;
 
-	s->app = demo_3d(&s->press_us);
-	if (!strcmp(name, "live-grow")) {
+	s->app = !strcmp(name, "live-unfold") ? maple(&s->press_us) : demo_3d(&s->press_us);
+	if (!strcmp(name, "live-unfold")) {
+		s->app->turning = false;
+		now = s->press_us + (app_live_grow_end(s->app) - s->press_us) * 3 / 4;
+	} else if (!strcmp(name, "live-grow")) {
 		now = s->press_us + 1800000;
 	} else if (!strcmp(name, "live-wind")) {
 		s->app->live.growing = false;
 		CHECK(app_set_wind(s->app, 1.0) == 0);
 		now = strongest(s->app, s->press_us + 10000000);
 	} else {
-		fprintf(stderr, "live-scene: no scene %s (live-grow, live-wind)\n", name);
+		fprintf(stderr, "live-scene: no scene %s (live-grow, live-wind, live-unfold)\n",
+			name);
 		return 2;
 	}
 	draw(s, now, 0);
@@ -332,6 +466,7 @@ int main(int argc, char **argv)
 		check_wind(&s, demo_3d, false);
 		check_wind(&s, leafy, false);
 		check_wind(&s, leafy, true);
+		check_unfold(&s);
 		teardown(&s);
 		return 0;
 	}

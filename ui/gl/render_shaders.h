@@ -46,7 +46,9 @@ extern const float render_paper[3];
  * uniforms (app_live_at). live_move(p) is where the vertex at rest at p is drawn: pulled
  * towards its skeleton point behind the growth's front (exactly p a swell behind it) plus
  * the wind, the sum live_wind_frame_offset computes (src/live/live_wind.c), its leaf
- * distance taken from p. v_front < 0: past the front, not drawn (the fragment shader).
+ * distance taken from p. u_unfolding 1: not pulled (an origami leaf drawn at its
+ * unfolding keyframe instead, render_instanced_grow.c). v_front < 0: past the front, not
+ * drawn (the fragment shader).
  */
 #define RENDER_LIVE_VS_DECLS                                                               \
 	"#ifdef LIVE\n"                                                                    \
@@ -59,6 +61,7 @@ extern const float render_paper[3];
 	"uniform float u_front;\n"                                                         \
 	"uniform float u_swell;\n"                                                         \
 	"uniform vec4 u_wscale;\n"                                                         \
+	"uniform float u_unfolding;\n"                                                     \
 	"attribute vec4 a_live0;\n"                                                        \
 	"attribute vec4 a_live1;\n"                                                        \
 	"attribute vec4 a_phase;\n"                                                        \
@@ -73,7 +76,7 @@ extern const float render_paper[3];
 	"		+ w.w * sin(u_theta.z + a_phase.w * k) * u_dir[2]\n"             \
 	"		+ u_amp_leaf * length(p - a_live0.xyz)\n"                        \
 	"		  * sin(u_theta.w + a_phase.x * k) * (a_flutter.xyz / 127.0);\n" \
-	"	float f = smoothstep(0.0, u_swell, u_front - a_live0.w);\n"                \
+	"	float f = max(smoothstep(0.0, u_swell, u_front - a_live0.w), u_unfolding);\n" \
 	"	v_front = u_front - a_live0.w;\n"                                          \
 	"	return p * f + a_live0.xyz * (1.0 - f) + wind;\n"                          \
 	"}\n"                                                                              \
