@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * src/app/ (floor 8 of src/FLOORS, the top of src/): the application: modes, the op
+ * src/app/ (floor 9 of src/FLOORS, the top of src/): the application: modes, the op
  * and hook tables, history, status. Includes anything below; platform/ and ui/ build on it.
  */
 #pragma once
