@@ -73,6 +73,10 @@ void options_usage(FILE *f)
 	      "                      (docs/wood-format.md); default: broadleaf, the 64 grid\n"
 	      "  --dump-voxels       also write voxels.json and voxels.bin: the grown wood's\n"
 	      "                      voxels after the last grow press (docs/wood.md)\n"
+	      "  --forest DIR        today's forest instead of a tree: plants every *.edaha\n"
+	      "                      in DIR (name order, numbered 1, 2, 3, ...; the newest\n"
+	      "                      40 stand) and writes forest.json (docs/forest.md); only\n"
+	      "                      --idle, --size, --lang and --wind go with it\n"
 	      "\n"
 	      "Kiosk test runs (no effect on a normal kiosk):\n"
 	      "  --kiosk-frames N    draw a new frame every vblank, as if the drawing changed\n"
@@ -90,6 +94,7 @@ void options_usage(FILE *f)
 	      "  --config FILE       the configuration (default /etc/edaha/edaha.conf)\n"
 	      "  --stats             on exit, print how long pen input took to reach the\n"
 	      "                      screen (percentiles) and the frame rate\n"
+
 	      "\n"
 	      "Any mode:\n"
 	      "  --wind S            the wind's strength, from 0 (still) to 1 (a gale);\n"
@@ -240,7 +245,7 @@ enum {
 	OPT_HEADLESS = 256, OPT_SIZE, OPT_SEED, OPT_OUT, OPT_LOAD, OPT_REPLAY, OPT_PRESS, OPT_VIEW,
 	OPT_RECORD, OPT_HELP, OPT_VERSION, OPT_KIOSK_FRAMES, OPT_SCREENSHOT, OPT_CONFIG, OPT_STATS,
 	OPT_LANG, OPT_IDLE, OPT_GENERATE, OPT_LEAF, OPT_OPENING, OPT_SUPPORT, OPT_VINE, OPT_PLANT,
-	OPT_WOOD, OPT_DUMP_VOXELS, OPT_SKELETON, OPT_WINDOW, OPT_KIOSK, OPT_WIND,
+	OPT_WOOD, OPT_DUMP_VOXELS, OPT_SKELETON, OPT_WINDOW, OPT_KIOSK, OPT_WIND, OPT_FOREST,
 };
 
 static const struct option longopts[] = {
@@ -271,6 +276,7 @@ static const struct option longopts[] = {
 	{ "wood", required_argument, NULL, OPT_WOOD },
 	{ "dump-voxels", no_argument, NULL, OPT_DUMP_VOXELS },
 	{ "wind", required_argument, NULL, OPT_WIND },
+	{ "forest", required_argument, NULL, OPT_FOREST },
 	{ "help", no_argument, NULL, OPT_HELP },
 	{ "version", no_argument, NULL, OPT_VERSION },
 	{ NULL, 0, NULL, 0 },
@@ -378,6 +384,8 @@ static int parse_alone_option(struct options *o, int c, const char *arg)
 			return usage_error("%s needs a vine preset's name or a file name", "--vine");
 		o->vine = arg;
 		return 0;
+	case OPT_FOREST:
+		return set_file(&o->forest, arg, "--forest");
 	case OPT_PLANT:
 		if (!parse_plant(arg, o->plant))
 			return usage_error("bad --plant \"%s\" (expected X,Y,Z: three numbers, "
@@ -546,13 +554,32 @@ static int check_vine(const struct options *o)
 	return 0;
 }
 
+/* Today's forest headless (--forest DIR): only its output, its moment and its look. */
+static int check_forest(const struct options *o)
+{
+	if (o->forest && !o->headless)
+		return usage_error("%s needs --headless", "--forest");
+	if (o->forest && (o->leaf || o->opening_given || o->support || o->load || o->generate ||
+			  o->skeleton || o->nsteps || o->view_given || o->record || o->seed_given ||
+			  o->wood || o->dump_voxels))
+		return usage_error("%s does not go with --forest (only --out, --idle, --size, "
+				   "--lang and --wind do)",
+				   o->leaf ? "--leaf" : o->opening_given ? "--opening" :
+				   o->support ? "--support" : o->load ? "--load" :
+				   o->generate ? "--generate" : o->skeleton ? "--skeleton" :
+				   o->nsteps ? "--replay/--press" : o->view_given ? "--view" :
+				   o->record ? "--record" : o->seed_given ? "--seed" :
+				   o->wood ? "--wood" : "--dump-voxels");
+	return 0;
+}
+
 /* The options that do not go together, in this order: the first conflict found is the one
  * the message names. */
 static int check_options(const struct options *o)
 {
 	static int (*const checks[])(const struct options *) = {
-		check_wood, check_headless_only, check_skeleton, check_display, check_leaf,
-		check_vine,
+		check_forest, check_wood, check_headless_only, check_skeleton, check_display,
+		check_leaf, check_vine,
 	};
 
 	for (size_t i = 0; i < sizeof(checks) / sizeof(checks[0]); i++) {

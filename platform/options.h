@@ -57,6 +57,8 @@ struct options {
 	 * screen; the kiosk: kiosk.wind). model.glb carries LIVE_WIND_DEFAULT_STRENGTH where
 	 * it is 0 or not given (docs/living-trees.md). */
 	double wind;
+	/* --forest DIR: headless, today's forest of the drawings in DIR (docs/forest.md) */
+	const char *forest;
 };
 
 /* Parses argv. Returns 0, or 2 (usage error, message printed) as an exit status. */

@@ -7,11 +7,13 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <yaml.h>
 
 #include "fileio.h"
+#include "forest.h"
 #include "live.h"
 #include "yaml_in.h"
 #include "yaml_node.h"
@@ -485,6 +487,45 @@ static int kiosk_pair(struct cfg_parser *p, const yaml_node_t *key, const char *
 	return 0;
 }
 
+/* ---- forest --------------------------------------------------------------------- */
+
+/* "HH:MM", 24-hour, local time. */
+static int get_time_of_day(struct cfg_parser *p, const yaml_node_t *n, const char *what,
+			   int *hour, int *minute)
+{
+	const char *s = yaml_node_text(n);
+	int h, m, used = 0;
+
+	if (!s || sscanf(s, "%2d:%2d%n", &h, &m, &used) != 2 ||
+	    s[used] != '\0' || used != 5 || h < 0 || h > 23 || m < 0 || m > 59)
+		return yaml_in_fail(&p->in, n, "%s must be a time of day HH:MM (00:00 to 23:59)",
+				    what);
+	*hour = h;
+	*minute = m;
+	return 0;
+}
+
+static int forest_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
+		       const yaml_node_t *v, void *data)
+{
+	(void)data;
+	if (strcmp(k, "enabled") == 0)
+		return get_bool(p, v, "forest.enabled", &p->c->forest.enabled);
+	if (strcmp(k, "max_trees") == 0) {
+		long n;
+		int r = get_int(p, v, "forest.max_trees", 1, FOREST_MAX_TREES_LIMIT, &n);
+
+		if (r == 0)
+			p->c->forest.max_trees = (int)n;
+		return r;
+	}
+	if (strcmp(k, "reset_at") == 0)
+		return get_time_of_day(p, v, "forest.reset_at", &p->c->forest.reset_hour,
+				       &p->c->forest.reset_minute);
+	warn_unknown(p, key, "forest");
+	return 0;
+}
+
 /* ---- usb ------------------------------------------------------------------------ */
 
 static int usb_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
@@ -521,6 +562,8 @@ static int top_pair(struct cfg_parser *p, const yaml_node_t *key, const char *k,
 		return for_each_pair(p, v, "kiosk", kiosk_pair, NULL);
 	if (strcmp(k, "usb") == 0)
 		return for_each_pair(p, v, "usb", usb_pair, NULL);
+	if (strcmp(k, "forest") == 0)
+		return for_each_pair(p, v, "forest", forest_pair, NULL);
 	if (strcmp(k, "font") == 0)
 		return get_auto_string(p, v, "font", p->c->font, sizeof(p->c->font));
 	if (strcmp(k, "language") == 0) {
@@ -564,6 +607,10 @@ void config_defaults(struct config *c)
 	c->kiosk.wind = LIVE_WIND_DEFAULT_STRENGTH;
 	c->kiosk.grow_in = true;
 	c->kiosk.max_fps = CONFIG_MAX_FPS_DEFAULT;
+	c->forest.enabled = true;
+	c->forest.max_trees = FOREST_MAX_TREES_DEFAULT;
+	c->forest.reset_hour = 4;
+	c->forest.reset_minute = 0;
 }
 
 static int yaml_fail(struct cfg_parser *p, const yaml_parser_t *y, const char *data,

@@ -89,6 +89,11 @@ struct config {
 		int max_fps;          /* frames a second at most while the tree moves */
 	} kiosk;
 	struct {
+		bool enabled;    /* today's forest on the attract screen (docs/forest.md) */
+		int max_trees;   /* standing at once, the newest */
+		int reset_hour, reset_minute; /* local time the day's forest starts empty */
+	} forest;
+	struct {
 		bool enabled; /* save to USB sticks */
 		char helper_socket[CONFIG_USB_SOCKET_MAX]; /* absolute */
 	} usb;

@@ -12,6 +12,7 @@
 
 #include "config_file.h"
 #include "fileio.h"
+#include "forest.h"
 #include "live.h"
 #include "test.h"
 
@@ -40,6 +41,10 @@ static void check_defaults(const struct config *c)
 	CHECK(c->kiosk.wind == LIVE_WIND_DEFAULT_STRENGTH);
 	CHECK(c->kiosk.grow_in);
 	CHECK_INT(c->kiosk.max_fps, CONFIG_MAX_FPS_DEFAULT);
+	CHECK(c->forest.enabled);
+	CHECK_INT(c->forest.max_trees, FOREST_MAX_TREES_DEFAULT);
+	CHECK_INT(c->forest.reset_hour, 4);
+	CHECK_INT(c->forest.reset_minute, 0);
 	CHECK(c->usb.enabled);
 	CHECK(strcmp(c->usb.helper_socket, CONFIG_USB_SOCKET_DEFAULT) == 0);
 	CHECK(c->font[0] == '\0');
@@ -187,6 +192,28 @@ static void test_good(const char *dir)
 	static const char maybe[] = "kiosk:\n  grow_in: maybe\n";
 	CHECK_INT(config_parse(maybe, strlen(maybe), "maybe", &c, NULL, &err), -EINVAL);
 	CHECK(strstr(err.msg, "maybe:2:") && strstr(err.msg, "kiosk.grow_in"));
+	/* today's forest (issue 27) */
+	static const char forest[] = "forest:\n  enabled: false\n  max_trees: 12\n  reset_at: \"23:30\"\n";
+	CHECK_INT(config_parse(forest, strlen(forest), "forest", &c, NULL, &err), 0);
+	CHECK(!c.forest.enabled);
+	CHECK_INT(c.forest.max_trees, 12);
+	CHECK_INT(c.forest.reset_hour, 23);
+	CHECK_INT(c.forest.reset_minute, 30);
+	static const char plain[] = "forest:\n  reset_at: 06:05\n";
+	CHECK_INT(config_parse(plain, strlen(plain), "plain", &c, NULL, &err), 0);
+	CHECK_INT(c.forest.reset_hour, 6);
+	CHECK_INT(c.forest.reset_minute, 5);
+	static const char *const bad_times[] = { "24:00", "4:00", "04:60", "04:00:00", "noon", "-1:00" };
+	for (size_t i = 0; i < sizeof(bad_times) / sizeof(*bad_times); i++) {
+		char text[64];
+
+		snprintf(text, sizeof(text), "forest:\n  reset_at: \"%s\"\n", bad_times[i]);
+		CHECK_INT(config_parse(text, strlen(text), "when", &c, NULL, &err), -EINVAL);
+		CHECK(strstr(err.msg, "when:2:") && strstr(err.msg, "forest.reset_at"));
+	}
+	static const char many[] = "forest:\n  max_trees: 1000\n";
+	CHECK_INT(config_parse(many, strlen(many), "many", &c, NULL, &err), -EINVAL);
+	CHECK(strstr(err.msg, "many:2:") && strstr(err.msg, "forest.max_trees"));
 	static const char mode[] = "display:\n  mode: 800x480\n";
 	CHECK_INT(config_parse(mode, strlen(mode), "mode", &c, NULL, &err), 0);
 	CHECK_INT(c.display.mode_w, 800);
