@@ -253,8 +253,7 @@ int autosave_sync(struct autosave *a, const struct doc *d, struct error *err)
 	return remember_or_drop(a, d, err);
 }
 
-/* The number in "drawing-NNNNNN.edaha", or 0. */
-static unsigned archive_number(const char *name)
+unsigned autosave_archive_number(const char *name)
 {
 	unsigned n = 0;
 	int used = 0;
@@ -277,7 +276,7 @@ static int archive_scan(const char *dir, unsigned *lo, unsigned *hi, size_t *cou
 	if (!dp)
 		return -errno;
 	while ((e = readdir(dp))) {
-		unsigned n = archive_number(e->d_name);
+		unsigned n = autosave_archive_number(e->d_name);
 
 		if (!n)
 			continue;

@@ -47,3 +47,5 @@ bool autosave_pending(const struct autosave *a, const struct doc *d);
  * keep archives (the oldest go; 0: keep all). name gets the file name. 0 or -errno. */
 int autosave_archive(struct autosave *a, const struct doc *d, const struct tree *t,
 		     unsigned keep, char *name, size_t name_size, struct error *err);
+/* The number in an archived drawing's name "drawing-NNNNNN.edaha", or 0 for another name. */
+unsigned autosave_archive_number(const char *name);
