@@ -22,7 +22,7 @@ double export_wind_strength(const struct export_wind *w)
 int export_wind_tree_init(struct export_wind_tree *wt, const struct tree *t,
 			  const struct export_wind *p)
 {
-	struct live_wind_params wp = { export_wind_strength(p), p->angle };
+	struct live_wind_params wp = { .strength = export_wind_strength(p), .angle = p->angle };
 	int r;
 
 	memset(wt, 0, sizeof(*wt));

@@ -272,7 +272,7 @@ static void check_wind(const struct tree *t, const struct tree_mesh *tm,
 		       const struct tree_mesh_marks *mk, const struct export_wind *ew,
 		       struct result *r)
 {
-	struct live_wind_params wp = { export_wind_strength(ew), ew->angle };
+	struct live_wind_params wp = { .strength = export_wind_strength(ew), .angle = ew->angle };
 	struct live_skeleton sk;
 	struct live_wind w;
 	struct live_attrs attrs[NPRIMS];
@@ -400,7 +400,7 @@ static void check_skeleton(const struct tree *t, const struct export_wind *ew)
 {
 	static const char *const names[] = { "trunk", "trunk-across", "limbs", "branches", "twigs",
 					      "flutter" };
-	struct live_wind_params wp = { export_wind_strength(ew), ew->angle };
+	struct live_wind_params wp = { .strength = export_wind_strength(ew), .angle = ew->angle };
 	struct live_skeleton sk;
 	struct live_wind w;
 	struct buf a, b;
