@@ -171,7 +171,8 @@ struct glb {
 	bool quantized;     /* some mesh has byte targets: KHR_mesh_quantization */
 };
 
-static void glb_init(struct glb *g)
+/* 0 or -ENOMEM (g then free-able). */
+static int glb_init(struct glb *g)
 {
 	memset(g, 0, sizeof(*g));
 	g->nodes = json_object_new_array();
@@ -181,6 +182,11 @@ static void glb_init(struct glb *g)
 	g->materials = json_object_new_array();
 	g->channels = json_object_new_array();
 	g->samplers = json_object_new_array();
+	/* one missing, even if never used, is a failed allocation: the export fails */
+	if (!g->nodes || !g->meshes || !g->accessors || !g->views || !g->materials ||
+	    !g->channels || !g->samplers)
+		return -ENOMEM;
+	return 0;
 }
 
 static void glb_free(struct glb *g)
@@ -813,14 +819,15 @@ static int glb_export(const struct glb_input *in, struct buf *out)
 	size_t mesh;
 	int r;
 
-	glb_init(&g);
-	if (glb_add_mesh(&g, in, &mesh)) {
+	r = glb_init(&g);
+	if (r == 0 && glb_add_mesh(&g, in, &mesh)) {
 		size_t node = glb_add_node(&g, in->name, &mesh, NULL);
 
 		if (in->anim)
 			glb_add_channel(&g, in->anim, node, "wind");
 	}
-	r = glb_write_doc(&g, out);
+	if (r == 0)
+		r = glb_write_doc(&g, out);
 	glb_free(&g);
 	return r;
 }
@@ -951,8 +958,10 @@ struct export_gltf *export_gltf_create(void)
 {
 	struct export_gltf *d = calloc(1, sizeof(*d));
 
-	if (d)
-		glb_init(&d->g);
+	if (d && glb_init(&d->g) < 0) {
+		export_gltf_destroy(d);
+		return NULL;
+	}
 	return d;
 }
 
