@@ -7,8 +7,12 @@
  * Last, the wind in model.glb (issue 26): export_glb against export_glb_wind (byte
  * targets, the default; float targets) and export_skeleton against export_skeleton_wind,
  * median times and sizes, on the demo (its trace replayed through the app, as drawn and
- * in 3D), cherry and a 1,000-branch tree with 20 leaves a branch.
+ * in 3D), cherry and a 1,000-branch tree with 20 leaves a branch. Then today's forest
+ * (issue 27): export_glb_forest of 10, 20 and 40 trees of the demo's size (the demo in
+ * 3D) and of cherry's, each its own seed and place, with the wind over the 8 s loop,
+ * against as many model.glb.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -234,6 +238,85 @@ static void run_wind(void)
 	tree_finish(&t);
 }
 
+/* forest.glb of n copies of a tree, each its own seed and place on a sunflower spiral. */
+#define FOREST_MAX 40
+
+struct forest_job {
+	struct export_forest_tree trees[FOREST_MAX];
+	size_t n;
+	size_t bytes;
+};
+
+static void forest_export(void *arg)
+{
+	struct forest_job *j = arg;
+	const struct export_wind ew = { .strength = 0.0, .angle = EXPORT_WIND_ANGLE };
+	struct buf b;
+
+	buf_init(&b);
+	if (export_glb_forest(j->trees, j->n, &ew, LIVE_WIND_COMMON_LOOP_S, &b) < 0) {
+		fprintf(stderr, "bench_export: export_glb_forest failed\n");
+		exit(1);
+	}
+	j->bytes = b.len;
+	buf_finish(&b);
+}
+
+static void forest_rows(const char *name, const struct tree *t)
+{
+	static const size_t sizes[] = { 10, 20, 40 };
+	struct forest_job *j = calloc(1, sizeof(*j));
+	struct wind_job one = { .t = t, .op = WIND }; /* the meshes, and one model.glb */
+	int reps = bench_reps(REPS);
+
+	tree_mesh_init(&one.tm);
+	tree_mesh_marks_init(&one.mk);
+	if (!j || tree_mesh_build_marked(&one.tm, t, &one.mk) < 0) {
+		fprintf(stderr, "bench_export: no memory\n");
+		exit(1);
+	}
+	wind_export(&one);
+	for (size_t k = 0; k < FOREST_MAX; k++) {
+		double rad = 4.0 * sqrt((double)k + 0.5), a = 2.399963229728653 * (double)k;
+
+		j->trees[k] = (struct export_forest_tree){
+			.tree = t, .mesh = &one.tm, .marks = &one.mk, .seed = 1 + k, .number = 1 + k,
+			.position = { rad * cos(a), 0.0, rad * sin(a) },
+		};
+	}
+	for (size_t i = 0; i < BENCH_COUNT(sizes); i++) {
+		double ms;
+
+		j->n = sizes[i];
+		ms = bench_run(forest_export, j, reps) * 1e3;
+		printf("%-12s %5zu %9.1f %9.2f %10.1f %9.1f %11.1f\n", name, j->n, ms,
+		       ms / (double)j->n, j->bytes / 1e3, j->bytes / 1e3 / (double)j->n,
+		       one.bytes / 1e3);
+	}
+	tree_mesh_marks_finish(&one.mk);
+	tree_mesh_finish(&one.tm);
+	free(j);
+}
+
+static void run_forest(void)
+{
+	struct tree t;
+
+	printf("\nbench_export: forest.glb (export_glb_forest, the wind over 8 s), median of %d "
+	       "runs; each tree its own seed and place\n\n", bench_reps(REPS));
+	printf("%-12s %5s %9s %9s %10s %9s %11s\n", "trees of", "trees", "ms", "ms/tree", "KB",
+	       "KB/tree", "model.glb KB");
+	tree_init(&t);
+	live_trees_demo(&t, BENCH_DATA_DIR, true);
+	forest_rows("demo (3D)", &t);
+	if (!bench_quick) {
+		tree_clear(&t);
+		live_trees_preset(&t, GEN_PRESET_CHERRY);
+		forest_rows("cherry", &t);
+	}
+	tree_finish(&t);
+}
+
 int main(int argc, char **argv)
 {
 	static const int sizes[NSIZES] = { 100, 250, 500, 1000 };
@@ -300,5 +383,6 @@ int main(int argc, char **argv)
 		       drawn[i].bark_tris, drawn[i].bark_verts,
 		       (double)drawn[i].bark_tris / (double)drawn[i].branches, drawn[i].leaf_tris);
 	run_wind();
+	run_forest();
 	return 0;
 }

@@ -46,7 +46,7 @@ struct fixture {
 
 static void setup(struct fixture *f, int nbranches, int leaves_per_branch)
 {
-	struct live_wind_params p = { LIVE_WIND_DEFAULT_STRENGTH, 0.0 };
+	struct live_wind_params p = { .strength = LIVE_WIND_DEFAULT_STRENGTH, .angle = 0.0 };
 
 	tree_init(&f->t);
 	tree_mesh_init(&f->tm);
@@ -157,7 +157,7 @@ static void export_sizes(const char *name, const struct tree *t)
 	struct tree_mesh_marks mk;
 	struct live_skeleton sk;
 	struct live_wind w;
-	struct live_wind_params p = { LIVE_WIND_DEFAULT_STRENGTH, 0.0 };
+	struct live_wind_params p = { .strength = LIVE_WIND_DEFAULT_STRENGTH, .angle = 0.0 };
 	struct buf glb;
 	double nb, nl, floats, quant, keys, sampler;
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include "buf.h"
@@ -82,6 +83,33 @@ double export_wind_strength(const struct export_wind *w);
 int export_glb_wind(const struct tree *t, const struct tree_mesh *m,
 		    const struct tree_mesh_marks *mk, const struct export_wind *wind,
 		    struct buf *out);
+/*
+ * forest.glb (issue 27, docs/forest.md, "Headless and for the teacher"): every tree of
+ * today's forest in one glTF, each a root node named "tree-N" (N its number) translated
+ * to its place (metres, y up), with its own mesh: model.glb's primitives, accessor for
+ * accessor the same bytes (export_glb_wind's at this wind and the tree's seed), the
+ * materials shared (each in the file once). With wind, ONE animation "wind" with a
+ * channel (the node's weights) and a CUBICSPLINE sampler a tree with branches, every
+ * tree's wind set up over the same loop, loop_s seconds (live_wind_params.loop; the
+ * forest's is LIVE_WIND_COMMON_LOOP_S), so every sampler runs over [0, loop_s], its first
+ * and last keys equal: the whole animation loops as one. wind->seed is not used: each
+ * tree's phases come from its own drawing's seed. A tree without branches: its mesh
+ * without targets, no channel; a tree without triangles: its node without a mesh; no
+ * tree: an empty scene. wind NULL: a still forest (loop_s not looked at). The trees'
+ * order is the nodes'. 0, -EINVAL (a tree or mesh missing, a position not finite, the
+ * wind's parameters, loop_s not within LIVE_WIND_COMMON_LOOP_MIN_S ..
+ * LIVE_WIND_COMMON_LOOP_MAX_S), -ENOMEM or -EFBIG (out as it was).
+ */
+struct export_forest_tree {
+	const struct tree *tree;
+	const struct tree_mesh *mesh;          /* tree_mesh_build's, at full detail */
+	const struct tree_mesh_marks *marks;   /* NULL: found again */
+	uint64_t seed;                         /* the drawing's */
+	uint64_t number;                       /* its number in the day: the node's "tree-N" */
+	double position[3];                    /* metres, y up */
+};
+int export_glb_forest(const struct export_forest_tree *trees, size_t n,
+		      const struct export_wind *wind, double loop_s, struct buf *out);
 /* The same for one mesh of leaves alone (an origami leaf, ori_mesh_append): the leaves'
  * green, double-sided material, the node and mesh named name. */
 int export_glb_leaf(const struct mesh *m, const char *name, struct buf *out);

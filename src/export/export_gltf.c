@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 #include "export.h"
+#include "export_gltf.h"
 #include "export_leaves.h"
 #include "export_vines.h"
 #include "export_wind.h"
@@ -7,7 +8,9 @@
 
 #include <errno.h>
 #include <stdbool.h>
+#include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "json_out.h"
@@ -107,7 +110,7 @@ static const char *const glb_prim_names[GLB_NPRIMS] = { "bark", "wood", "leaves"
 							"vine-leaves" };
 
 /* The materials, each in the file once, numbered as first used; the wood is bark. */
-enum glb_mat { GLB_MAT_BARK, GLB_MAT_LEAVES, GLB_MAT_VINE, GLB_NMATS };
+enum glb_mat { GLB_MAT_BARK, GLB_MAT_LEAVES, GLB_MAT_VINE };
 static const enum glb_mat glb_prim_mat[GLB_NPRIMS] = { GLB_MAT_BARK, GLB_MAT_BARK, GLB_MAT_LEAVES,
 						       GLB_MAT_VINE, GLB_MAT_LEAVES };
 
@@ -125,36 +128,103 @@ static const char *const glb_target_names[LIVE_WIND_TARGETS] = {
 	"wind-flutter-sin", "wind-flutter-cos",
 };
 
-/* What one GLB is made of. */
+/* What one tree's mesh is made of. */
 struct glb_input {
 	const struct mesh *mesh[GLB_NPRIMS];            /* NULL: none */
 	const struct export_leaves *colors[GLB_NPRIMS]; /* the leaves' COLOR_0 in spring, autumn */
 	enum export_look how;
 	enum season season;
 	const char *name; /* the node's and the mesh's */
+	/* what its accessors' names begin with: NULL, the primitive's name ("bark.POSITION",
+	 * model.glb's); else this and the primitive's ("tree-3.bark.POSITION", a forest's) */
+	const char *label;
 	/* the wind, the used primitives' targets in order; NULL: a still model */
 	const struct export_wind_anim *anim;
 };
 
-/* POSITION, NORMAL, COLOR_0, indices; with the wind, the targets of every primitive, the
- * zero targets' sparse index and value, the keys' times and values */
-#define GLB_MAX_VIEWS (4 * GLB_NPRIMS + GLB_NPRIMS * LIVE_WIND_TARGETS + 2 + 2)
+/* An accessor's name's first part: "tree-18446744073709551615.vine-leaves" at most. */
+#define GLB_LABEL_MAX 48
 /* A zero target's one sparse value: 3 floats (or 3 bytes) of zeros. */
 #define GLB_SPARSE_ZERO_WORDS 3
 
+/* The materials a file may hold, each once: the bark, the vine, summer's leaves and each
+ * season's coloured leaves (a forest's trees may stand in different seasons). */
+enum { GLB_SLOT_BARK, GLB_SLOT_VINE, GLB_SLOT_LEAVES, GLB_SLOT_COLORED,
+       GLB_NSLOTS = GLB_SLOT_COLORED + SEASON_COUNT };
+
+/*
+ * The document being built: one mesh after another, each with its node and, with the
+ * wind, its channel of the one animation. Its JSON arrays are NULL after an allocation
+ * failed (json_out.h), which the root then shows; `bin` lists what goes into the BIN
+ * chunk, in order, pointing into the meshes, which must live until glb_write_doc.
+ */
 struct glb {
-	struct json_object *root;
-	struct glb_view views[GLB_MAX_VIEWS];
-	size_t nviews;
-	size_t naccessors; /* the wind's: the still model's are numbered as its views */
+	struct json_object *nodes, *meshes, *accessors, *views, *materials, *channels, *samplers;
+	size_t nnodes, nmeshes, naccessors, nmats, nsamplers;
+	struct glb_view *bin;
+	size_t nviews, cap;
+	bool nomem;         /* bin could not grow */
 	size_t sparse_view; /* the zero targets' index view (the value's next); 0: none yet */
 	size_t bin_len;
+	size_t mat_index[GLB_NSLOTS];
+	bool have_mat[GLB_NSLOTS];
+	bool quantized;     /* some mesh has byte targets: KHR_mesh_quantization */
 };
 
+/* 0 or -ENOMEM (g then free-able). */
+static int glb_init(struct glb *g)
+{
+	memset(g, 0, sizeof(*g));
+	g->nodes = json_object_new_array();
+	g->meshes = json_object_new_array();
+	g->accessors = json_object_new_array();
+	g->views = json_object_new_array();
+	g->materials = json_object_new_array();
+	g->channels = json_object_new_array();
+	g->samplers = json_object_new_array();
+	/* one missing, even if never used, is a failed allocation: the export fails */
+	if (!g->nodes || !g->meshes || !g->accessors || !g->views || !g->materials ||
+	    !g->channels || !g->samplers)
+		return -ENOMEM;
+	return 0;
+}
+
+static void glb_free(struct glb *g)
+{
+	json_object_put(g->nodes);
+	json_object_put(g->meshes);
+	json_object_put(g->accessors);
+	json_object_put(g->views);
+	json_object_put(g->materials);
+	json_object_put(g->channels);
+	json_object_put(g->samplers);
+	free(g->bin);
+	memset(g, 0, sizeof(*g));
+}
+
+/* The next view's data in the BIN chunk; a failure to grow is remembered for the end. */
+static void glb_bin_push(struct glb *g, const void *data, size_t count, enum glb_data kind)
+{
+	if (g->nviews == g->cap && !g->nomem) {
+		size_t cap = g->cap ? 2 * g->cap : 32;
+		struct glb_view *bin = cap <= SIZE_MAX / sizeof(*bin)
+					       ? realloc(g->bin, cap * sizeof(*bin)) : NULL;
+
+		if (bin) {
+			g->bin = bin;
+			g->cap = cap;
+		} else {
+			g->nomem = true;
+		}
+	}
+	if (!g->nomem)
+		g->bin[g->nviews] = (struct glb_view){ data, count, kind };
+	g->nviews++;
+}
+
 /* A bufferView of count 4-byte elements; target 0: none (animation data), stride 0: none. */
-static struct json_object *glb_add_view_ex(struct glb *g, struct json_object *views,
-					   const void *data, size_t count, enum glb_data kind,
-					   int target, size_t stride)
+static void glb_add_view_ex(struct glb *g, const void *data, size_t count, enum glb_data kind,
+			    int target, size_t stride)
 {
 	struct json_object *v = json_object_new_object();
 	size_t len = 4 * count;
@@ -166,25 +236,32 @@ static struct json_object *glb_add_view_ex(struct glb *g, struct json_object *vi
 		v = json_out_set(v, "byteStride", jint(stride));
 	if (target)
 		v = json_out_set(v, "target", jint((size_t)target));
-	g->views[g->nviews++] = (struct glb_view){ data, count, kind };
+	glb_bin_push(g, data, count, kind);
 	/* Every element is 4 bytes, so every view stays 4-byte aligned. */
 	g->bin_len += len;
-	return json_out_push(views, v);
+	g->views = json_out_push(g->views, v);
 }
 
-static struct json_object *glb_add_view(struct glb *g, struct json_object *views, const void *data,
-					size_t count, enum glb_data kind, int target)
+static void glb_add_view(struct glb *g, const void *data, size_t count, enum glb_data kind,
+			 int target)
 {
-	return glb_add_view_ex(g, views, data, count, kind, target, 0);
+	glb_add_view_ex(g, data, count, kind, target, 0);
 }
 
-static struct json_object *glb_accessor(const char *prim, const char *what, size_t view,
+/* Appends an accessor; its index. */
+static size_t glb_push_accessor(struct glb *g, struct json_object *a)
+{
+	g->accessors = json_out_push(g->accessors, a);
+	return g->naccessors++;
+}
+
+static struct json_object *glb_accessor(const char *label, const char *what, size_t view,
 					int component, size_t count, const char *type)
 {
 	struct json_object *a = json_object_new_object();
-	char name[64];
+	char name[GLB_LABEL_MAX + 32];
 
-	snprintf(name, sizeof(name), "%s.%s", prim, what);
+	snprintf(name, sizeof(name), "%.*s.%s", GLB_LABEL_MAX - 1, label, what);
 	a = json_out_set(a, "name", jstr(name));
 	a = json_out_set(a, "bufferView", jint(view));
 	a = json_out_set(a, "componentType", jint((size_t)component));
@@ -249,34 +326,57 @@ static struct json_object *glb_new_material(enum glb_mat k, enum export_look how
 	return glb_leaves_material(how, s);
 }
 
-/* One primitive's accessors and views, and its entry for primitives; colors: its COLOR_0. */
-static struct json_object *glb_add_prim(struct glb *g, struct json_object **accessors,
-					struct json_object **views, const struct mesh *m,
-					const char *prim_name, const struct export_leaves *colors,
-					size_t material)
+/* Which of the file's materials a primitive of kind k takes: the leaves' by their look. */
+static size_t glb_mat_slot(enum glb_mat k, enum export_look how, enum season s)
 {
-	size_t first = g->nviews, idx = first + (colors ? 3 : 2);
+	if (k == GLB_MAT_BARK)
+		return GLB_SLOT_BARK;
+	if (k == GLB_MAT_VINE)
+		return GLB_SLOT_VINE;
+	if (how == EXPORT_LEAVES_COLORED && (unsigned)s < SEASON_COUNT)
+		return GLB_SLOT_COLORED + (size_t)s;
+	return GLB_SLOT_LEAVES;
+}
+
+/* The material's index in the file, made when first used. */
+static size_t glb_use_material(struct glb *g, enum glb_mat k, enum export_look how, enum season s)
+{
+	size_t slot = glb_mat_slot(k, how, s);
+
+	if (!g->have_mat[slot]) {
+		g->materials = json_out_push(g->materials, glb_new_material(k, how, s));
+		g->mat_index[slot] = g->nmats++;
+		g->have_mat[slot] = true;
+	}
+	return g->mat_index[slot];
+}
+
+/* One primitive's accessors and views, and its entry for primitives; colors: its COLOR_0. */
+static struct json_object *glb_add_prim(struct glb *g, const struct mesh *m, const char *label,
+					const struct export_leaves *colors, size_t material)
+{
+	size_t first = g->naccessors, view = g->nviews, ncols = colors ? 1 : 0;
 	struct json_object *prim, *attrs, *pos;
 
-	/* Accessors and bufferViews are numbered alike: POSITION, NORMAL, COLOR_0 (leaves in
-	 * spring and autumn only), indices. */
-	pos = glb_accessor(prim_name, "POSITION", first, GL_FLOAT, m->nvertices, "VEC3");
-	*accessors = json_out_push(*accessors, glb_bounds(pos, m));
-	*accessors = json_out_push(*accessors, glb_accessor(prim_name, "NORMAL", first + 1, GL_FLOAT,
-							    m->nvertices, "VEC3"));
-	*views = glb_add_view(g, *views, m->positions, 3 * m->nvertices, GLB_FLOATS, GL_ARRAY_BUFFER);
-	*views = glb_add_view(g, *views, m->normals, 3 * m->nvertices, GLB_FLOATS, GL_ARRAY_BUFFER);
+	/* Accessors and bufferViews follow each other: POSITION, NORMAL, COLOR_0 (leaves in
+	 * spring and autumn only), indices (in model.glb numbered alike). */
+	pos = glb_accessor(label, "POSITION", view, GL_FLOAT, m->nvertices, "VEC3");
+	glb_push_accessor(g, glb_bounds(pos, m));
+	glb_push_accessor(g, glb_accessor(label, "NORMAL", view + 1, GL_FLOAT, m->nvertices,
+					  "VEC3"));
+	glb_add_view(g, m->positions, 3 * m->nvertices, GLB_FLOATS, GL_ARRAY_BUFFER);
+	glb_add_view(g, m->normals, 3 * m->nvertices, GLB_FLOATS, GL_ARRAY_BUFFER);
 	if (colors) {
-		struct json_object *col = glb_accessor(prim_name, "COLOR_0", first + 2,
-						       GL_UNSIGNED_BYTE, m->nvertices, "VEC4");
+		struct json_object *col = glb_accessor(label, "COLOR_0", view + 2, GL_UNSIGNED_BYTE,
+						       m->nvertices, "VEC4");
 
 		col = json_out_set(col, "normalized", json_object_new_boolean(1));
-		*accessors = json_out_push(*accessors, col);
-		*views = glb_add_view(g, *views, colors, m->nvertices, GLB_LEAF_RGBA, GL_ARRAY_BUFFER);
+		glb_push_accessor(g, col);
+		glb_add_view(g, colors, m->nvertices, GLB_LEAF_RGBA, GL_ARRAY_BUFFER);
 	}
-	*accessors = json_out_push(*accessors, glb_accessor(prim_name, "indices", idx,
-							    GL_UNSIGNED_INT, m->nindices, "SCALAR"));
-	*views = glb_add_view(g, *views, m->indices, m->nindices, GLB_U32, GL_ELEMENT_ARRAY_BUFFER);
+	glb_push_accessor(g, glb_accessor(label, "indices", view + 2 + ncols, GL_UNSIGNED_INT,
+					  m->nindices, "SCALAR"));
+	glb_add_view(g, m->indices, m->nindices, GLB_U32, GL_ELEMENT_ARRAY_BUFFER);
 
 	attrs = json_object_new_object();
 	attrs = json_out_set(attrs, "POSITION", jint(first));
@@ -285,7 +385,7 @@ static struct json_object *glb_add_prim(struct glb *g, struct json_object **acce
 		attrs = json_out_set(attrs, "COLOR_0", jint(first + 2));
 	prim = json_object_new_object();
 	prim = json_out_set(prim, "attributes", attrs);
-	prim = json_out_set(prim, "indices", jint(idx));
+	prim = json_out_set(prim, "indices", jint(first + 2 + ncols));
 	prim = json_out_set(prim, "material", jint(material));
 	return json_out_set(prim, "mode", jint(GL_TRIANGLES));
 }
@@ -306,17 +406,17 @@ static struct json_object *glb_target_bounds(const double v[3], bool floats)
  * an accessor with neither view nor sparse. Every such accessor of the file shares that
  * index and value (16 bytes in all), where a view of zeros would cost 4 bytes a vertex.
  */
-static struct json_object *glb_zero_accessor(struct glb *g, struct json_object **views,
-					     const char *prim_name, size_t n, bool floats)
+static struct json_object *glb_zero_accessor(struct glb *g, const char *label, size_t n,
+					     bool floats)
 {
 	static const double zero[3] = { 0.0, 0.0, 0.0 };
 	struct json_object *a = json_object_new_object(), *sparse, *indices, *values;
-	char name[64];
+	char name[GLB_LABEL_MAX + 32];
 
 	if (!g->sparse_view) {
 		g->sparse_view = g->nviews;
-		*views = glb_add_view(g, *views, NULL, 1, GLB_ZEROS, 0);
-		*views = glb_add_view(g, *views, NULL, GLB_SPARSE_ZERO_WORDS, GLB_ZEROS, 0);
+		glb_add_view(g, NULL, 1, GLB_ZEROS, 0);
+		glb_add_view(g, NULL, GLB_SPARSE_ZERO_WORDS, GLB_ZEROS, 0);
 	}
 	indices = json_object_new_object();
 	indices = json_out_set(indices, "bufferView", jint(g->sparse_view));
@@ -326,7 +426,7 @@ static struct json_object *glb_zero_accessor(struct glb *g, struct json_object *
 	sparse = json_out_set(sparse, "count", jint(1));
 	sparse = json_out_set(sparse, "indices", indices);
 	sparse = json_out_set(sparse, "values", values);
-	snprintf(name, sizeof(name), "%s.wind-zero", prim_name);
+	snprintf(name, sizeof(name), "%.*s.wind-zero", GLB_LABEL_MAX - 1, label);
 	a = json_out_set(a, "name", jstr(name));
 	a = json_out_set(a, "componentType", jint(floats ? GL_FLOAT : GL_BYTE));
 	if (!floats)
@@ -339,15 +439,14 @@ static struct json_object *glb_zero_accessor(struct glb *g, struct json_object *
 }
 
 /*
- * Primitive k's morph targets (its entry in primitives gets "targets"): each target's
- * view and accessor, after every view of the still model, so that its bytes stay where
- * they were; the targets zero at every vertex of k share one accessor without data
- * (glb_zero_accessor).
+ * A primitive's morph targets (its entry in primitives gets "targets"): each target's
+ * view and accessor, after every view of the still mesh, so that in model.glb its bytes
+ * stay where they were; the targets zero at every vertex of the primitive share one
+ * accessor without data (glb_zero_accessor).
  */
 static struct json_object *glb_add_targets(struct glb *g, struct json_object *prim,
-					   struct json_object **accessors,
-					   struct json_object **views, const char *prim_name,
-					   const struct export_wind_prim *p, bool floats)
+					   const char *label, const struct export_wind_prim *p,
+					   bool floats)
 {
 	struct json_object *targets = json_object_new_array_ext(LIVE_WIND_TARGETS);
 	size_t n = p->nvertices, count = floats ? 3 * n : n, stride = floats ? 0 : 4;
@@ -358,69 +457,61 @@ static struct json_object *glb_add_targets(struct glb *g, struct json_object *pr
 		size_t index;
 
 		if (!p->data[j]) {
-			if (zero == SIZE_MAX) {
-				zero = g->naccessors++;
-				*accessors = json_out_push(*accessors,
-							   glb_zero_accessor(g, views, prim_name, n,
-									     floats));
-			}
+			if (zero == SIZE_MAX)
+				zero = glb_push_accessor(g, glb_zero_accessor(g, label, n, floats));
 			target = json_out_set(json_object_new_object(), "POSITION", jint(zero));
 			targets = json_out_push(targets, target);
 			continue;
 		}
-		index = g->naccessors++;
-		a = glb_accessor(prim_name, glb_target_names[j], g->nviews,
-				 floats ? GL_FLOAT : GL_BYTE, n, "VEC3");
-		*views = glb_add_view_ex(g, *views, p->data[j], count,
-					 floats ? GLB_FLOATS : GLB_BYTES, GL_ARRAY_BUFFER, stride);
+		a = glb_accessor(label, glb_target_names[j], g->nviews, floats ? GL_FLOAT : GL_BYTE,
+				 n, "VEC3");
+		glb_add_view_ex(g, p->data[j], count, floats ? GLB_FLOATS : GLB_BYTES,
+				GL_ARRAY_BUFFER, stride);
 		if (!floats)
 			a = json_out_set(a, "normalized", json_object_new_boolean(1));
 		a = json_out_set(a, "min", glb_target_bounds(p->lo[j], floats));
 		a = json_out_set(a, "max", glb_target_bounds(p->hi[j], floats));
-		*accessors = json_out_push(*accessors, a);
+		index = glb_push_accessor(g, a);
 		target = json_out_set(json_object_new_object(), "POSITION", jint(index));
 		targets = json_out_push(targets, target);
 	}
 	return json_out_set(prim, "targets", targets);
 }
 
-/* The animations: "wind", one channel (the node's weights), one CUBICSPLINE sampler. */
-static struct json_object *glb_add_animation(struct glb *g, struct json_object **accessors,
-					     struct json_object **views,
-					     const struct export_wind_anim *a)
+/*
+ * A channel of the animation "wind": node's weights by a CUBICSPLINE sampler of a's keys,
+ * its time and values accessors named "LABEL.time" and "LABEL.weights".
+ */
+static void glb_add_channel(struct glb *g, const struct export_wind_anim *a, size_t node,
+			    const char *label)
 {
-	struct json_object *in, *out, *sampler, *channel, *target, *anim;
-	size_t first = g->naccessors;
+	struct json_object *in, *out, *sampler, *channel, *target;
 	double lo = 0.0, hi = a->times[a->nkeys - 1];
+	size_t input, output;
 
-	g->naccessors += 2;
-
-	in = glb_accessor("wind", "time", g->nviews, GL_FLOAT, a->nkeys, "SCALAR");
+	in = glb_accessor(label, "time", g->nviews, GL_FLOAT, a->nkeys, "SCALAR");
 	in = json_out_set(in, "min", jvec(&lo, 1));
 	in = json_out_set(in, "max", jvec(&hi, 1));
-	*accessors = json_out_push(*accessors, in);
-	*views = glb_add_view(g, *views, a->times, a->nkeys, GLB_FLOATS, 0);
-	out = glb_accessor("wind", "weights", g->nviews, GL_FLOAT,
-			   a->nkeys * 3 * LIVE_WIND_TARGETS, "SCALAR");
-	*accessors = json_out_push(*accessors, out);
-	*views = glb_add_view(g, *views, a->values, a->nkeys * 3 * LIVE_WIND_TARGETS, GLB_FLOATS,
-			      0);
+	input = glb_push_accessor(g, in);
+	glb_add_view(g, a->times, a->nkeys, GLB_FLOATS, 0);
+	out = glb_accessor(label, "weights", g->nviews, GL_FLOAT, a->nkeys * 3 * LIVE_WIND_TARGETS,
+			   "SCALAR");
+	output = glb_push_accessor(g, out);
+	glb_add_view(g, a->values, a->nkeys * 3 * LIVE_WIND_TARGETS, GLB_FLOATS, 0);
 
 	sampler = json_object_new_object();
-	sampler = json_out_set(sampler, "input", jint(first));
+	sampler = json_out_set(sampler, "input", jint(input));
 	sampler = json_out_set(sampler, "interpolation", jstr("CUBICSPLINE"));
-	sampler = json_out_set(sampler, "output", jint(first + 1));
+	sampler = json_out_set(sampler, "output", jint(output));
 	target = json_object_new_object();
-	target = json_out_set(target, "node", jint(0));
+	target = json_out_set(target, "node", jint(node));
 	target = json_out_set(target, "path", jstr("weights"));
 	channel = json_object_new_object();
-	channel = json_out_set(channel, "sampler", jint(0));
+	channel = json_out_set(channel, "sampler", jint(g->nsamplers));
 	channel = json_out_set(channel, "target", target);
-	anim = json_object_new_object();
-	anim = json_out_set(anim, "name", jstr("wind"));
-	anim = json_out_set(anim, "channels", json_out_push(json_object_new_array(), channel));
-	anim = json_out_set(anim, "samplers", json_out_push(json_object_new_array(), sampler));
-	return json_out_push(json_object_new_array(), anim);
+	g->channels = json_out_push(g->channels, channel);
+	g->samplers = json_out_push(g->samplers, sampler);
+	g->nsamplers++;
 }
 
 /* The mesh's default weights (0: the rest pose) and its targets' names. */
@@ -460,94 +551,129 @@ static bool glb_prim_used(const struct glb_input *in, size_t i)
 	       !(glb_prim_mat[i] == GLB_MAT_LEAVES && in->how == EXPORT_LEAVES_NONE);
 }
 
-/* Builds the JSON document and the list of BIN views. */
-static int glb_build_json(struct glb *g, const struct glb_input *in)
+/* A primitive's accessors' label: its name, after in's label if any. */
+static void glb_label(char out[GLB_LABEL_MAX], const struct glb_input *in, const char *prim)
 {
-	struct json_object *root, *asset, *scene, *scenes;
-	struct json_object *primitives, *accessors, *views, *materials;
-	struct json_object *prims[GLB_NPRIMS];
-	const char *prim_names[GLB_NPRIMS];
-	size_t nprims = 0, nmats = 0, mat_index[GLB_NMATS];
-	bool have_mat[GLB_NMATS] = { false };
+	if (in->label)
+		snprintf(out, GLB_LABEL_MAX, "%s.%s", in->label, prim);
+	else
+		snprintf(out, GLB_LABEL_MAX, "%s", prim);
+}
+
+/*
+ * Appends in's mesh, every primitive that has triangles and with in->anim their targets;
+ * false (nothing appended) when there is none, else *index is the mesh's.
+ */
+static bool glb_add_mesh(struct glb *g, const struct glb_input *in, size_t *index)
+{
+	struct json_object *prims[GLB_NPRIMS], *primitives, *mesh;
+	char labels[GLB_NPRIMS][GLB_LABEL_MAX];
 	const struct export_wind_anim *anim = in->anim;
+	size_t nprims = 0;
 
-	root = json_object_new_object();
-	asset = json_object_new_object();
-	asset = json_out_set(asset, "version", jstr("2.0"));
-	asset = json_out_set(asset, "generator", jstr("edaha"));
-	root = json_out_set(root, "asset", asset);
-	if (anim && !anim->floats)
-		root = glb_quantization(root);
-	root = json_out_set(root, "scene", jint(0));
-
-	primitives = json_object_new_array();
-	accessors = json_object_new_array();
-	views = json_object_new_array();
-	materials = json_object_new_array();
 	for (size_t i = 0; i < GLB_NPRIMS; i++) {
 		enum glb_mat k = glb_prim_mat[i];
-		bool leaves = k == GLB_MAT_LEAVES;
+		bool colored = k == GLB_MAT_LEAVES && in->how == EXPORT_LEAVES_COLORED;
+		size_t mat;
 
 		if (!glb_prim_used(in, i))
 			continue;
-		if (!have_mat[k]) {
-			materials = json_out_push(materials, glb_new_material(k, in->how, in->season));
-			mat_index[k] = nmats++;
-			have_mat[k] = true;
-		}
-		prim_names[nprims] = glb_prim_names[i];
-		prims[nprims++] = glb_add_prim(g, &accessors, &views, in->mesh[i],
-					       glb_prim_names[i],
-					       leaves && in->how == EXPORT_LEAVES_COLORED
-						       ? in->colors[i] : NULL,
-					       mat_index[k]);
+		mat = glb_use_material(g, k, in->how, in->season);
+		glb_label(labels[nprims], in, glb_prim_names[i]);
+		prims[nprims] = glb_add_prim(g, in->mesh[i], labels[nprims],
+					     colored ? in->colors[i] : NULL, mat);
+		nprims++;
 	}
-	/* the wind's data after all the still model's: its bytes stay where they were */
-	g->naccessors = g->nviews;
+	if (nprims == 0)
+		return false;
+	/* the wind's data after all the still mesh's: in model.glb its bytes stay where they
+	 * were */
 	for (size_t p = 0; anim && p < nprims; p++)
-		prims[p] = glb_add_targets(g, prims[p], &accessors, &views, prim_names[p],
-					   &anim->prims[p], anim->floats);
+		prims[p] = glb_add_targets(g, prims[p], labels[p], &anim->prims[p], anim->floats);
+	g->quantized = g->quantized || (anim && !anim->floats);
+	primitives = json_object_new_array();
 	for (size_t p = 0; p < nprims; p++)
 		primitives = json_out_push(primitives, prims[p]);
+	mesh = json_object_new_object();
+	mesh = json_out_set(mesh, "name", jstr(in->name));
+	mesh = json_out_set(mesh, "primitives", primitives);
+	if (anim)
+		mesh = glb_mesh_weights(mesh);
+	g->meshes = json_out_push(g->meshes, mesh);
+	*index = g->nmeshes++;
+	return true;
+}
 
-	scene = json_object_new_object();
-	scenes = json_object_new_array();
-	if (nprims == 0) {
-		/* Nothing drawn yet: still a valid glTF, an empty scene. */
-		root = json_out_set(root, "scenes", json_out_push(scenes, scene));
-		json_object_put(primitives);
-		json_object_put(accessors);
-		json_object_put(views);
-		json_object_put(materials);
-	} else {
-		struct json_object *node = json_object_new_object();
-		struct json_object *mesh = json_object_new_object();
+/* Appends a node named name with the mesh (NULL: none) at translation (NULL: none); its
+ * index. */
+static size_t glb_add_node(struct glb *g, const char *name, const size_t *mesh,
+			   const double *translation)
+{
+	struct json_object *node = json_object_new_object();
+
+	node = json_out_set(node, "name", jstr(name));
+	if (mesh)
+		node = json_out_set(node, "mesh", jint(*mesh));
+	if (translation)
+		node = json_out_set(node, "translation", jvec(translation, 3));
+	g->nodes = json_out_push(g->nodes, node);
+	return g->nnodes++;
+}
+
+/* Moves one of g's arrays into root under key when it has anything. */
+static struct json_object *glb_move(struct json_object *root, const char *key,
+				    struct json_object **arr, size_t n)
+{
+	struct json_object *a = *arr;
+
+	if (n == 0)
+		return root;
+	*arr = NULL;
+	return json_out_set(root, key, a);
+}
+
+/* The JSON document: the arrays move into it; NULL without memory. */
+static struct json_object *glb_root(struct glb *g)
+{
+	struct json_object *root = json_object_new_object(), *asset = json_object_new_object();
+	struct json_object *scene = json_object_new_object();
+
+	asset = json_out_set(asset, "version", jstr("2.0"));
+	asset = json_out_set(asset, "generator", jstr("edaha"));
+	root = json_out_set(root, "asset", asset);
+	if (g->quantized)
+		root = glb_quantization(root);
+	root = json_out_set(root, "scene", jint(0));
+	if (g->nnodes) {
+		/* every node a root of the scene: a tree is one node */
+		struct json_object *nodes = json_object_new_array_ext((int)g->nnodes);
+
+		for (size_t i = 0; i < g->nnodes; i++)
+			nodes = json_out_push(nodes, jint(i));
+		scene = json_out_set(scene, "nodes", nodes);
+	}
+	/* Nothing drawn: still a valid glTF, an empty scene. */
+	root = json_out_set(root, "scenes", json_out_push(json_object_new_array(), scene));
+	root = glb_move(root, "nodes", &g->nodes, g->nnodes);
+	root = glb_move(root, "meshes", &g->meshes, g->nmeshes);
+	root = glb_move(root, "accessors", &g->accessors, g->naccessors);
+	root = glb_move(root, "bufferViews", &g->views, g->nviews);
+	if (g->bin_len) {
 		struct json_object *buffer = json_object_new_object();
-		struct json_object *animations = NULL;
 
-		scene = json_out_set(scene, "nodes", json_out_push(json_object_new_array(), jint(0)));
-		root = json_out_set(root, "scenes", json_out_push(scenes, scene));
-		node = json_out_set(node, "name", jstr(in->name));
-		node = json_out_set(node, "mesh", jint(0));
-		root = json_out_set(root, "nodes", json_out_push(json_object_new_array(), node));
-		mesh = json_out_set(mesh, "name", jstr(in->name));
-		mesh = json_out_set(mesh, "primitives", primitives);
-		if (anim) {
-			mesh = glb_mesh_weights(mesh);
-			/* its accessors and views last: after every primitive's */
-			animations = glb_add_animation(g, &accessors, &views, anim);
-		}
-		root = json_out_set(root, "meshes", json_out_push(json_object_new_array(), mesh));
-		root = json_out_set(root, "accessors", accessors);
-		root = json_out_set(root, "bufferViews", views);
 		buffer = json_out_set(buffer, "byteLength", jint(g->bin_len));
 		root = json_out_set(root, "buffers", json_out_push(json_object_new_array(), buffer));
-		root = json_out_set(root, "materials", materials);
-		if (anim)
-			root = json_out_set(root, "animations", animations);
 	}
-	g->root = root;
-	return root ? 0 : -ENOMEM;
+	root = glb_move(root, "materials", &g->materials, g->nmats);
+	if (g->nsamplers) {
+		struct json_object *anim = json_object_new_object();
+
+		anim = json_out_set(anim, "name", jstr("wind"));
+		anim = glb_move(anim, "channels", &g->channels, g->nsamplers);
+		anim = glb_move(anim, "samplers", &g->samplers, g->nsamplers);
+		root = json_out_set(root, "animations", json_out_push(json_object_new_array(), anim));
+	}
+	return root;
 }
 
 /* A colour channel as a normalized unsigned byte: the nearest of 0/255 .. 255/255 (in
@@ -655,62 +781,129 @@ static int glb_write(struct buf *out, const char *json, size_t json_len, const s
 	    (r = buf_append_u32le(out, GLB_CHUNK_BIN)) < 0)
 		return r;
 	for (size_t i = 0; i < g->nviews; i++) {
-		r = glb_append_view(out, &g->views[i]);
+		r = glb_append_view(out, &g->bin[i]);
 		if (r < 0)
 			return r;
 	}
 	return append_fill(out, bin_padded - g->bin_len, 0);
 }
 
-/* The GLB of in's meshes, every primitive that has triangles, appended to out or nothing
- * at all. */
-static int glb_export(const struct glb_input *in, struct buf *out)
+/* The GLB of g appended to out, or nothing at all. */
+static int glb_write_doc(struct glb *g, struct buf *out)
 {
-	struct glb g;
+	struct json_object *root;
 	struct buf json;
 	size_t start = out->len;
 	int r;
 
-	memset(&g, 0, sizeof(g));
+	if (g->nomem)
+		return -ENOMEM;
+	root = glb_root(g);
+	if (!root)
+		return -ENOMEM;
 	buf_init(&json);
-	r = glb_build_json(&g, in);
-	if (r < 0)
-		return r;
-	r = json_out_append(g.root, NULL, &json);
+	r = json_out_append(root, NULL, &json);
 	if (r == 0)
-		r = glb_write(out, (const char *)json.data, json.len, &g);
-	json_object_put(g.root);
+		r = glb_write(out, (const char *)json.data, json.len, g);
+	json_object_put(root);
 	buf_finish(&json);
 	if (r < 0)
 		out->len = start; /* no half-written file */
 	return r;
 }
 
-/* The wind's targets and keys for in's used primitives; in->anim stays NULL for a tree
- * without branches or whose meshes cannot be bound (no segment to bind them to). */
-static int glb_wind(struct glb_input *in, struct export_wind_anim *anim,
-		    struct export_wind_tree *wt, const struct tree *t,
-		    const struct tree_mesh_marks *mk, const struct export_wind *wind)
+/* The GLB of one mesh (a node named in->name, with its channel of the wind if any). */
+static int glb_export(const struct glb_input *in, struct buf *out)
+{
+	struct glb g;
+	size_t mesh;
+	int r;
+
+	r = glb_init(&g);
+	if (r == 0 && glb_add_mesh(&g, in, &mesh)) {
+		size_t node = glb_add_node(&g, in->name, &mesh, NULL);
+
+		if (in->anim)
+			glb_add_channel(&g, in->anim, node, "wind");
+	}
+	if (r == 0)
+		r = glb_write_doc(&g, out);
+	glb_free(&g);
+	return r;
+}
+
+/* The wind's targets and keys for in's used primitives over `loop` (0: the tree's own);
+ * in->anim stays NULL for a tree without branches or whose meshes cannot be bound (no
+ * segment to bind them to). */
+static int glb_wind(struct glb_input *in, struct export_wind_anim *anim, const struct tree *t,
+		    const struct tree_mesh_marks *mk, const struct export_wind *wind, double loop)
 {
 	const struct mesh *meshes[GLB_NPRIMS];
 	enum export_wind_bind bind[GLB_NPRIMS];
+	struct export_wind_tree wt;
 	size_t n = 0;
-	int r = export_wind_tree_init(wt, t, wind);
+	int r = export_wind_tree_init(&wt, t, wind, loop);
 
-	if (r == -ENODATA)
-		return 0;
 	for (size_t i = 0; r == 0 && i < GLB_NPRIMS; i++) {
 		if (!glb_prim_used(in, i))
 			continue;
 		meshes[n] = in->mesh[i];
 		bind[n++] = glb_prim_bind[i];
 	}
-	if (r < 0 || n == 0)
+	if (r == 0 && n > 0) {
+		r = export_wind_anim_build(anim, &wt, t, mk, meshes, bind, n, wind->floats);
+		if (r == 0)
+			in->anim = anim;
+		r = r == -EINVAL ? 0 : r;
+	}
+	export_wind_tree_finish(&wt);
+	return r == -ENODATA ? 0 : r;
+}
+
+/* One tree's part of a file: what its views point into, until the file is written. */
+struct glb_tree {
+	struct glb_input in;
+	struct export_leaves el, vel;
+	struct export_vines ev;
+	struct export_wind_anim anim;
+};
+
+/* The tree's meshes (m, its wood's bark, its vines meshed), the leaves' colours, and with
+ * wind its targets and keys over loop. 0, -EINVAL (the wind's parameters) or -ENOMEM; gt
+ * is finish-able either way. */
+static int glb_tree_init(struct glb_tree *gt, const struct tree *t, const struct tree_mesh *m,
+			 const struct tree_mesh_marks *mk, const struct export_wind *wind,
+			 double loop)
+{
+	int r;
+
+	memset(gt, 0, sizeof(*gt));
+	gt->in.mesh[GLB_BARK] = &m->bark;
+	/* m leaves the voxelised branches out: their bark is the wood's */
+	gt->in.mesh[GLB_WOOD] = t->wood ? &t->wood->bark : NULL;
+	gt->in.mesh[GLB_LEAVES] = &m->leaves;
+	gt->in.how = export_look(t->season);
+	gt->in.season = t->season;
+	gt->in.name = "tree";
+	r = export_vines_build(&gt->ev, t);
+	if (r < 0)
 		return r;
-	r = export_wind_anim_build(anim, wt, t, mk, meshes, bind, n, wind->floats);
-	if (r == 0)
-		in->anim = anim;
-	return r == -EINVAL ? 0 : r;
+	gt->in.mesh[GLB_VINE] = &gt->ev.stems;
+	gt->in.mesh[GLB_VINE_LEAVES] = &gt->ev.leaves;
+	if (gt->in.how == EXPORT_LEAVES_COLORED) {
+		export_leaves_init(&gt->el, t, &m->leaves, mk);
+		/* no marks: the vines' leaves one part, in the palette's first colour */
+		export_leaves_init(&gt->vel, t, &gt->ev.leaves, NULL);
+		gt->in.colors[GLB_LEAVES] = &gt->el;
+		gt->in.colors[GLB_VINE_LEAVES] = &gt->vel;
+	}
+	return wind ? glb_wind(&gt->in, &gt->anim, t, mk, wind, loop) : 0;
+}
+
+static void glb_tree_finish(struct glb_tree *gt)
+{
+	export_wind_anim_finish(&gt->anim);
+	export_vines_finish(&gt->ev);
 }
 
 /* The tree's GLB, with its wind when given. */
@@ -718,42 +911,12 @@ static int glb_tree(const struct tree *t, const struct tree_mesh *m,
 		    const struct tree_mesh_marks *mk, const struct export_wind *wind,
 		    struct buf *out)
 {
-	struct glb_input in = {
-		.mesh = { [GLB_BARK] = &m->bark,
-			  /* m leaves the voxelised branches out: their bark is the wood's */
-			  [GLB_WOOD] = t->wood ? &t->wood->bark : NULL,
-			  [GLB_LEAVES] = &m->leaves },
-		.how = export_look(t->season),
-		.season = t->season,
-		.name = "tree",
-	};
-	struct export_leaves el, vel;
-	struct export_vines ev;
-	struct export_wind_tree wt;
-	struct export_wind_anim anim;
-	int r;
+	struct glb_tree gt;
+	int r = glb_tree_init(&gt, t, m, mk, wind, 0.0);
 
-	memset(&wt, 0, sizeof(wt));
-	memset(&anim, 0, sizeof(anim));
-	r = export_vines_build(&ev, t);
-	if (r == 0) {
-		in.mesh[GLB_VINE] = &ev.stems;
-		in.mesh[GLB_VINE_LEAVES] = &ev.leaves;
-		if (in.how == EXPORT_LEAVES_COLORED) {
-			export_leaves_init(&el, t, &m->leaves, mk);
-			/* no marks: the vines' leaves one part, in the palette's first colour */
-			export_leaves_init(&vel, t, &ev.leaves, NULL);
-			in.colors[GLB_LEAVES] = &el;
-			in.colors[GLB_VINE_LEAVES] = &vel;
-		}
-		if (wind)
-			r = glb_wind(&in, &anim, &wt, t, mk, wind);
-		if (r == 0)
-			r = glb_export(&in, out);
-	}
-	export_wind_anim_finish(&anim);
-	export_wind_tree_finish(&wt);
-	export_vines_finish(&ev);
+	if (r == 0)
+		r = glb_export(&gt.in, out);
+	glb_tree_finish(&gt);
 	return r;
 }
 
@@ -781,4 +944,88 @@ int export_glb_leaf(const struct mesh *m, const char *name, struct buf *out)
 	};
 
 	return glb_export(&in, out);
+}
+
+/* ---- many trees: export_gltf.h ------------------------------------------------------ */
+
+struct export_gltf {
+	struct glb g;
+	struct glb_tree **trees; /* each allocated once: its views point into it */
+	size_t ntrees, cap;
+};
+
+struct export_gltf *export_gltf_create(void)
+{
+	struct export_gltf *d = calloc(1, sizeof(*d));
+
+	if (d && glb_init(&d->g) < 0) {
+		export_gltf_destroy(d);
+		return NULL;
+	}
+	return d;
+}
+
+void export_gltf_destroy(struct export_gltf *d)
+{
+	if (!d)
+		return;
+	for (size_t i = 0; i < d->ntrees; i++) {
+		glb_tree_finish(d->trees[i]);
+		free(d->trees[i]);
+	}
+	free(d->trees);
+	glb_free(&d->g);
+	free(d);
+}
+
+/* Room for one more tree; NULL without memory. */
+static struct glb_tree *gltf_new_tree(struct export_gltf *d)
+{
+	struct glb_tree *gt;
+
+	if (d->ntrees == d->cap) {
+		size_t cap = d->cap ? 2 * d->cap : 16;
+		struct glb_tree **trees = realloc(d->trees, cap * sizeof(*trees));
+
+		if (!trees)
+			return NULL;
+		d->trees = trees;
+		d->cap = cap;
+	}
+	gt = malloc(sizeof(*gt));
+	if (gt)
+		d->trees[d->ntrees++] = gt;
+	return gt;
+}
+
+int export_gltf_add_tree(struct export_gltf *d, const struct tree *t, const struct tree_mesh *m,
+			 const struct tree_mesh_marks *mk, const struct export_wind *wind,
+			 double loop, const struct export_gltf_node *node)
+{
+	struct glb_tree *gt = gltf_new_tree(d);
+	size_t mesh, index;
+	bool has_mesh;
+	int r;
+
+	if (!gt)
+		return -ENOMEM;
+	r = glb_tree_init(gt, t, m, mk, wind, loop);
+	if (r < 0)
+		return r;
+	gt->in.name = node->name;
+	gt->in.label = node->name;
+	has_mesh = glb_add_mesh(&d->g, &gt->in, &mesh);
+	index = glb_add_node(&d->g, node->name, has_mesh ? &mesh : NULL, node->translation);
+	if (has_mesh && gt->in.anim) {
+		char label[GLB_LABEL_MAX];
+
+		snprintf(label, sizeof(label), "%s.wind", node->name);
+		glb_add_channel(&d->g, gt->in.anim, index, label);
+	}
+	return 0;
+}
+
+int export_gltf_write(struct export_gltf *d, struct buf *out)
+{
+	return glb_write_doc(&d->g, out);
 }

@@ -167,7 +167,7 @@ int export_skeleton_wind(const struct tree *t, const struct export_wind *wind, s
 
 	if (!wind)
 		return export_skeleton(t, out);
-	r = export_wind_tree_init(&wt, t, wind);
+	r = export_wind_tree_init(&wt, t, wind, 0.0);
 	if (r == -ENODATA) {
 		export_wind_tree_finish(&wt);
 		return export_skeleton(t, out);

@@ -19,14 +19,22 @@ double export_wind_strength(const struct export_wind *w)
 	return w->strength == 0.0 ? LIVE_WIND_DEFAULT_STRENGTH : w->strength;
 }
 
-int export_wind_tree_init(struct export_wind_tree *wt, const struct tree *t,
-			  const struct export_wind *p)
+bool export_wind_valid(const struct export_wind *p, double loop)
 {
-	struct live_wind_params wp = { export_wind_strength(p), p->angle };
+	return p->strength >= 0.0 && p->strength <= 1.0 && isfinite(p->angle) &&
+	       (loop == 0.0 ||
+		(loop >= LIVE_WIND_COMMON_LOOP_MIN_S && loop <= LIVE_WIND_COMMON_LOOP_MAX_S));
+}
+
+int export_wind_tree_init(struct export_wind_tree *wt, const struct tree *t,
+			  const struct export_wind *p, double loop)
+{
+	struct live_wind_params wp = { .strength = export_wind_strength(p), .angle = p->angle,
+				       .loop = loop };
 	int r;
 
 	memset(wt, 0, sizeof(*wt));
-	if (!(p->strength >= 0.0 && p->strength <= 1.0) || !isfinite(p->angle))
+	if (!export_wind_valid(p, loop))
 		return -EINVAL;
 	if (t->nbranches == 0)
 		return -ENODATA;

@@ -19,12 +19,16 @@ struct export_wind_tree {
 };
 
 /*
- * The parameters are checked first: -EINVAL (strength outside 0..1, angle not finite).
- * Then -ENODATA for a tree without branches (nothing to sway), else 0 or -ENOMEM. wt can
- * be finished whatever was returned.
+ * The wind over `loop` seconds: 0 the tree's own loop (model.glb), else a common loop
+ * (forest.glb: live_wind_params.loop). The parameters are checked first: -EINVAL
+ * (strength outside 0..1, angle not finite, loop out of bounds). Then -ENODATA for a tree
+ * without branches (nothing to sway), else 0 or -ENOMEM. wt can be finished whatever was
+ * returned.
  */
 int export_wind_tree_init(struct export_wind_tree *wt, const struct tree *t,
-			  const struct export_wind *p);
+			  const struct export_wind *p, double loop);
+/* Whether export_wind_tree_init takes p and loop (-EINVAL's test alone). */
+bool export_wind_valid(const struct export_wind *p, double loop);
 void export_wind_tree_finish(struct export_wind_tree *wt);
 
 /* How a primitive's vertices are bound to the skeleton, as the renderer binds them. */

@@ -182,7 +182,11 @@ int live_attrs_bind_nearest(struct live_attrs *a, const struct live_skeleton *sk
  *   cantilever's first mode scales as r / L^2; with r ~ L^1.5, period ~ sqrt(L)).
  * - The loop: T_loop = n P0, n = the most whole periods within LIVE_WIND_LOOP_MAX_S; every
  *   frequency is a whole number of cycles a loop (harmonic m: f = m / T_loop), so the sum
- *   loops seamlessly. Band 0 is harmonic n.
+ *   loops seamlessly. Band 0 is harmonic n. A common loop (p.loop > 0: the forest, where
+ *   every tree's wind must loop over the same seconds) is T_loop = p.loop, and n the whole
+ *   number nearest p.loop / P0 (at least 1): the trunk sways at p.loop / n, within 17% of
+ *   P0 for trees 5 to 15 m tall in an 8 s loop (docs/living-trees.md, "A common
+ *   loop"); the rest follows from T_loop as above.
  * - band k = 1..3: w_k (metres of branch inside band k up to the point) times
  *   amp_k = S * LIVE_WIND_BAND_SWAY[k] along E_k = unit(D + LIVE_WIND_BAND_BOB[k] y), as
  *   sin(2 pi f_k t + phi_k): phi_k the band-entry branch's phase; f_k the harmonic
@@ -216,9 +220,18 @@ int live_attrs_bind_nearest(struct live_attrs *a, const struct live_skeleton *sk
 #define LIVE_WIND_BAND_SWAY { 0.0, 0.06, 0.12, 0.20 }
 #define LIVE_WIND_BAND_BOB { 0.0, 0.25, 0.35, 0.5 }
 
+/* A common loop's bounds (live_wind_params.loop), seconds: at least the shortest trunk
+ * period; at most a minute, which keeps every harmonic (the leaves': 3.5 Hz x 60 s) and an
+ * export's keys few. The forest's loop is LIVE_WIND_COMMON_LOOP_S. */
+#define LIVE_WIND_COMMON_LOOP_MIN_S LIVE_WIND_PERIOD_MIN_S
+#define LIVE_WIND_COMMON_LOOP_MAX_S 60.0
+#define LIVE_WIND_COMMON_LOOP_S LIVE_WIND_LOOP_MAX_S
+
 struct live_wind_params {
 	double strength; /* S, 0..1: 0 still, LIVE_WIND_DEFAULT_STRENGTH a breeze */
 	double angle;    /* radians at t = 0: D = (cos, 0, sin) */
+	double loop;     /* 0: the tree's own loop; else the loop, seconds, in
+			  * [LIVE_WIND_COMMON_LOOP_MIN_S, LIVE_WIND_COMMON_LOOP_MAX_S] */
 };
 
 /* live_wind_targets' order: band 0 along and across, bands 1..3 and the leaves' (sin, cos). */
@@ -234,7 +247,7 @@ enum {
 struct live_wind {
 	double strength, angle;
 	double height;  /* H, m */
-	double period;  /* P0, s */
+	double period;  /* P0, s (the tree's own, whatever the loop) */
 	double loop;    /* T_loop, s */
 	/* whole cycles a loop: [0] band 0, [1..3] bands 1..3; [4] the leaves. The across
 	 * motion runs at 2 * harmonic[0]. */
@@ -245,8 +258,8 @@ struct live_wind {
 };
 
 /*
- * The wind of sk's tree at p. 0, or -EINVAL (strength outside 0..1, angle not finite;
- * w untouched).
+ * The wind of sk's tree at p. 0, or -EINVAL (strength outside 0..1, angle not finite, loop
+ * neither 0 nor within its bounds; w untouched).
  */
 int live_wind_setup(struct live_wind *w, const struct live_skeleton *sk,
 		    const struct live_wind_params *p);

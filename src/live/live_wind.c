@@ -3,6 +3,7 @@
  * morph targets and weights (live.h). */
 #include <errno.h>
 #include <math.h>
+#include <stdbool.h>
 
 #include "live_private.h"
 
@@ -31,20 +32,34 @@ static int next_harmonic(double want, int above, int across)
 	return m;
 }
 
+/* Whether a loop is 0 (the tree's own) or a common loop within its bounds. */
+static bool loop_valid(double loop)
+{
+	return loop == 0.0 ||
+	       (loop >= LIVE_WIND_COMMON_LOOP_MIN_S && loop <= LIVE_WIND_COMMON_LOOP_MAX_S);
+}
+
 int live_wind_setup(struct live_wind *w, const struct live_skeleton *sk,
 		    const struct live_wind_params *p)
 {
 	int n;
 
-	if (!(p->strength >= 0 && p->strength <= 1) || !isfinite(p->angle))
+	if (!(p->strength >= 0 && p->strength <= 1) || !isfinite(p->angle) || !loop_valid(p->loop))
 		return -EINVAL;
 	w->strength = p->strength;
 	w->angle = p->angle;
 	w->height = sk->height;
 	w->period = trunk_period(sk->height);
-	n = (int)floor(LIVE_WIND_LOOP_MAX_S / w->period);
-	n = n < 1 ? 1 : n;
-	w->loop = n * w->period;
+	if (p->loop > 0.0) {
+		/* the common loop: the trunk's period the nearest whole part of it */
+		n = (int)lround(p->loop / w->period);
+		n = n < 1 ? 1 : n;
+		w->loop = p->loop;
+	} else {
+		n = (int)floor(LIVE_WIND_LOOP_MAX_S / w->period);
+		n = n < 1 ? 1 : n;
+		w->loop = n * w->period;
+	}
 	w->harmonic[0] = n;
 	for (int k = 1; k < LIVE_BANDS; k++)
 		w->harmonic[k] = next_harmonic(band_hz[k] * w->loop, w->harmonic[k - 1], 2 * n);

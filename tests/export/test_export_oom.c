@@ -4,7 +4,8 @@
  * exporter in turn, the glTF and OBJ exporters in every season, a tree with a vine too
  * (the exporters mesh it) and a grown tree (its wood's bark, skeleton.json's "wood"),
  * with the wind too (export_glb_wind's bindings, targets and keys; skeleton.json's
- * "wind"); each must return -ENOMEM, leave nothing half-built and leak nothing.
+ * "wind"), and a forest of three trees (export_glb_forest, still and with the wind); each
+ * must return -ENOMEM, leave nothing half-built and leak nothing.
  * Allocations fail through tests/lib/fail_alloc.c, which replaces malloc & co., so it is not
  * built with sanitizers, which replace them too.
  */
@@ -207,6 +208,65 @@ static void wood_tree(void)
 	tree_finish(&t);
 }
 
+/* A forest of three trees: a summer and an autumn synth_tree and the vine tree. */
+struct forest_job {
+	struct tree t[3];
+	struct tree_mesh tm[3];
+	struct tree_mesh_marks mk[3];
+	struct export_forest_tree f[3];
+	bool wind;
+};
+
+static struct forest_job forest_job;
+
+static int op_glb_forest(const struct job *j)
+{
+	const struct export_wind ew = { .strength = 0.0, .angle = EXPORT_WIND_ANGLE };
+	struct buf b;
+	int r;
+
+	(void)j;
+	buf_init(&b);
+	r = export_glb_forest(forest_job.f, 3, forest_job.wind ? &ew : NULL, 8.0, &b);
+	if (r < 0)
+		CHECK_INT(b.len, 0);
+	buf_finish(&b);
+	return r;
+}
+
+static void forest(void)
+{
+	struct forest_job *fj = &forest_job;
+	long n;
+
+	for (size_t i = 0; i < 3; i++) {
+		tree_init(&fj->t[i]);
+		tree_mesh_init(&fj->tm[i]);
+		tree_mesh_marks_init(&fj->mk[i]);
+		if (i < 2)
+			CHECK_INT(synth_tree(&fj->t[i], 8 + 4 * (int)i, 2, 20 + i), 0);
+		else
+			CHECK_INT(synth_vine_tree(&fj->t[i], 1), 0);
+		fj->t[i].season = i == 1 ? SEASON_AUTUMN : SEASON_SUMMER;
+		CHECK_INT(tree_mesh_build_marked(&fj->tm[i], &fj->t[i], &fj->mk[i]), 0);
+		fj->f[i] = (struct export_forest_tree){ .tree = &fj->t[i], .mesh = &fj->tm[i],
+							.marks = &fj->mk[i], .seed = i,
+							.number = i + 1, .position = { 3.0 * i, 0, 0 } };
+	}
+	for (int w = 0; w < 2; w++) {
+		fj->wind = w;
+		n = exhaust(op_glb_forest, NULL);
+		printf("export_glb_forest of 3 trees%s: %ld allocations, each failed once\n",
+		       w ? " with the wind" : "", n);
+		CHECK(n > 0);
+	}
+	for (size_t i = 0; i < 3; i++) {
+		tree_mesh_marks_finish(&fj->mk[i]);
+		tree_mesh_finish(&fj->tm[i]);
+		tree_finish(&fj->t[i]);
+	}
+}
+
 int main(void)
 {
 	struct tree t;
@@ -253,5 +313,6 @@ int main(void)
 	tree_finish(&t);
 	vine_tree();
 	wood_tree();
+	forest();
 	return 0;
 }

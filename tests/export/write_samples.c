@@ -9,15 +9,23 @@
  * beside the twigs' swept tubes) in summer and winter, wood-SEASON.glb/.obj/.mtl, with
  * wood.skeleton.json. Every NAME.glb also as NAME-wind.glb, with the tree's sway at the
  * default breeze (export_glb_wind: KHR_mesh_quantization's byte targets), and
- * synth-500-wind-floats.glb with float targets. See validate_samples.sh.
+ * synth-500-wind-floats.glb with float targets. Then today's forest (issue 27,
+ * export_glb_forest): forest-3.glb and forest-40.glb still, forest-3-wind.glb and
+ * forest-40-wind.glb with the wind over the common 8 s loop: 3 trees (500 branches'
+ * little sister in summer, the vine tree in autumn, the grown tree in spring) and 40
+ * synth_trees in every season, on a sunflower spiral. `write_samples DIR forest` writes
+ * the forests alone (blender.sh). See validate_samples.sh.
  */
 #include <errno.h>
+#include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "buf.h"
 #include "export.h"
+#include "live.h"
 #include "mesh.h"
 #include "synth_tree.h"
 #include "synth_vine.h"
@@ -214,13 +222,115 @@ static int wood_seasons(const char *dir, struct tree *t)
 	return r;
 }
 
+/* A forest's trees, built, and where they stand. */
+struct forest {
+	struct tree t[40];
+	struct tree_mesh tm[40];
+	struct tree_mesh_marks mk[40];
+	struct export_forest_tree f[40];
+	size_t n;
+};
+
+/* Tree k of the forest (its t[k] made) meshed and placed at slot k of a sunflower spiral,
+ * `spacing` metres its scale, numbered `number`. */
+static int forest_place(struct forest *fo, size_t k, double spacing, uint64_t number)
+{
+	const double golden = 2.399963229728653; /* radians: 137.5 degrees */
+	double rad = spacing * sqrt((double)k + 0.5), a = golden * (double)k;
+	int r = build(&fo->tm[k], &fo->mk[k], &fo->t[k]);
+
+	fo->f[k] = (struct export_forest_tree){
+		.tree = &fo->t[k], .mesh = &fo->tm[k], .marks = &fo->mk[k],
+		.seed = 100 + number, .number = number,
+		.position = { rad * cos(a), 0.0, rad * sin(a) },
+	};
+	fo->n = k + 1;
+	return r;
+}
+
+static void forest_finish(struct forest *fo)
+{
+	for (size_t k = 0; k < fo->n; k++) {
+		unbuild(&fo->tm[k], &fo->mk[k]);
+		tree_finish(&fo->t[k]);
+	}
+	fo->n = 0;
+}
+
+/* NAME.glb still and NAME-wind.glb with the forest's wind over the common loop. */
+static int write_forest(const char *dir, const char *name, const struct forest *fo)
+{
+	const struct export_wind ew = { .strength = 0.0, .angle = EXPORT_WIND_ANGLE };
+	char file[256];
+	struct buf b;
+	int r;
+
+	buf_init(&b);
+	snprintf(file, sizeof(file), "%s.glb", name);
+	r = export_glb_forest(fo->f, fo->n, NULL, 0.0, &b);
+	if (r >= 0)
+		r = write_file(dir, file, &b);
+	buf_reset(&b);
+	snprintf(file, sizeof(file), "%s-wind.glb", name);
+	if (r >= 0)
+		r = export_glb_forest(fo->f, fo->n, &ew, LIVE_WIND_COMMON_LOOP_S, &b);
+	if (r >= 0)
+		r = write_file(dir, file, &b);
+	buf_finish(&b);
+	return r;
+}
+
+/* forest-3 and forest-40, still and with the wind. */
+static int forests(const char *dir)
+{
+	static const enum season seasons[] = { SEASON_SUMMER, SEASON_AUTUMN, SEASON_SPRING,
+					       SEASON_WINTER };
+	struct forest *fo = calloc(1, sizeof(*fo));
+	int r = fo ? 0 : -ENOMEM;
+
+	/* three kinds: 60 branches in summer, the vine tree in autumn, the grown tree in
+	 * spring, numbered as a day's 3rd, 5th and 6th */
+	for (size_t k = 0; k < 3 && r >= 0; k++) {
+		tree_init(&fo->t[k]);
+		r = k == 0 ? synth_tree(&fo->t[k], 60, 4, 3)
+		    : k == 1 ? synth_vine_tree(&fo->t[k], 2)
+			     : synth_wood_tree(&fo->t[k], 1, WOOD_BROADLEAF);
+		fo->t[k].season = seasons[k];
+		if (r >= 0)
+			r = forest_place(fo, k, 3.0, k == 0 ? 3 : k + 4);
+	}
+	if (r >= 0)
+		r = write_forest(dir, "forest-3", fo);
+	if (fo)
+		forest_finish(fo);
+	for (size_t k = 0; k < 40 && r >= 0; k++) {
+		tree_init(&fo->t[k]);
+		r = synth_tree(&fo->t[k], 5 + (int)(k * 7 % 40), (int)(k % 4), 200 + k);
+		fo->t[k].season = seasons[k % 4];
+		if (r >= 0)
+			r = forest_place(fo, k, 4.0, 11 + k);
+	}
+	if (r >= 0)
+		r = write_forest(dir, "forest-40", fo);
+	if (fo)
+		forest_finish(fo);
+	free(fo);
+	return r;
+}
+
 int main(int argc, char **argv)
 {
 	struct tree t;
 	int r;
 
+	if (argc == 3 && !strcmp(argv[2], "forest")) {
+		r = forests(argv[1]);
+		if (r < 0)
+			fprintf(stderr, "write_samples: %s\n", strerror(-r));
+		return r < 0;
+	}
 	if (argc != 2) {
-		fprintf(stderr, "usage: write_samples DIR\n");
+		fprintf(stderr, "usage: write_samples DIR [forest]\n");
 		return 2;
 	}
 	tree_init(&t);
@@ -246,6 +356,8 @@ int main(int argc, char **argv)
 		r = vine_seasons(argv[1], &t);
 	if (r >= 0)
 		r = wood_seasons(argv[1], &t);
+	if (r >= 0)
+		r = forests(argv[1]);
 	tree_finish(&t);
 	if (r < 0) {
 		fprintf(stderr, "write_samples: %s\n", strerror(-r));

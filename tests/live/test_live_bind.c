@@ -155,7 +155,7 @@ static double stretch(const struct live_skeleton *sk, const struct live_attrs *a
 		      const struct mesh *m)
 {
 	struct live_wind w;
-	struct live_wind_params p = { 1.0, 0.4 };
+	struct live_wind_params p = { .strength = 1.0, .angle = 0.4 };
 	double worst = 0.0;
 
 	CHECK_INT(live_wind_setup(&w, sk, &p), 0);
@@ -243,7 +243,7 @@ static void check_tree(const struct tree *t, uint64_t seed, struct rng *r)
 	CHECK_INT(live_attrs_bind_nearest(&near, &sk, t, &tm.bark), 0);
 	{
 		struct live_wind w;
-		struct live_wind_params p = { 1.0, 0.0 };
+		struct live_wind_params p = { .strength = 1.0, .angle = 0.0 };
 
 		CHECK_INT(live_wind_setup(&w, &sk, &p), 0);
 		for (size_t b = 0; b < t->nbranches; b++)

@@ -191,7 +191,7 @@ static void check_leaves(const struct live_skeleton *sk, const struct live_wind 
 static void check_tree(const char *name, const struct tree *t, double angle, uint64_t seed,
 		       bool quiet)
 {
-	struct live_wind_params p = { LIVE_WIND_DEFAULT_STRENGTH, angle };
+	struct live_wind_params p = { .strength = LIVE_WIND_DEFAULT_STRENGTH, .angle = angle };
 	struct live_skeleton sk;
 	struct live_wind w;
 	struct rng r;
@@ -292,7 +292,7 @@ static void check_tree(const char *name, const struct tree *t, double angle, uin
 /* The trunk's period, measured: the dominant period of its top's offset. */
 static double measured_period(const struct tree *t, double *formula)
 {
-	struct live_wind_params p = { LIVE_WIND_DEFAULT_STRENGTH, 0.0 };
+	struct live_wind_params p = { .strength = LIVE_WIND_DEFAULT_STRENGTH, .angle = 0.0 };
 	struct live_skeleton sk;
 	struct live_wind w;
 	struct vec3 x[SAMPLES];
@@ -333,8 +333,10 @@ static void test_strength(void)
 	struct tree t;
 	struct live_skeleton sk;
 	struct live_wind w0, w1, wd;
-	struct live_wind_params still = { 0.0, 0.3 }, full = { 1.0, 0.3 },
-				bad = { 1.5, 0.0 }, nan_angle = { 0.5, NAN };
+	struct live_wind_params still = { .strength = 0.0, .angle = 0.3 },
+				full = { .strength = 1.0, .angle = 0.3 },
+				bad = { .strength = 1.5, .angle = 0.0 },
+				nan_angle = { .strength = 0.5, .angle = NAN };
 	struct live_vertex top;
 	double amp1 = 0.0;
 
@@ -385,25 +387,28 @@ static void test_seed(void)
 	tree_finish(&t);
 }
 
-int main(int argc, char **argv)
+/* A check of one tree: its name, the wind's angle, the seed of its phases. */
+typedef void (*tree_check)(const char *name, const struct tree *t, double angle, uint64_t seed,
+			   bool quiet);
+
+/* The trees every property runs on: the demo (as drawn, in 3D), the presets, a 15 m tree
+ * and `n` seeded random trees of 2..121 branches, 5..15 m. */
+static void each_tree(tree_check check, int n)
 {
 	struct tree t;
 	struct rng r;
-	int n = test_cases(RANDOM_TREES);
 
-	CHECK(argc == 2);
-	data_dir = argv[1];
 	tree_init(&t);
 	live_trees_demo(&t, data_dir, false);
-	check_tree("demo", &t, 0.0, 1, false);
+	check("demo", &t, 0.0, 1, false);
 	live_trees_demo(&t, data_dir, true);
-	check_tree("demo 3D", &t, 0.0, 1, false);
+	check("demo 3D", &t, 0.0, 1, false);
 	for (int p = 0; p < GEN_PRESET_COUNT; p++) {
 		live_trees_preset(&t, (enum gen_preset)p);
-		check_tree(gen_preset_name((enum gen_preset)p), &t, 0.0, 1, false);
+		check(gen_preset_name((enum gen_preset)p), &t, 0.0, 1, false);
 	}
 	live_trees_random(&t, 62, 10, 15, 15.0);
-	check_tree("15 m tree", &t, 0.0, 15, false);
+	check("15 m tree", &t, 0.0, 15, false);
 
 	rng_seed(&r, 26);
 	for (int i = 0; i < n; i++) {
@@ -411,9 +416,191 @@ int main(int argc, char **argv)
 		double h = rng_range(&r, 5.0, 15.0), angle = rng_range(&r, -VEC_PI, VEC_PI);
 
 		live_trees_random(&t, nb, leaves, 1000 + (uint64_t)i, h);
-		check_tree("random", &t, angle, 1000 + (uint64_t)i, true);
+		check("random", &t, angle, 1000 + (uint64_t)i, true);
 	}
 	tree_finish(&t);
+}
+
+/* What the common loop showed. */
+static struct {
+	double loop;        /* largest |offset(t) - offset(t + 8 s)| */
+	double period;      /* largest |trunk's period - P0| / P0, trees 5..15 m tall */
+	double period_h;    /* that tree's height */
+	double joint;       /* largest gap / base radius */
+	size_t trees, in_range, joints, points;
+} common;
+
+/* How far apart every tip (of a branch; of a leaf 5 cm from its anchor) is at t and at
+ * t + period, at 8 seeded times each: the largest distance. */
+static double loop_error(const struct live_skeleton *sk, const struct live_wind *w,
+			 const struct tree *t, double period, struct rng *r)
+{
+	double err = 0.0;
+
+	for (size_t i = 0; i < t->nbranches + t->nleaves; i++) {
+		struct live_vertex v;
+
+		if (i < t->nbranches) {
+			v = at(sk, t, i, sk->branches[i].length);
+		} else {
+			CHECK(live_skeleton_leaf(sk, t, i - t->nbranches, vec3(0.36, 0.8, 0.48), &v));
+			v.leaf = 0.05f;
+		}
+		for (int k = 0; k < 8; k++) {
+			double tt = rng_range(r, -3.0 * period, 5.0 * period);
+
+			err = fmax(err, vec3_dist(live_wind_offset(w, &v, tt),
+						  live_wind_offset(w, &v, tt + period)));
+		}
+		common.points++;
+	}
+	return err;
+}
+
+/*
+ * The common loop (the forest's, LIVE_WIND_COMMON_LOOP_S = 8 s) on one tree: the loop is
+ * exactly 8 s and the motion repeats in it; the trunk sways at 8 s / n, n the whole number
+ * nearest 8 s / P0, within 20% of P0 on a tree 5 to 15 m tall; the harmonics rise as the
+ * tree's own rule makes them; the foot still and the joints closed as with the tree's own
+ * loop; the targets (what an export stores) the same as with its own loop.
+ */
+static void check_loop(const char *name, const struct tree *t, double angle, uint64_t seed,
+		       bool quiet)
+{
+	struct live_wind_params own = { .strength = LIVE_WIND_DEFAULT_STRENGTH, .angle = angle };
+	struct live_wind_params p = own;
+	struct live_skeleton sk;
+	struct live_wind w, wo;
+	struct live_vertex top;
+	struct vec3 x[SAMPLES];
+	struct rng r;
+	double period, err;
+	long n;
+
+	p.loop = LIVE_WIND_COMMON_LOOP_S;
+	rng_seed(&r, seed);
+	CHECK_INT(live_skeleton_init(&sk, t, seed), 0);
+	CHECK_INT(live_wind_setup(&w, &sk, &p), 0);
+	CHECK_INT(live_wind_setup(&wo, &sk, &own), 0);
+	CHECK(w.loop == 8.0);
+	CHECK(w.period == wo.period);
+	n = lround(8.0 / w.period);
+	CHECK_INT(w.harmonic[0], n < 1 ? 1 : n);
+	for (int k = 1; k <= LIVE_BANDS; k++) {
+		CHECK(w.harmonic[k] > w.harmonic[k - 1]);
+		CHECK(w.harmonic[k] != 2 * w.harmonic[0]);
+	}
+	CHECK(w.amp0 == wo.amp0 && w.amp_leaf == wo.amp_leaf);
+	CHECK(memcmp(w.amp, wo.amp, sizeof(w.amp)) == 0);
+	{
+		double g0[LIVE_WIND_TARGETS], g1[LIVE_WIND_TARGETS];
+
+		live_wind_weights_at(&w, 0.0, g0);
+		live_wind_weights_at(&w, 1.0, g1);
+		CHECK(memcmp(g0, g1, sizeof(g0)) == 0);
+	}
+
+	/* repeats in exactly 8 s */
+	err = loop_error(&sk, &w, t, 8.0, &r);
+	common.loop = fmax(common.loop, err);
+	CHECK(err <= 1e-9);
+
+	/* the trunk's period, measured as the dominant period of its top's offset */
+	top = at(&sk, t, 0, sk.branches[0].length);
+	for (int i = 0; i < SAMPLES; i++)
+		x[i] = live_wind_offset(&w, &top, 8.0 * i / SAMPLES);
+	CHECK_INT(live_trees_dominant(x, SAMPLES), w.harmonic[0]);
+	period = 8.0 / live_trees_dominant(x, SAMPLES);
+	if (sk.height >= 5.0 && sk.height <= 15.0) {
+		double off = fabs(period - w.period) / w.period;
+
+		if (off > common.period) {
+			common.period = off;
+			common.period_h = sk.height;
+		}
+		CHECK(off <= 0.2);
+		common.in_range++;
+	}
+
+	for (size_t b = 0; b < t->nbranches; b++) {
+		const struct branch *br = &t->branches[b];
+		struct live_vertex base = at(&sk, t, b, 0.0), pv;
+		struct vec3 tg[LIVE_WIND_TARGETS], tgo[LIVE_WIND_TARGETS];
+
+		/* the targets do not depend on the loop */
+		live_wind_targets(&w, &base, tg);
+		live_wind_targets(&wo, &base, tgo);
+		CHECK(memcmp(tg, tgo, sizeof(tg)) == 0);
+		if (br->parent < 0) {
+			/* the foot: exactly still */
+			for (int i = 0; i < JOINT_TIMES; i++) {
+				struct vec3 o = live_wind_offset(&w, &base, 8.0 * i / JOINT_TIMES);
+
+				CHECK(o.x == 0.0 && o.y == 0.0 && o.z == 0.0);
+			}
+			continue;
+		}
+		pv = at(&sk, t, (size_t)br->parent,
+			br->parent_t * sk.branches[br->parent].length);
+		for (int i = 0; i < JOINT_TIMES; i++) {
+			double tt = 8.0 * i / JOINT_TIMES;
+			double gap = vec3_dist(live_wind_offset(&w, &base, tt),
+					       live_wind_offset(&w, &pv, tt));
+
+			common.joint = fmax(common.joint, gap / br->radii[0]);
+			CHECK(gap <= 0.01 * br->radii[0]);
+		}
+		common.joints++;
+	}
+	if (!quiet)
+		printf("%-12s H %6.2f m  P0 %.2f s  in 8 s: trunk %.3f s (%+.1f%%), harmonics "
+		       "%d %d %d %d %d\n",
+		       name, sk.height, w.period, period, 100.0 * (period / w.period - 1.0),
+		       w.harmonic[0], w.harmonic[1], w.harmonic[2], w.harmonic[3], w.harmonic[4]);
+	common.trees++;
+	live_skeleton_finish(&sk);
+}
+
+/* The common loop on the same trees; loops out of bounds refused. */
+static void test_common_loop(int n)
+{
+	static const double bad[] = { -1.0, 0.5, 60.5, NAN, INFINITY };
+	struct live_wind_params p = { .strength = LIVE_WIND_DEFAULT_STRENGTH };
+	struct live_skeleton sk;
+	struct live_wind w;
+	struct tree t;
+
+	each_tree(check_loop, n);
+	printf("common loop of 8 s: %zu trees, %zu points: repeats in 8 s within %.3g m (limit "
+	       "1e-9); the trunk's period off P0 by at most %.1f%% (a %.2f m tree; %zu trees 5 "
+	       "to 15 m, limit 20%%); %zu joints, worst gap %.3g of the base radius\n",
+	       common.trees, common.points, common.loop, 100.0 * common.period, common.period_h,
+	       common.in_range, common.joints, common.joint);
+	tree_init(&t);
+	live_trees_random(&t, 10, 1, 3, 9.0);
+	CHECK_INT(live_skeleton_init(&sk, &t, 3), 0);
+	for (size_t i = 0; i < sizeof(bad) / sizeof(*bad); i++) {
+		p.loop = bad[i];
+		CHECK_INT(live_wind_setup(&w, &sk, &p), -EINVAL);
+	}
+	/* the bounds themselves are loops */
+	p.loop = LIVE_WIND_COMMON_LOOP_MIN_S;
+	CHECK_INT(live_wind_setup(&w, &sk, &p), 0);
+	CHECK(w.loop == LIVE_WIND_COMMON_LOOP_MIN_S && w.harmonic[0] == 1);
+	p.loop = LIVE_WIND_COMMON_LOOP_MAX_S;
+	CHECK_INT(live_wind_setup(&w, &sk, &p), 0);
+	CHECK(w.loop == LIVE_WIND_COMMON_LOOP_MAX_S);
+	live_skeleton_finish(&sk);
+	tree_finish(&t);
+}
+
+int main(int argc, char **argv)
+{
+	int n = test_cases(RANDOM_TREES);
+
+	CHECK(argc == 2);
+	data_dir = argv[1];
+	each_tree(check_tree, n);
 	printf("%zu trees (%d random), %zu joints, %zu twigs, %zu leaves\n",
 	       worst.trees, n, worst.joints, worst.twigs, worst.leaves);
 	printf("worst joint gap: %.3g of the base radius (limit 0.01)\n", worst.joint);
@@ -428,5 +615,6 @@ int main(int argc, char **argv)
 	test_periods();
 	test_strength();
 	test_seed();
+	test_common_loop(n);
 	return 0;
 }
