@@ -629,8 +629,9 @@ static void test_least(void)
 	tree_finish(&t);
 }
 
-/* Leaves all flattened into planes across `axis` (each at its own mean): every card faces
- * along that axis. */
+/* Leaves all flattened into planes across `axis` (each at its own mean), every other one
+ * turned over (its points reversed: their normals cancel, their axis does not): every
+ * card faces along that axis. */
 static void test_flat(void)
 {
 	const size_t budgets[] = { 500, 3000, 12000 };
@@ -653,6 +654,12 @@ static void test_flat(void)
 			mean /= (double)l->npoints;
 			for (size_t k = 0; k < l->npoints; k++)
 				*(axis == 0 ? &l->points[k].x : &l->points[k].z) = mean;
+			for (size_t k = 0; i % 2 && k < l->npoints / 2; k++) {
+				struct vec3 x = l->points[k];
+
+				l->points[k] = l->points[l->npoints - 1 - k];
+				l->points[l->npoints - 1 - k] = x;
+			}
 		}
 		for (size_t b = 0; b < sizeof(budgets) / sizeof(budgets[0]); b++) {
 			CHECK_INT(forest_lod_build(&t, budgets[b], &out, &st), 0);
@@ -669,6 +676,136 @@ static void test_flat(void)
 	}
 	printf("flat leaves: %zu cards face along their leaves' axis (|n . axis| >= 1 - %.1e)\n",
 	       cards, worst);
+	tree_mesh_finish(&out);
+	tree_finish(&t);
+}
+
+/* Where p falls on card k of m (4 vertices, corners (0,0) (1,0) (1,1) (0,1)): in-plane
+ * s, t and the distance along its normal. */
+static void card_coords(const struct mesh *m, size_t k, struct vec3 p, double *s, double *t,
+			double *h)
+{
+	struct vec3 q0 = pos(m, 4 * k), e1 = vec3_sub(pos(m, 4 * k + 1), q0);
+	struct vec3 e2 = vec3_sub(pos(m, 4 * k + 3), q0), d = vec3_sub(p, q0);
+
+	*s = vec3_dot(d, e1) / vec3_dot(e1, e1);
+	*t = vec3_dot(d, e2) / vec3_dot(e2, e2);
+	*h = vec3_dot(d, nor(m, 4 * k));
+}
+
+/* Every vertex of leaf mesh part [v0, v1) of lm seen along card k's normal falls on it,
+ * and lies on one side of it (the card on its leaves' outer face). *side: the side so
+ * far (0: none yet). Returns the most a vertex fell off, metres. */
+static double check_covers(const struct mesh *cards, size_t k, const struct mesh *lm, size_t v0,
+			   size_t v1, int *side)
+{
+	double off = 0.0, w = vec3_dist(pos(cards, 4 * k), pos(cards, 4 * k + 2));
+
+	for (size_t v = v0; v < v1; v++) {
+		double s, t, h;
+
+		card_coords(cards, k, pos(lm, v), &s, &t, &h);
+		off = fmax(off, w * fmax(fmax(-s, s - 1.0), fmax(-t, t - 1.0)));
+		CHECK(s > -1e-4 && s < 1 + 1e-4 && t > -1e-4 && t < 1 + 1e-4);
+		if (fabs(h) > 1e-5) {
+			CHECK(*side == 0 || *side == (h > 0 ? 1 : -1));
+			*side = h > 0 ? 1 : -1;
+		}
+	}
+	return off;
+}
+
+/*
+ * A budget of 0: one card for all the leaves of a few autumn trees. Its colour the mean of
+ * their palette colours by area; every leaf vertex on it seen along its normal, all behind
+ * it; its normal the axis their area vectors a gather round: sum (a . n)^2 / |a| at least
+ * that of any of 2,000 random directions.
+ */
+static void test_one_card(void)
+{
+	struct tree t;
+	struct tree_mesh out, full;
+	struct tree_mesh_marks mk;
+	struct forest_lod_colors col;
+	struct forest_lod_stats st;
+	struct rng r;
+	double worst_rgb = 0.0, worst_axis = 0.0;
+
+	tree_init(&t);
+	tree_mesh_init(&out);
+	tree_mesh_init(&full);
+	tree_mesh_marks_init(&mk);
+	forest_lod_colors_init(&col);
+	rng_seed(&r, 11);
+	for (int c = 0; c < 6; c++) {
+		const struct season_rgb *pal;
+		struct vec3 *a;
+		double area = 0.0, rgb[3] = { 0, 0, 0 }, best;
+		int side = 0;
+
+		CHECK_INT(synth_tree(&t, 20 + 60 * c, 1 + c, 300 + (uint64_t)c), 0);
+		t.season = SEASON_AUTUMN;
+		CHECK(season_palette(t.season, &pal) > 1);
+		CHECK_INT(tree_mesh_build_marked(&full, &t, &mk), 0);
+		CHECK_INT(forest_lod_build_colors(&t, 0, &out, &col, &st), 0);
+		CHECK_INT(st.cards, 1);
+		CHECK_INT(col.n, 4);
+		a = calloc(t.nleaves, sizeof(*a));
+		CHECK(a);
+		for (size_t i = 0; i < t.nleaves; i++) {
+			const struct season_rgb *lc = &pal[season_leaf_color(t.season, &t.leaves[i])];
+			double ai = 0.0;
+
+			for (size_t f = mk.leaves[i].nindices / 3; f < mk.leaves[i + 1].nindices / 3; f++) {
+				struct vec3 p = pos(&full.leaves, full.leaves.indices[3 * f]);
+				struct vec3 q = pos(&full.leaves, full.leaves.indices[3 * f + 1]);
+				struct vec3 e = pos(&full.leaves, full.leaves.indices[3 * f + 2]);
+				struct vec3 x = vec3_cross(vec3_sub(q, p), vec3_sub(e, p));
+
+				ai += 0.5 * vec3_len(x);
+				a[i] = vec3_add(a[i], vec3_scale(x, 0.5));
+			}
+			area += ai;
+			rgb[0] += ai * lc->r;
+			rgb[1] += ai * lc->g;
+			rgb[2] += ai * lc->b;
+			(void)check_covers(&out.leaves, 0, &full.leaves, mk.leaves[i].nvertices,
+					   mk.leaves[i + 1].nvertices, &side);
+		}
+		for (int ch = 0; ch < 3; ch++) {
+			CHECK_NEAR(col.rgb[ch], rgb[ch] / area, 1e-5);
+			worst_rgb = fmax(worst_rgb, fabs(col.rgb[ch] - rgb[ch] / area));
+		}
+		/* the principal axis */
+		{
+			struct vec3 n = nor(&out.leaves, 0);
+			double fn = 0.0;
+
+			for (size_t i = 0; i < t.nleaves; i++)
+				if (vec3_len(a[i]) > 0)
+					fn += pow(vec3_dot(a[i], n), 2) / vec3_len(a[i]);
+			best = fn;
+			for (int k = 0; k < 2000; k++) {
+				struct vec3 d = vec3_norm_or(vec3(rng_range(&r, -1, 1), rng_range(&r, -1, 1),
+								  rng_range(&r, -1, 1)), vec3(0, 1, 0));
+				double fd = 0.0;
+
+				for (size_t i = 0; i < t.nleaves; i++)
+					if (vec3_len(a[i]) > 0)
+						fd += pow(vec3_dot(a[i], d), 2) / vec3_len(a[i]);
+				best = fmax(best, fd);
+			}
+			CHECK(fn >= best * (1.0 - 1e-6));
+			worst_axis = fmax(worst_axis, 1.0 - fn / best);
+		}
+		free(a);
+	}
+	printf("one card: 6 trees, its colour the leaves' by area within %.1e, every leaf "
+	       "vertex on it and behind it, its normal their axis (within %.1e of the best of "
+	       "2,000 directions)\n", worst_rgb, worst_axis);
+	forest_lod_colors_finish(&col);
+	tree_mesh_marks_finish(&mk);
+	tree_mesh_finish(&full);
 	tree_mesh_finish(&out);
 	tree_finish(&t);
 }
@@ -719,6 +856,11 @@ static void test_colors(void)
 	CHECK_INT(col.n, 4 * st.cards);
 	for (size_t k = 0; k < st.cards; k++) {
 		const struct season_rgb *c = &pal[season_leaf_color(t.season, &t.leaves[k])];
+		int side = 0;
+
+		/* and the card covers its leaf */
+		(void)check_covers(&out.leaves, k, &full.leaves, mk.leaves[k].nvertices,
+				   mk.leaves[k + 1].nvertices, &side);
 
 		for (int v = 0; v < 4; v++) {
 			const float *x = &col.rgb[3 * (4 * k + (size_t)v)];
@@ -977,6 +1119,7 @@ int main(void)
 	test_coarse();
 	test_least();
 	test_flat();
+	test_one_card();
 	test_colors();
 	test_random();
 	return 0;
