@@ -111,19 +111,22 @@ double forest_tree_crown_width(const struct tree *t);
  *
  * - The tree's own meshes (tree_mesh_build's, byte for byte) when they fit.
  * - Otherwise the bark may take the larger of FOREST_LOD_BARK_SHARE of the budget and what
- *   the leaves leave of it. Bark over that is made coarser, level by level
+ *   the leaves as they are leave of it. Bark over that is made coarser, level by level
  *   (forest_lod_levels: fewer sides, fewer rings, tree_mesh_build_parts_coarse); past the
- *   coarsest, the branches of least length x root radius go, a branch never before the
- *   branches on it (so none is left without its parent), the trunk never.
- * - The leaves as they are when they fit the rest; else as cards: the leaves binned by
- *   their centroids in a grid of cubes over them, the finest whose occupied cells fit
- *   the rest at 2 triangles a card (at least one card), each cell's leaves one card: a
- *   rectangle through their centroid (weighted by area), facing their mean normal (each
- *   leaf's turned to face away from the crown's centroid first: a leaf has no back),
- *   covering every one of their vertices seen along that normal (sides at least
- *   FOREST_LOD_CARD_MIN_M), one-sided (counter-clockwise from its normal) and drawn
- *   double-sided as leaves are.
- *
+ *   coarsest, branches go as forest_lod_keep says (least worth first, never one before
+ *   the branches on it, the trunk never).
+ * - The leaves as they are when they fit the rest; else as cards: the leaves (those with
+ *   triangles) binned by their centroids in a grid of cubes over them, the finest whose
+ *   occupied cells fit the rest at 2 triangles a card (at least one card). Each cell's
+ *   leaves make one card: a rectangle facing the axis their normals gather round (the
+ *   principal axis of the sum of a a^T / |a| over their area vectors a, so a leaf and
+ *   one turned over count alike; the side most of their area faces), through their
+ *   centroid (by area) moved along that axis to their outer face (their farthest vertex
+ *   on the side away from the centre of all the leaves' centroids), covering every one
+ *   of their vertices seen along it (sides at least FOREST_LOD_CARD_MIN_M), one-sided
+ *   (counter-clockwise about its normal) and drawn double-sided as leaves are. Cards are
+ *   numbered in the order of their first leaf. When cards leave room (a card a leaf),
+ *   the bark is made again with all the leaves leave.
  * Never more than max_triangles, but never less than the trunk at the coarsest level
  * and (with leaves) one card: a budget below that (0 too) gets that, and st->over_budget
  * says so. Same tree and budget, same bytes; the meshes are the same in every season

@@ -829,6 +829,13 @@ int forest_lod_build_colors(const struct tree *t, size_t max_triangles, struct t
 			r = own_colors(t, &mk, out->leaves.nvertices, colors);
 	} else {
 		r = lod_cards(t, &full.leaves, &mk, left / 2, &out->leaves, colors, &s);
+		/* cards a leaf each may leave room: the bark takes it (they do not depend on it) */
+		if (r == 0 && s.level > 0 && max_triangles > triangles(&out->leaves) &&
+		    max_triangles - triangles(&out->leaves) > cap) {
+			cap = max_triangles - triangles(&out->leaves);
+			r = lod_bark(t, &full.bark, &full.leaves, cap, &out->bark, &s);
+			s.sides = level_sides(t, s.level);
+		}
 	}
 out:
 	if (r < 0) {
