@@ -162,7 +162,7 @@ int forest_lod_keep(const struct tree *t, const struct mesh *leaves, const size_
 		    size_t cap, bool *keep, size_t *kept);
 
 /* The bark's coarser levels, in order. */
-#define FOREST_LOD_LEVELS 4
+#define FOREST_LOD_LEVELS 7
 extern const struct mesh_coarse forest_lod_levels[FOREST_LOD_LEVELS];
 
 int forest_lod_build(const struct tree *t, size_t max_triangles, struct tree_mesh *out,

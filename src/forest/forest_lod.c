@@ -16,11 +16,12 @@
 #include "season.h"
 #include "tube_frame.h"
 
+/* Steps small enough that a budget between two is not much wasted (cherry: 24,512 bark
+ * triangles at full detail, then 24,512 14,544 11,480 8,672 6,216 6,144 6,132; a
+ * 1,000-branch synthetic tree: 90,882, then 84,414 74,098 63,678 47,850 28,560 17,958
+ * 14,418). */
 const struct mesh_coarse forest_lod_levels[FOREST_LOD_LEVELS] = {
-	{ 8, 2.0 },
-	{ 5, 4.0 },
-	{ 3, 16.0 },
-	{ 3, 64.0 },
+	{ 8, 2.0 }, { 6, 3.0 }, { 5, 4.0 }, { 4, 6.0 }, { 3, 12.0 }, { 3, 32.0 }, { 3, 64.0 },
 };
 
 /* The finest grid the cards are looked for in: cells along the leaves' longest extent. */
@@ -228,10 +229,13 @@ out:
 
 /*
  * The bark within cap into out: the tree's own (full, taken from there) if it fits, else
- * the first level that fits, else the coarsest pruned. 0 or -ENOMEM.
+ * the first level that fits, else the coarsest pruned. known[l - 1]: level l's triangles
+ * if built before (0: not yet), so a second call builds no level it knows too large.
+ * 0 or -ENOMEM.
  */
 static int lod_bark(const struct tree *t, struct mesh *full, const struct mesh *leaves,
-		    size_t cap, struct mesh *out, struct forest_lod_stats *st)
+		    size_t cap, struct mesh *out, struct forest_lod_stats *st,
+		    size_t known[FOREST_LOD_LEVELS])
 {
 	struct tree_mesh cm, pm;
 	struct tree_mesh_marks cmk, pmk;
@@ -254,8 +258,12 @@ static int lod_bark(const struct tree *t, struct mesh *full, const struct mesh *
 	tree_mesh_marks_init(&cmk);
 	tree_mesh_marks_init(&pmk);
 	for (level = 1; level <= FOREST_LOD_LEVELS; level++) {
+		if (known[level - 1] > cap && level < FOREST_LOD_LEVELS)
+			continue;
 		r = tree_mesh_build_parts_coarse(&cm, &cmk, t, all, n, NULL, 0,
 						 &forest_lod_levels[level - 1]);
+		if (r == 0)
+			known[level - 1] = triangles(&cm.bark);
 		if (r < 0 || triangles(&cm.bark) <= cap)
 			break;
 	}
@@ -785,7 +793,7 @@ int forest_lod_build_colors(const struct tree *t, size_t max_triangles, struct t
 	struct forest_lod_stats s;
 	struct tree_mesh full;
 	struct tree_mesh_marks mk;
-	size_t leaves, cap, left;
+	size_t leaves, cap, left, known[FOREST_LOD_LEVELS] = { 0 };
 	int r;
 
 	memset(&s, 0, sizeof(s));
@@ -817,7 +825,7 @@ int forest_lod_build_colors(const struct tree *t, size_t max_triangles, struct t
 	cap = (size_t)((double)max_triangles * FOREST_LOD_BARK_SHARE);
 	if (leaves < max_triangles && max_triangles - leaves > cap)
 		cap = max_triangles - leaves;
-	r = lod_bark(t, &full.bark, &full.leaves, cap, &out->bark, &s);
+	r = lod_bark(t, &full.bark, &full.leaves, cap, &out->bark, &s, known);
 	if (r < 0)
 		goto out;
 	s.sides = level_sides(t, s.level);
@@ -833,7 +841,7 @@ int forest_lod_build_colors(const struct tree *t, size_t max_triangles, struct t
 		if (r == 0 && s.level > 0 && max_triangles > triangles(&out->leaves) &&
 		    max_triangles - triangles(&out->leaves) > cap) {
 			cap = max_triangles - triangles(&out->leaves);
-			r = lod_bark(t, &full.bark, &full.leaves, cap, &out->bark, &s);
+			r = lod_bark(t, &full.bark, &full.leaves, cap, &out->bark, &s, known);
 			s.sides = level_sides(t, s.level);
 		}
 	}

@@ -157,8 +157,8 @@ static void check_bark_rule(const struct tree *t, const struct tree_mesh *full, 
 	cap = (size_t)((double)budget * FOREST_LOD_BARK_SHARE);
 	if (leaves < budget && budget - leaves > cap)
 		cap = budget - leaves;
-	/* what cards leave of the rest goes to the bark */
-	if (st->cards && st->level > 0 && budget > st->leaf_triangles &&
+	/* what cards leave of the rest goes to the bark, if it was made coarser */
+	if (st->cards && tris(&full->bark) > cap && budget > st->leaf_triangles &&
 	    budget - st->leaf_triangles > cap)
 		cap = budget - st->leaf_triangles;
 	if (st->level == 0) {
