@@ -21,6 +21,7 @@
  * - the least: a budget of 0 gives the trunk at the coarsest level and one card;
  * - cards face their leaves' common normal (leaves flattened into planes of x or z);
  * - colours: a leaf its own, a card the mean of its leaves' (autumn, summer, winter);
+ * - the wind binds the bark and cards of a level of detail (live_attrs_bind_nearest);
  * - a tree's height and crown width on a few shapes, the same turned about its foot;
  * - the forest's shares: within the total, in proportion to the widths, water-filled.
  *
@@ -33,6 +34,7 @@
 
 #include "forest.h"
 #include "leaf_colors.h"
+#include "live.h"
 #include "rng.h"
 #include "season.h"
 #include "synth_tree.h"
@@ -1060,6 +1062,39 @@ static void test_shares(void)
 	       "proportional within %.3f triangles\n", cases, worst_left, worst_prop);
 }
 
+/* The wind binds a tree's levels of detail as any mesh on it (live_attrs_bind_nearest):
+ * every vertex of bark and cards. */
+static void test_wind(void)
+{
+	struct tree t;
+	struct tree_mesh out;
+	struct live_skeleton sk;
+	struct live_attrs a;
+	struct forest_lod_stats st;
+	size_t bound = 0;
+
+	tree_init(&t);
+	tree_mesh_init(&out);
+	live_attrs_init(&a);
+	CHECK_INT(synth_tree(&t, 400, 10, 8), 0);
+	CHECK_INT(live_skeleton_init(&sk, &t, 8), 0);
+	for (size_t budget = 500; budget <= 8000; budget *= 4) {
+		CHECK_INT(forest_lod_build(&t, budget, &out, &st), 0);
+		CHECK(st.cards > 0);
+		CHECK_INT(live_attrs_bind_nearest(&a, &sk, &t, &out.bark), 0);
+		CHECK_INT(a.n, out.bark.nvertices);
+		bound += a.n;
+		CHECK_INT(live_attrs_bind_nearest(&a, &sk, &t, &out.leaves), 0);
+		CHECK_INT(a.n, out.leaves.nvertices);
+		bound += a.n;
+	}
+	printf("wind: %zu vertices of bark and cards bound at 3 budgets\n", bound);
+	live_skeleton_finish(&sk);
+	live_attrs_finish(&a);
+	tree_mesh_finish(&out);
+	tree_finish(&t);
+}
+
 static void test_random(void)
 {
 	struct rng r;
@@ -1129,6 +1164,7 @@ int main(void)
 	test_flat();
 	test_one_card();
 	test_colors();
+	test_wind();
 	test_random();
 	return 0;
 }
