@@ -144,7 +144,8 @@ static void growth(int reps)
 		tree_init(&t);
 		must(synth_tree(&t, sizes[i], 20, SEED), "synth_tree");
 		job_init(&j, &t, 7500);
-		bench_row("forest_lod_build", sizes[i], bench_run(lod, &j, reps), &prev_size, &prev_s);
+		bench_row("forest_lod_build", sizes[i], bench_run(lod, &j, reps), &prev_size,
+			  &prev_s);
 		tree_mesh_finish(&j.tm);
 		tree_finish(&t);
 	}

@@ -139,13 +139,13 @@ double forest_tree_crown_width(const struct tree *t);
 struct forest_lod_stats {
 	size_t full_triangles;                 /* the tree's own meshes */
 	size_t bark_triangles, leaf_triangles; /* these */
-	int level;   /* 0: the tree's own bark; 1..FOREST_LOD_LEVELS: forest_lod_levels[level - 1] */
-	int sides;   /* the most sides a ring may have at that level */
-	size_t branches_kept;   /* of t->nbranches */
-	size_t leaves_as_cards; /* leaves drawn as cards (0: all as they are) */
+	int level;               /* 0: the tree's own bark; l: forest_lod_levels[l - 1] */
+	int sides;               /* the most sides a ring may have at that level */
+	size_t branches_kept;    /* of t->nbranches */
+	size_t leaves_as_cards;  /* leaves drawn as cards (0: all as they are) */
 	size_t cards;
-	double cell; /* the cards' grid's cell, metres (0: no cards) */
-	bool over_budget; /* the least this function makes did not fit max_triangles */
+	double cell;             /* the cards' grid's cell, metres (0: no cards) */
+	bool over_budget;        /* the least this function makes did not fit max_triangles */
 };
 
 /*

@@ -338,7 +338,8 @@ static size_t leaves_measure(const struct mesh *lm, const struct tree_mesh_marks
 		if (!ok)
 			continue; /* nothing drawn, or nothing to place */
 		for (size_t x = x0; x < x1; x += 3) {
-			struct vec3 p = vertex(lm, lm->indices[x]), q = vertex(lm, lm->indices[x + 1]);
+			struct vec3 p = vertex(lm, lm->indices[x]);
+			struct vec3 q = vertex(lm, lm->indices[x + 1]);
 			struct vec3 s = vertex(lm, lm->indices[x + 2]);
 			struct vec3 cr = vec3_cross(vec3_sub(q, p), vec3_sub(s, p));
 			double ar = 0.5 * vec3_len(cr);
@@ -647,7 +648,8 @@ static int lod_cards(const struct tree *t, const struct mesh *lm, const struct t
 	struct lod_leaf *leaves = malloc((nl ? nl : 1) * sizeof(*leaves));
 	struct lod_card *cards = NULL;
 	struct cell_map map = { NULL, NULL, 0 };
-	struct vec3 lo = vec3(INFINITY, INFINITY, INFINITY), hi = vec3(-INFINITY, -INFINITY, -INFINITY);
+	struct vec3 lo = vec3(INFINITY, INFINITY, INFINITY);
+	struct vec3 hi = vec3(-INFINITY, -INFINITY, -INFINITY);
 	uint32_t lo_n = 1, hi_n = LOD_GRID_MAX, ncards = 0;
 	const struct season_rgb *palette;
 	struct grid g;

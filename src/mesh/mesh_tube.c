@@ -37,7 +37,9 @@ void mesh_lod_coarsen(struct lod *l, const struct mesh_coarse *c)
 	/* below 1 (or NaN) would be finer than the tree's own mesh, not coarser */
 	if (!(c->drop_scale > 1.0))
 		return;
-	l->drop_scale = c->drop_scale < MESH_COARSE_MAX_SCALE ? c->drop_scale : MESH_COARSE_MAX_SCALE;
+	l->drop_scale = c->drop_scale;
+	if (l->drop_scale > MESH_COARSE_MAX_SCALE)
+		l->drop_scale = MESH_COARSE_MAX_SCALE;
 	turn = MESH_DROP_TURN_DEG * l->drop_scale;
 	turn = turn < MESH_COARSE_MAX_TURN_DEG ? turn : MESH_COARSE_MAX_TURN_DEG;
 	/* only rings are left out more readily: joints stay as the tree's own (sin_turn) */

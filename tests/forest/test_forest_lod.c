@@ -423,7 +423,8 @@ static double tri_dist(struct vec3 x, struct vec3 a, struct vec3 b, struct vec3 
 
 		for (int k = 0; k < 3; k++) {
 			struct vec3 d = vec3_sub(e1[k], e0[k]);
-			double dd = vec3_dot(d, d), f = dd > 0 ? vec3_dot(vec3_sub(x, e0[k]), d) / dd : 0;
+			double dd = vec3_dot(d, d);
+			double f = dd > 0 ? vec3_dot(vec3_sub(x, e0[k]), d) / dd : 0;
 
 			f = f < 0 ? 0 : f > 1 ? 1 : f;
 			best = fmin(best, vec3_dist(x, vec3_add(e0[k], vec3_scale(d, f))));
@@ -763,9 +764,10 @@ static void test_one_card(void)
 		CHECK(a);
 		for (size_t i = 0; i < t.nleaves; i++) {
 			const struct season_rgb *lc = &pal[season_leaf_color(t.season, &t.leaves[i])];
+			size_t f0 = mk.leaves[i].nindices / 3, f1 = mk.leaves[i + 1].nindices / 3;
 			double ai = 0.0;
 
-			for (size_t f = mk.leaves[i].nindices / 3; f < mk.leaves[i + 1].nindices / 3; f++) {
+			for (size_t f = f0; f < f1; f++) {
 				struct vec3 p = pos(&full.leaves, full.leaves.indices[3 * f]);
 				struct vec3 q = pos(&full.leaves, full.leaves.indices[3 * f + 1]);
 				struct vec3 e = pos(&full.leaves, full.leaves.indices[3 * f + 2]);
@@ -795,10 +797,11 @@ static void test_one_card(void)
 					fn += pow(vec3_dot(a[i], n), 2) / vec3_len(a[i]);
 			best = fn;
 			for (int k = 0; k < 2000; k++) {
-				struct vec3 d = vec3_norm_or(vec3(rng_range(&r, -1, 1), rng_range(&r, -1, 1),
-								  rng_range(&r, -1, 1)), vec3(0, 1, 0));
+				struct vec3 d = vec3(rng_range(&r, -1, 1), rng_range(&r, -1, 1),
+						     rng_range(&r, -1, 1));
 				double fd = 0.0;
 
+				d = vec3_norm_or(d, vec3(0, 1, 0));
 				for (size_t i = 0; i < t.nleaves; i++)
 					if (vec3_len(a[i]) > 0)
 						fd += pow(vec3_dot(a[i], d), 2) / vec3_len(a[i]);
@@ -924,16 +927,16 @@ static void turn_about(struct tree *t, struct vec3 foot, double angle, struct ve
 		for (size_t k = 0; k < t->branches[i].npoints; k++) {
 			struct vec3 d = vec3_sub(t->branches[i].points[k], foot);
 
-			t->branches[i].points[k] =
-				vec3_add(vec3_add(foot, shift), vec3(c * d.x - s * d.z, d.y, s * d.x + c * d.z));
+			t->branches[i].points[k] = vec3_add(
+				vec3_add(foot, shift), vec3(c * d.x - s * d.z, d.y, s * d.x + c * d.z));
 		}
 	}
 	for (size_t i = 0; i < t->nleaves; i++) {
 		for (size_t k = 0; k < t->leaves[i].npoints; k++) {
 			struct vec3 d = vec3_sub(t->leaves[i].points[k], foot);
 
-			t->leaves[i].points[k] =
-				vec3_add(vec3_add(foot, shift), vec3(c * d.x - s * d.z, d.y, s * d.x + c * d.z));
+			t->leaves[i].points[k] = vec3_add(
+				vec3_add(foot, shift), vec3(c * d.x - s * d.z, d.y, s * d.x + c * d.z));
 		}
 	}
 }
@@ -976,7 +979,8 @@ static void test_sizes(void)
 	rng_seed(&r, 99);
 	for (int c = 0; c < cases; c++) {
 		double h, w, angle = rng_range(&r, 0.0, 2.0 * TEST_PI);
-		struct vec3 shift = vec3(rng_range(&r, -50, 50), rng_range(&r, -5, 5), rng_range(&r, -50, 50));
+		struct vec3 shift = vec3(rng_range(&r, -50, 50), rng_range(&r, -5, 5),
+					 rng_range(&r, -50, 50));
 
 		CHECK_INT(synth_tree(&t, 1 + (int)(rng_next(&r) % 300), (int)(rng_next(&r) % 6),
 				     (uint64_t)c), 0);
