@@ -3,8 +3,9 @@
  * src/forest/ (floor 8 of src/FLOORS: includes export and every floor below): today's
  * forest on the attract screen (issue 27, docs/forest.md), as pure functions: which
  * archived drawings form the day's forest and their numbers in it (forest_day.c), where
- * the trees stand (forest_layout.c), and forest.json (forest_json.c). The clock, the
- * archive's files and the trees' building are the caller's (platform/).
+ * the trees stand (forest_layout.c), forest.json (forest_json.c), a tree's size
+ * (forest_size.c) and its meshes at the level of detail the forest draws (forest_lod.c).
+ * The clock, the archive's files and the trees' building are the caller's (platform/).
  */
 #pragma once
 
@@ -14,6 +15,8 @@
 
 #include "buf.h"
 #include "error.h"
+#include "mesh.h"
+#include "tree.h"
 
 #define FOREST_MAX_TREES_DEFAULT 40
 #define FOREST_MAX_TREES_LIMIT 200
@@ -87,3 +90,107 @@ struct forest_json_skip {
  * -ENOMEM. */
 int forest_json(const struct forest_json_tree *trees, size_t ntrees,
 		const struct forest_json_skip *skipped, size_t nskipped, struct buf *out);
+
+/* ---- levels of detail ---------------------------------------------------------- */
+
+/*
+ * A tree's size (forest_size.c), measured from its trunk's foot (the first point of its
+ * first branch without a parent): its height, the highest any branch's surface (a point's
+ * height plus its radius) or leaf point reaches above the foot; its crown width, twice the
+ * farthest any branch's surface (a point's horizontal distance from the vertical through
+ * the foot plus its radius) or leaf point reaches from that vertical. Both are the same
+ * whichever way the tree is turned about it. Points that are not finite are left out;
+ * 0 for a tree without branches.
+ */
+double forest_tree_height(const struct tree *t);
+double forest_tree_crown_width(const struct tree *t);
+
+/*
+ * A tree's meshes for the forest within max_triangles (bark + leaves; docs/forest.md,
+ * "Drawing it fast enough"):
+ *
+ * - The tree's own meshes (tree_mesh_build's, byte for byte) when they fit.
+ * - Otherwise the bark may take the larger of FOREST_LOD_BARK_SHARE of the budget and what
+ *   the leaves as they are leave of it. Bark over that is made coarser, level by level
+ *   (forest_lod_levels: fewer sides, fewer rings, tree_mesh_build_parts_coarse); past the
+ *   coarsest, branches go as forest_lod_keep says (least worth first, never one before
+ *   the branches on it, the trunk never).
+ * - The leaves as they are when they fit the rest; else as cards: the leaves (those with
+ *   triangles) binned by their centroids in a grid of cubes over them, the finest whose
+ *   occupied cells fit the rest at 2 triangles a card (at least one card). Each cell's
+ *   leaves make one card: a rectangle facing the axis their normals gather round (the
+ *   principal axis of the sum of a a^T / |a| over their area vectors a, so a leaf and
+ *   one turned over count alike; the side most of their area faces), through their
+ *   centroid (by area) moved along that axis to their outer face (their farthest vertex
+ *   on the side away from the centre of all the leaves' centroids), covering every one
+ *   of their vertices seen along it (sides at least FOREST_LOD_CARD_MIN_M), one-sided
+ *   (counter-clockwise about its normal) and drawn double-sided as leaves are. Cards are
+ *   numbered in the order of their first leaf. When cards leave room (a card a leaf),
+ *   the bark is made again with all the leaves leave.
+ * Never more than max_triangles, but never less than the trunk at the coarsest level
+ * and (with leaves) one card: a budget below that (0 too) gets that, and st->over_budget
+ * says so. Same tree and budget, same bytes; the meshes are the same in every season
+ * (winter does not draw the leaves). out (initialised) is cleared first. 0 or -ENOMEM
+ * (out then empty). st may be NULL.
+ */
+#define FOREST_LOD_BARK_SHARE 0.4
+#define FOREST_LOD_CARD_MIN_M 0.001
+
+struct forest_lod_stats {
+	size_t full_triangles;                 /* the tree's own meshes */
+	size_t bark_triangles, leaf_triangles; /* these */
+	int level;               /* 0: the tree's own bark; l: forest_lod_levels[l - 1] */
+	int sides;               /* the most sides a ring may have at that level */
+	size_t branches_kept;    /* of t->nbranches */
+	size_t leaves_as_cards;  /* leaves drawn as cards (0: all as they are) */
+	size_t cards;
+	double cell;             /* the cards' grid's cell, metres (0: no cards) */
+	bool over_budget;        /* the least this function makes did not fit max_triangles */
+};
+
+/*
+ * Which of t's branches stay when its bark (branch i: tris[i] triangles) must fit cap: all
+ * if they fit; else they go, least worth first, until the rest fits or only the trunk
+ * (the first branch without a parent) is left. A branch's worth is its length times its
+ * root radius, or more if a branch on it is worth more: so a branch goes after every
+ * branch on it, and none stays without its parent. Branches that hold the outline go last:
+ * along each of x, -x, y, -y, z and -z, the branch with the farthest point (unless a vertex of
+ * `leaves`, which may be NULL, reaches as far) and those it hangs on. keep[i] (nbranches
+ * of them) says which stay, *kept how many. 0 or -ENOMEM.
+ */
+int forest_lod_keep(const struct tree *t, const struct mesh *leaves, const size_t *tris,
+		    size_t cap, bool *keep, size_t *kept);
+
+/* The bark's coarser levels, in order. */
+#define FOREST_LOD_LEVELS 7
+extern const struct mesh_coarse forest_lod_levels[FOREST_LOD_LEVELS];
+
+int forest_lod_build(const struct tree *t, size_t max_triangles, struct tree_mesh *out,
+		     struct forest_lod_stats *st);
+
+/*
+ * The season's colour of each vertex of forest_lod_build's leaves (linear RGB, 3 floats a
+ * vertex, season.h's palette as leaf_colors_fill gives them): a leaf as it is takes its own
+ * palette colour; a card, the mean of its leaves' colours weighted by their areas (what
+ * the eye mixes them to from afar). The screen maps them as any palette colour
+ * (ui/leaf_tint.h). n: out->leaves.nvertices, or 0 in winter (no palette: not drawn).
+ */
+struct forest_lod_colors {
+	float *rgb;
+	size_t n, cap; /* vertices coloured; room for cap */
+};
+void forest_lod_colors_init(struct forest_lod_colors *c);
+void forest_lod_colors_finish(struct forest_lod_colors *c);
+/* forest_lod_build, and its leaves' colours into colors (may be NULL). 0 or -ENOMEM. */
+int forest_lod_build_colors(const struct tree *t, size_t max_triangles, struct tree_mesh *out,
+			    struct forest_lod_colors *colors, struct forest_lod_stats *st);
+
+/*
+ * Each of n trees' share of a forest's total triangles: in proportion to its crown width
+ * (widths[i], metres; below 0 or not finite counts as 0; all 0: equal shares), and
+ * water-filled: a tree whose own meshes need fewer (need[i]; need NULL: unknown) takes
+ * what it needs and what it leaves is shared again among the others. Writes share[i];
+ * the shares sum to at most total.
+ */
+void forest_lod_shares(const double *widths, const size_t *need, size_t n, size_t total,
+		       size_t *share);

@@ -281,9 +281,9 @@ int tree_mesh_build_reusing(struct tree_mesh *tm, struct tree_mesh_marks *mk, co
 	return r;
 }
 
-int tree_mesh_build_parts(struct tree_mesh *out, struct tree_mesh_marks *out_mk,
-			  const struct tree *t, const size_t *branches, size_t nb, const size_t *leaves,
-			  size_t nl)
+int tree_mesh_build_parts_coarse(struct tree_mesh *out, struct tree_mesh_marks *out_mk,
+				 const struct tree *t, const size_t *branches, size_t nb,
+				 const size_t *leaves, size_t nl, const struct mesh_coarse *c)
 {
 	struct mesh_scratch sc;
 	int r = 0;
@@ -293,6 +293,7 @@ int tree_mesh_build_parts(struct tree_mesh *out, struct tree_mesh_marks *out_mk,
 	memset(&sc, 0, sizeof(sc));
 	mesh_lod_init(&sc.lod);
 	sc.lod.fixed = tree_sides(t);
+	mesh_lod_coarsen(&sc.lod, c);
 	marks_reserve_first(&out_mk->bark, &out_mk->cap_bark);
 	marks_reserve_first(&out_mk->leaves, &out_mk->cap_leaves);
 	mark_start(&out_mk->bark, &out_mk->nbark, 0, &out->bark);
@@ -321,6 +322,13 @@ int tree_mesh_build_parts(struct tree_mesh *out, struct tree_mesh_marks *out_mk,
 		out_mk->nbark = out_mk->nleaves = 0;
 	}
 	return r;
+}
+
+int tree_mesh_build_parts(struct tree_mesh *out, struct tree_mesh_marks *out_mk,
+			  const struct tree *t, const size_t *branches, size_t nb, const size_t *leaves,
+			  size_t nl)
+{
+	return tree_mesh_build_parts_coarse(out, out_mk, t, branches, nb, leaves, nl, NULL);
 }
 
 int tree_mesh_append(struct tree_mesh *tm, const struct tree *t, size_t first_branch,

@@ -121,6 +121,28 @@ int tree_mesh_build_parts(struct tree_mesh *out, struct tree_mesh_marks *out_mk,
 			  const struct tree *t, const size_t *branches, size_t nb, const size_t *leaves,
 			  size_t nl);
 /*
+ * Coarser bark for a tree seen small (the forest's levels of detail, docs/forest.md):
+ * every ring at most max_sides sides (at least MESH_MIN_SIDES; 0: no cap, a tree's fixed
+ * `sides` capped too), and rings left out drop_scale times as readily: the tolerance
+ * mesh_drop_tolerance and the turn MESH_DROP_TURN_DEG both times drop_scale (at most
+ * MESH_COARSE_MAX_SCALE, the turn at most MESH_COARSE_MAX_TURN_DEG; <= 1: as they are).
+ * A child's root ring is sized by the joint rule above with the capped sides but the
+ * tree's own tolerance and turn: it lies inside its parent's tube as the tree's own mesh
+ * would have it, which the coarser tube strays from by at most the coarser tolerance
+ * (a root may show by that much, where a stricter joint would pinch every thick child
+ * to a point). Leaves are never coarsened: they come out as a full build makes them.
+ */
+#define MESH_COARSE_MAX_SCALE 64.0
+#define MESH_COARSE_MAX_TURN_DEG 45.0
+struct mesh_coarse {
+	int max_sides;
+	double drop_scale;
+};
+/* tree_mesh_build_parts with bark made coarser by c (NULL or {0, 1}: the same bytes). */
+int tree_mesh_build_parts_coarse(struct tree_mesh *out, struct tree_mesh_marks *out_mk,
+				 const struct tree *t, const size_t *branches, size_t nb,
+				 const size_t *leaves, size_t nl, const struct mesh_coarse *c);
+/*
  * Meshes t from the meshes tm holds (those of another tree, marked in mk), in place: part
  * i of t's bark is the old part branch[i] when that is >= 0 (such parts must come in the
  * old order), part -2 - branch[i] of `stash` (marked in stash_mk) when that is <= -2, or

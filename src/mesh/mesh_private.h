@@ -36,8 +36,13 @@ struct lod {
 	/* 1 - cos(pi / sides): how far a polygon's edge middles fall inside its circle. */
 	double sag[MESH_MAX_SIDES + 1];
 	double cs[MESH_MAX_SIDES + 1][MESH_MAX_SIDES], sn[MESH_MAX_SIDES + 1][MESH_MAX_SIDES];
-	double cos_turn, sin_turn; /* of MESH_DROP_TURN_DEG */
+	double cos_turn; /* of MESH_DROP_TURN_DEG (times drop_scale when coarse) */
+	double sin_turn; /* of MESH_DROP_TURN_DEG: a joint's, coarse or not */
 	int fixed; /* every ring's sides (a tree's `sides`), or 0: by radius */
+	/* Coarser bark (struct mesh_coarse): no ring above max_sides sides (0: no cap), and
+	 * rings left out drop_scale times as far (1: the tree's own mesh). */
+	int max_sides;
+	double drop_scale;
 };
 
 /* Per-build scratch arrays, grown to the longest polyline seen, reused across elements. */
@@ -65,6 +70,8 @@ uint32_t mesh_push_vertex(struct mesh *m, struct vec3 p, struct vec3 n);
 void mesh_push_tri(struct mesh *m, uint32_t a, uint32_t b, uint32_t c);
 bool mesh_vec3_finite(struct vec3 v);
 void mesh_lod_init(struct lod *l);
+/* Makes l coarser by c (mesh.h); NULL or {0, 1} leave it as it is. */
+void mesh_lod_coarsen(struct lod *l, const struct mesh_coarse *c);
 void mesh_scratch_finish(struct mesh_scratch *s);
 int mesh_scratch_reserve(struct mesh_scratch *s, size_t n);
 /* Appends branch index's tube to m (mesh_tube.c). 0 or negative errno. */

@@ -23,6 +23,27 @@ void mesh_lod_init(struct lod *l)
 	}
 	l->cos_turn = cos(MESH_DROP_TURN_DEG * VEC_PI / 180.0);
 	l->sin_turn = sin(MESH_DROP_TURN_DEG * VEC_PI / 180.0);
+	l->drop_scale = 1.0;
+}
+
+void mesh_lod_coarsen(struct lod *l, const struct mesh_coarse *c)
+{
+	double turn;
+
+	if (!c)
+		return;
+	if (c->max_sides > 0)
+		l->max_sides = c->max_sides < MESH_MIN_SIDES ? MESH_MIN_SIDES : c->max_sides;
+	/* below 1 (or NaN) would be finer than the tree's own mesh, not coarser */
+	if (!(c->drop_scale > 1.0))
+		return;
+	l->drop_scale = c->drop_scale;
+	if (l->drop_scale > MESH_COARSE_MAX_SCALE)
+		l->drop_scale = MESH_COARSE_MAX_SCALE;
+	turn = MESH_DROP_TURN_DEG * l->drop_scale;
+	turn = turn < MESH_COARSE_MAX_TURN_DEG ? turn : MESH_COARSE_MAX_TURN_DEG;
+	/* only rings are left out more readily: joints stay as the tree's own (sin_turn) */
+	l->cos_turn = cos(turn * VEC_PI / 180.0);
 }
 
 static int lod_sides(const struct lod *l, double radius)
@@ -31,12 +52,17 @@ static int lod_sides(const struct lod *l, double radius)
 	int s = MESH_MIN_SIDES;
 
 	if (l->fixed)
-		return l->fixed;
-	if (!(px > 0)) /* NaN too */
-		return s;
-	while (s < MESH_MAX_SIDES && px * l->sag[s] > MESH_SIDE_ERROR_PX)
-		s++;
-	return s;
+		s = l->fixed;
+	else if (px > 0) /* NaN: the fewest */
+		while (s < MESH_MAX_SIDES && px * l->sag[s] > MESH_SIDE_ERROR_PX)
+			s++;
+	return l->max_sides && s > l->max_sides ? l->max_sides : s;
+}
+
+/* mesh_drop_tolerance, drop_scale times (exactly it at 1). */
+static double lod_drop_tolerance(const struct lod *l, double radius)
+{
+	return mesh_drop_tolerance(radius) * l->drop_scale;
 }
 
 int mesh_ring_sides(double radius)
@@ -268,8 +294,9 @@ static void host_nearest(const struct host *h, struct vec3 root, size_t j0, size
  * k = cos(pi / sides) * TUBE_JOINT_MARGIN (a polygon's inscribed circle, with the fewest
  * sides of the host's points over the reach and of the kept rings around q, whichever
  * they are), tol = mesh_drop_tolerance (how far left-out rings let the tube stray from its
- * polyline) and R the radius profile: piecewise linear, then the tip cone. With L its
- * steepest slope over the ring's reach, R(s_q + y*rho) >= R(s_q) - L*rho*|y|, so it
+ * polyline; coarser bark strays further, which the joint does not follow: mesh.h) and R
+ * the radius profile: piecewise linear, then the tip cone. With L its steepest slope over
+ * the ring's reach, R(s_q + y*rho) >= R(s_q) - L*rho*|y|, so it
  * suffices that rho * max(sqrt(1 - y^2) + k*L*|y|) <= k*(R(s_q) - L*d) - tol - d. The
  * host's root disc is a cliff: the ring may not reach behind it.
  */
@@ -401,7 +428,8 @@ static bool tube_span_ok(const struct mesh_scratch *s, size_t a, size_t c, doubl
 		f = f < 0 ? 0 : f > 1 ? 1 : f;
 		on = vec3_add(s->p[a], vec3_scale(d, f));
 		rr = s->r[a] + (s->r[c] - s->r[a]) * f;
-		if (!(vec3_dist(s->p[j], on) + fabs(s->r[j] - rr) <= mesh_drop_tolerance(s->r[j])))
+		if (!(vec3_dist(s->p[j], on) + fabs(s->r[j] - rr) <=
+		      lod_drop_tolerance(&s->lod, s->r[j])))
 			return false;
 	}
 	return true;

@@ -1,0 +1,228 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Today's forest (issue 27, docs/forest.md "Drawing it fast enough"): what its levels of
+ * detail cost and give.
+ *
+ * Per tree: the demo (its trace replayed through the app and lifted to 3D), cherry (a
+ * functional tree's preset) and synthetic trees (tests/tools/synth_tree.c) of 62 and
+ * 1,000 branches with 20,000 leaves in all (323 and 20 a branch): its own meshes
+ * (tree_mesh_build: time, triangles), its height and crown width, and forest_lod_build at
+ * 7,500 (300,000 / 40), 15,000 and 30,000 triangles: median time, triangles (bark +
+ * leaves), the bark's level and sides, branches kept, cards. Then the growth of
+ * forest_lod_build's time with the tree (62..1,000 branches, 20 leaves each, at 7,500).
+ *
+ * The forest: 10, 20 and 40 trees, the four above in turn, each with its share of 300,000
+ * triangles by crown width (forest_lod_shares, water-filled by what each tree's own meshes
+ * need): the shares, the triangles drawn in all against the trees' own, the meshes'
+ * building in all (the planting thread's, never a frame's). The rendering figures (draw
+ * calls and frame times under llvmpipe) are the renderer's: see render_rows().
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench_util.h"
+#include "forest.h"
+#include "live_trees.h"
+#include "mesh.h"
+#include "synth_tree.h"
+#include "tree.h"
+
+#define REPS 7
+#define SEED 26
+#define FOREST_TRIANGLES 300000
+#define NKINDS 4
+
+static const size_t budgets[] = { 7500, 15000, 30000 };
+
+static void must(int r, const char *what)
+{
+	if (r < 0) {
+		fprintf(stderr, "bench_forest: %s failed (%d)\n", what, r);
+		exit(1);
+	}
+}
+
+struct job {
+	const struct tree *t;
+	size_t budget;
+	struct tree_mesh tm;
+	struct forest_lod_stats st;
+};
+
+static void job_init(struct job *j, const struct tree *t, size_t budget)
+{
+	memset(j, 0, sizeof(*j));
+	j->t = t;
+	j->budget = budget;
+	tree_mesh_init(&j->tm);
+}
+
+static void own_meshes(void *arg)
+{
+	struct job *j = arg;
+
+	must(tree_mesh_build(&j->tm, j->t), "tree_mesh_build");
+}
+
+static void lod(void *arg)
+{
+	struct job *j = arg;
+
+	must(forest_lod_build(j->t, j->budget, &j->tm, &j->st), "forest_lod_build");
+}
+
+static size_t triangles(const struct tree_mesh *tm)
+{
+	return (tm->bark.nindices + tm->leaves.nindices) / 3;
+}
+
+struct kind {
+	const char *name;
+	struct tree t;
+	double width;
+	size_t own;       /* its own meshes' triangles */
+};
+
+static void kinds_init(struct kind *k)
+{
+	static const char *const names[NKINDS] = { "demo (3D)", "cherry", "62 branches",
+						   "1,000 branches" };
+
+	for (int i = 0; i < NKINDS; i++) {
+		k[i].name = names[i];
+		tree_init(&k[i].t);
+	}
+	live_trees_demo(&k[0].t, BENCH_DATA_DIR, true);
+	live_trees_preset(&k[1].t, GEN_PRESET_CHERRY);
+	must(synth_tree(&k[2].t, 62, 323, SEED), "synth_tree");
+	must(synth_tree(&k[3].t, 1000, 20, SEED), "synth_tree");
+	for (int i = 0; i < NKINDS; i++) {
+		struct job j;
+
+		k[i].width = forest_tree_crown_width(&k[i].t);
+		job_init(&j, &k[i].t, 0);
+		own_meshes(&j);
+		k[i].own = triangles(&j.tm);
+		tree_mesh_finish(&j.tm);
+	}
+}
+
+static void per_tree(struct kind *k, int reps)
+{
+	struct job j;
+	double s;
+
+	job_init(&j, &k->t, 0);
+	s = bench_run(own_meshes, &j, reps);
+	printf("\n%s: %zu branches, %zu leaves, %.2f m high, crown %.2f m wide\n", k->name,
+	       k->t.nbranches, k->t.nleaves, forest_tree_height(&k->t), k->width);
+	printf("  its own meshes %29zu triangles %9.2f ms (tree_mesh_build)\n", k->own, s * 1e3);
+	for (size_t b = 0; b < sizeof(budgets) / sizeof(budgets[0]); b++) {
+		j.budget = budgets[b];
+		s = bench_run(lod, &j, reps);
+		printf("  at %6zu: %6zu bark + %6zu leaves = %6zu triangles %9.2f ms  level %d "
+		       "(%2d sides), %4zu of %4zu branches, %5zu cards\n",
+		       budgets[b], j.st.bark_triangles, j.st.leaf_triangles, triangles(&j.tm),
+		       s * 1e3, j.st.level, j.st.sides, j.st.branches_kept, k->t.nbranches,
+		       j.st.cards);
+	}
+	tree_mesh_finish(&j.tm);
+}
+
+static void growth(int reps)
+{
+	static const int sizes[] = { 62, 125, 250, 500, 1000 };
+	double prev_size = 0.0, prev_s = 0.0;
+
+	printf("\nforest_lod_build at 7,500 triangles with the tree (20 leaves a branch; its own "
+	       "meshes built within)\n");
+	for (size_t i = 0; i < BENCH_COUNT(sizes); i++) {
+		struct tree t;
+		struct job j;
+
+		tree_init(&t);
+		must(synth_tree(&t, sizes[i], 20, SEED), "synth_tree");
+		job_init(&j, &t, 7500);
+		bench_row("forest_lod_build", sizes[i], bench_run(lod, &j, reps), &prev_size,
+			  &prev_s);
+		tree_mesh_finish(&j.tm);
+		tree_finish(&t);
+	}
+}
+
+static void forest(struct kind *k, size_t n)
+{
+	double *widths = malloc(n * sizeof(*widths)), ms = 0.0;
+	size_t *need = malloc(n * sizeof(*need)), *share = malloc(n * sizeof(*share));
+	size_t drawn = 0, own = 0, lo = SIZE_MAX, hi = 0, over = 0;
+	struct job j;
+
+	if (!widths || !need || !share)
+		must(-12, "malloc");
+	for (size_t i = 0; i < n; i++) {
+		widths[i] = k[i % NKINDS].width;
+		need[i] = k[i % NKINDS].own;
+	}
+	forest_lod_shares(widths, need, n, FOREST_TRIANGLES, share);
+	job_init(&j, NULL, 0);
+	for (size_t i = 0; i < n; i++) {
+		double t0 = bench_now();
+
+		j.t = &k[i % NKINDS].t;
+		j.budget = share[i];
+		lod(&j);
+		ms += (bench_now() - t0) * 1e3;
+		drawn += triangles(&j.tm);
+		own += need[i];
+		over += j.st.over_budget;
+		lo = share[i] < lo ? share[i] : lo;
+		hi = share[i] > hi ? share[i] : hi;
+	}
+	printf("%5zu %9zu %9zu %12zu %12zu %11.1f %7zu\n", n, lo, hi, drawn, own, ms, over);
+	tree_mesh_finish(&j.tm);
+	free(share);
+	free(need);
+	free(widths);
+}
+
+/*
+ * The renderer's figures go here (ui/render_forest.c, with its own dependencies in
+ * bench/meson.build): for 10, 20 and 40 trees, the draw calls and triangles a frame,
+ * edaha's own CPU time a frame and the whole frame under llvmpipe. Until it lands, this
+ * says so rather than print a guess.
+ */
+static void render_rows(void)
+{
+	printf("\nthe forest on screen (10, 20, 40 trees): draw calls a frame, edaha's CPU time a "
+	       "frame, the whole frame under llvmpipe\n");
+	printf("  not measured here yet: the renderer (ui/render_forest.c) adds these rows\n");
+}
+
+int main(int argc, char **argv)
+{
+	static const size_t trees[] = { 10, 20, 40 };
+	struct kind k[NKINDS];
+	int reps;
+
+	if (bench_init(&argc, argv, NULL))
+		return 1;
+	reps = bench_reps(REPS);
+	printf("bench_forest: the forest's levels of detail (medians of %d)\n", reps);
+	kinds_init(k);
+	for (int i = 0; i < NKINDS; i++)
+		if (!bench_quick || i < 3)
+			per_tree(&k[i], reps);
+	growth(reps);
+
+	printf("\nthe forest: each tree's share of %d triangles by crown width, water-filled "
+	       "(the four trees above in turn)\n", FOREST_TRIANGLES);
+	printf("%5s %9s %9s %12s %12s %11s %7s\n", "trees", "least", "most", "triangles",
+	       "own meshes", "build ms", "over");
+	for (size_t i = 0; i < BENCH_COUNT(trees); i++)
+		forest(k, trees[i]);
+	render_rows();
+	for (int i = 0; i < NKINDS; i++)
+		tree_finish(&k[i].t);
+	return 0;
+}
