@@ -15,3 +15,7 @@ int headless_leaf_run(const struct options *o);
  * drawn and written to --out (skeleton.json, model.glb, model.obj, model.mtl, screen.png),
  * or nothing written. Returns the exit status. */
 int headless_vine_run(const struct options *o);
+
+/* Runs --headless --forest DIR: today's forest of the drawings in DIR (docs/forest.md),
+ * written to --out. Returns the exit status (2: DIR unreadable). */
+int headless_forest_run(const struct options *o);

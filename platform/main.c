@@ -1,16 +1,18 @@
 /* SPDX-License-Identifier: MIT */
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "config.h"
+#include "config_file.h"
+#include "forest_state.h"
 #include "headless.h"
 #include "options.h"
 #if HAVE_DRM || HAVE_WINDOW
 #include <errno.h>
-#include <stdint.h>
 
-#include "config_file.h"
 #include "docfile.h"
 #include "font_file.h"
 #include "kiosk.h"
@@ -53,6 +55,27 @@ static enum display_kind display_kind(const struct options *o)
 	return DISPLAY_DRM;
 }
 #endif
+
+/* --forest-reset: the day file in the configuration's state directory says a new day
+ * began now. */
+static int forest_reset_main(const struct options *o)
+{
+	struct config conf;
+	struct error err = { { 0 } };
+	const char *path = o->config ? o->config : CONFIG_PATH;
+
+	if (config_load(path, &conf, stderr, &err) < 0) {
+		fprintf(stderr, "edaha: %s\n", err.msg);
+		return 2;
+	}
+	if (forest_state_reset(conf.kiosk.state_dir, (int64_t)time(NULL), &err) < 0) {
+		fprintf(stderr, "edaha: --forest-reset: %s\n", err.msg);
+		return 1;
+	}
+	printf("edaha: today's forest is empty: the next drawing archived in %s is its No. 1\n",
+	       conf.kiosk.state_dir);
+	return 0;
+}
 
 static int kiosk_main(const struct options *o)
 {
@@ -162,6 +185,10 @@ int main(int argc, char **argv)
 			status = headless_vine_run(&o);
 		else if (o.headless && o.leaf)
 			status = headless_leaf_run(&o);
+		else if (o.headless && o.forest)
+			status = headless_forest_run(&o);
+		else if (o.forest_reset)
+			status = forest_reset_main(&o);
 		else if (o.headless)
 			status = headless_run(&o);
 		else

@@ -94,6 +94,9 @@ void options_usage(FILE *f)
 	      "  --config FILE       the configuration (default /etc/edaha/edaha.conf)\n"
 	      "  --stats             on exit, print how long pen input took to reach the\n"
 	      "                      screen (percentiles) and the frame rate\n"
+	      "  --forest-reset      empty today's forest now (a new day begins: the next\n"
+	      "                      archived drawing is its No. 1) and exit; the kiosk\n"
+	      "                      running shows it at its next minute (docs/forest.md)\n"
 
 	      "\n"
 	      "Any mode:\n"
@@ -246,6 +249,7 @@ enum {
 	OPT_RECORD, OPT_HELP, OPT_VERSION, OPT_KIOSK_FRAMES, OPT_SCREENSHOT, OPT_CONFIG, OPT_STATS,
 	OPT_LANG, OPT_IDLE, OPT_GENERATE, OPT_LEAF, OPT_OPENING, OPT_SUPPORT, OPT_VINE, OPT_PLANT,
 	OPT_WOOD, OPT_DUMP_VOXELS, OPT_SKELETON, OPT_WINDOW, OPT_KIOSK, OPT_WIND, OPT_FOREST,
+	OPT_FOREST_RESET,
 };
 
 static const struct option longopts[] = {
@@ -277,6 +281,7 @@ static const struct option longopts[] = {
 	{ "dump-voxels", no_argument, NULL, OPT_DUMP_VOXELS },
 	{ "wind", required_argument, NULL, OPT_WIND },
 	{ "forest", required_argument, NULL, OPT_FOREST },
+	{ "forest-reset", no_argument, NULL, OPT_FOREST_RESET },
 	{ "help", no_argument, NULL, OPT_HELP },
 	{ "version", no_argument, NULL, OPT_VERSION },
 	{ NULL, 0, NULL, 0 },
@@ -417,6 +422,9 @@ static int parse_kiosk_option(struct options *o, int c, const char *arg)
 		return 0;
 	case OPT_SCREENSHOT:
 		return set_file(&o->screenshot, arg, "--screenshot");
+	case OPT_FOREST_RESET:
+		o->forest_reset = true;
+		return 0;
 	}
 	return OPTION_NOT_OURS;
 }
@@ -474,6 +482,9 @@ static int check_wood(const struct options *o)
 	if ((o->leaf || o->support) && (o->wood || o->dump_voxels))
 		return usage_error("%s is for a tree, not --leaf or --support",
 				   o->wood ? "--wood" : "--dump-voxels");
+	if (o->forest_reset && (o->headless || o->window || o->kiosk || o->kiosk_frames ||
+				o->screenshot || o->stats || o->load || o->record || o->nsteps))
+		return usage_error("%s goes with --config only", "--forest-reset");
 	return 0;
 }
 
@@ -554,7 +565,8 @@ static int check_vine(const struct options *o)
 	return 0;
 }
 
-/* Today's forest headless (--forest DIR): only its output, its moment and its look. */
+/* Today's forest headless (--forest DIR): only its output, its moment and its look; the
+ * kiosk's forest emptied (--forest-reset): only the configuration it finds it by. */
 static int check_forest(const struct options *o)
 {
 	if (o->forest && !o->headless)

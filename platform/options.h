@@ -59,6 +59,8 @@ struct options {
 	double wind;
 	/* --forest DIR: headless, today's forest of the drawings in DIR (docs/forest.md) */
 	const char *forest;
+	/* --forest-reset: the kiosk's forest starts a new day now, then edaha exits */
+	bool forest_reset;
 };
 
 /* Parses argv. Returns 0, or 2 (usage error, message printed) as an exit status. */

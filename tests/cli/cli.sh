@@ -26,7 +26,8 @@ same_files() { # dir1 dir2 files...
 t_help() {
 	edaha --help >"$T/help" || fail "--help exited $?"
 	for o in --headless --size --seed --out --replay --press --view --load --record --help \
-		--idle --lang --config --stats --kiosk-frames --screenshot --window --kiosk --wind; do
+		--idle --lang --config --stats --kiosk-frames --screenshot --window --kiosk --wind \
+		--forest --forest-reset; do
 		grep -q -- "$o" "$T/help" || fail "--help does not mention $o"
 	done
 	edaha --version | grep -q '^edaha ' || fail "--version"
@@ -378,6 +379,81 @@ t_hostile() {
 		run --out "$T/$name.again" --load "$T/$name/drawing.edaha"
 		same_files "$T/$name" "$T/$name.again" skeleton.json model.glb drawing.edaha
 	done
+}
+
+# Today's forest (issue 27, docs/forest.md): --forest DIR plants every drawing in DIR in
+# name order, numbered 1, 2, 3, ... (a 2D sketch lifted, generated and edited trees), skips
+# a damaged and a hostile file by name (forest.json's "skipped", no number taken), the
+# newest 40 of 45 stand, numbers kept; no two trunks closer than the sum of a third of
+# their crowns; the same run twice the same bytes. --forest-reset writes the day file.
+t_forest() {
+	local d=$T/drawings i
+	mkdir -p "$d"
+	run --out "$T/sketch" --replay "$DEMO"
+	run --out "$T/lifted" --replay "$DEMO" --press 3d
+	run --out "$T/cherry" --press tpl-cherry
+	cp "$T/sketch/drawing.edaha" "$d/a-sketch.edaha"
+	cp "$T/lifted/drawing.edaha" "$d/b-lifted.edaha"
+	cp "$T/cherry/drawing.edaha" "$d/c-cherry.edaha"
+	cp "$SRC/gen/malformed/drawing-no-version.edaha" "$d/d-damaged.edaha"
+	printf 'edaha-drawing 7\nseed 1\n<script>alert(1)</script>\n' >"$d/e-<script>.edaha"
+	cp "$SRC/fuzz/corpus/doc/new.edaha" "$d/f-empty.edaha"
+	echo "not a drawing" >"$d/notes.txt"
+	run --forest "$d" --out "$T/f"
+	python3 - "$T/f/forest.json" <<'PY' || fail "forest.json of three trees"
+import json, sys
+f = json.load(open(sys.argv[1]))
+assert f["format"] == "edaha-forest" and f["version"] == 1, f
+trees = f["trees"]
+assert [t["number"] for t in trees] == [1, 2, 3], trees
+assert [t["file"] for t in trees] == ["a-sketch.edaha", "b-lifted.edaha", "c-cherry.edaha"], trees
+for t in trees:
+    assert t["height"] > 1 and t["crown_width"] > 0.5 and t["branches"] > 0, t
+    assert t["position"][1] == 0, t
+skipped = {s["file"]: s["why"] for s in f["skipped"]}
+assert set(skipped) == {"d-damaged.edaha", "e-<script>.edaha", "f-empty.edaha"}, skipped
+assert "no tree" in skipped["f-empty.edaha"], skipped
+assert all(w for w in skipped.values()), skipped
+PY
+	grep -q "skipped.*d-damaged.edaha" "$T/stderr" || fail "the damaged file is not named on stderr"
+	# forest.glb: a node a tree, named by its number, one wind; the Khronos validator
+	for i in 1 2 3; do
+		grep -aq "\"name\":\"tree-$i\"" "$T/f/forest.glb" || fail "forest.glb has no node tree-$i"
+	done
+	grep -aq '"animations":\[{"name":"wind",' "$T/f/forest.glb" || fail "forest.glb has no wind"
+	"$GLTF_VALIDATE" "$T/f/forest.glb" >"$T/validate.log" || { cat "$T/validate.log"; fail "forest.glb"; }
+	grep -q ': 0 errors, 0 warnings,' "$T/validate.log" || { cat "$T/validate.log"; fail "forest.glb warnings"; }
+	run --forest "$d" --out "$T/f2"
+	same_files "$T/f" "$T/f2" forest.json forest.glb
+	# 45 drawings: the newest 40 stand, numbered 6..45
+	mkdir -p "$T/many"
+	for i in $(seq -w 1 45); do cp "$T/lifted/drawing.edaha" "$T/many/tree-$i.edaha"; done
+	run --forest "$T/many" --out "$T/m"
+	python3 - "$T/m/forest.json" <<'PY' || fail "the newest 40 of 45"
+import itertools, json, math, sys
+trees = json.load(open(sys.argv[1]))["trees"]
+assert [t["number"] for t in trees] == list(range(6, 46)), [t["number"] for t in trees]
+assert trees[0]["file"] == "tree-06.edaha" and trees[-1]["file"] == "tree-45.edaha"
+worst = min(math.dist(a["position"], b["position"]) / ((a["crown_width"] + b["crown_width"]) / 3)
+            for a, b in itertools.combinations(trees, 2))
+assert worst >= 1.0, worst
+print("forest of 45: the newest 40 stand; the closest trunks %.2f times the sum of a third of their crowns" % worst)
+PY
+	# an unreadable directory: usage's exit 2, nothing written
+	edaha --headless --forest "$T/none" --out "$T/x" >/dev/null 2>"$T/err" && fail "--forest of nothing"
+	[ ! -e "$T/x/forest.json" ] && [ ! -e "$T/x/forest.glb" ] || fail "a failed --forest wrote files"
+	usage_says "--forest needs --headless" --forest "$d"
+	usage_says "--load does not go with --forest (only --out, --idle, --size, --lang and --wind do)" \
+		--headless --out "$T/x" --forest "$d" --load a.edaha
+	# --forest-reset: a new day in the configuration's state directory
+	mkdir -p "$T/state/archive"
+	cp "$T/lifted/drawing.edaha" "$T/state/archive/drawing-000041.edaha"
+	printf 'kiosk:\n  state_dir: %s\n' "$T/state" >"$T/reset.conf"
+	edaha --forest-reset --config "$T/reset.conf" >"$T/out" 2>&1 || { cat "$T/out"; fail "--forest-reset"; }
+	grep -q '^edaha-forest-day: 1$' "$T/state/forest-day" && grep -q '^first: 42$' "$T/state/forest-day" ||
+		{ cat "$T/state/forest-day"; fail "--forest-reset: not a new day from No. 42"; }
+	usage_says "--forest-reset goes with --config only" --forest-reset --stats
+	echo "a forest of three drawings (forest.json, forest.glb), three skipped by name; the newest 40 of 45; --forest-reset"
 }
 
 # The wind on the screen (issue 26): with --wind S, --idle T shows the tree swaying at that
