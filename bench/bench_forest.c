@@ -16,6 +16,9 @@
  * need): the shares, the triangles drawn in all against the trees' own, the meshes'
  * building in all (the planting thread's, never a frame's). The rendering figures (draw
  * calls and frame times under llvmpipe) are the renderer's: see render_rows().
+ *
+ * The layout (forest_layout: every pair of trunks, when a tree joins or leaves): median
+ * time for 10, 20, 40 and 200 trees, and how it grows (n^2 pairs).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -186,6 +189,38 @@ static void forest(struct kind *k, size_t n)
 	free(widths);
 }
 
+struct layout_job {
+	size_t n;
+	uint64_t numbers[FOREST_MAX_TREES_LIMIT];
+	double widths[FOREST_MAX_TREES_LIMIT], xz[2 * FOREST_MAX_TREES_LIMIT];
+};
+
+static void layout(void *arg)
+{
+	struct layout_job *j = arg;
+
+	if (forest_layout(j->numbers, j->widths, j->n, j->n, j->xz) < 0)
+		must(-22, "forest_layout");
+}
+
+static void layouts(int reps)
+{
+	static const size_t sizes[] = { 10, 20, 40, 200 };
+	static struct layout_job j;
+	double prev_size = 0.0, prev_s = 0.0;
+
+	printf("\nforest_layout (a sunflower spiral scaled over every pair of trunks)\n");
+	for (size_t i = 0; i < BENCH_COUNT(sizes); i++) {
+		j.n = sizes[i];
+		for (size_t t = 0; t < j.n; t++) {
+			j.numbers[t] = 100 + t;
+			j.widths[t] = 2.0 + (double)((t * 7) % 11);
+		}
+		bench_row("forest_layout", (double)j.n, bench_run(layout, &j, reps), &prev_size,
+			  &prev_s);
+	}
+}
+
 /*
  * The renderer's figures go here (ui/render_forest.c, with its own dependencies in
  * bench/meson.build): for 10, 20 and 40 trees, the draw calls and triangles a frame,
@@ -221,6 +256,7 @@ int main(int argc, char **argv)
 	       "own meshes", "build ms", "over");
 	for (size_t i = 0; i < BENCH_COUNT(trees); i++)
 		forest(k, trees[i]);
+	layouts(reps);
 	render_rows();
 	for (int i = 0; i < NKINDS; i++)
 		tree_finish(&k[i].t);
