@@ -254,6 +254,7 @@ static void take_requests(struct kiosk *k)
 	if (k->app->failed) {
 		kiosk_fail(k, "the app failed", k->app->failed);
 	}
+	kiosk_archive_replaced(k);
 	kiosk_save_edits(k);
 }
 

@@ -78,6 +78,34 @@ void kiosk_save_edits(struct kiosk *k)
 	}
 }
 
+/* New pressed after something was drawn (app_take_replaced): that drawing goes to the
+ * archive as it stood, its ops then in effect and its tree (the summary), as the idle
+ * reset archives one (docs/forest.md: it joins today's forest). */
+void kiosk_archive_replaced(struct kiosk *k)
+{
+	struct error err = { { 0 } };
+	struct tree t;
+	struct doc then;
+	size_t cursor;
+	char name[64] = "";
+
+	if (!app_take_replaced(k->app, &t, &cursor))
+		return;
+	if (k->autosave) {
+		/* the same ops, fewer in effect: a view of the document, not a copy */
+		then = k->app->doc;
+		then.cursor = cursor <= then.nops ? cursor : then.nops;
+		if (autosave_archive(k->autosave, &then, &t, k->cfg.archive_keep, name, sizeof(name),
+				     &err) < 0)
+			fprintf(stderr, "edaha: warning: New: cannot archive the drawing: %s\n",
+				err.msg);
+		else
+			fprintf(stderr, "edaha: New: the drawing is archived as %s/%s\n",
+				AUTOSAVE_ARCHIVE_DIR, name);
+	}
+	tree_finish(&t);
+}
+
 /* Nobody drew for reset_after: the drawing goes to the archive, the next visitor gets
  * a clean canvas (the attract screen stays up). */
 void kiosk_idle_reset(struct kiosk *k, uint64_t now)

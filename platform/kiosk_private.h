@@ -145,6 +145,8 @@ void kiosk_run_export(struct kiosk *k);
 /* kiosk_autosave.c */
 int kiosk_start_autosave(struct kiosk *k);
 void kiosk_save_edits(struct kiosk *k);
+/* New after something was drawn: that drawing, as it stood, goes to the archive. */
+void kiosk_archive_replaced(struct kiosk *k);
 void kiosk_idle_reset(struct kiosk *k, uint64_t now);
 
 /* kiosk_service.c */

@@ -33,6 +33,7 @@ struct app *app_create(int width, int height, uint64_t seed)
 	tree_mesh_marks_init(&app->mesh_marks);
 	history_init(&app->history);
 	tree_init(&app->before);
+	tree_init(&app->replaced.tree);
 	rng_seed(&app->rng, seed);
 	app->pattern = APP_PATTERN_AUTO;
 	app->selected = -1;
@@ -59,6 +60,7 @@ void app_destroy(struct app *app)
 	tree_mesh_marks_finish(&app->mesh_marks);
 	history_finish(&app->history);
 	tree_finish(&app->before);
+	tree_finish(&app->replaced.tree);
 	for (int i = 0; i < ARRANGE_COUNT; i++)
 		tree_mesh_finish(&app->previews[i]);
 	for (int i = 0; i < GEN_PRESET_COUNT; i++)
@@ -114,6 +116,17 @@ int app_reset(struct app *app, uint64_t seed)
 	app_clear_suggestions(app);
 	doc_init(&fresh, seed);
 	return app_load_doc(app, &fresh);
+}
+
+bool app_take_replaced(struct app *app, struct tree *t, size_t *cursor)
+{
+	if (!app->replaced.pending)
+		return false;
+	*t = app->replaced.tree;
+	*cursor = app->replaced.cursor;
+	tree_init(&app->replaced.tree);
+	app->replaced.pending = false;
+	return true;
 }
 
 int app_show_tree(struct app *app, struct tree *t)

@@ -197,6 +197,14 @@ struct app {
 	uint64_t mesh_serial; /* bumped whenever tree/mesh change, so the renderer re-uploads */
 	struct history history; /* states along doc's history, for undo and redo */
 	struct tree before;     /* the tree an undo or redo leaves, while meshes are reused */
+	/* New pressed after something was drawn (issue 27): that drawing, for the kiosk to
+	 * archive and plant in today's forest: the tree as it stood and the ops in effect
+	 * then (doc.ops[0..cursor)); app_take_replaced hands it over. */
+	struct {
+		bool pending;
+		struct tree tree;
+		size_t cursor;
+	} replaced;
 	struct app_stroke stroke;
 	struct app_pen pen;
 	enum app_mode mode;
@@ -270,6 +278,13 @@ int app_load_doc(struct app *app, struct doc *doc);
 /* A new visitor: an empty drawing with this seed, sketch mode, the front view; not
  * undoable (the kiosk archives the old drawing first). 0 or -ENOMEM. */
 int app_reset(struct app *app, uint64_t seed);
+/*
+ * The drawing New replaced, if one is waiting (app->replaced): true, with *t its tree
+ * (moved out: tree_finish it) and *cursor the ops of app->doc in effect then; false when
+ * none. A drawing New found empty, or a second New before the first was taken, replaces
+ * nothing more: the first is kept.
+ */
+bool app_take_replaced(struct app *app, struct tree *t, size_t *cursor);
 /* Shows t (taken: t is left empty) on the canvas with its meshes, outside the history:
  * for the benchmarks, whose trees (synthetic, up to 20,000 leaves) no drawing makes. The
  * drawing is left as it was; app_rebuild or a load shows its tree again. 0 or -ENOMEM. */

@@ -107,6 +107,15 @@ static int new_press(struct app *app, uint64_t time_us)
 
 	app->selected = -1;
 	app_clear_suggestions(app);
+	/* a drawing with a tree is done: the kiosk archives it (and plants it in today's
+	 * forest) as it stood, whatever comes after; the first waiting is kept */
+	if (app->tree.nbranches != 0 && !app->replaced.pending) {
+		ret = tree_copy(&app->replaced.tree, &app->tree);
+		if (ret < 0)
+			return ret;
+		app->replaced.cursor = app->doc.cursor;
+		app->replaced.pending = true;
+	}
 	if (app->tree.nbranches != 0 || app->tree.nleaves != 0)
 		ret = app_push_op(app, &op);
 	if (ret < 0 && ret != -ENOSPC)

@@ -125,4 +125,31 @@ edaha --headless --out "$T/no-key" --seed 7 --replay "$T/no-key.edaha-trace" >/d
 # the window's figures, to quote beside the headless ones
 grep "frames; first on screen" "$T/stats" || fail "--stats printed no frame figures"
 grep "pen events to screen" "$T/stats" || fail "--stats printed no pen figures"
+
+# Started again, the drawing comes back from the journal; New (key n) archives it as it
+# stood, for today's forest (issue 27): the archived drawing loads to the grown tree
+"${preload[@]}" "$EDAHA" --config "$T/edaha.conf" >/dev/null 2>"$T/stderr2" &
+APP=$!
+for _ in $(seq 300); do
+	grep -q "first frame on screen" "$T/stderr2" && break
+	kill -0 $APP 2>/dev/null || break
+	sleep 0.1
+done
+grep -q "the drawing is back from" "$T/stderr2" || { cat "$T/stderr2" >&2; fail "no drawing back"; }
+WID=$(xdotool search --sync --name '^edaha$' | head -n 1)
+xdotool mousemove --window "$WID" 100 100 key n || fail "xdotool could not press n"
+for _ in $(seq 100); do
+	grep -q "^edaha: New: the drawing is archived as archive/drawing-000001.edaha" \
+		"$T/stderr2" && break
+	sleep 0.1
+done
+kill -TERM $APP
+wait $APP
+APP=
+grep -q "^edaha: New: the drawing is archived as archive/drawing-000001.edaha" "$T/stderr2" ||
+	{ cat "$T/stderr2" >&2; fail "New did not archive the drawing"; }
+edaha --headless --out "$T/archived" --load "$T/state/archive/drawing-000001.edaha" \
+	>/dev/null 2>&1 || fail "the archived drawing does not load"
+grep -q '"wood": *{' "$T/archived/skeleton.json" ||
+	fail "the archived drawing is not the grown tree as it stood"
 echo "PASS"
