@@ -15,6 +15,7 @@
 
 #include "buf.h"
 #include "error.h"
+#include "live.h"
 #include "mesh.h"
 #include "tree.h"
 
@@ -194,3 +195,65 @@ int forest_lod_build_colors(const struct tree *t, size_t max_triangles, struct t
  */
 void forest_lod_shares(const double *widths, const size_t *need, size_t n, size_t total,
 		       size_t *share);
+
+/* ---- the scene: what the screen draws (forest_scene.c) ---------------------------- */
+
+/*
+ * One tree made ready for the forest's screen, on the planting thread (docs/forest.md,
+ * "Drawing it fast enough"): its level of detail within `budget` triangles, and each of
+ * its vertices' living data (bound to its skeleton by the nearest point, as any mesh),
+ * its wind over the forest's common loop (LIVE_WIND_COMMON_LOOP_S) at `strength`, all in
+ * the tree's own coordinates with its trunk's foot at `foot`.
+ */
+struct forest_part {
+	struct tree_mesh mesh;
+	struct forest_lod_colors colors; /* its leaves' season colours (n 0: one colour) */
+	struct live_attrs bark, leaves;  /* a vertex each of mesh.bark, mesh.leaves */
+	double foot[3];
+	double height, crown_width;
+	size_t branches, leaves_drawn;   /* the tree's: branches, leaves */
+	double amp0;                     /* its trunk's sway, metres at w0 = 1 */
+	int harmonic0;                   /* its trunk's whole cycles a loop */
+	uint8_t phase0;                  /* its trunk's phase, 1/256 turns, from the seed */
+	struct live_wind wind;           /* its wind, over the common loop */
+};
+void forest_part_init(struct forest_part *p);
+void forest_part_finish(struct forest_part *p);
+/* 0; -EINVAL (no branches, a strength outside 0..1); -ENOMEM (p then empty). */
+int forest_part_build(struct forest_part *p, const struct tree *t, uint64_t seed,
+		      size_t budget, double strength);
+
+/*
+ * The standing trees as the screen draws them: every part placed (its foot at its
+ * position) and merged into one bark and one leaves mesh, so the forest is a few draw
+ * calls whatever its number of trees. Tree i's vertices and indices are one range of
+ * each, in the order given (the newest last: drawn apart while it grows in). Their
+ * living data is placed with them; the trunk's sway is folded into w0 against the
+ * scene's wind (the tree that sways most's), so one frame's uniforms move every tree by
+ * its own height; each tree's trunk harmonic and phase go per vertex (trunk[2 v], trunk[2 v + 1]).
+ */
+struct forest_scene_tree {
+	uint64_t number;
+	double position[3];
+	double height, crown_width;
+	size_t bark_vertices[2], bark_indices[2];     /* [first, end) */
+	size_t leaves_vertices[2], leaves_indices[2];
+};
+struct forest_scene {
+	struct forest_scene_tree *trees;
+	size_t ntrees, cap_trees;
+	struct tree_mesh mesh;               /* world coordinates */
+	float *leaf_rgb;                     /* 3 a leaves vertex, or NULL: one colour */
+	struct live_attrs bark, leaves;      /* placed */
+	uint8_t *bark_trunk, *leaves_trunk;  /* 2 a vertex: harmonic0, phase0 */
+	size_t cap_bark_trunk, cap_leaves_trunk;
+	struct live_wind wind;               /* the frame's (the most swaying tree's) */
+	double center[3], radius, top;       /* what the camera frames: the trees' feet's
+					      * centre, the farthest crown's reach, the top */
+	uint64_t serial;                     /* bumped at each build */
+};
+void forest_scene_init(struct forest_scene *s);
+void forest_scene_finish(struct forest_scene *s);
+/* parts[i] numbered numbers[i], its foot at positions[3 i..]; 0 or -ENOMEM (s empty). */
+int forest_scene_build(struct forest_scene *s, const struct forest_part *const *parts,
+		       const uint64_t *numbers, const double *positions, size_t n);
