@@ -14,6 +14,7 @@
 #include "fileio.h"
 #include "gen.h"
 #include "font_file.h"
+#include "headless_one.h"
 #include "output.h"
 #include "render.h"
 #include "skeleton_read.h"
@@ -194,27 +195,6 @@ static int load_traces(const struct options *o, struct trace *traces)
 	return 0;
 }
 
-/* The labels' font and language; a headless screen without its words would be wrong. */
-static int set_text(struct render *render, const struct options *o)
-{
-	struct error err = { { 0 } };
-	enum render_lang lang = o->lang && !strcmp(o->lang, "ja") ? RENDER_LANG_JA : RENDER_LANG_EN;
-	const char *used;
-	char *font;
-	size_t len;
-	int ret = font_file_read(NULL, &font, &len, &used, &err);
-
-	if (ret < 0) {
-		fprintf(stderr, "edaha: %s\n", err.msg);
-		return ret;
-	}
-	ret = render_set_text(render, font, len, lang);
-	if (ret < 0)
-		fprintf(stderr, "edaha: %s: cannot use this font for the labels\n", used);
-	free(font);
-	return ret;
-}
-
 /*
  * The moment shown: the settled screen, or with --idle what the kiosk shows that long
  * after the last input (a step of the turn into 3D, a vine growing, a message, the
@@ -253,7 +233,7 @@ static int render_and_write(struct run *r)
 	rgba = malloc((size_t)o->width * (size_t)o->height * 4);
 	if (!render || !rgba)
 		fprintf(stderr, "edaha: cannot set up the renderer\n");
-	else if (set_text(render, o) < 0)
+	else if (headless_set_text(render, o) < 0)
 		; /* said why */
 	else if (draw(render, r) < 0 || egl_headless_read_rgba(egl, rgba) < 0)
 		fprintf(stderr, "edaha: rendering failed\n");

@@ -3,12 +3,14 @@
  * --headless --forest DIR (docs/forest.md, "Headless and for the teacher"): every *.edaha
  * in DIR planted in name order and numbered 1, 2, 3, ... (a file that cannot be planted
  * is skipped, with why, and takes no number); the newest FOREST_MAX_TREES_DEFAULT stand,
- * placed by forest_layout; forest.json and forest.glb (every standing tree at full
- * detail, with its wind over the forest's common loop) written to --out.
+ * placed by forest_layout; forest.json, forest.glb (every standing tree at full
+ * detail, with its wind over the forest's common loop) and screen.png (the attract
+ * screen's forest at --idle's moment, each tree at its level of detail) written to --out.
  */
 #include <dirent.h>
 #include <errno.h>
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,7 +19,10 @@
 #include "fileio.h"
 #include "forest.h"
 #include "forest_plant.h"
+#include "app.h"
 #include "headless.h"
+#include "headless_one.h"
+#include "render.h"
 #include "live.h"
 
 struct standing {
@@ -155,6 +160,88 @@ static int glb(struct forest_run *f, const double *xz, const struct options *o, 
 	return ret;
 }
 
+/* The forest on screen: each tree's part at its share of the triangles, the scene. */
+static int build_scene(struct forest_run *f, const double *xz, double strength,
+		       struct forest_scene *scene, struct forest_part *parts)
+{
+	const struct forest_part **pp = calloc(f->ntrees + 1, sizeof(*pp));
+	uint64_t *numbers = calloc(f->ntrees + 1, sizeof(*numbers));
+	double *widths = calloc(f->ntrees + 1, sizeof(*widths)), *pos = calloc(3 * f->ntrees + 3, sizeof(*pos));
+	size_t *share = calloc(f->ntrees + 1, sizeof(*share));
+	int ret = pp && numbers && widths && pos && share ? 0 : -ENOMEM;
+
+	for (size_t i = 0; ret == 0 && i < f->ntrees; i++)
+		widths[i] = nth(f, i)->crown_width;
+	if (ret == 0)
+		forest_lod_shares(widths, NULL, f->ntrees, FOREST_TRIANGLES, share);
+	for (size_t i = 0; ret == 0 && i < f->ntrees; i++) {
+		struct standing *st = nth(f, i);
+
+		ret = forest_part_build(&parts[i], &st->planted.tree, st->planted.seed, share[i],
+					strength);
+		pp[i] = &parts[i];
+		numbers[i] = st->number;
+		pos[3 * i] = xz[2 * i];
+		pos[3 * i + 2] = xz[2 * i + 1];
+	}
+	if (ret == 0)
+		ret = forest_scene_build(scene, pp, numbers, pos, f->ntrees);
+	free(pp);
+	free(numbers);
+	free(widths);
+	free(pos);
+	free(share);
+	return ret;
+}
+
+struct picture {
+	const struct options *o;
+	struct app *app;
+	uint64_t now_us;
+};
+
+static int draw(struct render *r, const void *ctx, int width, int height)
+{
+	const struct picture *p = ctx;
+	int ret = headless_set_text(r, p->o);
+
+	(void)width;
+	(void)height;
+	return ret < 0 ? ret : render_frame_at(r, p->app, p->now_us);
+}
+
+/* screen.png: the attract screen showing the forest at --idle's moment (0 without). */
+static int picture(struct forest_run *f, const double *xz, const struct options *o, struct buf *png)
+{
+	struct forest_scene scene;
+	struct forest_part *parts = calloc(f->ntrees + 1, sizeof(*parts));
+	struct picture p = { .o = o };
+	int ret = parts ? 0 : -ENOMEM, status = 1;
+
+	forest_scene_init(&scene);
+	for (size_t i = 0; parts && i < f->ntrees; i++)
+		forest_part_init(&parts[i]);
+	if (ret == 0)
+		ret = build_scene(f, xz, o->wind > 0.0 ? o->wind : 0.0, &scene, parts);
+	if (ret == 0 && !(p.app = app_create(o->width, o->height, 1)))
+		ret = -ENOMEM;
+	if (ret == 0) {
+		/* the attract screen from the start: --idle T is the moment T s into it */
+		p.app->forest = &scene;
+		p.app->attract_after_us = 1;
+		p.now_us = 1 + (o->idle_given ? (uint64_t)llround(o->idle_s * 1e6) : 0);
+		status = headless_one_picture(o, draw, &p, png);
+	}
+	if (ret < 0)
+		fputs("edaha: out of memory building the forest's picture\n", stderr);
+	app_destroy(p.app);
+	for (size_t i = 0; parts && i < f->ntrees; i++)
+		forest_part_finish(&parts[i]);
+	free(parts);
+	forest_scene_finish(&scene);
+	return status ? -EIO : 0;
+}
+
 static int write_files(struct forest_run *f, const struct options *o)
 {
 	const char *out_dir = o->out_dir;
@@ -164,11 +251,12 @@ static int write_files(struct forest_run *f, const struct options *o)
 	double *widths = calloc(f->ntrees + 1, sizeof(*widths));
 	double *xz = calloc(2 * f->ntrees + 2, sizeof(*xz));
 	struct error err = { { 0 } };
-	struct buf b, g;
+	struct buf b, g, png;
 	int ret = 0;
 
 	buf_init(&b);
 	buf_init(&g);
+	buf_init(&png);
 	if (!t || !s || !numbers || !widths || !xz)
 		ret = -ENOMEM;
 	for (size_t i = 0; ret == 0 && i < f->ntrees; i++) {
@@ -191,15 +279,20 @@ static int write_files(struct forest_run *f, const struct options *o)
 	if (ret == 0)
 		ret = glb(f, xz, o, &g);
 	if (ret == 0)
+		ret = picture(f, xz, o, &png);
+	if (ret == 0)
 		ret = fileio_mkdirs(out_dir, &err);
 	if (ret == 0)
 		ret = fileio_write_atomic(out_dir, "forest.json", b.data, b.len, &err);
 	if (ret == 0)
 		ret = fileio_write_atomic(out_dir, "forest.glb", g.data, g.len, &err);
+	if (ret == 0)
+		ret = fileio_write_atomic(out_dir, "screen.png", png.data, png.len, &err);
 	if (ret < 0)
 		fprintf(stderr, "edaha: %s\n", err.msg[0] ? err.msg : "out of memory");
 	buf_finish(&b);
 	buf_finish(&g);
+	buf_finish(&png);
 	free(t);
 	free(s);
 	free(numbers);
@@ -226,7 +319,7 @@ int headless_forest_run(const struct options *o)
 	if (status == 0 && write_files(&f, o) < 0)
 		status = 1;
 	if (status == 0)
-		printf("edaha: wrote forest.json and forest.glb to %s (%zu trees standing of %llu planted, %zu "
+		printf("edaha: wrote forest.json, forest.glb and screen.png to %s (%zu trees standing of %llu planted, %zu "
 		       "skipped)\n", o->out_dir, f.ntrees, (unsigned long long)f.planted, f.nskips);
 	for (size_t i = 0; i < f.max; i++) {
 		forest_planted_finish(&f.trees[i].planted);

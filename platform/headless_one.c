@@ -9,6 +9,7 @@
 
 #include "egl_headless.h"
 #include "fileio.h"
+#include "font_file.h"
 #include "pngio.h"
 #include "render.h"
 
@@ -33,6 +34,26 @@ int headless_no_such_preset(const char *opt, const char *what, const char *arg,
 		fprintf(stderr, "%s %s", i ? "," : "", names[i]);
 	fputs(")\n", stderr);
 	return 2;
+}
+
+int headless_set_text(struct render *render, const struct options *o)
+{
+	struct error err = { { 0 } };
+	enum render_lang lang = o->lang && !strcmp(o->lang, "ja") ? RENDER_LANG_JA : RENDER_LANG_EN;
+	const char *used;
+	char *font;
+	size_t len;
+	int ret = font_file_read(NULL, &font, &len, &used, &err);
+
+	if (ret < 0) {
+		fprintf(stderr, "edaha: %s\n", err.msg);
+		return ret;
+	}
+	ret = render_set_text(render, font, len, lang);
+	if (ret < 0)
+		fprintf(stderr, "edaha: %s: cannot use this font for the labels\n", used);
+	free(font);
+	return ret;
 }
 
 int headless_one_picture(const struct options *o,

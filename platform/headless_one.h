@@ -23,6 +23,9 @@ bool headless_is_preset(const char *const *names, size_t n, const char *arg);
  * (presets: ...)". Returns the exit status, 2. */
 int headless_no_such_preset(const char *opt, const char *what, const char *arg,
 			    const char *const *names, size_t n);
+/* The labels' font and language (--lang) for a headless screen: 0, or a negative errno
+ * with stderr saying why (a screen without its words would be wrong). */
+int headless_set_text(struct render *render, const struct options *o);
 /* The picture draw() makes (o->width x o->height, headless GL) as a PNG in png. 0, or 1
  * with stderr saying why. */
 int headless_one_picture(const struct options *o,

@@ -89,6 +89,7 @@ struct render *render_create(void)
 	r->instanced = render_gl_major_version() >= 3 && render_instanced_create(r) == 0;
 	/* without its programs the tree stands still (it said why) */
 	(void)render_live_create(r);
+	(void)render_forest_create(r);
 	if (glGetError() != GL_NO_ERROR) {
 		fprintf(stderr, "render: GL error while setting up\n");
 		goto fail;
@@ -109,6 +110,7 @@ void render_destroy(struct render *r)
 	render_vines_finish(r);
 	render_instanced_finish(r);
 	render_live_finish(r);
+	render_forest_finish(r);
 	render_previews_finish(r);
 	render_text_finish(r);
 	glDeleteBuffers(1, &r->flat_vbo);
@@ -384,16 +386,23 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 	glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 	pixel_matrix(v->width, v->height, proj);
 
-	/* behind the tree */
-	glDisable(GL_DEPTH_TEST);
-	glEnable(GL_BLEND);
-	batch_reset(&r->batch);
-	render_ui_ground(&r->batch, app);
-	ret = flush_batch(r, proj);
+	r->forest.drawn = false;
+	if (render_forest_shown(r, app, now_us)) {
+		/* the attract screen's forest instead of the drawing (render_forest.c) */
+		batch_reset(&r->batch);
+		ret = render_forest_draw(r, app, now_us);
+	} else {
+		/* behind the tree */
+		glDisable(GL_DEPTH_TEST);
+		glEnable(GL_BLEND);
+		batch_reset(&r->batch);
+		render_ui_ground(&r->batch, app);
+		ret = flush_batch(r, proj);
 
-	r2 = draw_tree(r, app, &xf, light);
-	if (ret == 0)
-		ret = r2;
+		r2 = draw_tree(r, app, &xf, light);
+		if (ret == 0)
+			ret = r2;
+	}
 
 	/* in front of everything; the cursor last so it shows over the buttons too */
 	glEnable(GL_BLEND);
@@ -413,8 +422,10 @@ int render_frame_at(struct render *r, const struct app *app, uint64_t now_us)
 	/* the messages over the canvas; UINT64_MAX, the settled view, has none */
 	if (now_us != UINT64_MAX) {
 		render_ui_status(&r->batch, &r->text, app, now_us);
-		if (app_attract_at(app, now_us, NULL))
-			render_ui_attract(&r->batch, &r->text, app);
+		if (app_attract_at(app, now_us, NULL)) {
+			render_forest_labels(r, app);
+			render_ui_attract(&r->batch, &r->text, app, r->forest.drawn);
+		}
 	}
 	render_ui_cursor(&r->batch, app);
 	r2 = flush_batch(r, proj);

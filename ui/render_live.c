@@ -137,10 +137,8 @@ static void pack(struct render_live_vertex *o, const struct live_vertex *v, cons
 	memcpy(o->flutter, v->flutter, sizeof(o->flutter));
 }
 
-/* The data of v[0..n) into d's buffer, expanded by m's indices when the mesh went up
- * without them (render_mesh.c's GLES 2 fallback): one a vertex as drawn. */
-static int upload(struct render *r, struct render_live_data *d, const struct live_vertex *v,
-		  size_t n, const struct mesh *m, bool expand)
+int render_live_upload(struct render *r, struct render_live_data *d, const struct live_vertex *v,
+		       size_t n, const struct mesh *m, bool expand, const float wscale[4])
 {
 	struct render_live *l = &r->live;
 	size_t count = expand ? m->nindices : n;
@@ -154,7 +152,7 @@ static int upload(struct render *r, struct render_live_data *d, const struct liv
 
 		if (at >= n)
 			return -EINVAL;
-		pack(&o[i], &v[at], l->wscale);
+		pack(&o[i], &v[at], wscale);
 	}
 	if (!d->vbo)
 		glGenBuffers(1, &d->vbo);
@@ -165,6 +163,13 @@ static int upload(struct render *r, struct render_live_data *d, const struct liv
 	l->bytes += count * sizeof(*o);
 	d->ok = true;
 	return 0;
+}
+
+/* The tree's data: its band weights against the tree's scales (render_live_begin). */
+static int upload(struct render *r, struct render_live_data *d, const struct live_vertex *v,
+		  size_t n, const struct mesh *m, bool expand)
+{
+	return render_live_upload(r, d, v, n, m, expand, r->live.wscale);
 }
 
 /* The marks describe t's meshes as they are (tree_mesh_marks: unknown without memory). */
@@ -381,7 +386,12 @@ bool render_live_vines(struct render *r, const struct app *app)
 
 void render_live_uniforms(const struct render *r, const struct render_live_program *p)
 {
-	const struct app_live_frame *f = &r->live.frame;
+	render_live_frame_uniforms(p, &r->live.frame, r->live.wscale);
+}
+
+void render_live_frame_uniforms(const struct render_live_program *p, const struct app_live_frame *f,
+				const float wscale[4])
+{
 	const struct live_wind_frame *w = &f->wind;
 	float dir[9];
 
@@ -402,7 +412,7 @@ void render_live_uniforms(const struct render *r, const struct render_live_progr
 	glUniform1f(p->amp_leaf, (float)w->amp_leaf);
 	glUniform1f(p->front, (float)f->front);
 	glUniform1f(p->swell, (float)f->swell);
-	glUniform4fv(p->wscale, 1, r->live.wscale);
+	glUniform4fv(p->wscale, 1, wscale);
 }
 
 void render_live_use(struct render *r, const struct render_live_program *p, const float mvp[16],

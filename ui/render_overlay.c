@@ -281,7 +281,8 @@ static void attract_band(struct batch *b, const struct ui_text *t, const struct 
 			  y + 0.5 * ch + 0.5 * (e.ascent - e.descent), ink);
 }
 
-void render_ui_attract(struct batch *b, const struct ui_text *t, const struct app *app)
+void render_ui_attract(struct batch *b, const struct ui_text *t, const struct app *app,
+		       bool forest)
 {
 	const struct screen *v = &app->screen;
 	struct layout_rect canvas = layout_canvas(v);
@@ -292,7 +293,7 @@ void render_ui_attract(struct batch *b, const struct ui_text *t, const struct ap
 	struct text_extent e = { 0 };
 	int px = (int)fmax(1.0, round(INVITE_OF_HEIGHT * v->height));
 
-	if (app->live.strength > 0.0 && app->tree.nbranches > 0) {
+	if (forest || (app->live.strength > 0.0 && app->tree.nbranches > 0)) {
 		attract_band(b, t, app);
 		return;
 	}

@@ -131,6 +131,23 @@ struct render_live {
 	bool *inst_mark;
 };
 
+/* Today's forest on the attract screen (render_forest.c): its programs, the scene's meshes
+ * and data as they went up (of at serial), and this frame's camera for the labels. */
+struct render_forest {
+	struct render_live_program plain, tinted;
+	GLint loop_u[2];
+	struct render_mesh bark, leaves, ground;
+	struct render_live_data bark_live, leaves_live;
+	GLuint bark_trunk, leaves_trunk;
+	float wscale[4];
+	const struct forest_scene *of;
+	uint64_t serial;
+	bool ok, tinted_leaves;
+	bool drawn;              /* this frame */
+	struct camera_xf xf;     /* this frame's camera... */
+	double px_per_m, c[3];   /* ...its scale and the view's centre */
+};
+
 struct render {
 	/* this frame's unfolding leaves (app_unfold_at) */
 	struct app_unfold_span unfold[APP_UNFOLD_MAX];
@@ -143,6 +160,7 @@ struct render {
 	/* the lit program the tree is being drawn with: the tree program, or a living one */
 	struct render_program_tree lit;
 	struct render_live live;
+	struct render_forest forest;
 	/* screen-space triangles, flat or showing the atlas's glyphs */
 	GLuint flat_program;
 	GLint flat_proj, flat_texel, flat_atlas;
@@ -227,6 +245,14 @@ void render_live_use(struct render *r, const struct render_live_program *p, cons
 void render_live_draw(struct render *r, const struct render_mesh *rm,
 		      const struct render_live_data *d, bool tinted);
 void render_live_pointers(GLuint vbo, GLuint base, size_t first);
+/* v[0..n)'s data into d's buffer, the band weights against wscale, expanded by m's
+ * indices when the mesh went up without them (render_mesh.c's GLES 2 fallback): one a
+ * vertex as drawn. 0, -ENOMEM or -EINVAL. */
+int render_live_upload(struct render *r, struct render_live_data *d, const struct live_vertex *v,
+		       size_t n, const struct mesh *m, bool expand, const float wscale[4]);
+/* A living program's uniforms for frame f, band weights scaled by wscale. */
+void render_live_frame_uniforms(const struct render_live_program *p, const struct app_live_frame *f,
+				const float wscale[4]);
 
 /* render_mesh.c */
 int render_mesh_upload(struct render_mesh *rm, const struct mesh *m, bool uint_indices);
@@ -262,6 +288,17 @@ int render_instanced_grow_order(struct render *r, const struct tree *t,
 void render_instanced_grow_drop(struct render *r);
 /* Frees the GPU copies (the program stays until finish). */
 void render_instanced_clear(struct render *r);
+
+/* render_forest.c: today's forest on the attract screen. create: 0, or -1 (stderr says
+ * why; the attract screen then shows the drawing, as before). shown: whether the frame
+ * at now_us shows it (app_forest_at, and the programs are there). draw: the ground and
+ * the trees in the canvas; 0 or a negative errno. labels: each tree's number, into the
+ * batch, after draw. */
+int render_forest_create(struct render *r);
+void render_forest_finish(struct render *r);
+bool render_forest_shown(const struct render *r, const struct app *app, uint64_t now_us);
+int render_forest_draw(struct render *r, const struct app *app, uint64_t now_us);
+void render_forest_labels(struct render *r, const struct app *app);
 void render_instanced_finish(struct render *r);
 
 /* render_text.c: the atlas and its texture. init: 0 or -ENOMEM (stderr says why). sync:
@@ -288,7 +325,9 @@ void render_ui_selection(struct batch *b, const struct app *app, const struct ca
  * the attract screen. */
 void render_ui_status(struct batch *b, const struct ui_text *t, const struct app *app,
 		      uint64_t now_us);
-void render_ui_attract(struct batch *b, const struct ui_text *t, const struct app *app);
+/* forest: today's forest is on screen (the invitation as a band at the canvas's foot). */
+void render_ui_attract(struct batch *b, const struct ui_text *t, const struct app *app,
+		       bool forest);
 
 /* render_preview.c: the 3D pictures in the side strip's cards (the cards behind them are
  * render_ui_buttons'): whether there are any, and drawing them, the leaf suggestions seen

@@ -13,6 +13,7 @@
 #include "camera.h"
 #include "doc.h"
 #include "event.h"
+#include "forest.h"
 #include "gen.h"
 #include "history.h"
 #include "live.h"
@@ -268,6 +269,9 @@ struct app {
 	bool status_held;          /* shown until the next one, not for APP_STATUS_US */
 	uint32_t requests;
 	struct app_live live;      /* the wind and growing in (app_live.c) */
+	/* today's forest, the platform's (docs/forest.md): what the attract screen shows
+	 * when it holds a tree; NULL: the attract screen over the drawing */
+	const struct forest_scene *forest;
 	int failed; /* first negative errno from an allocation, sticky */
 };
 
@@ -359,6 +363,9 @@ enum app_status app_status_at(const struct app *app, uint64_t now_us, uint64_t *
 /* Whether the attract screen shows at now_us; *from_us says when it does (or did) begin
  * (UINT64_MAX: never, attract_after_us is 0). Any event ends it. */
 bool app_attract_at(const struct app *app, uint64_t now_us, uint64_t *from_us);
+/* Whether the attract screen at now_us shows today's forest: it is on, and app->forest
+ * (the platform's) holds a tree. */
+bool app_forest_at(const struct app *app, uint64_t now_us);
 /* Rebuilds tree and meshes from the document up to its cursor. 0 or -ENOMEM. */
 int app_rebuild(struct app *app);
 /* Puts the tree p describes on the canvas, as a template tap does (--generate): one

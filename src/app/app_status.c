@@ -43,3 +43,9 @@ bool app_attract_at(const struct app *app, uint64_t now_us, uint64_t *from_us)
 		*from_us = from;
 	return now_us >= from;
 }
+
+bool app_forest_at(const struct app *app, uint64_t now_us)
+{
+	return app->forest && app->forest->ntrees > 0 && now_us != UINT64_MAX &&
+	       app_attract_at(app, now_us, NULL);
+}

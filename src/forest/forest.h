@@ -19,6 +19,9 @@
 #include "mesh.h"
 #include "tree.h"
 
+/* The whole forest's triangles on screen, shared among its trees by crown width
+ * (forest_lod_shares): what a Pi-class GPU draws at the attract screen's rate. */
+#define FOREST_TRIANGLES 300000
 #define FOREST_MAX_TREES_DEFAULT 40
 #define FOREST_MAX_TREES_LIMIT 200
 

@@ -416,6 +416,11 @@ assert "no tree" in skipped["f-empty.edaha"], skipped
 assert all(w for w in skipped.values()), skipped
 PY
 	grep -q "skipped.*d-damaged.edaha" "$T/stderr" || fail "the damaged file is not named on stderr"
+	# screen.png: the attract screen's forest, the camera travelling (another moment,
+	# another picture; the same moment, the same bytes)
+	run --forest "$d" --out "$T/f30" --idle 30
+	cmp -s "$T/f/screen.png" "$T/f30/screen.png" && fail "the forest's camera does not travel"
+	same_files "$T/f" "$T/f30" forest.json forest.glb
 	# forest.glb: a node a tree, named by its number, one wind; the Khronos validator
 	for i in 1 2 3; do
 		grep -aq "\"name\":\"tree-$i\"" "$T/f/forest.glb" || fail "forest.glb has no node tree-$i"
@@ -424,11 +429,19 @@ PY
 	"$GLTF_VALIDATE" "$T/f/forest.glb" >"$T/validate.log" || { cat "$T/validate.log"; fail "forest.glb"; }
 	grep -q ': 0 errors, 0 warnings,' "$T/validate.log" || { cat "$T/validate.log"; fail "forest.glb warnings"; }
 	run --forest "$d" --out "$T/f2"
-	same_files "$T/f" "$T/f2" forest.json forest.glb
-	# 45 drawings: the newest 40 stand, numbered 6..45
+	same_files "$T/f" "$T/f2" forest.json forest.glb screen.png
+	# 45 drawings of the kinds visitors make (a sketch made 3D, templates, a grown tree
+	# with a vine): the newest 40 stand, numbered 6..45
+	run --out "$T/zelkova" --press tpl-zelkova
+	run --out "$T/palm" --press tpl-palm
+	run --out "$T/grown" --replay "$DEMO" --press 3d --press grow --press vine \
+		--replay "$SRC/data/vine-tap.edaha-trace"
 	mkdir -p "$T/many"
-	for i in $(seq -w 1 45); do cp "$T/lifted/drawing.edaha" "$T/many/tree-$i.edaha"; done
-	run --forest "$T/many" --out "$T/m"
+	local kinds=(lifted cherry zelkova palm grown)
+	for i in $(seq -w 1 45); do
+		cp "$T/${kinds[$((10#$i % 5))]}/drawing.edaha" "$T/many/tree-$i.edaha"
+	done
+	run --forest "$T/many" --out "$T/m" --idle 20
 	python3 - "$T/m/forest.json" <<'PY' || fail "the newest 40 of 45"
 import itertools, json, math, sys
 trees = json.load(open(sys.argv[1]))["trees"]
@@ -439,9 +452,19 @@ worst = min(math.dist(a["position"], b["position"]) / ((a["crown_width"] + b["cr
 assert worst >= 1.0, worst
 print("forest of 45: the newest 40 stand; the closest trunks %.2f times the sum of a third of their crowns" % worst)
 PY
+	if [ -n "${EDAHA_UPDATE_GOLDEN:-}" ]; then
+		cp "$T/f/screen.png" "$SRC/golden/forest-3.png"
+		cp "$T/m/screen.png" "$SRC/golden/forest-40.png"
+	else
+		"$IMGCMP" "$SRC/golden/forest-3.png" "$T/f/screen.png" ||
+			fail "the forest of three differs from golden"
+		"$IMGCMP" "$SRC/golden/forest-40.png" "$T/m/screen.png" ||
+			fail "the forest of forty differs from golden"
+	fi
 	# an unreadable directory: usage's exit 2, nothing written
 	edaha --headless --forest "$T/none" --out "$T/x" >/dev/null 2>"$T/err" && fail "--forest of nothing"
-	[ ! -e "$T/x/forest.json" ] && [ ! -e "$T/x/forest.glb" ] || fail "a failed --forest wrote files"
+	[ ! -e "$T/x/forest.json" ] && [ ! -e "$T/x/forest.glb" ] && [ ! -e "$T/x/screen.png" ] ||
+		fail "a failed --forest wrote files"
 	usage_says "--forest needs --headless" --forest "$d"
 	usage_says "--load does not go with --forest (only --out, --idle, --size, --lang and --wind do)" \
 		--headless --out "$T/x" --forest "$d" --load a.edaha
@@ -453,7 +476,7 @@ PY
 	grep -q '^edaha-forest-day: 1$' "$T/state/forest-day" && grep -q '^first: 42$' "$T/state/forest-day" ||
 		{ cat "$T/state/forest-day"; fail "--forest-reset: not a new day from No. 42"; }
 	usage_says "--forest-reset goes with --config only" --forest-reset --stats
-	echo "a forest of three drawings (forest.json, forest.glb), three skipped by name; the newest 40 of 45; --forest-reset"
+	echo "a forest of three drawings (forest.json, forest.glb, screen.png), three skipped by name; the newest 40 of 45; --forest-reset"
 }
 
 # The wind on the screen (issue 26): with --wind S, --idle T shows the tree swaying at that

@@ -27,6 +27,8 @@ enum {
 	ATTR_LIVE = 2,
 	ATTR_INST_LIVE = 7,
 	ATTR_LIVE_COUNT = 4,
+	/* the forest's programs: a tree's trunk harmonic and phase per vertex, the eighth */
+	ATTR_TRUNK = 7,
 };
 
 /* A lit program: the tree program's uniforms. */

@@ -62,6 +62,8 @@ const char render_live_vs[] = "#define LIVE\n" TREE_VS;
 const char render_live_tinted_vs[] = "#define LIVE\n#define TINT\n" TREE_VS;
 const char render_live_fs[] = "#define LIVE\n" TREE_FS;
 const char render_live_tinted_fs[] = "#define LIVE\n#define TINT\n" TREE_FS;
+const char render_forest_vs[] = "#define LIVE\n#define FOREST\n" TREE_VS;
+const char render_forest_tinted_vs[] = "#define LIVE\n#define FOREST\n#define TINT\n" TREE_VS;
 
 /* Warm paper, like the sheet a child would draw on. */
 const float render_paper[3] = { 0.975f, 0.953f, 0.898f };

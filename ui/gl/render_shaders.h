@@ -22,6 +22,11 @@ extern const char render_live_vs[];
 extern const char render_live_tinted_vs[];
 extern const char render_live_fs[];
 extern const char render_live_tinted_fs[];
+/* Today's forest (FOREST defined, render_forest.c): the living programs with each tree's
+ * trunk harmonic and phase per vertex (a_trunk) and the loop's fraction (u_loop_u), so
+ * one frame sways every tree at its own rate; the living fragment shaders. */
+extern const char render_forest_vs[];
+extern const char render_forest_tinted_vs[];
 
 /* The paper behind every picture. */
 extern const float render_paper[3];
@@ -66,11 +71,21 @@ extern const float render_paper[3];
 	"attribute vec4 a_live1;\n"                                                        \
 	"attribute vec4 a_phase;\n"                                                        \
 	"attribute vec4 a_flutter;\n"                                                      \
+	"#ifdef FOREST\n"                                                                  \
+	"attribute vec2 a_trunk;\n"                                                        \
+	"uniform float u_loop_u;\n"                                                        \
+	"#endif\n"                                                                         \
 	"varying float v_front;\n"                                                         \
 	"vec3 live_move(vec3 p) {\n"                                                       \
 	"	float k = 6.283185307179586 / 256.0;\n"                                    \
 	"	vec4 w = a_live1 * u_wscale;\n"                                            \
-	"	vec3 wind = w.x * (u_sway.x * u_along + u_sway.y * u_across)\n"            \
+	"#ifdef FOREST\n"                                                                  \
+	"	float th = 6.283185307179586 * fract(a_trunk.x * u_loop_u + a_trunk.y / 256.0);\n" \
+	"	vec2 sway = vec2(sin(th), sin(2.0 * th));\n"                              \
+	"#else\n"                                                                          \
+	"	vec2 sway = u_sway;\n"                                                     \
+	"#endif\n"                                                                         \
+	"	vec3 wind = w.x * (sway.x * u_along + sway.y * u_across)\n"                \
 	"		+ w.y * sin(u_theta.x + a_phase.y * k) * u_dir[0]\n"             \
 	"		+ w.z * sin(u_theta.y + a_phase.z * k) * u_dir[1]\n"             \
 	"		+ w.w * sin(u_theta.z + a_phase.w * k) * u_dir[2]\n"             \
