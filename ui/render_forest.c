@@ -236,11 +236,7 @@ static void fit(const struct forest_scene *s, const struct camera_xf *xf,
 	box[13] = (float)(-c[1] * sc[1] + 1.0 - 2.0 * (rect->y + 0.5 * rect->h) / height);
 	box[14] = (float)(-c[2] * sc[2]);
 	box[15] = 1.0f;
-	memset(out, 0, 16 * sizeof(*out));
-	for (int col = 0; col < 4; col++)
-		for (int row = 0; row < 4; row++)
-			for (int k = 0; k < 4; k++)
-				out[col * 4 + row] += box[k * 4 + row] * cam[col * 4 + k];
+	render_mat4_mul(box, cam, out);
 }
 
 /* The frame's uniforms: the scene's wind at t (its loop), nothing growing. */

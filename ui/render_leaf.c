@@ -69,11 +69,7 @@ void render_fit_matrix(const struct mesh *const *meshes, size_t nmeshes,
 		fit[12 + k] = (float)(-c[k] * s[k]);
 	}
 	fit[15] = 1.0f;
-	memset(out, 0, 16 * sizeof(*out));
-	for (int col = 0; col < 4; col++)
-		for (int row = 0; row < 4; row++)
-			for (int k = 0; k < 4; k++)
-				out[col * 4 + row] += fit[k * 4 + row] * cam[col * 4 + k];
+	render_mat4_mul(fit, cam, out);
 }
 
 int render_leaf(struct render *r, const struct mesh *m, int width, int height)

@@ -105,3 +105,15 @@ void render_drain_gl_errors(void)
 	for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; i++)
 		;
 }
+
+void render_mat4_mul(const float a[16], const float b[16], float out[16])
+{
+	for (int col = 0; col < 4; col++)
+		for (int row = 0; row < 4; row++) {
+			float v = 0.0f;
+
+			for (int k = 0; k < 4; k++)
+				v += a[k * 4 + row] * b[col * 4 + k];
+			out[col * 4 + row] = v;
+		}
+}

@@ -49,3 +49,5 @@ bool render_has_extension(const char *name);
 int render_gl_major_version(void);
 /* Empties GL's error flags: errors left by others are not ours to report. */
 void render_drain_gl_errors(void);
+/* out = a b, 4x4 column-major (GL's layout); out may not be a or b. */
+void render_mat4_mul(const float a[16], const float b[16], float out[16]);
