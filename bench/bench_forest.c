@@ -15,17 +15,24 @@
  * triangles by crown width (forest_lod_shares, water-filled by what each tree's own meshes
  * need): the shares, the triangles drawn in all against the trees' own, the meshes'
  * building in all (the planting thread's, never a frame's). The rendering figures (draw
- * calls and frame times under llvmpipe) are the renderer's: see render_rows().
+ * calls and frame times under llvmpipe) are the renderer's: render_rows().
  *
  * The layout (forest_layout: every pair of trunks, when a tree joins or leaves): median
  * time for 10, 20, 40 and 200 trees, and how it grows (n^2 pairs).
  */
+#include <GLES2/gl2.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
+#include "app.h"
 #include "bench_util.h"
+#include "egl_headless.h"
+#include "font_file.h"
 #include "forest.h"
+#include "render.h"
+#include "render_private.h"
 #include "live_trees.h"
 #include "mesh.h"
 #include "synth_tree.h"
@@ -221,17 +228,131 @@ static void layouts(int reps)
 	}
 }
 
-/*
- * The renderer's figures go here (ui/render_forest.c, with its own dependencies in
- * bench/meson.build): for 10, 20 and 40 trees, the draw calls and triangles a frame,
- * edaha's own CPU time a frame and the whole frame under llvmpipe. Until it lands, this
- * says so rather than print a guess.
- */
-static void render_rows(void)
+static double thread_cpu_s(void)
 {
-	printf("\nthe forest on screen (10, 20, 40 trees): draw calls a frame, edaha's CPU time a "
-	       "frame, the whole frame under llvmpipe\n");
-	printf("  not measured here yet: the renderer (ui/render_forest.c) adds these rows\n");
+	struct timespec ts;
+
+	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+#define RENDER_W 1280
+#define RENDER_H 800
+#define OWN_FRAMES 2000
+
+/*
+ * The forest on the attract screen (ui/render_forest.c) for n trees (the four above in
+ * turn, each at its share): draw calls and triangles a frame; edaha's own work a frame
+ * (the wind's frame numbers, O(1), and the trees' numbers laid out, O(n)); the main
+ * thread's CPU in render_frame_at (llvmpipe's vertex work included) and the whole frame
+ * to glFinish; the first frame, which uploads the scene.
+ */
+static void render_row(struct render *r, struct kind *k, size_t n, int reps,
+		       struct forest_scene *scene)
+{
+	struct forest_part *parts = calloc(n, sizeof(*parts));
+	const struct forest_part **pp = calloc(n, sizeof(*pp));
+	uint64_t *numbers = calloc(n, sizeof(*numbers));
+	double *widths = calloc(n, sizeof(*widths)), *xz = calloc(2 * n, sizeof(*xz));
+	double *pos = calloc(3 * n, sizeof(*pos)), cpu = 0.0, wall = 0.0, first, t0, own_wind, own_labels;
+	size_t *share = calloc(n, sizeof(*share));
+	struct render_stats st;
+	struct live_wind_frame wf;
+	struct app *app = app_create(RENDER_W, RENDER_H, 1);
+
+	if (!parts || !pp || !numbers || !widths || !xz || !pos || !share || !app)
+		must(-12, "malloc");
+	for (size_t i = 0; i < n; i++) {
+		numbers[i] = 1 + i;
+		widths[i] = k[i % NKINDS].width;
+	}
+	forest_lod_shares(widths, NULL, n, FOREST_TRIANGLES, share);
+	if (forest_layout(numbers, widths, n, n, xz) < 0)
+		must(-22, "forest_layout");
+	for (size_t i = 0; i < n; i++) {
+		forest_part_init(&parts[i]);
+		must(forest_part_build(&parts[i], &k[i % NKINDS].t, 7 + i, share[i], 0.35),
+		     "forest_part_build");
+		pp[i] = &parts[i];
+		pos[3 * i] = xz[2 * i];
+		pos[3 * i + 2] = xz[2 * i + 1];
+	}
+	/* one scene built again, as the kiosk's: the renderer knows it by its serial */
+	must(forest_scene_build(scene, pp, numbers, pos, n), "forest_scene_build");
+	app->forest = scene;
+	app->attract_after_us = 1;
+	t0 = bench_now();
+	must(render_frame_at(r, app, 1000000), "render_frame_at");
+	glFinish();
+	first = bench_now() - t0;
+	for (int f = 0; f < reps; f++) {
+		double w0 = bench_now(), c0 = thread_cpu_s();
+
+		must(render_frame_at(r, app, 1000000 + 33333 * (uint64_t)(f + 1)), "render_frame_at");
+		cpu += thread_cpu_s() - c0;
+		glFinish();
+		wall += bench_now() - w0;
+	}
+	render_get_stats(r, &st);
+	/* edaha's own a frame: the wind's numbers; the trees' numbers laid out */
+	t0 = thread_cpu_s();
+	for (int f = 0; f < OWN_FRAMES; f++)
+		live_wind_frame(&scene->wind, 1.0 + f / 30.0, live_wind_angle(&scene->wind, 1.0), &wf);
+	own_wind = (thread_cpu_s() - t0) / OWN_FRAMES;
+	t0 = thread_cpu_s();
+	for (int f = 0; f < OWN_FRAMES / 10; f++) {
+		batch_reset(&r->batch);
+		render_forest_labels(r, app);
+	}
+	own_labels = (thread_cpu_s() - t0) / (OWN_FRAMES / 10);
+	batch_reset(&r->batch);
+	printf("%5zu %9zu %6u %10.2f %10.1f %10.1f %10.1f %10.1f\n", n, st.tree_triangles,
+	       st.draw_calls, own_wind * 1e6, own_labels * 1e6, cpu / reps * 1e3, wall / reps * 1e3,
+	       first * 1e3);
+	app_destroy(app);
+	for (size_t i = 0; i < n; i++)
+		forest_part_finish(&parts[i]);
+	free(parts);
+	free(pp);
+	free(numbers);
+	free(widths);
+	free(xz);
+	free(pos);
+	free(share);
+}
+
+static void render_rows(struct kind *k, int reps)
+{
+	static const size_t counts[] = { 10, 20, 40 };
+	struct error err = { { 0 } };
+	struct egl_headless *egl = egl_headless_create(RENDER_W, RENDER_H, &err);
+	struct forest_scene scene;
+	struct render *r;
+	const char *used;
+	char *font = NULL;
+	size_t len;
+
+	printf("\nthe forest on screen (render_frame_at, %dx%d, the attract screen; means of "
+	       "%d frames)\n", RENDER_W, RENDER_H, reps);
+	if (!egl) {
+		printf("  no headless GL here (%s): not measured\n", err.msg);
+		return;
+	}
+	r = render_create();
+	if (!r)
+		must(-12, "render_create");
+	if (font_file_read(NULL, &font, &len, &used, &err) == 0)
+		(void)render_set_text(r, font, len, RENDER_LANG_EN);
+	free(font);
+	printf("%5s %9s %6s %10s %10s %10s %10s %10s\n", "trees", "triangles", "draws",
+	       "wind us", "labels us", "main ms", "frame ms", "first ms");
+	forest_scene_init(&scene);
+	for (size_t i = 0; i < BENCH_COUNT(counts); i++)
+		if (!bench_quick || counts[i] <= 10)
+			render_row(r, k, counts[i], reps, &scene);
+	forest_scene_finish(&scene);
+	render_destroy(r);
+	egl_headless_destroy(egl);
 }
 
 int main(int argc, char **argv)
@@ -257,7 +378,7 @@ int main(int argc, char **argv)
 	for (size_t i = 0; i < BENCH_COUNT(trees); i++)
 		forest(k, trees[i]);
 	layouts(reps);
-	render_rows();
+	render_rows(k, reps);
 	for (int i = 0; i < NKINDS; i++)
 		tree_finish(&k[i].t);
 	return 0;

@@ -289,8 +289,9 @@ void render_instanced_grow_drop(struct render *r);
 /* Frees the GPU copies (the program stays until finish). */
 void render_instanced_clear(struct render *r);
 
-/* render_forest.c: today's forest on the attract screen. create: 0, or -1 (stderr says
- * why; the attract screen then shows the drawing, as before). shown: whether the frame
+/* render_forest.c: today's forest on the attract screen, its GPU copy known by the
+ * scene's address and serial (the platform keeps one scene and builds it again).
+ * create: 0, or -1 (stderr says why; the attract screen then shows the drawing, as before). shown: whether the frame
  * at now_us shows it (app_forest_at, and the programs are there). draw: the ground and
  * the trees in the canvas; 0 or a negative errno. labels: each tree's number, into the
  * batch, after draw. */
