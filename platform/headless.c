@@ -13,7 +13,6 @@
 #include "egl_headless.h"
 #include "fileio.h"
 #include "gen.h"
-#include "font_file.h"
 #include "headless_one.h"
 #include "output.h"
 #include "render.h"
