@@ -272,6 +272,9 @@ struct app {
 	/* today's forest, the platform's (docs/forest.md): what the attract screen shows
 	 * when it holds a tree; NULL: the attract screen over the drawing */
 	const struct forest_scene *forest;
+	/* when the scene's newest tree (its last) joined, by the app's clock: it grows in
+	 * from then (0: none grows; every tree stands grown) */
+	uint64_t forest_joined_us;
 	int failed; /* first negative errno from an allocation, sticky */
 };
 
