@@ -136,6 +136,10 @@ struct kiosk *kiosk_create(const struct kiosk_config *cfg)
 	}
 	if (cfg->state_dir && kiosk_start_autosave(k) < 0)
 		goto fail;
+	if (kiosk_forest_create(k) < 0) {
+		fputs("edaha: out of memory starting today's forest\n", stderr);
+		goto fail;
+	}
 	/* idle time counts from the start: a kiosk nobody uses shows its attract screen */
 	k->app->attract_after_us = cfg->attract_after_us;
 	k->app->last_time_us = k->start_us;
@@ -171,6 +175,7 @@ void kiosk_destroy(struct kiosk *k)
 	/* waits for a save under way: its files reach the stick whole or not at all */
 	usb_export_destroy(k->usb);
 	grow_worker_destroy(k->grow); /* and for a press under way */
+	kiosk_forest_destroy(k);       /* and for a planting */
 	/* GL objects go while the display's context is still current */
 	render_destroy(k->render);
 	display_destroy(k->display);
@@ -242,8 +247,10 @@ static void take_requests(struct kiosk *k)
 	uint32_t req = app_take_requests(k->app);
 	enum button mode = app_lit_button(k->app); /* the button whose LED says the mode */
 
-	if (req & APP_REQUEST_EXPORT)
+	if (req & APP_REQUEST_EXPORT) {
 		k->export_asked = true;
+		k->export_forest = (req & APP_REQUEST_FOREST) != 0;
+	}
 	if ((req & APP_REQUEST_GROW) && !grow_worker_busy(k->grow))
 		kiosk_start_grow(k);
 	if (mode != k->mode_lit) {

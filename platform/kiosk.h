@@ -51,6 +51,12 @@ struct kiosk_config {
 	double wind;
 	bool grow_in_off;
 	unsigned max_fps;
+	/* Today's forest on the attract screen (docs/forest.md; needs state_dir): at most
+	 * forest_max trees (0: FOREST_MAX_TREES_DEFAULT), a new day at the local time
+	 * forest_reset_hour:forest_reset_minute. */
+	bool forest;
+	unsigned forest_max;
+	int forest_reset_hour, forest_reset_minute;
 	enum render_lang language; /* of the words on the screen */
 	const void *font;       /* the labels' font file's bytes, NULL: icons alone; */
 	size_t font_len;        /* the renderer keeps a copy */

@@ -5,6 +5,7 @@
 #include "kiosk_private.h"
 
 #include <errno.h>
+#include <inttypes.h>
 #include <stdio.h>
 #include <sys/random.h>
 #include <unistd.h>
@@ -102,6 +103,8 @@ void kiosk_archive_replaced(struct kiosk *k)
 		else
 			fprintf(stderr, "edaha: New: the drawing is archived as %s/%s\n",
 				AUTOSAVE_ARCHIVE_DIR, name);
+		if (name[0])
+			kiosk_forest_archived(k, name);
 	}
 	tree_finish(&t);
 }
@@ -112,19 +115,30 @@ void kiosk_idle_reset(struct kiosk *k, uint64_t now)
 {
 	struct error err = { { 0 } };
 	char name[64] = "";
+	uint64_t number = 0;
 
 	if (now < kiosk_reset_at(k->app, k->cfg.reset_after_us))
 		return;
 	if (k->autosave && autosave_archive(k->autosave, &k->app->doc, &k->app->tree,
 					    k->cfg.archive_keep, name, sizeof(name), &err) < 0)
 		fprintf(stderr, "edaha: warning: idle reset: cannot archive the drawing: %s\n", err.msg);
+	/* a drawing without a tree is archived too, but never planted */
+	if (name[0] && k->app->tree.nbranches)
+		number = kiosk_forest_archived(k, name);
+	else if (name[0])
+		kiosk_forest_refresh(k);
 	if (app_reset(k->app, fresh_seed()) < 0) {
 		kiosk_fail(k, "idle reset", -ENOMEM);
 		return;
 	}
+	/* whoever comes back for it: where it stands */
+	app_tell_forest_number(k->app, number, now);
 	fprintf(stderr, "edaha: idle for %.0f s: %s%s%s; a new canvas\n",
 		(double)(now - k->app->last_time_us) / 1e6,
 		name[0] ? "the drawing is archived as " : "the drawing is cleared",
 		name[0] ? AUTOSAVE_ARCHIVE_DIR "/" : "", name);
+	if (number)
+		fprintf(stderr, "edaha: forest: the drawing is No. %" PRIu64 " in today's forest\n",
+			number);
 	kiosk_save_edits(k);
 }

@@ -4,6 +4,7 @@
  * back for its picture. */
 #include "kiosk_private.h"
 
+#include <errno.h>
 #include <stdio.h>
 
 static void usb_status(void *data, enum app_status status, bool held)
@@ -51,6 +52,24 @@ int kiosk_open_usb(struct kiosk *k)
  * visitor how it went. */
 void kiosk_run_export(struct kiosk *k)
 {
+	struct buf forest;
+	char date[11] = "";
+	int ret = -ENODATA;
+
 	k->export_ready = false;
-	usb_export_start(k->usb, k->app, k->pixels);
+	buf_init(&forest);
+	if (k->export_forest && !usb_export_busy(k->usb)) {
+		double t0 = (double)kiosk_now_us();
+
+		ret = kiosk_forest_glb(k, &forest, date);
+		if (ret == -ENOMEM)
+			fputs("edaha: forest: out of memory building forest.glb: the tree alone is saved\n",
+			      stderr);
+		else if (ret == 0)
+			fprintf(stderr, "edaha: forest: forest-%s.glb built (%zu bytes) in %.2f s\n",
+				date, forest.len, ((double)kiosk_now_us() - t0) / 1e6);
+	}
+	k->export_forest = false;
+	usb_export_start(k->usb, k->app, k->pixels, ret == 0 ? &forest : NULL, date);
+	buf_finish(&forest);
 }

@@ -13,6 +13,10 @@ void kiosk_look_of(const struct app *app, uint64_t now_us, struct kiosk_look *l)
 	memset(l, 0, sizeof(*l)); /* padding too, though only fields are compared */
 	l->status = app_status_at(app, now_us, NULL);
 	l->attract = app_attract_at(app, now_us, NULL);
+	l->forest = app_forest_at(app, now_us);
+	l->forest_serial = app->forest ? app->forest->serial : 0;
+	l->status_number = app->status_number;
+	l->forest_number = app->forest_number;
 	l->mesh_serial = app->mesh_serial;
 	l->previews_serial = app->previews_serial;
 	l->stroke_points = app->stroke.npoints;
@@ -74,6 +78,8 @@ bool kiosk_look_equal(const struct kiosk_look *a, const struct kiosk_look *b)
 	       a->camera.yaw == b->camera.yaw && a->camera.pitch == b->camera.pitch &&
 	       a->selected == b->selected && a->suggestions == b->suggestions &&
 	       a->status == b->status && a->attract == b->attract && a->season == b->season &&
+	       a->forest == b->forest && a->forest_serial == b->forest_serial &&
+	       a->status_number == b->status_number && a->forest_number == b->forest_number &&
 	       side_equal(a, b);
 }
 

@@ -54,6 +54,9 @@ struct kiosk_look {
 	unsigned suggestions;
 	enum app_status status; /* the message on screen */
 	bool attract;           /* the attract screen */
+	bool forest;            /* ...showing today's forest */
+	uint64_t forest_serial; /* the forest's scene (swapped in by kiosk_forest.c) */
+	uint64_t status_number, forest_number; /* numbers the messages say */
 	enum season season;     /* the season button's picture, the leaves' colours */
 	size_t nside;           /* the side strip: what it holds, and how each place shows */
 	struct kiosk_side_look side[APP_SIDE_MAX];
@@ -98,12 +101,14 @@ struct kiosk {
 	uint64_t stats_logged_us, stats_logged_n;
 	/* export: asked for; the next frame is read back for its picture, then written */
 	bool export_asked, export_ready;
+	bool export_forest; /* ...of today's forest too: Save pressed while it was on screen */
 	uint8_t *pixels;
 	struct usb_export *usb;  /* where the export goes: sticks, the local copy */
 	struct grow_worker *grow; /* grow presses, off the loop */
 	/* the press's start, and frames drawn and shown by then */
 	uint64_t grow_started_us, grow_frames, grow_shown;
 	struct autosave *autosave; /* NULL: none */
+	struct kiosk_forest *forest; /* today's forest (kiosk_forest.c); NULL: off */
 	bool autosave_failing;     /* said once, not at every stroke */
 	enum button mode_lit;    /* what mode_changed was last told */
 	void (*mode_changed)(void *data, enum button mode);
@@ -148,6 +153,21 @@ void kiosk_save_edits(struct kiosk *k);
 /* New after something was drawn: that drawing, as it stood, goes to the archive. */
 void kiosk_archive_replaced(struct kiosk *k);
 void kiosk_idle_reset(struct kiosk *k, uint64_t now);
+
+/* kiosk_forest.c: today's forest (docs/forest.md), with forest.enabled and autosave on:
+ * planted at the start and after every archived drawing, on a thread of its own. */
+int kiosk_forest_create(struct kiosk *k); /* 0 (off when it cannot run: said) or -ENOMEM */
+void kiosk_forest_destroy(struct kiosk *k);
+void kiosk_forest_refresh(struct kiosk *k);
+/* The number the drawing on the canvas will have in today's forest when archived (0:
+ * no forest, or not known yet). */
+uint64_t kiosk_forest_number(const struct kiosk *k);
+/* A drawing archived under name: planted; its number in the day (0: no forest). */
+uint64_t kiosk_forest_archived(struct kiosk *k, const char *name);
+/* Save on the forest: forest.glb's bytes (every standing tree at full detail, placed as
+ * on screen, with its wind) into out, and the day's date "YYYY-MM-DD" (local time) into
+ * date. 0, -ENODATA (no tree stands) or -ENOMEM. */
+int kiosk_forest_glb(struct kiosk *k, struct buf *out, char date[11]);
 
 /* kiosk_service.c */
 int kiosk_open_signals(struct kiosk *k);

@@ -110,6 +110,10 @@ static int kiosk_main(const struct options *o)
 	cfg.wind = o->wind >= 0 ? o->wind : conf.kiosk.wind;
 	cfg.grow_in_off = !conf.kiosk.grow_in;
 	cfg.max_fps = (unsigned)conf.kiosk.max_fps;
+	cfg.forest = conf.forest.enabled;
+	cfg.forest_max = (unsigned)conf.forest.max_trees;
+	cfg.forest_reset_hour = conf.forest.reset_hour;
+	cfg.forest_reset_minute = conf.forest.reset_minute;
 	if (o->load) {
 		int ret = docfile_read(o->load, &doc, &err);
 

@@ -1,6 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 #include "labels.h"
 
+#include <errno.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <string.h>
+
 #define NLANGS 2
 
 /*
@@ -75,6 +80,9 @@ static const char *const status_words[APP_STATUS_COUNT][NLANGS] = {
 	[APP_STATUS_GROWING] = { "Growing... a year older", "そだってるよ… 1ねん たつよ" },
 	[APP_STATUS_VINE_FULL] = { "This tree has all the vines it can hold",
 				   "この木には もう つるが いっぱいだよ" },
+	/* '#': the number (labels_format); "ばん" is how a child counts places in a line */
+	[APP_STATUS_IN_FOREST] = { "Your tree is No. # in today's forest",
+				   "きみの 木は きょうの もりの #ばん だよ" },
 };
 
 static const char *const attract_words[NLANGS] = {
@@ -99,6 +107,22 @@ const char *labels_status(enum app_status s, enum render_lang lang)
 	if (s <= APP_STATUS_NONE || s >= APP_STATUS_COUNT)
 		return NULL;
 	return status_words[s][index_of(lang)];
+}
+
+int labels_format(enum app_status s, enum render_lang lang, uint64_t number, char *out,
+		  size_t size)
+{
+	const char *w = labels_status(s, lang), *hash;
+	int n;
+
+	if (!w || !size)
+		return -EINVAL;
+	hash = strchr(w, '#');
+	if (hash)
+		n = snprintf(out, size, "%.*s%" PRIu64 "%s", (int)(hash - w), w, number, hash + 1);
+	else
+		n = snprintf(out, size, "%s", w);
+	return n < 0 || (size_t)n >= size ? -ENOSPC : 0;
 }
 
 const char *labels_attract(enum render_lang lang)

@@ -35,7 +35,8 @@ static struct rgba faded(struct rgba c, float a)
 
 static bool good_news(enum app_status s)
 {
-	return s == APP_STATUS_SAVED || s == APP_STATUS_SAVED_USB || s == APP_STATUS_STICK_READY;
+	return s == APP_STATUS_SAVED || s == APP_STATUS_SAVED_USB || s == APP_STATUS_STICK_READY ||
+	       s == APP_STATUS_IN_FOREST;
 }
 
 /* What to do next, in a mode: shown in the mode's colour, with an arrow down to the
@@ -120,26 +121,18 @@ static struct layout_rect free_canvas(const struct app *app)
 	return canvas;
 }
 
-void render_ui_status(struct batch *b, const struct ui_text *t, const struct app *app,
-		      uint64_t now_us)
+/* A message's card centred over the canvas with its top at y: its icon, and msg (NULL:
+ * the icon alone), faded to a. */
+static void status_card(struct batch *b, const struct ui_text *t, const struct app *app,
+			enum app_status s, const char *msg, double y, float a, uint64_t now_us)
 {
 	const struct screen *v = &app->screen;
 	struct layout_rect canvas = free_canvas(app);
-	uint64_t until;
-	enum app_status s = app_status_at(app, now_us, &until);
-	const char *msg = t->font ? labels_status(s, t->lang) : NULL;
 	double h = round(CARD_OF_HEIGHT * v->height), r = 0.36 * h, pad = 0.12 * h;
-	double w = 2.0 * (pad + r), x, y = round(CARD_TOP_OF_HEIGHT * v->height);
+	double w = 2.0 * (pad + r), x;
 	struct text_extent e = { 0 };
 	int px = (int)fmax(1.0, round(MESSAGE_OF_HEIGHT * v->height));
-	float a;
 
-	if (s == APP_STATUS_NONE)
-		return;
-	/* the last half second fades it out */
-	a = until - now_us >= APP_STATUS_FADE_US
-		    ? 1.0f
-		    : (float)(until - now_us) / (float)APP_STATUS_FADE_US;
 	if (msg) {
 		px = text_fit(t->font, msg, px, (int)fmax(1.0, 0.5 * px),
 			      0.9 * canvas.w - w - 0.6 * h);
@@ -155,6 +148,38 @@ void render_ui_status(struct batch *b, const struct ui_text *t, const struct app
 	if (msg)
 		text_draw(b, t->font, msg, px, x + 2.0 * (pad + r) + 0.2 * h,
 			  y + 0.5 * h + 0.5 * (e.ascent - e.descent), faded(ink, a));
+}
+
+void render_ui_status(struct batch *b, const struct ui_text *t, const struct app *app,
+		      uint64_t now_us)
+{
+	const struct screen *v = &app->screen;
+	uint64_t until;
+	enum app_status s = app_status_at(app, now_us, &until);
+	double h = round(CARD_OF_HEIGHT * v->height), y = round(CARD_TOP_OF_HEIGHT * v->height);
+	char words[160];
+	const char *msg = NULL;
+	float a;
+
+	if (s == APP_STATUS_NONE)
+		return;
+	/* the last half second fades it out */
+	a = until - now_us >= APP_STATUS_FADE_US
+		    ? 1.0f
+		    : (float)(until - now_us) / (float)APP_STATUS_FADE_US;
+	if (t->font)
+		msg = labels_format(s, t->lang, app->status_number, words, sizeof(words)) == 0
+			      ? words
+			      : NULL;
+	status_card(b, t, app, s, msg, y, a, now_us);
+	/* saved: where to find the tree later, in today's forest */
+	if ((s == APP_STATUS_SAVED || s == APP_STATUS_SAVED_USB) && app->forest_number) {
+		msg = t->font && labels_format(APP_STATUS_IN_FOREST, t->lang, app->forest_number,
+					       words, sizeof(words)) == 0
+			      ? words
+			      : NULL;
+		status_card(b, t, app, APP_STATUS_IN_FOREST, msg, y + round(1.25 * h), a, now_us);
+	}
 }
 
 /* A leaf: a lens from base along angle a (radians, y down), length len. */

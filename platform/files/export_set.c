@@ -23,12 +23,15 @@ void export_set_init(struct export_set *s)
 	for (size_t i = 0; i < EXPORT_NAMES_NSUFFIXES; i++)
 		buf_init(&s->files[i]);
 	s->wind = 0.0;
+	buf_init(&s->forest);
+	s->forest_date[0] = s->forest_name[0] = '\0';
 }
 
 void export_set_finish(struct export_set *s)
 {
 	for (size_t i = 0; i < EXPORT_NAMES_NSUFFIXES; i++)
 		buf_finish(&s->files[i]);
+	buf_finish(&s->forest);
 }
 
 int export_set_build(struct export_set *s, const struct app *app, const uint8_t *rgba,
@@ -54,6 +57,14 @@ int export_set_build(struct export_set *s, const struct app *app, const uint8_t 
 		return pngio_encode_rgba(rgba, app->screen.width, app->screen.height,
 					 &f[EXPORT_SET_PNG], err);
 	return 0;
+}
+
+/* A forest's temporary (export_set_write_forest): ".forest-YYYY-MM-DD[...].glb.tmp". */
+static bool forest_temp(const char *name)
+{
+	size_t n = strlen(name);
+
+	return strncmp(name, ".forest-", 8) == 0 && n > 16 && strcmp(name + n - 8, ".glb.tmp") == 0;
 }
 
 int export_set_pick(int dirfd, unsigned *number, struct error *err)
@@ -91,7 +102,7 @@ int export_set_pick(int dirfd, unsigned *number, struct error *err)
 		}
 		/* ours, from a write the stick was pulled in: never a final name, so safe to
 		 * remove (a directory of that name stays: unlinkat refuses it) */
-		if (export_names_add(names, d->d_name) == EXPORT_NAME_TEMP)
+		if (export_names_add(names, d->d_name) == EXPORT_NAME_TEMP || forest_temp(d->d_name))
 			(void)unlinkat(dirfd, d->d_name, 0);
 	}
 	closedir(dir);
@@ -214,6 +225,52 @@ undo:
 	return r;
 }
 
+static bool forest_date_ok(const char *d)
+{
+	for (int i = 0; i < 10; i++)
+		if (i == 4 || i == 7 ? d[i] != '-' : d[i] < '0' || d[i] > '9')
+			return false;
+	return d[10] == '\0';
+}
+
+int export_set_write_forest(int dirfd, struct export_set *s, struct error *err)
+{
+	char tmp[NAME_SIZE], final[sizeof(s->forest_name)];
+	int r;
+
+	if (!forest_date_ok(s->forest_date))
+		return error_set(err, -EINVAL, "bad date for the forest's file");
+	snprintf(tmp, sizeof(tmp), ".forest-%s.glb.tmp", s->forest_date);
+	/* ours, from a save a pulled stick cut short: never a final name */
+	(void)unlinkat(dirfd, tmp, 0);
+	r = write_temp(dirfd, tmp, &s->forest);
+	if (r < 0) {
+		if (r != -EEXIST)
+			(void)unlinkat(dirfd, tmp, 0);
+		return error_set(err, r, "forest-%s.glb: %s", s->forest_date, strerror(-r));
+	}
+	r = -EEXIST;
+	for (int n = 1; n <= EXPORT_SET_FOREST_MAX && r == -EEXIST; n++) {
+		if (n == 1)
+			snprintf(final, sizeof(final), "forest-%s.glb", s->forest_date);
+		else
+			snprintf(final, sizeof(final), "forest-%s-%d.glb", s->forest_date, n);
+		r = export_set_rename(dirfd, tmp, final, true);
+	}
+	if (r == 0 && fsync(dirfd) < 0) {
+		r = -errno;
+		(void)unlinkat(dirfd, final, 0);
+	}
+	if (r < 0) {
+		(void)unlinkat(dirfd, tmp, 0);
+		(void)fsync(dirfd);
+		return error_set(err, r, "forest-%s.glb: %s", s->forest_date,
+				 r == -EEXIST ? "every name for the day is taken" : strerror(-r));
+	}
+	memcpy(s->forest_name, final, sizeof(final));
+	return 0;
+}
+
 int export_set_save(int dirfd, struct export_set *s, char *base, size_t base_size,
 		    struct error *err)
 {
@@ -228,5 +285,7 @@ int export_set_save(int dirfd, struct export_set *s, char *base, size_t base_siz
 	}
 	if (r == 0 && export_names_format(base, base_size, number, "", false) < 0)
 		r = error_set(err, -ENAMETOOLONG, "no room for the name");
+	if (r == 0 && s->forest.len)
+		r = export_set_write_forest(dirfd, s, err);
 	return r;
 }

@@ -37,6 +37,12 @@ struct export_set {
 	/* the strength the .glb sways at (kiosk.wind); 0, as export_set_init leaves it: the
 	 * default breeze (export_glb_wind) */
 	double wind;
+	/* Save on today's forest (docs/forest.md): forest-DATE.glb written after the set, by
+	 * the same rules, under the first of forest-DATE.glb, forest-DATE-2.glb, ... that no
+	 * name in the directory has (empty: none). DATE: "YYYY-MM-DD". */
+	struct buf forest;
+	char forest_date[11];
+	char forest_name[40]; /* the name it got, once written */
 };
 
 void export_set_init(struct export_set *s);
@@ -51,8 +57,13 @@ int export_set_pick(int dirfd, unsigned *number, struct error *err);
 /* Writes the set as that number (the rules above). 0, or -errno with a message naming
  * the file; -EEXIST when one of its names turned up meanwhile. */
 int export_set_write(int dirfd, struct export_set *s, unsigned number, struct error *err);
-/* pick and write, once more with a new number if a name turned up taken meanwhile. On
- * success base is "tree-NNNN". */
+/* forest-DATE[-N].glb (s->forest) into dirfd: temporary, fsync, rename never over a
+ * name, fsync of the directory; s->forest_name says which. 0, or -errno with a message
+ * (nothing of it left: no temporary, no final name). */
+#define EXPORT_SET_FOREST_MAX 99
+int export_set_write_forest(int dirfd, struct export_set *s, struct error *err);
+/* pick and write, once more with a new number if a name turned up taken meanwhile, then
+ * the forest's file when there is one. On success base is "tree-NNNN". */
 int export_set_save(int dirfd, struct export_set *s, char *base, size_t base_size,
 		    struct error *err);
 /* Renames from to to in dirfd, failing with EEXIST rather than replacing: renameat2's

@@ -4,10 +4,12 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <inttypes.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 
 #include "autosave.h"
@@ -149,6 +151,24 @@ int64_t forest_state_reset_moment(int64_t now, int hour, int minute)
 		m = at(&y, hour, minute);
 	}
 	return m;
+}
+
+uint64_t forest_state_first_since(const char *state_dir, const uint64_t *numbers, size_t n,
+				  int64_t since, uint64_t next)
+{
+	char path[PATH_MAX];
+	struct stat st;
+
+	/* ascending: the first written since is the day's first (numbers wrap only after
+	 * 999,999 drawings) */
+	for (size_t i = 0; i < n; i++) {
+		if ((size_t)snprintf(path, sizeof(path), "%s/%s/drawing-%06" PRIu64 ".edaha", state_dir,
+				     AUTOSAVE_ARCHIVE_DIR, numbers[i]) >= sizeof(path))
+			continue;
+		if (stat(path, &st) == 0 && (int64_t)st.st_mtime >= since)
+			return numbers[i];
+	}
+	return next;
 }
 
 int forest_state_reset(const char *state_dir, int64_t now, struct error *err)

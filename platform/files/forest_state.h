@@ -34,6 +34,12 @@ int forest_state_save(const char *state_dir, const struct forest_day *day, struc
 /* The last moment at or before now (seconds since 1970) that is hour:minute local time
  * (the TZ environment's), whatever daylight saving does that day. */
 int64_t forest_state_reset_moment(int64_t now, int hour, int minute);
+/* The day's first tree when the day file is missing or damaged (a first start, a file
+ * someone removed): the first of the archive's numbers (ascending) whose drawing was
+ * written at or after `since`, the reset moment, so today's drawings still stand; next
+ * when none was. */
+uint64_t forest_state_first_since(const char *state_dir, const uint64_t *numbers, size_t n,
+				  int64_t since, uint64_t next);
 /* edaha --forest-reset: a new day begins now; the next archived drawing is its No. 1.
  * 0 or -errno with err. */
 int forest_state_reset(const char *state_dir, int64_t now, struct error *err);

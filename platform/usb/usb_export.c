@@ -200,9 +200,11 @@ static enum usb_outcome save_to_stick(struct usb_export *ux, const char *kname,
 					       ret == -ENOSPC || ret == -EFBIG ? 0 : USB_GONE_WAIT_MS));
 	if (o == USB_OUTCOME_OK)
 		fprintf(stderr,
-			"edaha: usb: saved %s.glb, .obj, .mtl, %s.edaha to %s/edaha in %.1f s; "
+			"edaha: usb: saved %s.glb, .obj, .mtl, %s.edaha %s%sto %s/edaha in %.1f s; "
 			"unmounted, safe to pull\n",
-			base, set->files[EXPORT_SET_PNG].len ? ".png, " : "", kname, now_s() - t0);
+			base, set->files[EXPORT_SET_PNG].len ? ".png, " : "",
+			set->forest_name[0] ? set->forest_name : "", set->forest_name[0] ? " " : "",
+			kname, now_s() - t0);
 	else
 		fprintf(stderr, "edaha: usb: saving to %s failed (%s): %s\n", kname,
 			usb_outcome_name(o), err.msg);
@@ -228,8 +230,9 @@ static bool save_local(struct usb_export *ux, struct export_set *set)
 	if (ret < 0)
 		fprintf(stderr, "edaha: export to %s failed: %s\n", ux->local, err.msg);
 	else
-		fprintf(stderr, "edaha: exported %s/%s.glb, .obj, .mtl, %s.edaha\n", ux->local, base,
-			set->files[EXPORT_SET_PNG].len ? ".png, " : "");
+		fprintf(stderr, "edaha: exported %s/%s.glb, .obj, .mtl, %s.edaha%s%s\n", ux->local,
+			base, set->files[EXPORT_SET_PNG].len ? ".png, " : "",
+			set->forest_name[0] ? " and " : "", set->forest_name);
 	return ret == 0;
 }
 
@@ -377,7 +380,8 @@ static const struct stick *choose(const struct usb_export *ux)
 	return ux->nsticks ? &ux->sticks[0] : NULL;
 }
 
-void usb_export_start(struct usb_export *ux, const struct app *app, const uint8_t *rgba)
+void usb_export_start(struct usb_export *ux, const struct app *app, const uint8_t *rgba,
+		      struct buf *forest, const char *forest_date)
 {
 	struct job job = { .kind = JOB_EXPORT };
 	struct error err = { { 0 } };
@@ -407,6 +411,15 @@ void usb_export_start(struct usb_export *ux, const struct app *app, const uint8_
 		free_job(&job);
 		tell(ux, APP_STATUS_SAVE_FAILED, false);
 		return;
+	}
+	if (forest && forest->len && forest_date) {
+		struct buf empty;
+
+		/* moved, not copied: a class's forest may be tens of megabytes */
+		buf_init(&empty);
+		job.set->forest = *forest;
+		*forest = empty;
+		snprintf(job.set->forest_date, sizeof(job.set->forest_date), "%s", forest_date);
 	}
 	if (s)
 		memcpy(job.kname, s->kname, sizeof(job.kname));

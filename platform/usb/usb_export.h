@@ -46,8 +46,11 @@ void usb_export_destroy(struct usb_export *ux);
 /* What the kiosk polls: the udev monitor (with usb) and the thread's results. Up to 2. */
 size_t usb_export_sources(struct usb_export *ux, struct kiosk_source *out, size_t max);
 /* The export button: the drawing and its picture (rgba, app->screen's size; NULL: none)
- * are saved. Ignored (and said on stderr) while the last one is being saved. */
-void usb_export_start(struct usb_export *ux, const struct app *app, const uint8_t *rgba);
+ * are saved, and today's forest when forest holds its .glb (taken: left empty; NULL:
+ * none) of the day forest_date ("YYYY-MM-DD"). Ignored (and said on stderr) while the
+ * last one is being saved. */
+void usb_export_start(struct usb_export *ux, const struct app *app, const uint8_t *rgba,
+		      struct buf *forest, const char *forest_date);
 /* A stick came (its kernel name) or went: what the monitor says; also for tests. */
 void usb_export_added(struct usb_export *ux, const char *kname);
 void usb_export_removed(struct usb_export *ux, const char *kname);

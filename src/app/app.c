@@ -320,7 +320,7 @@ int app_press_button(struct app *app, enum button button, uint64_t time_us)
 	case BUTTON_REDO:
 		return history_step(app, button == BUTTON_UNDO);
 	case BUTTON_EXPORT:
-		app->requests |= APP_REQUEST_EXPORT;
+		app->requests |= APP_REQUEST_EXPORT | (app->event_on_forest ? APP_REQUEST_FOREST : 0);
 		return 0;
 	case BUTTON_VIEW:
 		app->turning = false;
@@ -388,6 +388,7 @@ void app_handle_event(struct app *app, const struct event *ev)
 	enum button hit;
 	struct app_side_item item;
 
+	app->event_on_forest = app_forest_at(app, ev->time_us);
 	app->last_time_us = ev->time_us;
 	/* a pen tip or a button put down finishes a tree growing in: nobody waits to draw */
 	app_live_input(app, ev);

@@ -54,6 +54,8 @@ enum app_request {
 	APP_REQUEST_EXPORT = 1u << 0,
 	/* a grow press to make off the loop (grow_async: app_grow_job, app_grow_done) */
 	APP_REQUEST_GROW = 1u << 1,
+	/* with EXPORT: Save was pressed while today's forest was on screen: the forest too */
+	APP_REQUEST_FOREST = 1u << 2,
 };
 
 /*
@@ -79,6 +81,8 @@ enum app_status {
 	APP_STATUS_VINE_WHERE,   /* a tap too far from the tree: tap by the trunk's foot */
 	APP_STATUS_VINE_FULL,    /* the tree has as many vines as it takes */
 	APP_STATUS_GROWING,      /* a grow press under way (the kiosk's): held until done */
+	/* today's forest (issue 27): "Your tree is No. N in today's forest" (status_number) */
+	APP_STATUS_IN_FOREST,
 	APP_STATUS_COUNT,
 };
 #define APP_STATUS_US 4000000u
@@ -275,6 +279,14 @@ struct app {
 	/* when the scene's newest tree (its last) joined, by the app's clock: it grows in
 	 * from then (0: none grows; every tree stands grown) */
 	uint64_t forest_joined_us;
+	/* the number the drawing on the canvas will have in today's forest once archived (0:
+	 * not known, no forest); told beside Save's result */
+	uint64_t forest_number;
+	/* APP_STATUS_IN_FOREST's number */
+	uint64_t status_number;
+	/* the event being handled came while the forest was on screen (Save then takes the
+	 * forest home too: APP_REQUEST_FOREST) */
+	bool event_on_forest;
 	int failed; /* first negative errno from an allocation, sticky */
 };
 
@@ -361,6 +373,10 @@ bool app_would_orbit(const struct app *app, double x, double y);
 void app_set_status(struct app *app, enum app_status status, uint64_t now_us);
 /* The same, shown until the next status replaces it (something under way: saving). */
 void app_hold_status(struct app *app, enum app_status status, uint64_t now_us);
+/* "Your tree is No. number in today's forest", from now_us. */
+void app_tell_forest_number(struct app *app, uint64_t number, uint64_t now_us);
+/* The platform's: the number the canvas's drawing will have in today's forest (0: none). */
+void app_set_forest_number(struct app *app, uint64_t number);
 /* The message on screen at now_us (APP_STATUS_NONE when none), and until when it shows. */
 enum app_status app_status_at(const struct app *app, uint64_t now_us, uint64_t *until_us);
 /* Whether the attract screen shows at now_us; *from_us says when it does (or did) begin

@@ -33,6 +33,19 @@ enum app_status app_status_at(const struct app *app, uint64_t now_us, uint64_t *
 	return app->status;
 }
 
+void app_tell_forest_number(struct app *app, uint64_t number, uint64_t now_us)
+{
+	if (!number)
+		return;
+	app_set_status(app, APP_STATUS_IN_FOREST, now_us);
+	app->status_number = number;
+}
+
+void app_set_forest_number(struct app *app, uint64_t number)
+{
+	app->forest_number = number;
+}
+
 bool app_attract_at(const struct app *app, uint64_t now_us, uint64_t *from_us)
 {
 	uint64_t from = UINT64_MAX;

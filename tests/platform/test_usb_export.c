@@ -160,11 +160,11 @@ static void test_sticks(struct app *app)
 	CHECK_INT(fake_mounts, 1);
 	CHECK_INT(fake_ejects, 1);
 	/* saved: "saving" held until the result, then safe to pull; the copy kept too */
-	usb_export_start(ux, app, rgba);
+	usb_export_start(ux, app, rgba, NULL, NULL);
 	CHECK_INT(last(), APP_STATUS_SAVING);
 	CHECK(told_held[ntold - 1]);
 	CHECK(usb_export_busy(ux));
-	usb_export_start(ux, app, rgba); /* pressed again meanwhile: ignored */
+	usb_export_start(ux, app, rgba, NULL, NULL); /* pressed again meanwhile: ignored */
 	CHECK_INT(last(), APP_STATUS_SAVING);
 	wait_result(ux);
 	CHECK(!usb_export_busy(ux));
@@ -183,7 +183,7 @@ static void test_sticks(struct app *app)
 	lim.rlim_cur = 200;
 	signal(SIGXFSZ, SIG_IGN);
 	CHECK_INT(setrlimit(RLIMIT_FSIZE, &lim), 0);
-	usb_export_start(ux, app, rgba);
+	usb_export_start(ux, app, rgba, NULL, NULL);
 	wait_result(ux);
 	CHECK_INT(setrlimit(RLIMIT_FSIZE, &old), 0);
 	CHECK_INT(last(), APP_STATUS_STICK_FULL);
@@ -194,7 +194,7 @@ static void test_sticks(struct app *app)
 	pthread_mutex_lock(&fake_lock);
 	fake_stall = true;
 	pthread_mutex_unlock(&fake_lock);
-	usb_export_start(ux, app, rgba);
+	usb_export_start(ux, app, rgba, NULL, NULL);
 	CHECK_INT(last(), APP_STATUS_SAVING);
 	pthread_mutex_lock(&fake_lock);
 	while (!fake_stalled)
@@ -213,7 +213,7 @@ static void test_sticks(struct app *app)
 	CHECK(!usb_export_busy(ux));
 
 	/* no stick: put one in, says the kiosk; the copy is still kept */
-	usb_export_start(ux, app, rgba);
+	usb_export_start(ux, app, rgba, NULL, NULL);
 	CHECK_INT(last(), APP_STATUS_NO_STICK);
 	wait_result(ux);
 	CHECK_INT(last(), APP_STATUS_NO_STICK);
@@ -226,12 +226,12 @@ static void test_sticks(struct app *app)
 	usb_export_added(ux, "sdz2");
 	wait_result(ux);
 	CHECK_INT(last(), APP_STATUS_STICK_LOCKED);
-	usb_export_start(ux, app, NULL);
+	usb_export_start(ux, app, NULL, NULL, NULL);
 	wait_result(ux);
 	CHECK_INT(last(), APP_STATUS_STICK_LOCKED);
 	/* one with a file named edaha */
 	set_answer("error edaha-not-a-directory edaha is not a directory\n");
-	usb_export_start(ux, app, NULL);
+	usb_export_start(ux, app, NULL, NULL, NULL);
 	wait_result(ux);
 	CHECK_INT(last(), APP_STATUS_STICK_UNUSABLE);
 	stick_there("sdz2", false);
@@ -247,12 +247,12 @@ static void test_sticks(struct app *app)
 	stick_there("sdz3", true);
 	usb_export_added(ux, "sdz3");
 	wait_result(ux);
-	usb_export_start(ux, app, NULL);
+	usb_export_start(ux, app, NULL, NULL, NULL);
 	CHECK_INT(last(), APP_STATUS_SAVING);
 	wait_result(ux);
 	CHECK_INT(last(), APP_STATUS_SAVE_FAILED);
 	/* gone with a save queued: destroy waits for it, nothing leaks */
-	usb_export_start(ux, app, NULL);
+	usb_export_start(ux, app, NULL, NULL, NULL);
 	usb_export_destroy(ux);
 }
 
@@ -267,7 +267,7 @@ static void test_local_only(struct app *app)
 
 	CHECK(ux);
 	usb_export_added(ux, "sdz1"); /* no sticks without usb */
-	usb_export_start(ux, app, NULL);
+	usb_export_start(ux, app, NULL, NULL, NULL);
 	CHECK(usb_export_busy(ux));
 	wait_result(ux);
 	CHECK_INT(last(), APP_STATUS_SAVED);
@@ -281,7 +281,7 @@ static void test_local_only(struct app *app)
 	cfg.local_dir = file;
 	ux = usb_export_create(&cfg, &err);
 	CHECK(ux);
-	usb_export_start(ux, app, NULL);
+	usb_export_start(ux, app, NULL, NULL, NULL);
 	wait_result(ux);
 	CHECK_INT(last(), APP_STATUS_SAVE_FAILED);
 	usb_export_destroy(ux);
