@@ -256,6 +256,65 @@ static void test_full(struct app *app, const char *root)
 	close(dirfd);
 }
 
+/* Save on today's forest (docs/forest.md): forest-DATE.glb beside the set, never over a
+ * name (the same day again: -2, -3, ...), never through a symlink, a stale temporary of
+ * ours removed, a bad date refused, a full stick leaving nothing of it. */
+static void test_forest(struct app *app, const char *root)
+{
+	char path[600], base[32];
+	struct error err = { { 0 } };
+	struct export_set s;
+	struct rlimit old, lim;
+	int dirfd;
+
+	snprintf(path, sizeof(path), "%s/forest", root);
+	CHECK_INT(mkdir(path, 0755), 0);
+	dirfd = open(path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+	CHECK(dirfd >= 0);
+	export_set_init(&s);
+	set_of(app, &s, false);
+	CHECK_INT(buf_append(&s.forest, "glTF forest bytes", 17), 0);
+	snprintf(s.forest_date, sizeof(s.forest_date), "2026-12-05");
+	CHECK_INT(export_set_save(dirfd, &s, base, sizeof(base), &err), 0);
+	CHECK(!strcmp(base, "tree-0001") && !strcmp(s.forest_name, "forest-2026-12-05.glb"));
+	CHECK(exists(dirfd, "forest-2026-12-05.glb"));
+	/* the same day again, with a symlink at -2 (a hostile stick): past both */
+	CHECK_INT(symlinkat("/etc/passwd", dirfd, "forest-2026-12-05-2.glb"), 0);
+	CHECK_INT(export_set_save(dirfd, &s, base, sizeof(base), &err), 0);
+	CHECK(!strcmp(base, "tree-0002") && !strcmp(s.forest_name, "forest-2026-12-05-3.glb"));
+	{
+		char target[64] = { 0 };
+
+		CHECK(readlinkat(dirfd, "forest-2026-12-05-2.glb", target, sizeof(target) - 1) > 0);
+		CHECK(!strcmp(target, "/etc/passwd"));
+	}
+	/* a temporary a pulled stick left (another day's too): gone at the next save */
+	touch(dirfd, ".forest-2026-11-30.glb.tmp");
+	CHECK_INT(symlinkat("/nonexistent-edaha-target", dirfd, ".forest-2026-12-05.glb.tmp"), 0);
+	CHECK_INT(export_set_save(dirfd, &s, base, sizeof(base), &err), 0);
+	CHECK(!strcmp(s.forest_name, "forest-2026-12-05-4.glb"));
+	CHECK(!exists(dirfd, ".forest-2026-11-30.glb.tmp") && !exists(dirfd, ".forest-2026-12-05.glb.tmp"));
+	CHECK_INT(dir_count(dirfd, ".", ".forest"), 0);
+	/* a date that is not one: refused, nothing written */
+	snprintf(s.forest_date, sizeof(s.forest_date), "../../etc");
+	CHECK_INT(export_set_write_forest(dirfd, &s, &err), -EINVAL);
+	CHECK_INT(dir_count(dirfd, ".", "forest-"), 4);
+	/* a full stick: no temporary, no final name of it */
+	snprintf(s.forest_date, sizeof(s.forest_date), "2026-12-06");
+	CHECK_INT(getrlimit(RLIMIT_FSIZE, &old), 0);
+	lim = old;
+	lim.rlim_cur = 8;
+	signal(SIGXFSZ, SIG_IGN);
+	CHECK_INT(setrlimit(RLIMIT_FSIZE, &lim), 0);
+	CHECK_INT(export_set_write_forest(dirfd, &s, &err), -EFBIG);
+	CHECK_INT(setrlimit(RLIMIT_FSIZE, &old), 0);
+	CHECK(strstr(err.msg, "forest-2026-12-06.glb"));
+	CHECK_INT(dir_count(dirfd, ".", "forest-2026-12-06"), 0);
+	CHECK_INT(dir_count(dirfd, ".", ".forest"), 0);
+	export_set_finish(&s);
+	close(dirfd);
+}
+
 int main(void)
 {
 	char root[] = "/tmp/edaha-export-set-XXXXXX", cmd[128];
@@ -268,6 +327,7 @@ int main(void)
 	test_save(app, root);
 	test_many(app, root);
 	test_full(app, root);
+	test_forest(app, root);
 	app_destroy(app);
 	snprintf(cmd, sizeof(cmd), "rm -rf '%s'", root);
 	CHECK_INT(system(cmd), 0);
