@@ -25,6 +25,7 @@ void export_set_init(struct export_set *s)
 	s->wind = 0.0;
 	buf_init(&s->forest);
 	s->forest_date[0] = s->forest_name[0] = '\0';
+	s->forest_only = false;
 }
 
 void export_set_finish(struct export_set *s)
@@ -277,6 +278,12 @@ int export_set_save(int dirfd, struct export_set *s, char *base, size_t base_siz
 	unsigned number;
 	int r = -EEXIST;
 
+	if (s->forest_only) {
+		r = export_set_write_forest(dirfd, s, err);
+		if (r == 0)
+			snprintf(base, base_size, "%s", s->forest_name);
+		return r;
+	}
 	/* a name taken between the listing and the write: once more, past it */
 	for (int attempt = 0; attempt < 2 && r == -EEXIST; attempt++) {
 		r = export_set_pick(dirfd, &number, err);

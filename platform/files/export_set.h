@@ -43,6 +43,7 @@ struct export_set {
 	struct buf forest;
 	char forest_date[11];
 	char forest_name[40]; /* the name it got, once written */
+	bool forest_only;     /* an empty canvas on the forest: no tree's files */
 };
 
 void export_set_init(struct export_set *s);
@@ -63,7 +64,8 @@ int export_set_write(int dirfd, struct export_set *s, unsigned number, struct er
 #define EXPORT_SET_FOREST_MAX 99
 int export_set_write_forest(int dirfd, struct export_set *s, struct error *err);
 /* pick and write, once more with a new number if a name turned up taken meanwhile, then
- * the forest's file when there is one. On success base is "tree-NNNN". */
+ * the forest's file when there is one. On success base is "tree-NNNN" (with
+ * forest_only, the forest's file alone is written and base is its name). */
 int export_set_save(int dirfd, struct export_set *s, char *base, size_t base_size,
 		    struct error *err);
 /* Renames from to to in dirfd, failing with EEXIST rather than replacing: renameat2's

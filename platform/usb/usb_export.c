@@ -198,7 +198,10 @@ static enum usb_outcome save_to_stick(struct usb_export *ux, const char *kname,
 	o = usb_outcome_of(USB_REASON_NONE, ret,
 			   ret == 0 || present(ux, kname,
 					       ret == -ENOSPC || ret == -EFBIG ? 0 : USB_GONE_WAIT_MS));
-	if (o == USB_OUTCOME_OK)
+	if (o == USB_OUTCOME_OK && set->forest_only)
+		fprintf(stderr, "edaha: usb: saved %s to %s/edaha in %.1f s; unmounted, safe to pull\n",
+			set->forest_name, kname, now_s() - t0);
+	else if (o == USB_OUTCOME_OK)
 		fprintf(stderr,
 			"edaha: usb: saved %s.glb, .obj, .mtl, %s.edaha %s%sto %s/edaha in %.1f s; "
 			"unmounted, safe to pull\n",
@@ -229,6 +232,8 @@ static bool save_local(struct usb_export *ux, struct export_set *set)
 	}
 	if (ret < 0)
 		fprintf(stderr, "edaha: export to %s failed: %s\n", ux->local, err.msg);
+	else if (set->forest_only)
+		fprintf(stderr, "edaha: exported %s/%s\n", ux->local, set->forest_name);
 	else
 		fprintf(stderr, "edaha: exported %s/%s.glb, .obj, .mtl, %s.edaha%s%s\n", ux->local,
 			base, set->files[EXPORT_SET_PNG].len ? ".png, " : "",
@@ -406,12 +411,6 @@ void usb_export_start(struct usb_export *ux, const struct app *app, const uint8_
 	}
 	export_set_init(job.set);
 	job.set->wind = ux->cfg.wind;
-	if (export_set_build(job.set, app, rgba, &err) < 0) {
-		fprintf(stderr, "edaha: export failed: %s\n", err.msg);
-		free_job(&job);
-		tell(ux, APP_STATUS_SAVE_FAILED, false);
-		return;
-	}
 	if (forest && forest->len && forest_date) {
 		struct buf empty;
 
@@ -420,6 +419,14 @@ void usb_export_start(struct usb_export *ux, const struct app *app, const uint8_
 		job.set->forest = *forest;
 		*forest = empty;
 		snprintf(job.set->forest_date, sizeof(job.set->forest_date), "%s", forest_date);
+		/* an empty canvas on the forest: the forest alone, no empty tree beside it */
+		job.set->forest_only = app->tree.nbranches == 0;
+	}
+	if (!job.set->forest_only && export_set_build(job.set, app, rgba, &err) < 0) {
+		fprintf(stderr, "edaha: export failed: %s\n", err.msg);
+		free_job(&job);
+		tell(ux, APP_STATUS_SAVE_FAILED, false);
+		return;
 	}
 	if (s)
 		memcpy(job.kname, s->kname, sizeof(job.kname));

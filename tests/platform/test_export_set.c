@@ -311,6 +311,11 @@ static void test_forest(struct app *app, const char *root)
 	CHECK(strstr(err.msg, "forest-2026-12-06.glb"));
 	CHECK_INT(dir_count(dirfd, ".", "forest-2026-12-06"), 0);
 	CHECK_INT(dir_count(dirfd, ".", ".forest"), 0);
+	/* an empty canvas on the forest: the forest alone */
+	s.forest_only = true;
+	CHECK_INT(export_set_save(dirfd, &s, base, sizeof(base), &err), 0);
+	CHECK(!strcmp(base, "forest-2026-12-06.glb") && exists(dirfd, base));
+	CHECK_INT(dir_count(dirfd, ".", "tree-"), 12); /* three sets of four, as before */
 	export_set_finish(&s);
 	close(dirfd);
 }

@@ -376,6 +376,23 @@ static void test_labels(void)
 		}
 		CHECK(labels_status(APP_STATUS_NONE, langs[l]) == NULL);
 		CHECK(labels_status(APP_STATUS_COUNT, langs[l]) == NULL);
+		/* the forest's number in its place, the digits in the font; a message without
+		 * '#' as it is; too little room refused, never cut */
+		{
+			char buf[160];
+
+			CHECK_INT(labels_format(APP_STATUS_IN_FOREST, langs[l], 12, buf, sizeof(buf)), 0);
+			CHECK(strstr(buf, "12") && !strchr(buf, '#'));
+			CHECK(strlen(buf) == strlen(labels_status(APP_STATUS_IN_FOREST, langs[l])) + 1);
+			CHECK_INT(labels_format(APP_STATUS_IN_FOREST, langs[l], 999999, buf, sizeof(buf)), 0);
+			CHECK(strstr(buf, "999999"));
+			CHECK_INT(labels_format(APP_STATUS_SAVED, langs[l], 12, buf, sizeof(buf)), 0);
+			CHECK(!strcmp(buf, labels_status(APP_STATUS_SAVED, langs[l])));
+			CHECK_INT(labels_format(APP_STATUS_IN_FOREST, langs[l], 12, buf, 8), -ENOSPC);
+			CHECK_INT(labels_format(APP_STATUS_NONE, langs[l], 12, buf, sizeof(buf)), -EINVAL);
+			for (const char *d = "0123456789"; *d; d++)
+				CHECK(font_has(f.font, (uint32_t)*d));
+		}
 		CHECK(labels_attract(langs[l])[0]);
 		/* the list covers all of them, and the font has every character */
 		for (n = 0; (s = labels_nth(langs[l], n)); n++) {
