@@ -51,6 +51,16 @@ int kiosk_start_autosave(struct kiosk *k)
 			}
 			fprintf(stderr, "edaha: autosave: the drawing is back from %s (%zu edits, %zu in effect)\n",
 				autosave_path(k->autosave), nops, cursor);
+			/* stopped between the idle reset's archive and its clean canvas: that
+			 * drawing is kept already, and would be archived (and planted) twice */
+			if (autosave_archived_already(k->autosave, &k->app->doc, &k->app->tree) == 1) {
+				fputs("edaha: autosave: that drawing was archived before the stop: a new canvas\n",
+				      stderr);
+				if (app_reset(k->app, fresh_seed()) < 0) {
+					doc_finish(&doc);
+					return -ENOMEM;
+				}
+			}
 		}
 		doc_finish(&doc);
 	}

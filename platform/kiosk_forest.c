@@ -2,7 +2,8 @@
 /*
  * Today's forest on the kiosk (docs/forest.md, "On the kiosk"): brought up to date by a
  * job on a thread of its own (forest_job.h) at the start, after every archived drawing
- * and once a minute (a new day, or staff's edaha --forest-reset); the scene it builds is
+ * when the reset hour comes or the clock is set (a realtime timer, woken by either), and
+ * once a minute (staff's edaha --forest-reset); the scene it builds is
  * swapped into the one the app shows between frames. The thread runs at a lower priority
  * than the loop, so a planting never delays the pen.
  */
@@ -21,6 +22,7 @@
 #include <unistd.h>
 
 #include "export.h"
+#include "forest_state.h"
 #include "forest_job.h"
 
 /* How often the day file and the clock are looked at. */
@@ -40,7 +42,7 @@ struct kiosk_forest {
 	struct forest_scene shown, back; /* shown: app->forest; back: the job's */
 	uint64_t serial;
 	/* the job on its thread */
-	int fd, timer_fd;
+	int fd, timer_fd, day_fd; /* the job's, the minute's, the reset moment's */
 	pthread_t thread;
 	bool running, again;
 	struct forest_job job;
@@ -152,10 +154,12 @@ static void say(const struct kiosk_forest *f, uint64_t newest_before, size_t pla
 		fprintf(stderr, "edaha: forest: No. %" PRIu64 " planted (drawing-%06" PRIu64
 			".edaha) in %.2f s; %zu trees standing\n",
 			newest->number, newest->archive, s, f->ntrees);
-	else
+	else if (newest)
 		fprintf(stderr, "edaha: forest: %zu trees standing (No. %" PRIu64 " to %" PRIu64
-			"), built in %.2f s\n", f->ntrees, newest ? f->trees[0].number : 0,
-			newest ? newest->number : 0, s);
+			"), built in %.2f s\n", f->ntrees, f->trees[0].number, newest->number, s);
+	else
+		fputs("edaha: forest: no tree stands: the attract screen invites the day's first\n",
+		      stderr);
 }
 
 /* The job done: its trees and scene taken, its failures remembered, again if asked. */
@@ -205,6 +209,44 @@ static int on_done(void *data)
 	return 0;
 }
 
+/* The day's next reset moment after now: the realtime timer's, cancelled when the clock
+ * is set (NTP's first step on a board without a clock, a technician's date -s), so a new
+ * day is seen at once either way. */
+static int arm_day(struct kiosk_forest *f)
+{
+	const struct kiosk_config *c = &f->k->cfg;
+	int64_t now = (int64_t)time(NULL);
+	int64_t r = forest_state_reset_moment(now + 25 * 3600, c->forest_reset_hour,
+					      c->forest_reset_minute);
+	struct itimerspec at = { { 0, 0 }, { 0, 0 } };
+
+	/* the last moment at or before 25 h on may be the second after now (a 23 h day) */
+	for (int i = 0; i < 3; i++) {
+		int64_t p = forest_state_reset_moment(r - 1, c->forest_reset_hour,
+						      c->forest_reset_minute);
+
+		if (p <= now)
+			break;
+		r = p;
+	}
+	at.it_value.tv_sec = (time_t)(r > now ? r : now + 1);
+	return timerfd_settime(f->day_fd, TFD_TIMER_ABSTIME | TFD_TIMER_CANCEL_ON_SET, &at, NULL);
+}
+
+static int on_day(void *data)
+{
+	struct kiosk_forest *f = data;
+	uint64_t n;
+
+	/* expired, or ECANCELED: the clock was set; either way the day is looked at again */
+	if (read(f->day_fd, &n, sizeof(n)) < 0 && errno != ECANCELED)
+		return 0;
+	if (arm_day(f) < 0)
+		fprintf(stderr, "edaha: forest: warning: the reset hour's timer: %s\n", strerror(errno));
+	kiosk_forest_refresh(f->k);
+	return 0;
+}
+
 static int on_minute(void *data)
 {
 	struct kiosk_forest *f = data;
@@ -219,7 +261,7 @@ int kiosk_forest_create(struct kiosk *k)
 {
 	struct itimerspec every = { { KIOSK_FOREST_CHECK_S, 0 }, { KIOSK_FOREST_CHECK_S, 0 } };
 	struct kiosk_forest *f;
-	struct kiosk_source src[2];
+	struct kiosk_source src[3];
 
 	if (!k->cfg.forest || !k->autosave)
 		return 0;
@@ -227,19 +269,23 @@ int kiosk_forest_create(struct kiosk *k)
 	if (!f)
 		return -ENOMEM;
 	f->k = k;
+	f->fd = f->timer_fd = f->day_fd = -1;
 	f->fd = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
 	f->timer_fd = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
+	f->day_fd = timerfd_create(CLOCK_REALTIME, TFD_NONBLOCK | TFD_CLOEXEC);
 	forest_scene_init(&f->shown);
 	forest_scene_init(&f->back);
 	k->forest = f;
-	if (f->fd < 0 || f->timer_fd < 0 || timerfd_settime(f->timer_fd, 0, &every, NULL) < 0) {
+	if (f->fd < 0 || f->timer_fd < 0 || f->day_fd < 0 ||
+	    timerfd_settime(f->timer_fd, 0, &every, NULL) < 0 || arm_day(f) < 0) {
 		fprintf(stderr, "edaha: forest: %s: today's forest is off\n", strerror(errno));
 		kiosk_forest_destroy(k);
 		return 0;
 	}
 	src[0] = (struct kiosk_source){ f->fd, on_done, f };
 	src[1] = (struct kiosk_source){ f->timer_fd, on_minute, f };
-	for (size_t i = 0; i < 2; i++)
+	src[2] = (struct kiosk_source){ f->day_fd, on_day, f };
+	for (size_t i = 0; i < 3; i++)
 		if (kiosk_add_source(k, &src[i]) < 0)
 			return -ENOMEM;
 	k->app->forest = &f->shown;
@@ -271,6 +317,8 @@ void kiosk_forest_destroy(struct kiosk *k)
 		close(f->fd);
 	if (f->timer_fd >= 0)
 		close(f->timer_fd);
+	if (f->day_fd >= 0)
+		close(f->day_fd);
 	if (k->app && k->app->forest == &f->shown)
 		k->app->forest = NULL;
 	free(f);

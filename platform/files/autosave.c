@@ -311,6 +311,34 @@ static void archive_prune(const char *dir, unsigned keep)
 	}
 }
 
+int autosave_archived_already(struct autosave *a, const struct doc *d, const struct tree *t)
+{
+	char dir[PATH_MAX], path[PATH_MAX + 32];
+	struct error err = { { 0 } };
+	unsigned lo, hi;
+	size_t count, len = 0;
+	char *data = NULL;
+	struct buf b;
+	int ret;
+
+	if ((size_t)snprintf(dir, sizeof(dir), "%s/%s", a->dir, AUTOSAVE_ARCHIVE_DIR) >= sizeof(dir))
+		return -ENAMETOOLONG;
+	ret = archive_scan(dir, &lo, &hi, &count);
+	if (ret < 0 || count == 0)
+		return ret == -ENOENT ? 0 : ret;
+	snprintf(path, sizeof(path), "%s/drawing-%06u.edaha", dir, hi);
+	ret = fileio_read_all(path, DOC_MAX_FILE_BYTES, &data, &len, &err);
+	if (ret < 0)
+		return ret == -ENOENT ? 0 : ret;
+	buf_init(&b);
+	ret = doc_serialize(d, t, &b);
+	if (ret == 0)
+		ret = b.len == len && memcmp(b.data, data, len) == 0;
+	buf_finish(&b);
+	free(data);
+	return ret;
+}
+
 int autosave_archive(struct autosave *a, const struct doc *d, const struct tree *t,
 		     unsigned keep, char *name, size_t name_size, struct error *err)
 {

@@ -47,5 +47,9 @@ bool autosave_pending(const struct autosave *a, const struct doc *d);
  * keep archives (the oldest go; 0: keep all). name gets the file name. 0 or -errno. */
 int autosave_archive(struct autosave *a, const struct doc *d, const struct tree *t,
 		     unsigned keep, char *name, size_t name_size, struct error *err);
+/* 1 when d (with t's summary) is, byte for byte, the newest archived drawing: the kiosk
+ * stopped between archiving it and clearing the journal (a power cut, a kill), so the
+ * journal's drawing is one already archived; 0 when not (or no archive); -errno. */
+int autosave_archived_already(struct autosave *a, const struct doc *d, const struct tree *t);
 /* The number in an archived drawing's name "drawing-NNNNNN.edaha", or 0 for another name. */
 unsigned autosave_archive_number(const char *name);

@@ -215,6 +215,7 @@ int main(int argc, char **argv)
 
 	/* the archive: numbered, the oldest beyond keep removed */
 	a = autosave_create(tmpl, &err);
+	CHECK_INT(autosave_archived_already(a, &app->doc, &app->tree), 0); /* none yet */
 	for (int i = 1; i <= 5; i++) {
 		char want[32];
 
@@ -226,6 +227,15 @@ int main(int argc, char **argv)
 	CHECK(access(bad, F_OK) != 0);
 	snprintf(bad, sizeof(bad), "%s/archive/drawing-000003.edaha", tmpl);
 	CHECK(access(bad, F_OK) == 0);
+	/* a stop between the archive and the clean canvas: the journal's drawing is the
+	 * newest archived one, byte for byte; another drawing (one op fewer) is not */
+	CHECK_INT(autosave_archived_already(a, &app->doc, &app->tree), 1);
+	if (app->doc.cursor > 0) {
+		struct doc fewer = app->doc;
+
+		fewer.cursor--;
+		CHECK_INT(autosave_archived_already(a, &fewer, &app->tree), 0);
+	}
 	autosave_destroy(a);
 
 	for (size_t i = 0; i < nstates; i++)

@@ -35,7 +35,7 @@ root=$T/root
 installed_root "$root" "$HERE/service.conf" WatchdogSec=12 TimeoutAbortSec=3 RestartSec=1 ||
 	fail "meson install into $root failed"
 
-"$VM" -t 600 -s 640x400 -i systemd -r "$root" -o "$T/vm" -- \
+"$VM" -t 900 -s 640x400 -i systemd -r "$root" -o "$T/vm" -- \
 	"$HERE/service_guest.sh" "$UINPUT_PEN" "$SCANOUT" "$KMOD_DIR"
 rc=$?
 [ $rc -eq 77 ] && exit 77
@@ -100,5 +100,29 @@ env "${host_env[@]}" "$EDAHA" --headless --size 640x400 --out "$T/empty" >/dev/n
 	fail "no headless empty canvas"
 "$IMGCMP" --max-diff 64 --max-fraction 0.015 "$T/empty/screen.png" "$v/after-reset.png" ||
 	fail "after the reset the screen is not an empty canvas"
+# 5. today's forest: the idle reset's drawing planted as No. 1; the second visitor's
+# archived and the kiosk killed while planting it: back, both stand, archived once
+grep -q 'forest: the drawing is No. 1 in today.s forest' "$log" ||
+	fail "the idle reset did not say the drawing's number in today's forest"
+grep -q 'forest: No. 1 planted (drawing-000001.edaha)' "$log" || fail "the archived drawing was not planted"
+grep -q 'archived as archive/drawing-000002.edaha' "$log" || fail "the second drawing was not archived"
+echo "  the second drawing archived, the kiosk SIGKILLed at once: $(cat "$v/kill-planting.txt" 2>/dev/null)"
+grep -q 'forest: 2 trees standing (No. 1 to 2)' "$log" || fail "after the SIGKILL, not both trees in the forest"
+grep -q 'archived as archive/drawing-000003' "$log" && fail "a drawing was archived twice (the journal's, after the SIGKILL)"
+env "${host_env[@]}" "$EDAHA" --headless --out "$T/attract" --idle 120 --size 640x400 \
+	>"$T/attract.log" 2>&1 || { cat "$T/attract.log"; fail "no headless attract screen"; }
+for f in forest-1 forest-2; do
+	[ -s "$v/$f.png" ] || fail "no scanout $f.png"
+	"$IMGCMP" --max-diff 32 --max-fraction 0.05 "$T/attract/screen.png" "$v/$f.png" >/dev/null 2>&1 &&
+		fail "$f.png: the attract screen shows no forest"
+done
+"$IMGCMP" --max-diff 16 --max-fraction 0.002 "$v/forest-1.png" "$v/forest-2.png" >/dev/null 2>&1 &&
+	fail "the forest of two is the forest of one"
+# 6. the clock past the reset hour: a new day at once, the forest empty, the invitation
+# as on any day; the day file's first tree the next archive number
+grep -q 'drawing-000003.edaha and later are today.s forest' "$log" || fail "no new day at the reset hour"
+grep -qx 'first: 3' "$v/forest-day-2" || fail "the new day's file: $(cat "$v/forest-day-2")"
+"$IMGCMP" --max-diff 64 --max-fraction 0.015 "$T/attract/screen.png" "$v/forest-day.png" ||
+	fail "after the new day the attract screen is not the plain invitation"
 echo "  guest timeline:"; sed 's/^/    /' "$v/phases.txt"
 echo "system-service: OK"

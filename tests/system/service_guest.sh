@@ -14,6 +14,19 @@ if [ "$1" = saved ]; then
 	"$2" /dev/dri/card0 /out/before-kill.png 2>> /out/scanout.err
 	exit 0
 fi
+# uinput_pen's `sh $ARCHIVED_KILL` (forest.script): the second visitor's drawing is
+# archived by the idle reset; the kiosk is killed at once, while it plants it
+if [ "$1" = archived-kill ]; then
+	i=0
+	while [ ! -s /var/lib/edaha/archive/drawing-000002.edaha ] && [ $i -lt 1200 ]; do
+		sleep 0.05
+		i=$((i + 1))
+	done
+	systemctl kill -s KILL edaha.service
+	grep -q 'No. 2 planted' /out/edaha.log && echo "planted before the kill" > /out/kill-planting.txt ||
+		echo "killed mid-planting" > /out/kill-planting.txt
+	exit 0
+fi
 pen=$1 scanout=$2 kmod=$3
 H=$(dirname "$0")
 say() { echo "service_guest: $*"; }
@@ -35,6 +48,9 @@ udevadm settle -t 30
 ls -l /dev/gpiochip* > /out/gpiochips.txt
 getent passwd edaha > /out/user.txt && id edaha >> /out/user.txt
 
+# a known clock: today's forest begins its day at 04:00 (forest.reset_at), which the test
+# must not cross by chance; step 6 crosses it on purpose
+date -s "2026-12-05 12:00:00" > /dev/null
 phase "booted, gpio-sim up"
 # 1. started as at boot: `systemctl start` returns once the kiosk said READY=1
 t0=$(cut -d' ' -f1 /proc/uptime)
@@ -76,10 +92,38 @@ phase "back after the watchdog"
 sed -i 's/reset_after: 0/reset_after: 4/' /etc/edaha/edaha.conf
 systemctl restart edaha.service || say "no restart"
 wait_for grep -q 'a new canvas' /out/edaha.log || say "no idle reset"
-sleep 2
+sleep 5 # "Your tree is No. 1 in today's forest" shows for 4 s
 "$scanout" /dev/dri/card0 /out/after-reset.png 2>> /out/scanout.err || say "no scanout"
 mkdir -p /out/archive && cp /var/lib/edaha/archive/* /out/archive/ 2>/dev/null
 phase "reset"
+
+# 5. today's forest: the attract screen (after 3 s) shows the day's trees; a second
+# visitor's drawing is archived and the kiosk killed while it plants it: back, both stand
+sed -i 's/attract_after: 0/attract_after: 3/' /etc/edaha/edaha.conf
+systemctl restart edaha.service || say "no restart"
+wait_for grep -q 'trees standing (No. 1 to 1)' /out/edaha.log || say "no forest of one"
+sleep 8
+"$scanout" /dev/dri/card0 /out/forest-1.png 2>> /out/scanout.err || say "no scanout"
+phase "the forest of one"
+export ARCHIVED_KILL="$0 archived-kill"
+pid=$(show MainPID)
+UINPUT_PEN_WAIT_MS=0 "$pen" < "$H/forest.script" 2>> /out/pen.err || say "uinput_pen failed"
+other() { [ "$(show MainPID)" != "$pid" ] && [ "$(show MainPID)" != 0 ] && [ "$(show ActiveState)" = active ]; }
+wait_for other || say "not restarted after the SIGKILL mid-planting"
+wait_for grep -q 'trees standing (No. 1 to 2)' /out/edaha.log || say "no forest of two"
+sleep 8
+"$scanout" /dev/dri/card0 /out/forest-2.png 2>> /out/scanout.err || say "no scanout"
+cp /var/lib/edaha/forest-day /out/forest-day-1 2>/dev/null
+phase "the forest of two, after a SIGKILL mid-planting"
+
+# 6. the reset hour (forest.reset_at, 04:00) passes: the clock set a day on, as NTP would
+# step it; the realtime timer wakes the kiosk at once: a new day, the forest empty
+date -s tomorrow > /out/date.txt
+wait_for sh -c "[ \"\$(grep -c 'a new day' /out/edaha.log)\" -ge 2 ]" || say "no new day"
+sleep 4
+"$scanout" /dev/dri/card0 /out/forest-day.png 2>> /out/scanout.err || say "no scanout"
+cp /var/lib/edaha/forest-day /out/forest-day-2 2>/dev/null
+phase "a new day"
 systemctl stop edaha.service
 sleep 1
 journalctl -u edaha.service -o cat --no-pager > /out/edaha.log
