@@ -201,6 +201,42 @@ static int plant_standing(struct forest_job *j, const uint64_t *numbers, size_t 
 	return ret;
 }
 
+/*
+ * Which parts to make again at their new shares: those missing, and those whose share grew
+ * past FOREST_JOB_SHARE_SLACK times the one they were made for (worth the look); a part
+ * kept may be over its new share (a tree joined and every share shrank a little) as long
+ * as the whole forest stays within FOREST_TRIANGLES: the most over theirs are made again
+ * until it does. So a tree joining costs one planting and few parts, not forty.
+ */
+static int choose_redo(const struct forest_job *j, const size_t *share, bool *redo)
+{
+	size_t n = j->ntrees, total = 0;
+
+	for (size_t i = 0; i < n; i++) {
+		const struct forest_tree *t = &j->trees[i];
+
+		redo[i] = !t->part || (double)share[i] > FOREST_JOB_SHARE_SLACK * (double)t->share;
+		total += redo[i] ? share[i] : part_triangles(t->part);
+	}
+	while (total > FOREST_TRIANGLES) {
+		size_t worst = n, over = 0;
+
+		for (size_t i = 0; i < n; i++) {
+			size_t tri = redo[i] ? 0 : part_triangles(j->trees[i].part);
+
+			if (tri > share[i] && tri - share[i] > over) {
+				over = tri - share[i];
+				worst = i;
+			}
+		}
+		if (worst == n)
+			return -EINVAL; /* never: the shares sum to at most the total */
+		total -= over;
+		redo[worst] = true;
+	}
+	return 0;
+}
+
 /* Each tree's part at its share of the forest's triangles, the layout, the scene. */
 static int build_scene(struct forest_job *j)
 {
@@ -210,20 +246,22 @@ static int build_scene(struct forest_job *j)
 	uint64_t *numbers = calloc(n + 1, sizeof(*numbers));
 	size_t *share = calloc(n + 1, sizeof(*share));
 	const struct forest_part **parts = calloc(n + 1, sizeof(*parts));
-	int ret = widths && xz && pos && numbers && share && parts ? 0 : -ENOMEM;
+	bool *redo = calloc(n + 1, sizeof(*redo));
+	int ret = widths && xz && pos && numbers && share && parts && redo ? 0 : -ENOMEM;
 
 	for (size_t i = 0; ret == 0 && i < n; i++) {
 		widths[i] = forest_tree_crown_width(&j->trees[i].planted->tree);
 		numbers[i] = j->trees[i].number;
 	}
-	if (ret == 0)
+	if (ret == 0) {
 		forest_lod_shares(widths, NULL, n, FOREST_TRIANGLES, share);
+		ret = choose_redo(j, share, redo);
+	}
 	for (size_t i = 0; ret == 0 && i < n; i++) {
 		struct forest_tree *t = &j->trees[i];
 		struct forest_part *p;
 
-		if (t->part && part_triangles(t->part) <= share[i] &&
-		    (double)share[i] <= FOREST_JOB_SHARE_SLACK * (double)t->share)
+		if (!redo[i])
 			continue;
 		p = malloc(sizeof(*p));
 		if (!p) {
@@ -254,6 +292,7 @@ static int build_scene(struct forest_job *j)
 	free(numbers);
 	free(share);
 	free(parts);
+	free(redo);
 	return ret;
 }
 
