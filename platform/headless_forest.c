@@ -5,7 +5,8 @@
  * is skipped, with why, and takes no number); the newest FOREST_MAX_TREES_DEFAULT stand,
  * placed by forest_layout; forest.json, forest.glb (every standing tree at full
  * detail, with its wind over the forest's common loop) and screen.png (the attract
- * screen's forest at --idle's moment, each tree at its level of detail) written to --out.
+ * screen's forest at --idle's moment, each tree at its level of detail, the newest
+ * growing in from the moment 0; without --idle, grown) written to --out.
  */
 #include <dirent.h>
 #include <errno.h>
@@ -210,7 +211,8 @@ static int draw(struct render *r, const void *ctx, int width, int height)
 	return ret < 0 ? ret : render_frame_at(r, p->app, p->now_us);
 }
 
-/* screen.png: the attract screen showing the forest at --idle's moment (0 without). */
+/* screen.png: the attract screen showing the forest at --idle's moment (0 without, the
+ * newest tree grown). */
 static int picture(struct forest_run *f, const double *xz, const struct options *o, struct buf *png)
 {
 	struct forest_scene scene;
@@ -226,9 +228,12 @@ static int picture(struct forest_run *f, const double *xz, const struct options 
 	if (ret == 0 && !(p.app = app_create(o->width, o->height, 1)))
 		ret = -ENOMEM;
 	if (ret == 0) {
-		/* the attract screen from the start: --idle T is the moment T s into it */
+		/* the attract screen from the start: --idle T is the moment T s into it, the
+		 * newest tree having joined at its moment 0 (so T s into its growth); without
+		 * --idle, the forest as it stands once grown */
 		p.app->forest = &scene;
 		p.app->attract_after_us = 1;
+		p.app->forest_joined_us = o->idle_given ? 1 : 0;
 		p.now_us = 1 + (o->idle_given ? (uint64_t)llround(o->idle_s * 1e6) : 0);
 		status = headless_one_picture(o, draw, &p, png);
 	}

@@ -3,13 +3,16 @@
  * Today's forest on the attract screen (issue 27, docs/forest.md): the scene's merged
  * bark and leaves (src/forest/forest_scene.c) drawn by the forest's living programs, one
  * call for the bark and one for the leaves whatever the number of trees, on a gentle
- * disc of ground, seen by a camera that travels slowly round it; each tree's number at its
- * foot. The meshes and their data go up when the scene changes (its serial); a frame sets
- * uniforms only.
+ * disc of ground, seen by a camera that travels slowly round it; the newest tree, while
+ * it grows in, drawn apart (its ranges of the same buffers, with its growth's front);
+ * each tree's number at its foot, all of them one call. The meshes, their data and the
+ * numbers' quads go up when the scene changes (its serial); a frame sets uniforms only.
  */
 #include <errno.h>
 #include <float.h>
 #include <math.h>
+#include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -33,6 +36,83 @@ static const char *const attribs[] = { "a_position", "a_normal", "a_tint", "a_li
 static const GLuint locations[] = { ATTR_POSITION, ATTR_NORMAL, ATTR_TINT, ATTR_LIVE,
 				    ATTR_LIVE + 1, ATTR_LIVE + 2, ATTR_LIVE + 3, ATTR_TRUNK };
 
+/*
+ * The numbers: a vertex of a label is its tree's foot (world metres), its offset in
+ * pixels from where the foot is on screen, and its atlas texel. A card's vertex is its
+ * offset as it is; a glyph's is the text's origin's offset (a_place.xy), rounded to a
+ * whole pixel on screen as text_draw rounds it (so a glyph is drawn texel for texel,
+ * crisp), then the glyph's corner from there (a_place.zw); a_uv.z is 1 for a glyph (in
+ * ink), 0 for the card. The foot's depth is the label's: one behind the camera is clipped
+ * whole. Pixels run from the top left, y down, as the batch's do.
+ */
+static const char label_vs[] =
+	"uniform mat4 u_mvp;\n"
+	"uniform vec2 u_screen;\n"
+	"uniform vec2 u_texel;\n"
+	"attribute vec3 a_position;\n"
+	"attribute vec4 a_place;\n"
+	"attribute vec3 a_uv;\n"
+	"varying vec2 v_uv;\n"
+	"varying float v_ink;\n"
+	"void main() {\n"
+	"	vec4 c = u_mvp * vec4(a_position, 1.0);\n"
+	"	vec2 foot = vec2(c.x / c.w + 1.0, 1.0 - c.y / c.w) * 0.5 * u_screen;\n"
+	"	vec2 o = foot + a_place.xy;\n"
+	"	o = mix(o, floor(o + 0.5), a_uv.z) + a_place.zw;\n"
+	"	v_uv = a_uv.xy * u_texel;\n"
+	"	v_ink = a_uv.z;\n"
+	"	gl_Position = vec4(2.0 * o.x / u_screen.x - 1.0, 1.0 - 2.0 * o.y / u_screen.y,\n"
+	"			   c.z / c.w, 1.0);\n"
+	"}\n";
+
+/* the flat program's: mediump cannot tell a large atlas's texels apart */
+static const char label_fs[] =
+	"#ifdef GL_FRAGMENT_PRECISION_HIGH\n"
+	"precision highp float;\n"
+	"#else\n"
+	"precision mediump float;\n"
+	"#endif\n"
+	"uniform sampler2D u_atlas;\n"
+	"uniform vec4 u_card;\n"
+	"uniform vec4 u_ink;\n"
+	"varying vec2 v_uv;\n"
+	"varying float v_ink;\n"
+	"void main() {\n"
+	"	vec4 c = v_ink > 0.5 ? u_ink : u_card;\n"
+	"	gl_FragColor = vec4(c.rgb, c.a * texture2D(u_atlas, v_uv).a);\n"
+	"}\n";
+
+/* Where the labels' data sits: clear of the flat program's colour (ATTR_COLOR, which
+ * stays enabled), in places no other program leaves enabled. */
+#define ATTR_LABEL_PLACE ATTR_UV
+#define ATTR_LABEL_UV ATTR_ROW0
+
+struct label_vertex {
+	float foot[3];
+	float place[4];
+	float uv[3];
+};
+
+static const struct rgba label_card = { 1.0f, 0.992f, 0.965f, 0.85f };
+static const struct rgba label_ink = { 0.13f, 0.11f, 0.09f, 1.0f };
+
+static int labels_create(struct render_forest_labels *l)
+{
+	static const char *const names[] = { "a_position", "a_place", "a_uv" };
+	static const GLuint at[] = { ATTR_POSITION, ATTR_LABEL_PLACE, ATTR_LABEL_UV };
+
+	l->program = render_program("forest labels", label_vs, label_fs, names, at, 3);
+	if (!l->program)
+		return -1;
+	l->mvp = glGetUniformLocation(l->program, "u_mvp");
+	l->screen = glGetUniformLocation(l->program, "u_screen");
+	l->texel = glGetUniformLocation(l->program, "u_texel");
+	l->atlas = glGetUniformLocation(l->program, "u_atlas");
+	l->card = glGetUniformLocation(l->program, "u_card");
+	l->ink = glGetUniformLocation(l->program, "u_ink");
+	return 0;
+}
+
 int render_forest_create(struct render *r)
 {
 	struct render_forest *f = &r->forest;
@@ -41,9 +121,11 @@ int render_forest_create(struct render *r)
 	if (!render_program_tree_init(&f->plain.tree, "forest", render_forest_vs, render_live_fs,
 				      attribs, locations, 8) ||
 	    !render_program_tree_init(&f->tinted.tree, "forest tinted", render_forest_tinted_vs,
-				      render_live_tinted_fs, attribs, locations, 8)) {
+				      render_live_tinted_fs, attribs, locations, 8) ||
+	    labels_create(&f->labels) < 0) {
 		glDeleteProgram(f->plain.tree.program);
-		f->plain.tree.program = 0;
+		glDeleteProgram(f->tinted.tree.program);
+		f->plain.tree.program = f->tinted.tree.program = 0;
 		return -1;
 	}
 	render_live_program_locate(&f->plain);
@@ -83,9 +165,13 @@ void render_forest_finish(struct render *r)
 	struct render_forest *f = &r->forest;
 
 	forest_clear(f);
+	glDeleteBuffers(1, &f->labels.vbo);
+	glDeleteProgram(f->labels.program);
 	glDeleteProgram(f->plain.tree.program);
 	glDeleteProgram(f->tinted.tree.program);
 	f->plain.tree.program = f->tinted.tree.program = 0;
+	f->labels.program = f->labels.vbo = 0;
+	f->labels.ok = false;
 }
 
 /* A disc of ground under the forest, a little wider than its crowns. */
@@ -196,15 +282,13 @@ static int upload(struct render *r, const struct forest_scene *s)
 
 /*
  * The camera's matrix: the forest's box (its feet's disc and the tallest top) seen from
- * the camera, fitted into the canvas rect of a width x height screen; xf out for the
- * labels, with the pixels a metre and the view's centre.
+ * the camera, fitted into the canvas rect of a width x height screen.
  */
 static void fit(const struct forest_scene *s, const struct camera_xf *xf,
-		const struct layout_rect *rect, int width, int height, float out[16],
-		double *px_per_m, double c[3])
+		const struct layout_rect *rect, int width, int height, float out[16])
 {
 	double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
-	double rad = 1.15 * s->radius + 1.0, sc[3];
+	double rad = 1.15 * s->radius + 1.0, sc[3], c[3], px_per_m;
 	float cam[16], box[16] = { 0 };
 
 	/* the ground's rim and the same circle at the tallest top: a cylinder, whichever
@@ -223,11 +307,11 @@ static void fit(const struct forest_scene *s, const struct camera_xf *xf,
 	}
 	for (int k = 0; k < 3; k++)
 		c[k] = 0.5 * (lo[k] + hi[k]);
-	*px_per_m = fmin(rect->w / fmax(hi[0] - lo[0], 1e-6), rect->h / fmax(hi[1] - lo[1], 1e-6)) /
-		    FOREST_FIT_MARGIN;
+	px_per_m = fmin(rect->w / fmax(hi[0] - lo[0], 1e-6), rect->h / fmax(hi[1] - lo[1], 1e-6)) /
+		   FOREST_FIT_MARGIN;
 	/* view metres to clip: scaled about the view's centre onto the rect's centre */
-	sc[0] = 2.0 * *px_per_m / width;
-	sc[1] = 2.0 * *px_per_m / height;
+	sc[0] = 2.0 * px_per_m / width;
+	sc[1] = 2.0 * px_per_m / height;
 	sc[2] = -2.0 / (fmax(hi[2] - lo[2], 1e-6) * FOREST_FIT_MARGIN);
 	camera_matrix(xf, cam);
 	for (int k = 0; k < 3; k++)
@@ -239,21 +323,106 @@ static void fit(const struct forest_scene *s, const struct camera_xf *xf,
 	render_mat4_mul(box, cam, out);
 }
 
-/* The frame's uniforms: the scene's wind at t (its loop), nothing growing. */
-static void frame_at(const struct forest_scene *s, double t, struct app_live_frame *fr)
+/* The camera: once round the forest in FOREST_CAMERA_TURN_S, a little from above. */
+#define FOREST_CAMERA_TURN_S 120.0
+#define FOREST_CAMERA_PITCH_DEG 24.0
+
+/* Whether the newest tree (the scene's last) grows in at now_us: it joined at
+ * app->forest_joined_us (0: none grows) and its growth is not over; *age seconds in. */
+static bool growing_at(const struct app *app, uint64_t now_us, double *age)
 {
-	memset(fr, 0, sizeof(*fr));
-	fr->moving = true;
-	fr->front = FLT_MAX;
-	fr->swell = 1.0;
-	if (s->wind.strength > 0.0)
-		live_wind_frame(&s->wind, t, live_wind_angle(&s->wind, t), &fr->wind);
+	const struct forest_scene *s = app->forest;
+	uint64_t joined = app->forest_joined_us;
+
+	if (joined == 0 || now_us == UINT64_MAX || s->ntrees == 0)
+		return false;
+	/* a moment before it joined (a clock stepped back) is its growth's start */
+	*age = now_us > joined ? (double)(now_us - joined) * 1e-6 : 0.0;
+	return *age < s->trees[s->ntrees - 1].grow.duration;
 }
 
-static void draw_part(struct render *r, const struct render_mesh *rm,
-		      const struct render_live_data *d, GLuint trunk, bool tinted)
+void render_forest_frame_at(const struct app *app, uint64_t now_us,
+			    struct render_forest_frame *out)
 {
-	if (rm->count == 0 || !d->ok)
+	const struct forest_scene *s = app->forest;
+	struct layout_rect rect = forest_rect(&app->screen);
+	double t = now_us == UINT64_MAX ? 0.0 : (double)now_us / 1e6;
+	double yaw = fmod(360.0 * t / FOREST_CAMERA_TURN_S, 360.0) - 180.0;
+	struct vec3 l = vec3_norm_or(vec3(forest_light[0], forest_light[1], forest_light[2]),
+				     vec3(0.0, 1.0, 0.0));
+	struct camera_xf xf;
+
+	memset(out, 0, sizeof(*out));
+	camera_xf_init(&xf, camera_normalize(yaw, FOREST_CAMERA_PITCH_DEG),
+		       vec3(s->center[0], s->center[1] + 0.4 * s->top, s->center[2]));
+	fit(s, &xf, &rect, app->screen.width, app->screen.height, out->mvp);
+	out->light[0] = (float)l.x;
+	out->light[1] = (float)l.y;
+	out->light[2] = (float)l.z;
+	/* the scene's wind at t (its loop); every tree drawn whole */
+	out->live.moving = true;
+	out->live.front = FLT_MAX;
+	out->live.swell = 1.0;
+	if (s->wind.strength > 0.0)
+		live_wind_frame(&s->wind, t, live_wind_angle(&s->wind, t), &out->live.wind);
+	if (s->wind.loop > 0.0)
+		out->loop_u = fmod(t, s->wind.loop) / s->wind.loop;
+	/* the newest tree grows in as a tree does on the drawing screen (live_grow) */
+	out->growing = growing_at(app, now_us, &out->age);
+	if (out->growing) {
+		const struct live_grow *g = &s->trees[s->ntrees - 1].grow;
+
+		out->front = live_grow_front(g, out->age);
+		out->swell = g->swell;
+	}
+}
+
+/* A range [first, end) of rm's indices, with the program in use; the mesh's data
+ * pointers as render_mesh_draw sets them (a mesh gone up without indices has one
+ * vertex an index, in their order). */
+static void draw_range(struct render *r, const struct render_mesh *rm, size_t first,
+		       size_t end, bool tinted)
+{
+	GLsizei count = (GLsizei)(end - first);
+
+	if (end <= first)
+		return;
+	if (tinted) {
+		glBindBuffer(GL_ARRAY_BUFFER, rm->tints);
+		glVertexAttribPointer(ATTR_TINT, 3, GL_FLOAT, GL_FALSE, 0, NULL);
+		glEnableVertexAttribArray(ATTR_TINT);
+	}
+	glBindBuffer(GL_ARRAY_BUFFER, rm->positions);
+	glVertexAttribPointer(ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, 0, NULL);
+	glBindBuffer(GL_ARRAY_BUFFER, rm->normals);
+	glVertexAttribPointer(ATTR_NORMAL, 3, GL_FLOAT, GL_FALSE, 0, NULL);
+	if (rm->indexed) {
+		glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, rm->indices);
+		glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT,
+			       (const void *)(uintptr_t)(first * sizeof(uint32_t)));
+		glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+	} else {
+		glDrawArrays(GL_TRIANGLES, (GLint)first, count);
+	}
+	glBindBuffer(GL_ARRAY_BUFFER, 0);
+	if (tinted)
+		glDisableVertexAttribArray(ATTR_TINT);
+	r->stats.draw_calls++;
+	r->stats.triangles += (end - first) / 3;
+	r->stats.tree_triangles += (end - first) / 3;
+}
+
+/*
+ * The bark or the leaves of every tree with its data. Settled, the whole mesh in one
+ * call; while the newest tree grows in (its indices the last, from `newest`), the others
+ * in one call as settled and the newest in another with its growth's front and swell.
+ */
+static void draw_part(struct render *r, const struct render_live_program *p,
+		      const struct render_mesh *rm, const struct render_live_data *d,
+		      GLuint trunk, bool tinted, const struct render_forest_frame *fr,
+		      size_t newest)
+{
+	if (rm->count == 0 || !d->ok || (tinted && !rm->tints))
 		return;
 	render_live_pointers(d->vbo, ATTR_LIVE, 0);
 	glBindBuffer(GL_ARRAY_BUFFER, trunk);
@@ -261,27 +430,37 @@ static void draw_part(struct render *r, const struct render_mesh *rm,
 	for (GLuint i = 0; i < ATTR_LIVE_COUNT; i++)
 		glEnableVertexAttribArray(ATTR_LIVE + i);
 	glEnableVertexAttribArray(ATTR_TRUNK);
-	if (tinted)
-		render_mesh_draw_tinted(r, rm);
-	else
-		render_mesh_draw(r, rm);
+	if (!fr->growing) {
+		if (tinted)
+			render_mesh_draw_tinted(r, rm);
+		else
+			render_mesh_draw(r, rm);
+	} else {
+		draw_range(r, rm, 0, newest, tinted);
+		glUniform1f(p->front, (float)fr->front);
+		glUniform1f(p->swell, (float)fr->swell);
+		draw_range(r, rm, newest, (size_t)rm->count, tinted);
+		glUniform1f(p->front, (float)fr->live.front);
+		glUniform1f(p->swell, (float)fr->live.swell);
+	}
 	for (GLuint i = 0; i < ATTR_LIVE_COUNT; i++)
 		glDisableVertexAttribArray(ATTR_LIVE + i);
 	glDisableVertexAttribArray(ATTR_TRUNK);
 }
 
-static void use(struct render *r, int which, const float mvp[16], const float light[3],
-		const struct app_live_frame *fr, double loop_u)
+static const struct render_live_program *use(struct render *r, int which,
+					     const struct render_forest_frame *fr)
 {
 	struct render_forest *f = &r->forest;
 	const struct render_live_program *p = which ? &f->tinted : &f->plain;
 
 	glUseProgram(p->tree.program);
-	glUniformMatrix4fv(p->tree.mvp, 1, GL_FALSE, mvp);
-	glUniform3fv(p->tree.light, 1, light);
-	render_live_frame_uniforms(p, fr, f->wscale);
-	glUniform1f(f->loop_u[which], (float)loop_u);
+	glUniformMatrix4fv(p->tree.mvp, 1, GL_FALSE, fr->mvp);
+	glUniform3fv(p->tree.light, 1, fr->light);
+	render_live_frame_uniforms(p, &fr->live, f->wscale);
+	glUniform1f(f->loop_u[which], (float)fr->loop_u);
 	r->lit = p->tree;
+	return p;
 }
 
 bool render_forest_shown(const struct render *r, const struct app *app, uint64_t now_us)
@@ -289,65 +468,58 @@ bool render_forest_shown(const struct render *r, const struct app *app, uint64_t
 	return r->forest.plain.tree.program && app_forest_at(app, now_us);
 }
 
-/* The camera: once round the forest in FOREST_CAMERA_TURN_S, a little from above. */
-#define FOREST_CAMERA_TURN_S 120.0
-#define FOREST_CAMERA_PITCH_DEG 24.0
-
 int render_forest_draw(struct render *r, const struct app *app, uint64_t now_us)
 {
 	struct render_forest *f = &r->forest;
 	const struct forest_scene *s = app->forest;
-	struct layout_rect rect = forest_rect(&app->screen);
-	double t = now_us == UINT64_MAX ? 0.0 : (double)now_us / 1e6, px, c[3], loop_u = 0.0;
-	double yaw = fmod(360.0 * t / FOREST_CAMERA_TURN_S, 360.0) - 180.0;
-	struct camera_xf xf;
-	struct app_live_frame fr;
-	struct vec3 l = vec3_norm_or(vec3(forest_light[0], forest_light[1], forest_light[2]),
-				     vec3(0.0, 1.0, 0.0));
-	float mvp[16], light[3] = { (float)l.x, (float)l.y, (float)l.z }, leaf[3];
+	const struct forest_scene_tree *newest;
+	const struct render_live_program *p;
+	struct render_forest_frame fr;
+	float leaf[3];
 	bool leaves = leaf_tint_uniform(app->tree.season, leaf);
 	int ret = upload(r, s);
 
 	if (ret < 0)
 		return ret;
-	camera_xf_init(&xf, camera_normalize(yaw, FOREST_CAMERA_PITCH_DEG),
-		       vec3(s->center[0], s->center[1] + 0.4 * s->top, s->center[2]));
-	fit(s, &xf, &rect, app->screen.width, app->screen.height, mvp, &px, c);
-	f->xf = xf;
-	f->px_per_m = px;
-	memcpy(f->c, c, sizeof(f->c));
-	if (s->wind.loop > 0.0)
-		loop_u = fmod(t, s->wind.loop) / s->wind.loop;
-	frame_at(s, t, &fr);
+	render_forest_frame_at(app, now_us, &fr);
+	memcpy(f->mvp, fr.mvp, sizeof(f->mvp));
+	newest = &s->trees[s->ntrees - 1];
+	/* the newest tree's ranges are the meshes' last (forest_scene_build), as uploaded */
+	if (fr.growing && (newest->bark_indices[1] != (size_t)f->bark.count ||
+			   newest->leaves_indices[1] != (size_t)f->leaves.count))
+		fr.growing = false;
 
 	glEnable(GL_DEPTH_TEST);
 	glDepthFunc(GL_LESS);
 	glDisable(GL_BLEND);
 	/* the ground, still */
 	glUseProgram(r->tree_program);
-	glUniformMatrix4fv(r->tree_mvp, 1, GL_FALSE, mvp);
-	glUniform3fv(r->tree_light, 1, light);
+	glUniformMatrix4fv(r->tree_mvp, 1, GL_FALSE, fr.mvp);
+	glUniform3fv(r->tree_light, 1, fr.light);
 	glUniform1i(r->tree_two_sided, 1);
 	glUniform3fv(r->tree_color, 1, forest_ground);
 	glEnableVertexAttribArray(ATTR_NORMAL);
 	render_mesh_draw(r, &f->ground);
-	/* the bark of every tree, one call */
-	use(r, 0, mvp, light, &fr, loop_u);
+	/* the bark of every tree, one call (two while the newest grows in) */
+	p = use(r, 0, &fr);
 	glEnable(GL_CULL_FACE);
 	glCullFace(GL_BACK);
 	glUniform1i(f->plain.tree.two_sided, 0);
 	glUniform3fv(f->plain.tree.color, 1, forest_bark);
-	draw_part(r, &f->bark, &f->bark_live, f->bark_trunk, false);
+	draw_part(r, p, &f->bark, &f->bark_live, f->bark_trunk, false, &fr,
+		  newest->bark_indices[0]);
 	glDisable(GL_CULL_FACE);
-	/* the leaves of every tree, one call, in their season's colours (none in winter) */
+	/* the leaves of every tree, one call (two), in their season's colours (none in winter) */
 	if (leaves && f->tinted_leaves) {
-		use(r, 1, mvp, light, &fr, loop_u);
+		p = use(r, 1, &fr);
 		glUniform1i(f->tinted.tree.two_sided, 1);
-		draw_part(r, &f->leaves, &f->leaves_live, f->leaves_trunk, true);
+		draw_part(r, p, &f->leaves, &f->leaves_live, f->leaves_trunk, true, &fr,
+			  newest->leaves_indices[0]);
 	} else if (leaves) {
 		glUniform1i(f->plain.tree.two_sided, 1);
 		glUniform3fv(f->plain.tree.color, 1, leaf);
-		draw_part(r, &f->leaves, &f->leaves_live, f->leaves_trunk, false);
+		draw_part(r, p, &f->leaves, &f->leaves_live, f->leaves_trunk, false, &fr,
+			  newest->leaves_indices[0]);
 	}
 	/* ATTR_NORMAL stays enabled: it is the flat program's ATTR_COLOR, which the frame
 	 * enabled for the UI's batch */
@@ -356,32 +528,198 @@ int render_forest_draw(struct render *r, const struct app *app, uint64_t now_us)
 	return 0;
 }
 
-/* Each tree's number on a small card at its foot, where the camera shows it. */
+/* The numbers' size: as the attract screen's words, a fraction of the screen's height. */
+static int label_px(const struct app *app)
+{
+	return (int)fmax(8.0, round(0.028 * app->screen.height));
+}
+
+/* Whether the digits' glyphs are where they were when the quads were built (the font or
+ * its atlas may have been set again since, at the same address). */
+static bool digits_current(struct render_forest_labels *l, struct font *font, int px)
+{
+	for (int d = 0; d < 10; d++) {
+		const struct font_glyph *g;
+
+		if (!(l->used & 1u << d))
+			continue;
+		g = font_glyph(font, (uint32_t)('0' + d), px);
+		if (!g || memcmp(g, &l->digits[d], sizeof(*g)) != 0)
+			return false;
+	}
+	return true;
+}
+
+bool render_forest_labels_current(struct render *r, const struct app *app)
+{
+	struct render_forest_labels *l = &r->forest.labels;
+	int px = label_px(app);
+
+	return l->ok && l->of == app->forest && l->serial == app->forest->serial &&
+	       l->font == r->text.font && l->px == px && digits_current(l, r->text.font, px);
+}
+
+/*
+ * Tree t's label into the batch b (emptied first) as the batch lays out a card and its
+ * text, with the foot at the origin: a rounded card 1.2 px tall under the foot, the
+ * number centred on it, its origin at a whole pixel there (the glyphs' corners from
+ * it). *ncard: the card's vertices (the first); o: the text's origin from the foot.
+ */
+static void label_layout(struct batch *b, struct font *font, int px,
+			 const struct forest_scene_tree *t, size_t *ncard, float o[2])
+{
+	char num[24];
+	struct text_extent e;
+
+	snprintf(num, sizeof(num), "%llu", (unsigned long long)t->number);
+	text_measure(font, num, px, &e);
+	batch_reset(b);
+	batch_rounded_rect(b, -0.5 * e.width - 0.3 * px, 0.15 * px, e.width + 0.6 * px, 1.2 * px,
+			   0.3 * px, label_card);
+	*ncard = b->nvertices;
+	text_draw(b, font, num, px, 0.0, 0.0, label_ink);
+	o[0] = (float)(-0.5 * e.width);
+	o[1] = (float)(0.15 * px + 0.6 * px + 0.5 * (e.ascent - e.descent));
+}
+
+/* The batch's vertices of tree t's label (its first ncard the card's) as the GPU's. */
+static void label_vertices(const struct batch *b, size_t ncard, const float o[2],
+			   const struct forest_scene_tree *t, struct label_vertex *out)
+{
+	for (size_t v = 0; v < b->nvertices; v++) {
+		const float *bv = &b->v[v * BATCH_FLOATS_PER_VERTEX];
+		struct label_vertex *w = &out[v];
+		bool glyph = v >= ncard;
+
+		for (int k = 0; k < 3; k++)
+			w->foot[k] = (float)t->position[k];
+		w->place[0] = glyph ? o[0] : bv[0];
+		w->place[1] = glyph ? o[1] : bv[1];
+		w->place[2] = glyph ? bv[0] : 0.0f;
+		w->place[3] = glyph ? bv[1] : 0.0f;
+		w->uv[0] = bv[2];
+		w->uv[1] = bv[3];
+		w->uv[2] = glyph ? 1.0f : 0.0f;
+	}
+}
+
+/* Room for n label vertices in *v (*cap of them). */
+static int reserve_labels(struct label_vertex **v, size_t *cap, size_t n)
+{
+	struct label_vertex *w;
+	size_t c = *cap ? *cap : 1024;
+
+	if (n <= *cap)
+		return 0;
+	while (c < n && c <= SIZE_MAX / 2 / sizeof(*w))
+		c *= 2;
+	if (c < n || !(w = realloc(*v, c * sizeof(*w))))
+		return -ENOMEM;
+	*v = w;
+	*cap = c;
+	return 0;
+}
+
+/* Every tree's label, built and uploaded: once a scene (O(trees)). 0 or -ENOMEM. */
+static int labels_build(struct render *r, const struct app *app)
+{
+	struct render_forest_labels *l = &r->forest.labels;
+	const struct forest_scene *s = app->forest;
+	struct font *font = r->text.font;
+	int px = label_px(app);
+	struct label_vertex *v = NULL;
+	size_t n = 0, cap = 0;
+	struct batch b;
+	int ret = 0;
+
+	l->ok = false;
+	l->used = 0;
+	batch_init(&b);
+	for (size_t i = 0; i < s->ntrees && ret == 0; i++) {
+		size_t ncard;
+		float o[2];
+
+		label_layout(&b, font, px, &s->trees[i], &ncard, o);
+		ret = b.failed ? -ENOMEM : reserve_labels(&v, &cap, n + b.nvertices);
+		if (ret < 0)
+			break;
+		label_vertices(&b, ncard, o, &s->trees[i], v + n);
+		n += b.nvertices;
+		for (uint64_t k = s->trees[i].number;; k /= 10) {
+			l->used |= 1u << (k % 10);
+			if (k < 10)
+				break;
+		}
+	}
+	batch_finish(&b);
+	/* the digits' glyphs as they are now: the quads hold their places */
+	for (int d = 0; d < 10 && ret == 0; d++) {
+		const struct font_glyph *g;
+
+		if (!(l->used & 1u << d))
+			continue;
+		g = font_glyph(font, (uint32_t)('0' + d), px);
+		if (!g)
+			ret = -ENOMEM;
+		else
+			l->digits[d] = *g;
+	}
+	if (ret == 0 && n > (size_t)INT32_MAX / sizeof(*v))
+		ret = -ENOMEM;
+	if (ret == 0) {
+		if (!l->vbo)
+			glGenBuffers(1, &l->vbo);
+		glBindBuffer(GL_ARRAY_BUFFER, l->vbo);
+		glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(n * sizeof(*v)), n ? v : NULL,
+			     GL_STATIC_DRAW);
+		glBindBuffer(GL_ARRAY_BUFFER, 0);
+		l->count = (GLsizei)n;
+		l->of = s;
+		l->serial = s->serial;
+		l->font = font;
+		l->px = px;
+		l->ok = true;
+		l->builds++;
+		r->stats.uploads++;
+	}
+	free(v);
+	return ret;
+}
+
+/* Each tree's number on a small card at its foot, where the camera shows it: one call,
+ * under the batch's words and shapes. */
 void render_forest_labels(struct render *r, const struct app *app)
 {
-	const struct render_forest *f = &r->forest;
-	const struct forest_scene *s = app->forest;
-	const struct ui_text *t = &r->text;
-	struct layout_rect rect = forest_rect(&app->screen);
-	int px = (int)fmax(8.0, round(0.028 * app->screen.height));
-	const struct rgba card = { 1.0f, 0.992f, 0.965f, 0.85f }, ink = { 0.13f, 0.11f, 0.09f, 1.0f };
+	struct render_forest_labels *l = &r->forest.labels;
+	GLsizei stride = sizeof(struct label_vertex);
 
-	if (!f->drawn || !s || !t->font)
+	if (!r->forest.drawn || !app->forest || !r->text.font)
 		return;
-	for (size_t i = 0; i < s->ntrees; i++) {
-		const struct forest_scene_tree *tr = &s->trees[i];
-		struct vec3 v = camera_to_view(&f->xf, vec3(tr->position[0], tr->position[1],
-							    tr->position[2]));
-		double x = rect.x + 0.5 * rect.w + f->px_per_m * (v.x - f->c[0]);
-		double y = rect.y + 0.5 * rect.h - f->px_per_m * (v.y - f->c[1]);
-		char num[24];
-		struct text_extent e;
-
-		snprintf(num, sizeof(num), "%llu", (unsigned long long)tr->number);
-		text_measure(t->font, num, px, &e);
-		batch_rounded_rect(&r->batch, x - 0.5 * e.width - 0.3 * px, y + 0.15 * px,
-				   e.width + 0.6 * px, 1.2 * px, 0.3 * px, card);
-		text_draw(&r->batch, t->font, num, px, x - 0.5 * e.width,
-			  y + 0.15 * px + 0.6 * px + 0.5 * (e.ascent - e.descent), ink);
-	}
+	if (!render_forest_labels_current(r, app) && labels_build(r, app) < 0)
+		return;
+	if (l->count == 0 || render_text_sync(r) < 0)
+		return;
+	glUseProgram(l->program);
+	glUniformMatrix4fv(l->mvp, 1, GL_FALSE, r->forest.mvp);
+	glUniform2f(l->screen, (float)app->screen.width, (float)app->screen.height);
+	glUniform2f(l->texel, 1.0f / (float)r->atlas.w, 1.0f / (float)r->atlas.h);
+	glUniform1i(l->atlas, 0);
+	glUniform4f(l->card, label_card.r, label_card.g, label_card.b, label_card.a);
+	glUniform4f(l->ink, label_ink.r, label_ink.g, label_ink.b, label_ink.a);
+	glBindBuffer(GL_ARRAY_BUFFER, l->vbo);
+	glVertexAttribPointer(ATTR_POSITION, 3, GL_FLOAT, GL_FALSE, stride, NULL);
+	glVertexAttribPointer(ATTR_LABEL_PLACE, 4, GL_FLOAT, GL_FALSE, stride,
+			      (const void *)offsetof(struct label_vertex, place));
+	glVertexAttribPointer(ATTR_LABEL_UV, 3, GL_FLOAT, GL_FALSE, stride,
+			      (const void *)offsetof(struct label_vertex, uv));
+	glEnableVertexAttribArray(ATTR_LABEL_PLACE);
+	glEnableVertexAttribArray(ATTR_LABEL_UV);
+	glDrawArrays(GL_TRIANGLES, 0, l->count);
+	/* the other programs do not read them (ATTR_POSITION stays, as everyone's) */
+	glDisableVertexAttribArray(ATTR_LABEL_PLACE);
+	glDisableVertexAttribArray(ATTR_LABEL_UV);
+	glBindBuffer(GL_ARRAY_BUFFER, 0);
+	glBindTexture(GL_TEXTURE_2D, 0);
+	r->stats.draw_calls++;
+	r->stats.triangles += (size_t)l->count / 3;
 }

@@ -18,6 +18,7 @@
 #include "atlas.h"
 #include "batch.h"
 #include "camera.h"
+#include "font.h"
 #include "gen.h"
 #include "leaf_instances.h"
 #include "live.h"
@@ -131,8 +132,27 @@ struct render_live {
 	bool *inst_mark;
 };
 
+/* The trees' numbers of today's forest on the GPU (render_forest.c): every label's quads
+ * built once a scene (of at serial), at px pixels to the em with the font's digits where
+ * they were then (digits[d] for each digit d in `used`); its program projects each
+ * vertex's tree foot and adds the vertex's pixel offset. */
+struct render_forest_labels {
+	GLuint program;
+	GLint mvp, screen, texel, atlas, card, ink;
+	GLuint vbo;
+	GLsizei count;      /* vertices */
+	const struct forest_scene *of;
+	uint64_t serial;
+	const struct font *font;
+	int px;
+	unsigned used;      /* bit d: digit d is in a number */
+	struct font_glyph digits[10];
+	bool ok;
+	size_t builds;      /* how many times they were built (tests, benchmarks) */
+};
+
 /* Today's forest on the attract screen (render_forest.c): its programs, the scene's meshes
- * and data as they went up (of at serial), and this frame's camera for the labels. */
+ * and data as they went up (of at serial), this frame's matrix, and the numbers. */
 struct render_forest {
 	struct render_live_program plain, tinted;
 	GLint loop_u[2];
@@ -144,8 +164,18 @@ struct render_forest {
 	uint64_t serial;
 	bool ok, tinted_leaves;
 	bool drawn;              /* this frame */
-	struct camera_xf xf;     /* this frame's camera... */
-	double px_per_m, c[3];   /* ...its scale and the view's centre */
+	float mvp[16];           /* this frame's world to clip */
+	struct render_forest_labels labels;
+};
+
+/* What a frame of the forest needs, all of it computed on the CPU before any GL call
+ * (render_forest_frame_at): O(1), whatever the number of trees. */
+struct render_forest_frame {
+	float mvp[16], light[3];
+	struct app_live_frame live; /* the wind's numbers; every tree drawn whole */
+	double loop_u;              /* the wind's loop's fraction */
+	bool growing;               /* the newest tree grows in: */
+	double age, front, swell;   /* its age (s), its growth's front and swell (m) */
 };
 
 struct render {
@@ -291,15 +321,23 @@ void render_instanced_clear(struct render *r);
 
 /* render_forest.c: today's forest on the attract screen, its GPU copy known by the
  * scene's address and serial (the platform keeps one scene and builds it again).
- * create: 0, or -1 (stderr says why; the attract screen then shows the drawing, as before). shown: whether the frame
- * at now_us shows it (app_forest_at, and the programs are there). draw: the ground and
- * the trees in the canvas; 0 or a negative errno. labels: each tree's number, into the
- * batch, after draw. */
+ * create: 0, or -1 (stderr says why; the attract screen then shows the drawing, as
+ * before). shown: whether the frame at now_us shows it (app_forest_at, and the programs
+ * are there). draw: the ground and the trees in the canvas (the newest tree growing in
+ * while it does); 0 or a negative errno. labels: each tree's number at its foot, after
+ * draw, in one call of their own (under what the batch holds). */
 int render_forest_create(struct render *r);
 void render_forest_finish(struct render *r);
 bool render_forest_shown(const struct render *r, const struct app *app, uint64_t now_us);
 int render_forest_draw(struct render *r, const struct app *app, uint64_t now_us);
 void render_forest_labels(struct render *r, const struct app *app);
+/* The CPU's part of a frame of app->forest (a scene with a tree) at now_us: the camera,
+ * the wind's numbers, the newest tree's growth (app->forest_joined_us); no GL. */
+void render_forest_frame_at(const struct app *app, uint64_t now_us,
+			    struct render_forest_frame *out);
+/* Whether the numbers' quads on the GPU are the scene's at this screen's size and font
+ * (else render_forest_labels builds them again): O(1), no GL. */
+bool render_forest_labels_current(struct render *r, const struct app *app);
 void render_instanced_finish(struct render *r);
 
 /* render_text.c: the atlas and its texture. init: 0 or -ENOMEM (stderr says why). sync:

@@ -351,8 +351,9 @@ const struct mesh *app_wood_bark_at(const struct app *app, uint64_t now_us);
 int app_set_wind(struct app *app, double strength);
 void app_set_grow_in(struct app *app, bool on);
 /*
- * Whether the tree moves at now_us (UINT64_MAX, the settled view: never), and, out not
- * NULL, what the living programs need then: the growth's front while the tree grows in
+ * Whether the tree moves at now_us (UINT64_MAX, the settled view: never); out NULL, or
+ * today's forest shows (app_forest_at: it moves by itself, the kiosk draws frames). And,
+ * out not NULL, what the living programs need then: the growth's front while the tree grows in
  * (a pen tip or button put down finishes it), the wind's frame at its drifting angle.
  * O(1): the same few numbers whatever the tree.
  */

@@ -193,8 +193,10 @@ bool app_live_at(const struct app *app, uint64_t now_us, struct app_live_frame *
 		    app_live_skeleton(app);
 	bool growing = app_live_growing_at(app, now_us);
 
+	/* today's forest on the attract screen moves by itself too, whatever the drawing: its
+	 * camera travels round, its trees sway, its newest grows in (render_forest.c) */
 	if (!out)
-		return wind || growing;
+		return wind || growing || app_forest_at(app, now_us);
 	*out = (struct app_live_frame){ .moving = wind || growing, .growing = growing };
 	if (!out->moving)
 		return false;

@@ -234,6 +234,11 @@ int forest_part_build(struct forest_part *p, const struct tree *t, uint64_t seed
  * living data is placed with them; the trunk's sway is folded into w0 against the
  * scene's wind (the tree that sways most's), so one frame's uniforms move every tree by
  * its own height; each tree's trunk harmonic and phase go per vertex (trunk[2 v], trunk[2 v + 1]).
+ *
+ * Each tree's growing in (`grow`, live_grow_setup's rule) is set up from D_max, the
+ * farthest path length any of its vertices is bound to (live_vertex.d, its level of
+ * detail's: the skeleton's own when the farthest branch is drawn), so that at the end of
+ * its growth every vertex the scene holds of it is drawn whole.
  */
 struct forest_scene_tree {
 	uint64_t number;
@@ -241,6 +246,7 @@ struct forest_scene_tree {
 	double height, crown_width;
 	size_t bark_vertices[2], bark_indices[2];     /* [first, end) */
 	size_t leaves_vertices[2], leaves_indices[2];
+	struct live_grow grow;                        /* its growing in */
 };
 struct forest_scene {
 	struct forest_scene_tree *trees;

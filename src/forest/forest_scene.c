@@ -164,6 +164,23 @@ static int place(struct mesh *to, struct live_attrs *live, uint8_t **trunk, size
 	return 0;
 }
 
+/*
+ * A part's growing in: live_grow_setup's rule from the farthest path length any of its
+ * vertices is bound to (what the screen draws of the tree: its level of detail may have
+ * left the skeleton's farthest twig out). A float d is what the shader compares, so the
+ * growth's end is past every one of them.
+ */
+static void grow_of(const struct forest_part *p, struct live_grow *g)
+{
+	struct live_skeleton sk = { .d_max = 0.0 }; /* live_grow_setup reads its d_max only */
+
+	for (size_t v = 0; v < p->bark.n; v++)
+		sk.d_max = fmax(sk.d_max, p->bark.v[v].d);
+	for (size_t v = 0; v < p->leaves.n; v++)
+		sk.d_max = fmax(sk.d_max, p->leaves.v[v].d);
+	live_grow_setup(g, &sk);
+}
+
 int forest_scene_build(struct forest_scene *s, const struct forest_part *const *parts,
 		       const uint64_t *numbers, const double *positions, size_t n)
 {
@@ -200,6 +217,7 @@ int forest_scene_build(struct forest_scene *s, const struct forest_part *const *
 		*t = (struct forest_scene_tree){ .number = numbers[i], .height = p->height,
 						 .crown_width = p->crown_width };
 		memcpy(t->position, &positions[3 * i], sizeof(t->position));
+		grow_of(p, &t->grow);
 		t->bark_vertices[0] = s->mesh.bark.nvertices;
 		t->bark_indices[0] = s->mesh.bark.nindices;
 		t->leaves_vertices[0] = l0;

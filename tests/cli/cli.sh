@@ -421,6 +421,10 @@ PY
 	run --forest "$d" --out "$T/f30" --idle 30
 	cmp -s "$T/f/screen.png" "$T/f30/screen.png" && fail "the forest's camera does not travel"
 	same_files "$T/f" "$T/f30" forest.json forest.glb
+	# --idle 2: the newest tree (cherry, No. 3) joined at the attract screen's moment 0,
+	# two seconds into its growth (its trunk and limbs, no twigs or leaves yet)
+	run --forest "$d" --out "$T/fg" --idle 2
+	cmp -s "$T/f30/screen.png" "$T/fg/screen.png" && fail "--idle 2 is --idle 30"
 	# forest.glb: a node a tree, named by its number, one wind; the Khronos validator
 	for i in 1 2 3; do
 		grep -aq "\"name\":\"tree-$i\"" "$T/f/forest.glb" || fail "forest.glb has no node tree-$i"
@@ -454,10 +458,13 @@ print("forest of 45: the newest 40 stand; the closest trunks %.2f times the sum 
 PY
 	if [ -n "${EDAHA_UPDATE_GOLDEN:-}" ]; then
 		cp "$T/f/screen.png" "$SRC/golden/forest-3.png"
+		cp "$T/fg/screen.png" "$SRC/golden/forest-3-growing.png"
 		cp "$T/m/screen.png" "$SRC/golden/forest-40.png"
 	else
 		"$IMGCMP" "$SRC/golden/forest-3.png" "$T/f/screen.png" ||
 			fail "the forest of three differs from golden"
+		"$IMGCMP" "$SRC/golden/forest-3-growing.png" "$T/fg/screen.png" ||
+			fail "the forest of three, its newest growing in, differs from golden"
 		"$IMGCMP" "$SRC/golden/forest-40.png" "$T/m/screen.png" ||
 			fail "the forest of forty differs from golden"
 	fi
@@ -476,7 +483,7 @@ PY
 	grep -q '^edaha-forest-day: 1$' "$T/state/forest-day" && grep -q '^first: 42$' "$T/state/forest-day" ||
 		{ cat "$T/state/forest-day"; fail "--forest-reset: not a new day from No. 42"; }
 	usage_says "--forest-reset goes with --config only" --forest-reset --stats
-	echo "a forest of three drawings (forest.json, forest.glb, screen.png), three skipped by name; the newest 40 of 45; --forest-reset"
+	echo "a forest of three drawings (forest.json, forest.glb, screen.png; the newest growing in at --idle 2), three skipped by name; the newest 40 of 45; --forest-reset"
 }
 
 # The wind on the screen (issue 26): with --wind S, --idle T shows the tree swaying at that

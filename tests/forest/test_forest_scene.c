@@ -13,7 +13,10 @@
  *   w0 scaled by the tree's own sway against the frame's (so the frame's amplitude times
  *   the weight is the tree's own: checked), never above 1; each vertex's trunk harmonic
  *   and phase its tree's; at most 300,000 triangles; the same bytes when built again; an
- *   empty forest empty, the serial bumped at each build.
+ *   empty forest empty, the serial bumped at each build;
+ * - each tree's growing in: live_grow_setup's rule from the farthest path length of its
+ *   vertices, so that at its end every vertex of it is a swell behind the front (drawn
+ *   whole) and at its start none but its foot's is drawn.
  */
 #include <math.h>
 #include <stdio.h>
@@ -42,7 +45,7 @@ int main(void)
 	struct forest_scene s, again;
 	struct rng r;
 	int cases = test_cases(60);
-	size_t checked = 0, most_tris = 0;
+	size_t checked = 0, most_tris = 0, grown = 0;
 	double worst_amp = 0.0;
 
 	rng_seed(&r, 2727);
@@ -100,6 +103,28 @@ int main(void)
 			check_range(&s.mesh.bark, t->bark_vertices, t->bark_indices);
 			check_range(&s.mesh.leaves, t->leaves_vertices, t->leaves_indices);
 			CHECK(scale <= 1.0 + 1e-12);
+			{
+				struct live_skeleton sk = { .d_max = 0.0 };
+				struct live_grow g;
+
+				for (size_t v = 0; v < p->bark.n; v++)
+					sk.d_max = fmax(sk.d_max, p->bark.v[v].d);
+				for (size_t v = 0; v < p->leaves.n; v++)
+					sk.d_max = fmax(sk.d_max, p->leaves.v[v].d);
+				live_grow_setup(&g, &sk);
+				CHECK(!memcmp(&g, &t->grow, sizeof(g)));
+				CHECK(t->grow.duration >= LIVE_GROW_MIN_S &&
+				      t->grow.duration <= LIVE_GROW_MAX_S);
+				for (size_t v = t->bark_vertices[0]; v < t->bark_vertices[1]; v++) {
+					float d = s.bark.v[v].d;
+
+					CHECK(live_grow_pull(&t->grow, live_grow_front(&t->grow, 1e9), d) == 1.0);
+					CHECK(live_grow_visible(live_grow_front(&t->grow, 0.0), d) == (d <= 0.0f));
+					grown++;
+				}
+				for (size_t v = t->leaves_vertices[0]; v < t->leaves_vertices[1]; v++)
+					CHECK(live_grow_pull(&t->grow, t->grow.d_end, s.leaves.v[v].d) == 1.0);
+			}
 			for (size_t v = 0; v < p->mesh.bark.nvertices; v++) {
 				size_t w = t->bark_vertices[0] + v;
 				const struct live_vertex *a = &p->bark.v[v], *b = &s.bark.v[w];
@@ -137,7 +162,8 @@ int main(void)
 	forest_scene_finish(&s);
 	forest_scene_finish(&again);
 	printf("forest scene: %d random forests, %zu bark vertices placed as their parts; the "
-	       "largest %zu triangles; the shared frame's trunk sway the tree's own within %.1g m\n",
-	       cases, checked, most_tris, worst_amp);
+	       "largest %zu triangles; the shared frame's trunk sway the tree's own within %.1g m; "
+	       "%zu bark vertices drawn whole at their tree's growth's end\n",
+	       cases, checked, most_tris, worst_amp, grown);
 	return 0;
 }

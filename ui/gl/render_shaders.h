@@ -53,7 +53,10 @@ extern const float render_paper[3];
  * the wind, the sum live_wind_frame_offset computes (src/live/live_wind.c), its leaf
  * distance taken from p. u_unfolding 1: not pulled (an origami leaf drawn at its
  * unfolding keyframe instead, render_instanced_grow.c). v_front < 0: past the front, not
- * drawn (the fragment shader).
+ * drawn (the fragment shader). The forest's caps it at the swell, so that a triangle
+ * grown whole has one value all over it: multisampling takes a pixel's varyings at its
+ * centre, outside a sliver that covers some of its samples, where the front's would be
+ * extrapolated (below 0 on a steep one: a sample lost, a pixel off the settled frame).
  */
 #define RENDER_LIVE_VS_DECLS                                                               \
 	"#ifdef LIVE\n"                                                                    \
@@ -92,7 +95,11 @@ extern const float render_paper[3];
 	"		+ u_amp_leaf * length(p - a_live0.xyz)\n"                        \
 	"		  * sin(u_theta.w + a_phase.x * k) * (a_flutter.xyz / 127.0);\n" \
 	"	float f = max(smoothstep(0.0, u_swell, u_front - a_live0.w), u_unfolding);\n" \
+	"#ifdef FOREST\n"                                                                  \
+	"	v_front = min(u_front - a_live0.w, u_swell);\n"                           \
+	"#else\n"                                                                          \
 	"	v_front = u_front - a_live0.w;\n"                                          \
+	"#endif\n"                                                                         \
 	"	return p * f + a_live0.xyz * (1.0 - f) + wind;\n"                          \
 	"}\n"                                                                              \
 	"#endif\n"
