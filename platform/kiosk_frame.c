@@ -74,8 +74,8 @@ void kiosk_draw_frame(struct kiosk *k)
 	k->animating = app_vines_advance(k->app, t);
 	k->animating = kiosk_animating_at(k->app, t, app_camera_at(k->app, t, &cam)) || k->animating;
 	/* the wind or a growth: frames keep coming at the display's rate, up to max_fps */
-	/* today's forest on the attract screen: its camera travels, its trees sway */
-	k->living = app_live_at(k->app, t, NULL) || app_forest_at(k->app, t);
+	/* today's forest on the attract screen counts: its camera travels (app_live_at) */
+	k->living = app_live_at(k->app, t, NULL);
 	kiosk_look_of(k->app, t, &k->drawn);
 	k->drawn_valid = true;
 	ret = render_frame_at(k->render, k->app, t);
