@@ -128,9 +128,11 @@ double forest_tree_crown_width(const struct tree *t);
  *   centroid (by area) moved along that axis to their outer face (their farthest vertex
  *   on the side away from the centre of all the leaves' centroids), covering every one
  *   of their vertices seen along it (sides at least FOREST_LOD_CARD_MIN_M), one-sided
- *   (counter-clockwise about its normal) and drawn double-sided as leaves are. Cards are
- *   numbered in the order of their first leaf. When cards leave room (a card a leaf),
- *   the bark is made again with all the leaves leave.
+ *   (counter-clockwise about its normal) and drawn double-sided as leaves are; along each
+ *   of +-x, +-y, +-z the card of the leaf that reaches farthest is stretched in its
+ *   plane until it reaches as far. Cards are numbered in the order of their first leaf.
+ *   When cards leave room (a card a leaf), the bark is made again with all the leaves
+ *   leave.
  * Never more than max_triangles, but never less than the trunk at the coarsest level
  * and (with leaves) one card: a budget below that (0 too) gets that, and st->over_budget
  * says so. Same tree and budget, same bytes; the meshes are the same in every season

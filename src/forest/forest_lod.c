@@ -578,6 +578,63 @@ static void card_min(double *lo, double *hi)
 	}
 }
 
+/* How far card cd reaches along unit d: its farthest corner. */
+static double card_far(const struct lod_card *cd, struct vec3 d)
+{
+	double cu = vec3_dot(cd->u, d), cv = vec3_dot(cd->v, d);
+
+	return vec3_dot(cd->c, d) + fmax(cd->umin * cu, cd->umax * cu) +
+	       fmax(cd->vmin * cv, cd->vmax * cv);
+}
+
+/*
+ * The leaves' outline kept: along each of +-x, +-y, +-z, the card of the leaf whose vertex
+ * reaches farthest (the first such) is stretched in its plane, on the side of u or v that
+ * points most along that way, until it reaches as far. A card on its leaves' outer face
+ * misses their far vertex by as much as their depth along its normal where that normal
+ * leans away from the axis.
+ */
+static void cards_outline(struct lod_card *cards, const struct lod_leaf *leaves, size_t n,
+			  const struct mesh *lm)
+{
+	for (int d = 0; d < OUTLINE_DIRS; d++) {
+		struct vec3 dir = vec3(d / 2 == 0, d / 2 == 1, d / 2 == 2);
+		double far = -INFINITY, short_by, cu, cv;
+		struct lod_card *cd = NULL;
+
+		if (d % 2)
+			dir = vec3_scale(dir, -1.0);
+		for (size_t i = 0; i < n; i++) {
+			for (size_t v = leaves[i].v0; v < leaves[i].v1; v++) {
+				double x = vec3_dot(vertex(lm, v), dir);
+
+				if (x > far) {
+					far = x;
+					cd = &cards[leaves[i].card];
+				}
+			}
+		}
+		if (!cd)
+			return;
+		short_by = far - card_far(cd, dir);
+		cu = vec3_dot(cd->u, dir);
+		cv = vec3_dot(cd->v, dir);
+		if (!(short_by > 0.0) || !(fmax(fabs(cu), fabs(cv)) > 1e-9))
+			continue;
+		if (fabs(cu) >= fabs(cv)) {
+			if (cu > 0.0)
+				cd->umax += short_by / cu;
+			else
+				cd->umin += short_by / cu;
+		} else {
+			if (cv > 0.0)
+				cd->vmax += short_by / cv;
+			else
+				cd->vmin += short_by / cv;
+		}
+	}
+}
+
 static void card_emit(struct mesh *m, const struct lod_card *cd)
 {
 	const double su[4] = { cd->umin, cd->umax, cd->umax, cd->umin };
@@ -740,8 +797,10 @@ static int lod_cards(const struct tree *t, const struct mesh *lm, const struct t
 		card_outer(&cards[k], vec3_scale(vec3_add(lo, hi), 0.5));
 		card_min(&cards[k].umin, &cards[k].umax);
 		card_min(&cards[k].vmin, &cards[k].vmax);
-		card_emit(out, &cards[k]);
 	}
+	cards_outline(cards, leaves, n, lm);
+	for (size_t k = 0; k < ncards; k++)
+		card_emit(out, &cards[k]);
 	st->leaves_as_cards = n;
 	st->cards = ncards;
 	st->cell = g.h;
