@@ -5,11 +5,15 @@
  *
  * Per tree: the demo (its trace replayed through the app and lifted to 3D), cherry (a
  * functional tree's preset) and synthetic trees (tests/tools/synth_tree.c) of 62 and
- * 1,000 branches with 20,000 leaves in all (323 and 20 a branch): its own meshes
- * (tree_mesh_build: time, triangles), its height and crown width, and forest_lod_build at
- * 7,500 (300,000 / 40), 15,000 and 30,000 triangles: median time, triangles (bark +
- * leaves), the bark's level and sides, branches kept, cards. Then the growth of
- * forest_lod_build's time with the tree (62..1,000 branches, 20 leaves each, at 7,500).
+ * 1,000 branches with 20,000 leaves in all (323 and 20 a branch); then cherry grown twice
+ * (wood_grow, the default settings) and cherry with three of the kiosk's vines (morning
+ * glory scaled to its trunk as app_mode_vine.c scales it, planted round its foot): its own
+ * meshes (tree_mesh_build: time, triangles; the wood's bark and the vines' meshes
+ * counted in), its height and crown width, and forest_lod_build at 7,500 (300,000 / 40),
+ * 15,000 and 30,000 triangles: median time, triangles (bark + leaves), the bark's level
+ * and sides, branches kept, cards; for the last two the wood's triangles and the stems'
+ * (and their level). Then the growth of forest_lod_build's time with the tree (62..1,000
+ * branches, 20 leaves each, at 7,500).
  *
  * The forest: 10, 20 and 40 trees, the four above in turn, each with its share of 300,000
  * triangles by crown width (forest_lod_shares, water-filled by what each tree's own meshes
@@ -26,7 +30,10 @@
 #include <string.h>
 #include <time.h>
 
+#include <math.h>
+
 #include "app.h"
+#include "app_private.h"
 #include "bench_util.h"
 #include "egl_headless.h"
 #include "font_file.h"
@@ -37,11 +44,16 @@
 #include "mesh.h"
 #include "synth_tree.h"
 #include "tree.h"
+#include "vine.h"
+#include "vine_presets.h"
+#include "vine_support.h"
+#include "wood.h"
 
 #define REPS 7
 #define SEED 26
 #define FOREST_TRIANGLES 300000
-#define NKINDS 4
+#define NKINDS 4 /* the forest's rows' trees */
+#define NGROWN 2 /* and the per-tree rows' grown and vined trees */
 
 static const size_t budgets[] = { 7500, 15000, 30000 };
 
@@ -91,15 +103,68 @@ struct kind {
 	const char *name;
 	struct tree t;
 	double width;
-	size_t own;       /* its own meshes' triangles */
+	size_t own;       /* its own meshes' triangles (its wood's and vines' too) */
+	size_t in_wood, stems, vine_leaves;
 };
+
+/* n of the kiosk's vines round t's foot, grown on its bark as the vine op grows them. */
+static void vines(struct tree *t, int n)
+{
+	struct vine_support *s = NULL;
+	struct error err = { { 0 } };
+
+	must(app_vine_support(t, &s), "app_vine_support");
+	for (int i = 0; i < n; i++) {
+		const struct branch *trunk = &t->branches[0];
+		double a = 2.0 * VEC_PI * i / n, k, d;
+		struct vine_params p;
+		struct vine v;
+
+		must(vine_preset(APP_VINE_PRESET, &p, &err), "vine_preset");
+		/* app_mode_vine.c's scale: the stem a tenth of the trunk, 6 to 16 times */
+		k = fmin(fmax(0.1 * trunk->radii[0] / p.radius, 6.0), 16.0);
+		p.internode = fmin(p.internode * k, VINE_INTERNODE_MAX);
+		p.radius = fmin(p.radius * k, VINE_RADIUS_MAX);
+		p.leaf_size = fmin(p.leaf_size * k, VINE_LEAF_SIZE_MAX);
+		p.seed = SEED + (uint64_t)i;
+		d = trunk->radii[0] + 2.0 * p.radius;
+		vine_init(&v, &p, vec3_add(trunk->points[0], vec3(d * cos(a), 0.0, d * sin(a))));
+		must(vine_grow(&v, s, INFINITY), "vine_grow");
+		must(vine_attach(t, &v), "vine_attach");
+		vine_finish(&v);
+	}
+	vine_support_destroy(s);
+}
+
+/* Its own meshes' triangles: the tree's, the wood's bark and the vines' (the stems' and the
+ * leaves' into *stems, *leaves). */
+static size_t own_triangles(const struct tree *t, const struct tree_mesh *tm, size_t *stems,
+			    size_t *leaves)
+{
+	struct mesh s, l;
+	size_t n = triangles(tm) + (t->wood ? t->wood->bark.nindices / 3 : 0);
+
+	mesh_init(&s);
+	mesh_init(&l);
+	for (size_t i = 0; i < t->nvines; i++)
+		must(vine_mesh_append(&t->vines[i], &s, &l), "vine_mesh_append");
+	*stems = s.nindices / 3;
+	*leaves = l.nindices / 3;
+	n += *stems + *leaves;
+	mesh_finish(&s);
+	mesh_finish(&l);
+	return n;
+}
 
 static void kinds_init(struct kind *k)
 {
-	static const char *const names[NKINDS] = { "demo (3D)", "cherry", "62 branches",
-						   "1,000 branches" };
+	static const char *const names[NKINDS + NGROWN] = {
+		"demo (3D)", "cherry", "62 branches", "1,000 branches", "cherry, grown twice",
+		"cherry with 3 vines"
+	};
+	struct wood_params wp;
 
-	for (int i = 0; i < NKINDS; i++) {
+	for (int i = 0; i < NKINDS + NGROWN; i++) {
 		k[i].name = names[i];
 		tree_init(&k[i].t);
 	}
@@ -107,13 +172,23 @@ static void kinds_init(struct kind *k)
 	live_trees_preset(&k[1].t, GEN_PRESET_CHERRY);
 	must(synth_tree(&k[2].t, 62, 323, SEED), "synth_tree");
 	must(synth_tree(&k[3].t, 1000, 20, SEED), "synth_tree");
-	for (int i = 0; i < NKINDS; i++) {
+	live_trees_preset(&k[4].t, GEN_PRESET_CHERRY);
+	wood_params_default(&wp);
+	for (int i = 0; i < 2; i++)
+		if (wood_grow(&k[4].t, &wp) != 0)
+			must(-22, "wood_grow");
+	live_trees_preset(&k[5].t, GEN_PRESET_CHERRY);
+	vines(&k[5].t, 3);
+	for (int i = 0; i < NKINDS + NGROWN; i++) {
 		struct job j;
 
 		k[i].width = forest_tree_crown_width(&k[i].t);
 		job_init(&j, &k[i].t, 0);
 		own_meshes(&j);
-		k[i].own = triangles(&j.tm);
+		k[i].own = own_triangles(&k[i].t, &j.tm, &k[i].stems, &k[i].vine_leaves);
+		k[i].in_wood = 0;
+		for (size_t b = 0; b < k[i].t.nbranches; b++)
+			k[i].in_wood += tree_branch_in_wood(&k[i].t, b);
 		tree_mesh_finish(&j.tm);
 	}
 }
@@ -127,6 +202,10 @@ static void per_tree(struct kind *k, int reps)
 	s = bench_run(own_meshes, &j, reps);
 	printf("\n%s: %zu branches, %zu leaves, %.2f m high, crown %.2f m wide\n", k->name,
 	       k->t.nbranches, k->t.nleaves, forest_tree_height(&k->t), k->width);
+	if (k->t.wood || k->t.nvines)
+		printf("  its wood's bark %zu triangles (%zu branches in it), %zu vines' stems %zu "
+		       "and leaves %zu\n", k->t.wood ? k->t.wood->bark.nindices / 3 : 0, k->in_wood,
+		       k->t.nvines, k->stems, k->vine_leaves);
 	printf("  its own meshes %29zu triangles %9.2f ms (tree_mesh_build)\n", k->own, s * 1e3);
 	for (size_t b = 0; b < sizeof(budgets) / sizeof(budgets[0]); b++) {
 		j.budget = budgets[b];
@@ -136,6 +215,11 @@ static void per_tree(struct kind *k, int reps)
 		       budgets[b], j.st.bark_triangles, j.st.leaf_triangles, triangles(&j.tm),
 		       s * 1e3, j.st.level, j.st.sides, j.st.branches_kept, k->t.nbranches,
 		       j.st.cards);
+		if (k->t.wood || k->t.nvines)
+			printf("            of the bark: the wood's %6zu of %6zu, the stems' %5zu of "
+			       "%5zu (level %d, %zu of %zu shoots)\n", j.st.wood_triangles,
+			       k->t.wood ? k->t.wood->bark.nindices / 3 : 0, j.st.stem_triangles,
+			       k->stems, j.st.stem_level, j.st.shoots_kept, j.st.shoots);
 	}
 	tree_mesh_finish(&j.tm);
 }
@@ -367,7 +451,7 @@ static void render_rows(struct kind *k, int reps)
 int main(int argc, char **argv)
 {
 	static const size_t trees[] = { 10, 20, 40 };
-	struct kind k[NKINDS];
+	struct kind k[NKINDS + NGROWN];
 	int reps;
 
 	if (bench_init(&argc, argv, NULL))
@@ -375,8 +459,8 @@ int main(int argc, char **argv)
 	reps = bench_reps(REPS);
 	printf("bench_forest: the forest's levels of detail (medians of %d)\n", reps);
 	kinds_init(k);
-	for (int i = 0; i < NKINDS; i++)
-		if (!bench_quick || i < 3)
+	for (int i = 0; i < NKINDS + NGROWN; i++)
+		if (!bench_quick || i < 3 || i >= NKINDS)
 			per_tree(&k[i], reps);
 	growth(reps);
 
@@ -388,7 +472,7 @@ int main(int argc, char **argv)
 		forest(k, trees[i]);
 	layouts(reps);
 	render_rows(k, reps);
-	for (int i = 0; i < NKINDS; i++)
+	for (int i = 0; i < NKINDS + NGROWN; i++)
 		tree_finish(&k[i].t);
 	return 0;
 }

@@ -111,42 +111,61 @@ double forest_tree_crown_width(const struct tree *t);
 
 /*
  * A tree's meshes for the forest within max_triangles (bark + leaves; docs/forest.md,
- * "Drawing it fast enough"):
+ * "Drawing it fast enough"), with what it draws beside its own meshes: the wood's bark
+ * (t->wood->bark, in place of the tubes of the branches it holds, tree_branch_in_wood)
+ * and its vines (vine_mesh_append's stems and leaves):
  *
- * - The tree's own meshes (tree_mesh_build's, byte for byte) when they fit.
- * - Otherwise the bark may take the larger of FOREST_LOD_BARK_SHARE of the budget and what
- *   the leaves as they are leave of it. Bark over that is made coarser, level by level
- *   (forest_lod_levels: fewer sides, fewer rings, tree_mesh_build_parts_coarse); past the
- *   coarsest, branches go as forest_lod_keep says (least worth first, never one before
- *   the branches on it, the trunk never).
+ * - Everything as it is when it fits, byte for byte: the bark tree_mesh_build's, then the
+ *   wood's bark, then the vines' stems (vine after vine); the leaves tree_mesh_build's,
+ *   then the vines'.
+ * - Otherwise the bark (all three) may take the larger of FOREST_LOD_BARK_SHARE of the
+ *   budget and what the leaves as they are (the vines' too) leave of it. Within that the
+ *   wood and the stems each take a share in proportion to their own triangles (together
+ *   no more than the tubes' outline, the trunk's and those forest_lod_keep keeps last at
+ *   the coarsest level, leaves), the stems at the first level that fits
+ *   (forest_lod_stem_stride; past the coarsest, shoots go least worth first but those
+ *   that hold the outline, drawn at FOREST_LOD_STEM_OUTLINE if need be); the tubes what
+ *   those two leave, made coarser level by level (forest_lod_levels: fewer sides, fewer
+ *   rings, tree_mesh_build_parts_coarse), past the coarsest with branches gone as
+ *   forest_lod_keep says (least worth first, never one before the branches on it, the
+ *   trunk never); then of what the tubes leave the stems their part again (if more) and
+ *   the wood all the rest, made coarser by forest_lod_decimate.
  * - The leaves as they are when they fit the rest; else as cards: the leaves (those with
- *   triangles) binned by their centroids in a grid of cubes over them, the finest whose
- *   occupied cells fit the rest at 2 triangles a card (at least one card). Each cell's
- *   leaves make one card: a rectangle facing the axis their normals gather round (the
- *   principal axis of the sum of a a^T / |a| over their area vectors a, so a leaf and
- *   one turned over count alike; the side most of their area faces), through their
- *   centroid (by area) moved along that axis to their outer face (their farthest vertex
- *   on the side away from the centre of all the leaves' centroids), covering every one
- *   of their vertices seen along it (sides at least FOREST_LOD_CARD_MIN_M), one-sided
- *   (counter-clockwise about its normal) and drawn double-sided as leaves are. Cards are
+ *   triangles; the tree's, then the vines') binned by their centroids in a grid of cubes
+ *   over them, the finest whose occupied cells fit the rest at 2 triangles a card (at
+ *   least one card). Each cell's leaves make one card: a rectangle facing the axis their
+ *   normals gather round (the principal axis of the sum of a a^T / |a| over their area
+ *   vectors a, so a leaf and one turned over count alike; the side most of their area
+ *   faces), through their centroid (by area) moved along that axis to their outer face
+ *   (their farthest vertex on the side away from the centre of all the leaves'
+ *   centroids), covering every one of their vertices seen along it (sides at least
+ *   FOREST_LOD_CARD_MIN_M), one-sided (counter-clockwise about its normal) and drawn
+ *   double-sided as leaves are; along each of +-x, +-y, +-z the card of the leaf that
+ *   reaches farthest is stretched in its plane until it reaches as far. Cards are
  *   numbered in the order of their first leaf. When cards leave room (a card a leaf),
  *   the bark is made again with all the leaves leave.
- * Never more than max_triangles, but never less than the trunk at the coarsest level
- * and (with leaves) one card: a budget below that (0 too) gets that, and st->over_budget
- * says so. Same tree and budget, same bytes; the meshes are the same in every season
- * (winter does not draw the leaves). out (initialised) is cleared first. 0 or -ENOMEM
- * (out then empty). st may be NULL.
+ * Never more than max_triangles, but never less than the trunk's tube at the coarsest
+ * level (none when the wood holds it), the wood at its fewest, the stems that hold the
+ * outline at FOREST_LOD_STEM_OUTLINE and (with leaves) one card: a budget below that (0
+ * too) gets that, and st->over_budget says so. Same tree and budget, same bytes; the
+ * meshes are the same in every season (winter does not draw the leaves). out
+ * (initialised) is cleared first. 0 or -ENOMEM (out then empty). st may be NULL.
  */
 #define FOREST_LOD_BARK_SHARE 0.4
 #define FOREST_LOD_CARD_MIN_M 0.001
 
 struct forest_lod_stats {
-	size_t full_triangles;                 /* the tree's own meshes */
+	size_t full_triangles;                 /* the tree's own meshes, its wood's and vines' */
 	size_t bark_triangles, leaf_triangles; /* these */
-	int level;               /* 0: the tree's own bark; l: forest_lod_levels[l - 1] */
+	int level;               /* 0: the tree's own tubes; l: forest_lod_levels[l - 1] */
 	int sides;               /* the most sides a ring may have at that level */
 	size_t branches_kept;    /* of t->nbranches */
-	size_t leaves_as_cards;  /* leaves drawn as cards (0: all as they are) */
+	size_t wood_triangles;   /* of bark_triangles: the wood's bark (0: no wood) */
+	size_t stem_triangles;   /* of bark_triangles: the vines' stems */
+	int stem_level;          /* 0: the vines' own stems; l: forest_lod_levels[l - 1]'s
+				  * sides, a ring every forest_lod_stem_stride[l - 1] points */
+	size_t shoots, shoots_kept; /* the vines' shoots, and those drawn */
+	size_t leaves_as_cards;  /* leaves drawn as cards (0: all as they are), the vines' too */
 	size_t cards;
 	double cell;             /* the cards' grid's cell, metres (0: no cards) */
 	bool over_budget;        /* the least this function makes did not fit max_triangles */
@@ -168,6 +187,26 @@ int forest_lod_keep(const struct tree *t, const struct mesh *leaves, const size_
 /* The bark's coarser levels, in order. */
 #define FOREST_LOD_LEVELS 7
 extern const struct mesh_coarse forest_lod_levels[FOREST_LOD_LEVELS];
+/* The vines' stems at level l: a ring every forest_lod_stem_stride[l - 1] points of a
+ * shoot's smoothed axis (and at its last), forest_lod_levels[l - 1].max_sides sides at most. */
+extern const int forest_lod_stem_stride[FOREST_LOD_LEVELS];
+/* The stems' level past the coarsest: the shoots that hold the outline alone, a ring at
+ * their first and last points and at their farthest along each of +-x, +-y, +-z. */
+#define FOREST_LOD_STEM_OUTLINE (FOREST_LOD_LEVELS + 1)
+
+/*
+ * A closed, consistently oriented manifold mesh (the wood's bark: wood_iso's) with at most
+ * max_triangles triangles, appended to out (docs/forest.md, "The wood and the vines"):
+ * half-edge collapses, least quadric error first (each vertex goes into a neighbour and
+ * takes its place: the vertices left are m's own, their normals too), each keeping a
+ * closed manifold, turning no face over, and never taking a vertex farthest along +-x,
+ * +-y or +-z (the box stays). When no collapse is left to take the mesh comes out with
+ * more (*fewest, may be NULL: the fewest it goes to). Same mesh, same bytes; a larger
+ * max is a prefix of a smaller's collapses. 0, -EINVAL (an index past the vertices) or
+ * -ENOMEM (out as it was).
+ */
+int forest_lod_decimate(const struct mesh *m, size_t max_triangles, struct mesh *out,
+			size_t *fewest);
 
 int forest_lod_build(const struct tree *t, size_t max_triangles, struct tree_mesh *out,
 		     struct forest_lod_stats *st);
@@ -175,8 +214,9 @@ int forest_lod_build(const struct tree *t, size_t max_triangles, struct tree_mes
 /*
  * The season's colour of each vertex of forest_lod_build's leaves (linear RGB, 3 floats a
  * vertex, season.h's palette as leaf_colors_fill gives them): a leaf as it is takes its own
- * palette colour; a card, the mean of its leaves' colours weighted by their areas (what
- * the eye mixes them to from afar). The screen maps them as any palette colour
+ * palette colour (a vine's leaf the palette's first, as the screen tints vine leaves); a
+ * card, the mean of its leaves' colours weighted by their areas (what the eye mixes them
+ * to from afar). The screen maps them as any palette colour
  * (ui/leaf_tint.h). n: out->leaves.nvertices, or 0 in winter (no palette: not drawn).
  */
 struct forest_lod_colors {
@@ -203,10 +243,11 @@ void forest_lod_shares(const double *widths, const size_t *need, size_t n, size_
 
 /*
  * One tree made ready for the forest's screen, on the planting thread (docs/forest.md,
- * "Drawing it fast enough"): its level of detail within `budget` triangles, and each of
- * its vertices' living data (bound to its skeleton by the nearest point, as any mesh),
- * its wind over the forest's common loop (LIVE_WIND_COMMON_LOOP_S) at `strength`, all in
- * the tree's own coordinates with its trunk's foot at `foot`.
+ * "Drawing it fast enough"): its level of detail within `budget` triangles (its wood's
+ * bark and its vines in it: forest_lod_build), and each of its vertices' living data
+ * (bound to its skeleton by the nearest point, as the drawing screen binds the wood and
+ * the vines), its wind over the forest's common loop (LIVE_WIND_COMMON_LOOP_S) at
+ * `strength`, all in the tree's own coordinates with its trunk's foot at `foot`.
  */
 struct forest_part {
 	struct tree_mesh mesh;

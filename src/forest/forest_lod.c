@@ -11,10 +11,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "forest.h"
+#include "forest_lod_private.h"
 #include "leaf_colors.h"
 #include "season.h"
 #include "tube_frame.h"
+#include "vine.h"
+#include "wood.h"
 
 /* Steps small enough that a budget between two is not much wasted (cherry: 24,512 bark
  * triangles at full detail, then 24,512 14,544 11,480 8,672 6,216 6,144 6,132; a
@@ -45,6 +47,27 @@ static void mesh_swap(struct mesh *a, struct mesh *b)
 
 	*a = *b;
 	*b = x;
+}
+
+int lod_mesh_append(struct mesh *to, const struct mesh *from)
+{
+	size_t v0 = to->nvertices;
+	int r;
+
+	if (from->nvertices == 0 && from->nindices == 0)
+		return 0;
+	if (from->nvertices > UINT32_MAX - v0)
+		return -EINVAL;
+	r = mesh_reserve(to, from->nvertices, from->nindices);
+	if (r < 0)
+		return r;
+	memcpy(&to->positions[3 * v0], from->positions, 3 * from->nvertices * sizeof(float));
+	memcpy(&to->normals[3 * v0], from->normals, 3 * from->nvertices * sizeof(float));
+	for (size_t i = 0; i < from->nindices; i++)
+		to->indices[to->nindices + i] = from->indices[i] + (uint32_t)v0;
+	to->nvertices += from->nvertices;
+	to->nindices += from->nindices;
+	return 0;
 }
 
 /* The most sides a ring has at a level (0: the tree's own). */
@@ -151,38 +174,35 @@ static int prune_cmp(const void *pa, const void *pb)
 	return a->index < b->index ? 1 : a->index > b->index ? -1 : 0;
 }
 
-int forest_lod_keep(const struct tree *t, const struct mesh *leaves, const size_t *tris,
-		    size_t cap, bool *keep, size_t *kept)
+int lod_keep(size_t n, const int *parent, const double *worth, const bool *held,
+	     const size_t *tris, size_t cap, size_t root, bool *keep, size_t *kept)
 {
-	size_t n = t->nbranches, total = 0, trunk = lod_trunk(t);
 	struct prune_key *key = malloc((n ? n : 1) * sizeof(*key));
-	bool *held = calloc(n ? n : 1, sizeof(*held));
-	int r = -ENOMEM;
+	size_t total = 0;
 
-	if (!key || !held)
-		goto out;
+	if (!key)
+		return -ENOMEM;
 	for (size_t i = 0; i < n; i++) {
-		key[i] = (struct prune_key){ branch_worth(&t->branches[i]), i };
+		key[i] = (struct prune_key){ worth[i], i };
 		keep[i] = true;
 		total += tris[i];
 	}
-	/* a subtree's worth: its most worthy branch's, so a branch goes after those on it */
+	/* a subtree's worth: its most worthy item's, so an item goes after those on it */
 	for (size_t i = n; i-- > 1;) {
-		int p = t->branches[i].parent;
+		int p = parent[i];
 
-		/* children come after their parents (tree.h); any other parent is no parent */
+		/* children come after their parents; any other parent is no parent */
 		if (p >= 0 && (size_t)p < i && key[p].worth < key[i].worth)
 			key[p].worth = key[i].worth;
 	}
 	qsort(key, n, sizeof(*key), prune_cmp);
-	outline_mark(t, leaves, held);
-	/* First the branches nothing holds, then (if need be) those that hold the outline:
-	 * a held branch's parent is held, so each pass leaves none without its parent. */
+	/* First the items nothing holds, then (if need be) those that hold the outline:
+	 * a held item's parent is held, so each pass leaves none without its parent. */
 	for (int pass = 0; pass < 2; pass++) {
 		for (size_t k = 0; k < n && total > cap; k++) {
 			size_t i = key[k].index;
 
-			if (i == trunk || !keep[i] || (pass == 0 && held[i]))
+			if (i == root || !keep[i] || (pass == 0 && held[i]))
 				continue;
 			keep[i] = false;
 			total -= tris[i];
@@ -191,10 +211,31 @@ int forest_lod_keep(const struct tree *t, const struct mesh *leaves, const size_
 	*kept = 0;
 	for (size_t i = 0; i < n; i++)
 		*kept += keep[i];
-	r = 0;
+	free(key);
+	return 0;
+}
+
+int forest_lod_keep(const struct tree *t, const struct mesh *leaves, const size_t *tris,
+		    size_t cap, bool *keep, size_t *kept)
+{
+	size_t n = t->nbranches;
+	double *worth = malloc((n ? n : 1) * sizeof(*worth));
+	int *parent = malloc((n ? n : 1) * sizeof(*parent));
+	bool *held = calloc(n ? n : 1, sizeof(*held));
+	int r = -ENOMEM;
+
+	if (!worth || !parent || !held)
+		goto out;
+	for (size_t i = 0; i < n; i++) {
+		worth[i] = branch_worth(&t->branches[i]);
+		parent[i] = t->branches[i].parent;
+	}
+	outline_mark(t, leaves, held);
+	r = lod_keep(n, parent, worth, held, tris, cap, lod_trunk(t), keep, kept);
 out:
 	free(held);
-	free(key);
+	free(parent);
+	free(worth);
 	return r;
 }
 
@@ -228,12 +269,12 @@ out:
 }
 
 /*
- * The bark within cap into out: the tree's own (full, taken from there) if it fits, else
- * the first level that fits, else the coarsest pruned. known[l - 1]: level l's triangles
+ * The tubes within cap into out: the tree's own (full) if they fit, else the first level
+ * that fits, else the coarsest pruned. known[l - 1]: level l's triangles
  * if built before (0: not yet), so a second call builds no level it knows too large.
  * 0 or -ENOMEM.
  */
-static int lod_bark(const struct tree *t, struct mesh *full, const struct mesh *leaves,
+static int lod_bark(const struct tree *t, const struct mesh *full, const struct mesh *leaves,
 		    size_t cap, struct mesh *out, struct forest_lod_stats *st,
 		    size_t known[FOREST_LOD_LEVELS])
 {
@@ -244,10 +285,9 @@ static int lod_bark(const struct tree *t, struct mesh *full, const struct mesh *
 
 	st->level = 0;
 	st->branches_kept = n;
-	if (triangles(full) <= cap || n == 0) {
-		mesh_swap(out, full);
-		return 0;
-	}
+	mesh_clear(out);
+	if (triangles(full) <= cap || n == 0)
+		return lod_mesh_append(out, full);
 	all = malloc(n * sizeof(*all));
 	if (!all)
 		return -ENOMEM;
@@ -312,21 +352,22 @@ static bool finite3(struct vec3 p)
 	return isfinite(p.x) && isfinite(p.y) && isfinite(p.z);
 }
 
-/* The leaves of lm (marked in mk) that have triangles, measured. Returns how many. */
-static size_t leaves_measure(const struct mesh *lm, const struct tree_mesh_marks *mk, size_t nl,
+/* The leaves of lm (leaf i between marks[i] and marks[i + 1]) that have triangles,
+ * measured. Returns how many. */
+static size_t leaves_measure(const struct mesh *lm, const struct tree_mesh_mark *marks, size_t nl,
 			     struct lod_leaf *out)
 {
 	size_t n = 0;
 
 	for (size_t i = 0; i < nl; i++) {
 		struct lod_leaf *l = &out[n];
-		size_t x0 = mk->leaves[i].nindices, x1 = mk->leaves[i + 1].nindices;
+		size_t x0 = marks[i].nindices, x1 = marks[i + 1].nindices;
 		struct vec3 ca = vec3(0, 0, 0), cm = vec3(0, 0, 0);
 		bool ok = x1 > x0;
 
 		l->leaf = i;
-		l->v0 = mk->leaves[i].nvertices;
-		l->v1 = mk->leaves[i + 1].nvertices;
+		l->v0 = marks[i].nvertices;
+		l->v1 = marks[i + 1].nvertices;
 		l->a = vec3(0, 0, 0);
 		l->area = 0.0;
 		for (size_t v = l->v0; v < l->v1 && ok; v++) {
@@ -459,14 +500,15 @@ static uint32_t grid_cards(const struct lod_leaf *leaves, size_t nl, struct vec3
 	return cards;
 }
 
-/* The palette colour of leaf i, or NULL in winter. */
+/* The palette colour of leaf i (past the tree's own, a vine's leaf: the palette's first,
+ * as the screen tints vine leaves), or NULL in winter. */
 static const struct season_rgb *leaf_rgb(const struct tree *t, size_t i)
 {
 	const struct season_rgb *c;
 
 	if (season_palette(t->season, &c) == 0)
 		return NULL;
-	return &c[season_leaf_color(t->season, &t->leaves[i])];
+	return i < t->nleaves ? &c[season_leaf_color(t->season, &t->leaves[i])] : &c[0];
 }
 
 /* Adds a leaf's area vector a to its card's orientation sums. */
@@ -578,6 +620,63 @@ static void card_min(double *lo, double *hi)
 	}
 }
 
+/* How far card cd reaches along unit d: its farthest corner. */
+static double card_far(const struct lod_card *cd, struct vec3 d)
+{
+	double cu = vec3_dot(cd->u, d), cv = vec3_dot(cd->v, d);
+
+	return vec3_dot(cd->c, d) + fmax(cd->umin * cu, cd->umax * cu) +
+	       fmax(cd->vmin * cv, cd->vmax * cv);
+}
+
+/*
+ * The leaves' outline kept: along each of +-x, +-y, +-z, the card of the leaf whose vertex
+ * reaches farthest (the first such) is stretched in its plane, on the side of u or v that
+ * points most along that way, until it reaches as far. A card on its leaves' outer face
+ * misses their far vertex by as much as their depth along its normal where that normal
+ * leans away from the axis.
+ */
+static void cards_outline(struct lod_card *cards, const struct lod_leaf *leaves, size_t n,
+			  const struct mesh *lm)
+{
+	for (int d = 0; d < OUTLINE_DIRS; d++) {
+		struct vec3 dir = vec3(d / 2 == 0, d / 2 == 1, d / 2 == 2);
+		double far = -INFINITY, short_by, cu, cv;
+		struct lod_card *cd = NULL;
+
+		if (d % 2)
+			dir = vec3_scale(dir, -1.0);
+		for (size_t i = 0; i < n; i++) {
+			for (size_t v = leaves[i].v0; v < leaves[i].v1; v++) {
+				double x = vec3_dot(vertex(lm, v), dir);
+
+				if (x > far) {
+					far = x;
+					cd = &cards[leaves[i].card];
+				}
+			}
+		}
+		if (!cd)
+			return;
+		short_by = far - card_far(cd, dir);
+		cu = vec3_dot(cd->u, dir);
+		cv = vec3_dot(cd->v, dir);
+		if (!(short_by > 0.0) || !(fmax(fabs(cu), fabs(cv)) > 1e-9))
+			continue;
+		if (fabs(cu) >= fabs(cv)) {
+			if (cu > 0.0)
+				cd->umax += short_by / cu;
+			else
+				cd->umin += short_by / cu;
+		} else {
+			if (cv > 0.0)
+				cd->vmax += short_by / cv;
+			else
+				cd->vmin += short_by / cv;
+		}
+	}
+}
+
 static void card_emit(struct mesh *m, const struct lod_card *cd)
 {
 	const double su[4] = { cd->umin, cd->umax, cd->umax, cd->umin };
@@ -637,14 +736,14 @@ static int cards_colors(const struct lod_card *cards, size_t n, bool winter,
 }
 
 /*
- * The leaves of lm (t's own, marked in mk) as at most max cards (at least 1) into out.
- * 0 or -ENOMEM.
+ * The nl leaves of lm (t's own, then its vines', leaf i between marks i and i + 1) as at
+ * most max cards (at least 1) into out. 0 or -ENOMEM.
  */
-static int lod_cards(const struct tree *t, const struct mesh *lm, const struct tree_mesh_marks *mk,
-		     size_t max, struct mesh *out, struct forest_lod_colors *colors,
-		     struct forest_lod_stats *st)
+static int lod_cards(const struct tree *t, const struct mesh *lm,
+		     const struct tree_mesh_mark *marks, size_t nl, size_t max, struct mesh *out,
+		     struct forest_lod_colors *colors, struct forest_lod_stats *st)
 {
-	size_t nl = t->nleaves, n;
+	size_t n;
 	struct lod_leaf *leaves = malloc((nl ? nl : 1) * sizeof(*leaves));
 	struct lod_card *cards = NULL;
 	struct cell_map map = { NULL, NULL, 0 };
@@ -660,7 +759,7 @@ static int lod_cards(const struct tree *t, const struct mesh *lm, const struct t
 		colors->n = 0;
 	if (!leaves)
 		return -ENOMEM;
-	n = leaves_measure(lm, mk, nl, leaves);
+	n = leaves_measure(lm, marks, nl, leaves);
 	if (n == 0) {
 		r = 0;
 		goto out;
@@ -740,8 +839,10 @@ static int lod_cards(const struct tree *t, const struct mesh *lm, const struct t
 		card_outer(&cards[k], vec3_scale(vec3_add(lo, hi), 0.5));
 		card_min(&cards[k].umin, &cards[k].umax);
 		card_min(&cards[k].vmin, &cards[k].vmax);
-		card_emit(out, &cards[k]);
 	}
+	cards_outline(cards, leaves, n, lm);
+	for (size_t k = 0; k < ncards; k++)
+		card_emit(out, &cards[k]);
 	st->leaves_as_cards = n;
 	st->cards = ncards;
 	st->cell = g.h;
@@ -769,10 +870,414 @@ void forest_lod_colors_finish(struct forest_lod_colors *c)
 	forest_lod_colors_init(c);
 }
 
-/* The colours of leaves as they are (the tree's own, marked in mk). 0 or -ENOMEM. */
-static int own_colors(const struct tree *t, const struct tree_mesh_marks *mk, size_t nv,
-		      struct forest_lod_colors *colors)
+/*
+ * Everything a tree draws, at full detail: its own meshes (tree_mesh_build: the tubes,
+ * the wood's branches left out, and its leaves), the wood's bark (t->wood->bark) and its
+ * vines (vine_mesh_append: the stems and their leaves), and what the coarser levels of
+ * the wood and the stems need, made when first needed.
+ */
+struct lod_tree {
+	const struct tree *t;
+	struct tree_mesh full;
+	struct tree_mesh_marks mk;
+	const struct mesh *wood;         /* NULL: no wood (or one without triangles) */
+	struct tree_mesh vines;          /* every vine's stems (bark) and leaves, in order */
+	/* the leaves as they are: the tree's own, then the vines' (each a quad); lm is
+	 * full.leaves and marks mk.leaves for a tree without vines */
+	struct mesh all_leaves;
+	struct tree_mesh_mark *all_marks;
+	const struct mesh *lm;
+	const struct tree_mesh_mark *marks;
+	size_t nleaves;                  /* leaves in all: marks[0..nleaves] */
+	struct lod_decimate dec;
+	bool planned;
+	size_t tubes_outline;            /* the tubes lod_bark keeps last (SIZE_MAX: not known) */
+	struct lod_stems stems;
+	bool *held, *keep;               /* a shoot each: holds the outline; stays */
+	size_t *tris;
+	bool read;
+	size_t known[FOREST_LOD_LEVELS];
+};
+
+static void lod_tree_finish(struct lod_tree *lt)
 {
+	tree_mesh_finish(&lt->full);
+	tree_mesh_marks_finish(&lt->mk);
+	tree_mesh_finish(&lt->vines);
+	mesh_finish(&lt->all_leaves);
+	free(lt->all_marks);
+	lod_decimate_finish(&lt->dec);
+	lod_stems_finish(&lt->stems);
+	free(lt->held);
+	free(lt->keep);
+	free(lt->tris);
+}
+
+/* The leaves as they are, the vines' after the tree's, and where each begins. */
+static int all_leaves(struct lod_tree *lt)
+{
+	const struct mesh *fl = &lt->full.leaves, *vl = &lt->vines.leaves;
+	size_t nt = lt->t->nleaves, nv = vl->nvertices / 4, n = nt + nv;
+	int r;
+
+	lt->lm = fl;
+	lt->marks = lt->mk.leaves;
+	lt->nleaves = nt;
+	if (vl->nvertices == 0)
+		return 0;
+	if (vl->nvertices != 4 * nv || vl->nindices != 6 * nv)
+		return -EINVAL; /* not vine_mesh_append's quads */
+	lt->all_marks = malloc((n + 1) * sizeof(*lt->all_marks));
+	if (!lt->all_marks)
+		return -ENOMEM;
+	memcpy(lt->all_marks, lt->mk.leaves, (nt + 1) * sizeof(*lt->all_marks));
+	/* vine_mesh_append's leaves: a quad each, 4 vertices and 6 indices */
+	for (size_t i = 0; i < nv; i++) {
+		lt->all_marks[nt + i + 1].nvertices = fl->nvertices + 4 * (i + 1);
+		lt->all_marks[nt + i + 1].nindices = fl->nindices + 6 * (i + 1);
+	}
+	r = lod_mesh_append(&lt->all_leaves, fl);
+	if (r == 0)
+		r = lod_mesh_append(&lt->all_leaves, vl);
+	if (r < 0)
+		return r;
+	lt->lm = &lt->all_leaves;
+	lt->marks = lt->all_marks;
+	lt->nleaves = n;
+	return 0;
+}
+
+static int lod_tree_init(struct lod_tree *lt, const struct tree *t)
+{
+	int r;
+
+	memset(lt, 0, sizeof(*lt));
+	lt->t = t;
+	lt->tubes_outline = SIZE_MAX;
+	tree_mesh_init(&lt->full);
+	tree_mesh_marks_init(&lt->mk);
+	tree_mesh_init(&lt->vines);
+	mesh_init(&lt->all_leaves);
+	lod_decimate_init(&lt->dec);
+	lod_stems_init(&lt->stems);
+	r = tree_mesh_build_marked(&lt->full, t, &lt->mk);
+	/* the leaves' parts must be known: cards are made from them */
+	if (r == 0 && lt->mk.nleaves != t->nleaves + 1)
+		r = -ENOMEM;
+	for (size_t i = 0; i < t->nvines && r == 0; i++)
+		r = vine_mesh_append(&t->vines[i], &lt->vines.bark, &lt->vines.leaves);
+	if (r == 0 && t->wood && t->wood->bark.nindices >= 3)
+		lt->wood = &t->wood->bark;
+	if (r == 0)
+		r = all_leaves(lt);
+	return r;
+}
+
+/* ---- the wood and the vines' stems within their shares ------------------------------ */
+
+static void far_add(const struct mesh *m, double far[OUTLINE_DIRS])
+{
+	double x[OUTLINE_DIRS];
+
+	for (size_t v = 0; m && v < m->nvertices; v++) {
+		outline_far(vertex(m, v), x);
+		for (int d = 0; d < OUTLINE_DIRS; d++)
+			if (x[d] > far[d])
+				far[d] = x[d];
+	}
+}
+
+/*
+ * The shoots that hold the outline: along each of x, -x, y, -y, z and -z, the shoot whose
+ * stem reaches farthest (an axis point plus its radius; the first such) unless the rest
+ * of the tree (its own meshes, the wood, the vines' leaves) reaches as far, and the
+ * shoots it grew from.
+ */
+static void stems_outline(struct lod_tree *lt)
+{
+	const struct lod_stems *ls = &lt->stems;
+	double rest[OUTLINE_DIRS], far[OUTLINE_DIRS], x[OUTLINE_DIRS];
+	size_t best[OUTLINE_DIRS];
+
+	for (int d = 0; d < OUTLINE_DIRS; d++) {
+		rest[d] = far[d] = -INFINITY;
+		best[d] = SIZE_MAX;
+	}
+	far_add(&lt->full.bark, rest);
+	far_add(lt->lm, rest);
+	far_add(lt->wood, rest);
+	for (size_t i = 0; i < ls->n; i++) {
+		for (size_t k = 0; k < ls->s[i].n && ls->s[i].n >= 2; k++) {
+			outline_far(ls->s[i].axis[k], x);
+			for (int d = 0; d < OUTLINE_DIRS; d++) {
+				if (x[d] + ls->s[i].radius > far[d] && isfinite(x[d])) {
+					far[d] = x[d] + ls->s[i].radius;
+					best[d] = i;
+				}
+			}
+		}
+	}
+	for (int d = 0; d < OUTLINE_DIRS; d++) {
+		size_t i = far[d] > rest[d] ? best[d] : SIZE_MAX;
+
+		while (i != SIZE_MAX && !lt->held[i]) {
+			int p = ls->s[i].parent;
+
+			lt->held[i] = true;
+			i = p >= 0 && (size_t)p < i ? (size_t)p : SIZE_MAX;
+		}
+	}
+}
+
+static int stems_read(struct lod_tree *lt)
+{
+	size_t n;
+	int r;
+
+	if (lt->read)
+		return 0;
+	r = lod_stems_read(&lt->stems, lt->t);
+	n = lt->stems.n;
+	if (r == 0) {
+		lt->held = calloc(n ? n : 1, sizeof(*lt->held));
+		lt->keep = malloc((n ? n : 1) * sizeof(*lt->keep));
+		lt->tris = malloc((n ? n : 1) * sizeof(*lt->tris));
+		if (!lt->held || !lt->keep || !lt->tris)
+			r = -ENOMEM;
+	}
+	if (r == 0)
+		stems_outline(lt);
+	lt->read = r == 0;
+	return r;
+}
+
+/*
+ * The vines' stems within cap, appended to out: their own (vine_mesh_append's) if they
+ * fit, else the first coarser level that fits, else the coarsest with shoots left out
+ * (lod_keep: least worth first, never one before those that grew from it), but never
+ * those that hold the outline: when they alone do not fit, they are drawn through their
+ * outline alone (FOREST_LOD_STEM_OUTLINE), whatever cap. 0 or -ENOMEM.
+ */
+static int stems_fit(struct lod_tree *lt, size_t cap, struct mesh *out,
+		     struct forest_lod_stats *st)
+{
+	const struct lod_stems *ls = &lt->stems;
+	int level, *parent;
+	double *worth;
+	int r;
+
+	st->stem_level = 0;
+	if (triangles(&lt->vines.bark) <= cap) {
+		st->shoots_kept = st->shoots;
+		return lod_mesh_append(out, &lt->vines.bark);
+	}
+	r = stems_read(lt);
+	if (r < 0)
+		return r;
+	for (level = 1; level <= FOREST_LOD_LEVELS; level++) {
+		size_t sum = 0;
+
+		for (size_t i = 0; i < ls->n; i++)
+			sum += lt->tris[i] = lod_stems_triangles(ls, i, level);
+		if (sum <= cap || level == FOREST_LOD_LEVELS)
+			break;
+	}
+	st->stem_level = level > FOREST_LOD_LEVELS ? FOREST_LOD_LEVELS : level;
+	parent = malloc((ls->n ? ls->n : 1) * sizeof(*parent));
+	worth = malloc((ls->n ? ls->n : 1) * sizeof(*worth));
+	r = parent && worth ? 0 : -ENOMEM;
+	for (size_t i = 0; i < ls->n && r == 0; i++) {
+		parent[i] = ls->s[i].parent;
+		worth[i] = ls->s[i].worth;
+	}
+	if (r == 0)
+		r = lod_keep(ls->n, parent, worth, lt->held, lt->tris, cap, SIZE_MAX, lt->keep,
+			     &st->shoots_kept);
+	/* what holds the outline stays: alone, through its outline, if it had to go */
+	for (size_t i = 0; i < ls->n && r == 0; i++) {
+		if (lt->held[i] && !lt->keep[i]) {
+			st->stem_level = FOREST_LOD_STEM_OUTLINE;
+			break;
+		}
+	}
+	if (r == 0 && st->stem_level == FOREST_LOD_STEM_OUTLINE) {
+		st->shoots_kept = 0;
+		for (size_t i = 0; i < ls->n; i++)
+			st->shoots_kept += lt->keep[i] = lt->held[i];
+	}
+	if (r == 0)
+		r = lod_stems_build(ls, st->stem_level, lt->keep, out);
+	free(worth);
+	free(parent);
+	return r;
+}
+
+/* The wood's bark within cap, appended to out: its own if it fits, else made coarser
+ * (forest_lod_wood.c) to cap or as far as it goes. 0, -EINVAL or -ENOMEM. */
+static int wood_fit(struct lod_tree *lt, size_t cap, struct mesh *out)
+{
+	int r;
+
+	if (!lt->wood || triangles(lt->wood) <= cap)
+		return lt->wood ? lod_mesh_append(out, lt->wood) : 0;
+	if (!lt->planned) {
+		r = lod_decimate_plan(&lt->dec, lt->wood);
+		if (r < 0)
+			return r;
+		lt->planned = true;
+	}
+	return lod_decimate_apply(&lt->dec, cap, out);
+}
+
+/* The triangles of the tubes lod_bark keeps last: the trunk's and those of the branches
+ * that hold the outline (outline_mark), at the coarsest level. 0 or -ENOMEM. */
+static int tubes_outline(struct lod_tree *lt, size_t *out)
+{
+	const struct tree *t = lt->t;
+	size_t n = t->nbranches, trunk = lod_trunk(t), sum = 0, *all;
+	struct tree_mesh cm;
+	struct tree_mesh_marks cmk;
+	bool *held;
+	int r;
+
+	if (lt->tubes_outline != SIZE_MAX) {
+		*out = lt->tubes_outline;
+		return 0;
+	}
+	all = malloc((n ? n : 1) * sizeof(*all));
+	held = calloc(n ? n : 1, sizeof(*held));
+	tree_mesh_init(&cm);
+	tree_mesh_marks_init(&cmk);
+	r = all && held ? 0 : -ENOMEM;
+	for (size_t i = 0; i < n && r == 0; i++)
+		all[i] = i;
+	if (r == 0)
+		r = tree_mesh_build_parts_coarse(&cm, &cmk, t, all, n, NULL, 0,
+						 &forest_lod_levels[FOREST_LOD_LEVELS - 1]);
+	if (r == 0) {
+		lt->known[FOREST_LOD_LEVELS - 1] = triangles(&cm.bark);
+		outline_mark(t, lt->lm, held);
+		for (size_t i = 0; i < n; i++)
+			if (held[i] || i == trunk)
+				sum += (cmk.bark[i + 1].nindices - cmk.bark[i].nindices) / 3;
+		lt->tubes_outline = *out = sum;
+	}
+	tree_mesh_marks_finish(&cmk);
+	tree_mesh_finish(&cm);
+	free(held);
+	free(all);
+	return r;
+}
+
+/* The wood's triangles within cap (its own, or made coarser to cap or its fewest).
+ * 0 or -ENOMEM. */
+static int wood_triangles(struct lod_tree *lt, size_t cap, size_t *n)
+{
+	int r;
+
+	*n = lt->wood ? triangles(lt->wood) : 0;
+	if (*n <= cap)
+		return 0;
+	if (!lt->planned) {
+		r = lod_decimate_plan(&lt->dec, lt->wood);
+		if (r < 0)
+			return r;
+		lt->planned = true;
+	}
+	*n = lod_decimate_triangles(&lt->dec, cap);
+	return 0;
+}
+
+/*
+ * All the bark within cap into out: the tubes (the tree's own bark), then the wood's
+ * bark, then the vines' stems. All of them as they are when they fit; else the wood and
+ * the stems each take a share of cap in proportion to their own triangles, but together
+ * no more than the tubes' outline (the trunk and the branches that hold the outline, at
+ * the coarsest level) leaves of cap; the stems at their level (those that hold the
+ * outline may take more), the tubes what those two leave (lod_bark); of what the tubes
+ * leave, the stems again their part (if more than before), the wood all the rest.
+ * *coarser: whether any of them was made coarser. 0, -EINVAL or -ENOMEM.
+ */
+static int lod_bark_all(struct lod_tree *lt, size_t cap, struct mesh *out,
+			struct forest_lod_stats *st, bool *coarser)
+{
+	size_t tt = triangles(&lt->full.bark), w = lt->wood ? triangles(lt->wood) : 0;
+	size_t v = triangles(&lt->vines.bark), total = tt + w + v, share_w, share_v, taken, wt;
+	size_t rest, vcap;
+	struct mesh stems;
+	int r;
+
+	st->shoots = 0;
+	for (size_t i = 0; i < lt->t->nvines; i++)
+		st->shoots += lt->t->vines[i].nshoots;
+	st->stem_level = 0;
+	st->shoots_kept = st->shoots;
+	st->wood_triangles = w;
+	st->stem_triangles = v;
+	*coarser = total > cap;
+	if (!*coarser) {
+		st->level = 0;
+		st->branches_kept = lt->t->nbranches;
+		mesh_clear(out);
+		r = lod_mesh_append(out, &lt->full.bark);
+		if (r == 0)
+			r = wood_fit(lt, cap, out);
+		if (r == 0)
+			r = lod_mesh_append(out, &lt->vines.bark);
+		return r;
+	}
+	share_w = (size_t)((double)cap * ((double)w / (double)total));
+	share_v = (size_t)((double)cap * ((double)v / (double)total));
+	if (share_w + share_v > 0) {
+		size_t outline = 0, room;
+
+		r = tubes_outline(lt, &outline);
+		if (r < 0)
+			return r;
+		room = cap > outline ? cap - outline : 0;
+		if (share_w + share_v > room) {
+			share_w = (size_t)((double)room * ((double)w / (double)(w + v)));
+			share_v = (size_t)((double)room * ((double)v / (double)(w + v)));
+		}
+	}
+	mesh_init(&stems);
+	r = stems_fit(lt, share_v, &stems, st);
+	if (r == 0)
+		r = wood_triangles(lt, share_w, &wt);
+	taken = triangles(&stems) + wt;
+	if (r == 0)
+		r = lod_bark(lt->t, &lt->full.bark, lt->lm, cap > taken ? cap - taken : 0, out, st,
+			     lt->known);
+	/* what the tubes leave: the stems' part of it in proportion (never less than they
+	 * had), then the wood all the rest */
+	rest = cap > triangles(out) ? cap - triangles(out) : 0;
+	vcap = v ? (size_t)((double)rest * ((double)v / (double)(w + v))) : 0;
+	if (r == 0 && st->stem_level > 0 && vcap > share_v) {
+		mesh_clear(&stems);
+		r = stems_fit(lt, vcap, &stems, st);
+	}
+	taken = triangles(&stems) + triangles(out);
+	wt = triangles(out);
+	if (r == 0)
+		r = wood_fit(lt, cap > taken ? cap - taken : 0, out);
+	st->wood_triangles = triangles(out) - wt;
+	st->stem_triangles = triangles(&stems);
+	if (r == 0)
+		r = lod_mesh_append(out, &stems);
+	mesh_finish(&stems);
+	return r;
+}
+
+/* ---- the whole tree ----------------------------------------------------------------- */
+
+/* The colours of the leaves as they are (lt->lm): the tree's own (leaf_colors_fill, by
+ * mk), the vines' the palette's first. 0 or -ENOMEM. */
+static int own_colors(const struct lod_tree *lt, struct forest_lod_colors *colors)
+{
+	const struct tree *t = lt->t;
+	size_t nv = lt->lm->nvertices, own = lt->full.leaves.nvertices;
+	const struct season_rgb *c;
+
 	colors->n = 0;
 	if (nv == 0)
 		return 0;
@@ -784,8 +1289,14 @@ static int own_colors(const struct tree *t, const struct tree_mesh_marks *mk, si
 		colors->rgb = p;
 		colors->cap = nv;
 	}
-	if (leaf_colors_fill(t, mk, nv, colors->rgb))
-		colors->n = nv;
+	if (!leaf_colors_fill(t, &lt->mk, own, colors->rgb) || season_palette(t->season, &c) == 0)
+		return 0;
+	for (size_t v = own; v < nv; v++) {
+		colors->rgb[3 * v] = c[0].r;
+		colors->rgb[3 * v + 1] = c[0].g;
+		colors->rgb[3 * v + 2] = c[0].b;
+	}
+	colors->n = nv;
 	return 0;
 }
 
@@ -793,57 +1304,49 @@ int forest_lod_build_colors(const struct tree *t, size_t max_triangles, struct t
 			    struct forest_lod_colors *colors, struct forest_lod_stats *st)
 {
 	struct forest_lod_stats s;
-	struct tree_mesh full;
-	struct tree_mesh_marks mk;
-	size_t leaves, cap, left, known[FOREST_LOD_LEVELS] = { 0 };
+	struct lod_tree lt;
+	size_t leaves, cap, left;
+	bool coarser = false;
 	int r;
 
 	memset(&s, 0, sizeof(s));
-	tree_mesh_init(&full);
-	tree_mesh_marks_init(&mk);
 	mesh_clear(&out->bark);
 	mesh_clear(&out->leaves);
 	if (colors)
 		colors->n = 0;
-	r = tree_mesh_build_marked(&full, t, &mk);
-	/* the leaves' parts must be known: cards are made from them */
-	if (r == 0 && mk.nleaves != t->nleaves + 1)
-		r = -ENOMEM;
+	r = lod_tree_init(&lt, t);
 	if (r < 0)
 		goto out;
-	s.full_triangles = triangles(&full.bark) + triangles(&full.leaves);
+	leaves = triangles(lt.lm);
+	s.full_triangles = triangles(&lt.full.bark) + (lt.wood ? triangles(lt.wood) : 0) +
+			   triangles(&lt.vines.bark) + leaves;
 	s.branches_kept = t->nbranches;
 	s.sides = level_sides(t, 0);
-	leaves = triangles(&full.leaves);
-	if (s.full_triangles <= max_triangles) {
-		mesh_swap(&out->bark, &full.bark);
-		mesh_swap(&out->leaves, &full.leaves);
-		if (colors)
-			r = own_colors(t, &mk, out->leaves.nvertices, colors);
-		goto out;
-	}
 
-	/* The bark: at least its share, all the leaves leave if more. */
+	/* The bark: all of it when everything fits; else at least its share, all the leaves
+	 * leave if more. */
 	cap = (size_t)((double)max_triangles * FOREST_LOD_BARK_SHARE);
 	if (leaves < max_triangles && max_triangles - leaves > cap)
 		cap = max_triangles - leaves;
-	r = lod_bark(t, &full.bark, &full.leaves, cap, &out->bark, &s, known);
+	if (s.full_triangles <= max_triangles)
+		cap = max_triangles;
+	r = lod_bark_all(&lt, cap, &out->bark, &s, &coarser);
 	if (r < 0)
 		goto out;
 	s.sides = level_sides(t, s.level);
 
 	left = max_triangles > triangles(&out->bark) ? max_triangles - triangles(&out->bark) : 0;
 	if (leaves <= left) {
-		mesh_swap(&out->leaves, &full.leaves);
-		if (colors)
-			r = own_colors(t, &mk, out->leaves.nvertices, colors);
+		r = lod_mesh_append(&out->leaves, lt.lm);
+		if (r == 0 && colors)
+			r = own_colors(&lt, colors);
 	} else {
-		r = lod_cards(t, &full.leaves, &mk, left / 2, &out->leaves, colors, &s);
+		r = lod_cards(t, lt.lm, lt.marks, lt.nleaves, left / 2, &out->leaves, colors, &s);
 		/* cards a leaf each may leave room: the bark takes it (they do not depend on it) */
-		if (r == 0 && s.level > 0 && max_triangles > triangles(&out->leaves) &&
+		if (r == 0 && coarser && max_triangles > triangles(&out->leaves) &&
 		    max_triangles - triangles(&out->leaves) > cap) {
 			cap = max_triangles - triangles(&out->leaves);
-			r = lod_bark(t, &full.bark, &full.leaves, cap, &out->bark, &s, known);
+			r = lod_bark_all(&lt, cap, &out->bark, &s, &coarser);
 			s.sides = level_sides(t, s.level);
 		}
 	}
@@ -860,8 +1363,7 @@ out:
 	s.over_budget = s.bark_triangles + s.leaf_triangles > max_triangles;
 	if (st)
 		*st = s;
-	tree_mesh_marks_finish(&mk);
-	tree_mesh_finish(&full);
+	lod_tree_finish(&lt);
 	return r;
 }
 

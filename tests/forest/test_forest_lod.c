@@ -22,6 +22,10 @@
  * - cards face their leaves' common normal (leaves flattened into planes of x or z);
  * - colours: a leaf its own, a card the mean of its leaves' (autumn, summer, winter);
  * - the wind binds the bark and cards of a level of detail (live_attrs_bind_nearest);
+ * - a grown tree and a tree with vines (synth_wood_tree, synth_vine_tree): within any
+ *   budget that holds them, their parts hold the wood's bark and the vines' stems and
+ *   leaves byte for byte after the tree's own (the wood's in place of the tubes it
+ *   replaces); at a small budget the wood is still there (its box), made coarser;
  * - a tree's height and crown width on a few shapes, the same turned about its foot;
  * - the forest's shares: within the total, in proportion to the widths, water-filled.
  *
@@ -38,7 +42,11 @@
 #include "rng.h"
 #include "season.h"
 #include "synth_tree.h"
+#include "synth_vine.h"
+#include "synth_wood.h"
 #include "test.h"
+#include "vine.h"
+#include "wood.h"
 
 #define TEST_PI 3.14159265358979323846
 #define TUBE_MIN_RADIUS 0.0005 /* mesh_private.h: a joint shrinks a root ring no further */
@@ -1066,6 +1074,98 @@ static void test_shares(void)
 	       "proportional within %.3f triangles\n", cases, worst_left, worst_prop);
 }
 
+/* A part's mesh m holds part p's triangles from triangle f0 on, byte for byte (its
+ * vertices after those before it, its indices moved on by as many). */
+static void check_holds(const struct mesh *m, size_t f0, const struct mesh *p)
+{
+	size_t v0;
+
+	CHECK(3 * f0 + p->nindices <= m->nindices);
+	if (p->nindices == 0)
+		return;
+	v0 = m->indices[3 * f0] - p->indices[0];
+	CHECK(v0 + p->nvertices <= m->nvertices);
+	CHECK(!memcmp(&m->positions[3 * v0], p->positions, 3 * p->nvertices * sizeof(float)));
+	CHECK(!memcmp(&m->normals[3 * v0], p->normals, 3 * p->nvertices * sizeof(float)));
+	for (size_t i = 0; i < p->nindices; i++)
+		CHECK(m->indices[3 * f0 + i] == p->indices[i] + v0);
+}
+
+/*
+ * The wood's bark and the vines in a tree's part (issue 27): a grown tree and a tree with
+ * two vines. Within a budget that holds everything, the part's bark is the tree's own
+ * (its tubes, the wood's branches left out), then the wood's bark, then the vines' stems,
+ * and its leaves the tree's then the vines', all byte for byte; at a small budget the
+ * wood is still there, made coarser: the part reaches the wood's box.
+ */
+static void test_wood_vines(void)
+{
+	struct tree t;
+	struct tree_mesh own, out;
+	struct mesh stems, vleaves;
+	struct forest_lod_stats st;
+
+	tree_init(&t);
+	tree_mesh_init(&own);
+	tree_mesh_init(&out);
+	mesh_init(&stems);
+	mesh_init(&vleaves);
+	for (int kind = 0; kind < 2; kind++) {
+		const struct mesh *wood;
+		size_t all;
+
+		if (kind == 0)
+			CHECK_INT(synth_wood_tree(&t, 2, WOOD_BROADLEAF), 0);
+		else
+			CHECK_INT(synth_vine_tree(&t, 2), 0);
+		CHECK(kind == 0 ? t.wood != NULL : t.nvines == 2);
+		wood = t.wood ? &t.wood->bark : NULL;
+		CHECK(!wood || tris(wood) > 0);
+		CHECK_INT(tree_mesh_build(&own, &t), 0);
+		mesh_clear(&stems);
+		mesh_clear(&vleaves);
+		for (size_t i = 0; i < t.nvines; i++)
+			CHECK_INT(vine_mesh_append(&t.vines[i], &stems, &vleaves), 0);
+		all = tris(&own.bark) + (wood ? tris(wood) : 0) + tris(&stems) + tris(&own.leaves) +
+		      tris(&vleaves);
+		for (size_t budget = all; budget <= 4 * all; budget *= 2) {
+			CHECK_INT(forest_lod_build(&t, budget, &out, &st), 0);
+			CHECK_INT(st.full_triangles, all);
+			CHECK_INT(tris(&out.bark), tris(&own.bark) + (wood ? tris(wood) : 0) +
+							   tris(&stems));
+			CHECK_INT(tris(&out.leaves), tris(&own.leaves) + tris(&vleaves));
+			check_holds(&out.bark, 0, &own.bark);
+			if (wood)
+				check_holds(&out.bark, tris(&own.bark), wood);
+			check_holds(&out.bark, tris(&out.bark) - tris(&stems), &stems);
+			check_holds(&out.leaves, 0, &own.leaves);
+			check_holds(&out.leaves, tris(&own.leaves), &vleaves);
+		}
+		if (wood) {
+			struct box wb, pb;
+
+			CHECK_INT(forest_lod_build(&t, 300, &out, &st), 0);
+			CHECK(!st.over_budget && tris(&out.bark) + tris(&out.leaves) <= 300);
+			box_empty(&wb);
+			box_add(&wb, wood);
+			box_empty(&pb);
+			box_add(&pb, &out.bark);
+			for (int k = 0; k < 3; k++)
+				CHECK(pb.lo[k] <= wb.lo[k] && pb.hi[k] >= wb.hi[k]);
+			printf("a grown tree: its wood's %zu triangles in its part; within 300, %zu "
+			       "triangles of bark reach the wood's box\n", tris(wood), tris(&out.bark));
+		} else {
+			printf("a tree with 2 vines: their %zu stem and %zu leaf triangles in its "
+			       "part\n", tris(&stems), tris(&vleaves));
+		}
+	}
+	mesh_finish(&vleaves);
+	mesh_finish(&stems);
+	tree_mesh_finish(&out);
+	tree_mesh_finish(&own);
+	tree_finish(&t);
+}
+
 /* The wind binds a tree's levels of detail as any mesh on it (live_attrs_bind_nearest):
  * every vertex of bark and cards. */
 static void test_wind(void)
@@ -1169,6 +1269,7 @@ int main(void)
 	test_one_card();
 	test_colors();
 	test_wind();
+	test_wood_vines();
 	test_random();
 	return 0;
 }
