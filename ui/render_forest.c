@@ -226,6 +226,23 @@ static int upload_trunk(GLuint *vbo, const uint8_t *trunk, const struct mesh *m,
 	return 0;
 }
 
+/* The bark's colours when vines climb in the forest: a vine's stems as the drawing screen
+ * colours them (render_vine_stem), the rest the bark's. */
+static int upload_bark_tints(struct render_forest *f, const struct forest_scene *s)
+{
+	size_t n = s->mesh.bark.nvertices;
+	float *rgb = malloc(3 * n * sizeof(*rgb) + 1);
+	int ret;
+
+	if (!rgb)
+		return -ENOMEM;
+	for (size_t v = 0; v < n; v++)
+		memcpy(&rgb[3 * v], s->bark_vine[v] ? render_vine_stem : forest_bark, 3 * sizeof(*rgb));
+	ret = render_mesh_upload_tints(&f->bark, &s->mesh.bark, rgb);
+	free(rgb);
+	return ret;
+}
+
 /* The scene's meshes and data, when it changed since they went up. */
 static int upload(struct render *r, const struct forest_scene *s)
 {
@@ -257,6 +274,8 @@ static int upload(struct render *r, const struct forest_scene *s)
 		ret = render_mesh_upload(&f->leaves, &s->mesh.leaves, r->uint_indices);
 	if (ret == 0 && s->leaf_rgb)
 		ret = render_mesh_upload_tints(&f->leaves, &s->mesh.leaves, s->leaf_rgb);
+	if (ret == 0 && s->bark_vine)
+		ret = upload_bark_tints(f, s);
 	if (ret == 0)
 		ret = render_live_upload(r, &f->bark_live, s->bark.v, s->bark.n, &s->mesh.bark,
 					 !f->bark.indexed, f->wscale);
@@ -276,6 +295,7 @@ static int upload(struct render *r, const struct forest_scene *s)
 	f->of = s;
 	f->serial = s->serial;
 	f->tinted_leaves = s->leaf_rgb != NULL;
+	f->tinted_bark = s->bark_vine != NULL;
 	f->ok = true;
 	return 0;
 }
@@ -501,12 +521,12 @@ int render_forest_draw(struct render *r, const struct app *app, uint64_t now_us)
 	glEnableVertexAttribArray(ATTR_NORMAL);
 	render_mesh_draw(r, &f->ground);
 	/* the bark of every tree, one call (two while the newest grows in) */
-	p = use(r, 0, &fr);
+	p = use(r, f->tinted_bark ? 1 : 0, &fr);
 	glEnable(GL_CULL_FACE);
 	glCullFace(GL_BACK);
-	glUniform1i(f->plain.tree.two_sided, 0);
-	glUniform3fv(f->plain.tree.color, 1, forest_bark);
-	draw_part(r, p, &f->bark, &f->bark_live, f->bark_trunk, false, &fr,
+	glUniform1i(p->tree.two_sided, 0);
+	glUniform3fv(p->tree.color, 1, forest_bark);
+	draw_part(r, p, &f->bark, &f->bark_live, f->bark_trunk, f->tinted_bark, &fr,
 		  newest->bark_indices[0]);
 	glDisable(GL_CULL_FACE);
 	/* the leaves of every tree, one call (two), in their season's colours (none in winter) */
@@ -516,6 +536,8 @@ int render_forest_draw(struct render *r, const struct app *app, uint64_t now_us)
 		draw_part(r, p, &f->leaves, &f->leaves_live, f->leaves_trunk, true, &fr,
 			  newest->leaves_indices[0]);
 	} else if (leaves) {
+		if (f->tinted_bark)
+			p = use(r, 0, &fr);
 		glUniform1i(f->plain.tree.two_sided, 1);
 		glUniform3fv(f->plain.tree.color, 1, leaf);
 		draw_part(r, p, &f->leaves, &f->leaves_live, f->leaves_trunk, false, &fr,

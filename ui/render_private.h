@@ -163,6 +163,7 @@ struct render_forest {
 	const struct forest_scene *of;
 	uint64_t serial;
 	bool ok, tinted_leaves;
+	bool tinted_bark; /* a vine's stems among the bark: the bark drawn with vertex colours */
 	bool drawn;              /* this frame */
 	float mvp[16];           /* this frame's world to clip */
 	struct render_forest_labels labels;

@@ -162,6 +162,7 @@ struct forest_lod_stats {
 	size_t branches_kept;    /* of t->nbranches */
 	size_t wood_triangles;   /* of bark_triangles: the wood's bark (0: no wood) */
 	size_t stem_triangles;   /* of bark_triangles: the vines' stems */
+	size_t stem_vertices;    /* the bark's last vertices: the vines' stems */
 	int stem_level;          /* 0: the vines' own stems; l: forest_lod_levels[l - 1]'s
 				  * sides, a ring every forest_lod_stem_stride[l - 1] points */
 	size_t shoots, shoots_kept; /* the vines' shoots, and those drawn */
@@ -260,6 +261,7 @@ struct forest_part {
 	int harmonic0;                   /* its trunk's whole cycles a loop */
 	uint8_t phase0;                  /* its trunk's phase, 1/256 turns, from the seed */
 	struct live_wind wind;           /* its wind, over the common loop */
+	size_t bark_stems;               /* mesh.bark's last vertices: its vines' stems */
 };
 void forest_part_init(struct forest_part *p);
 void forest_part_finish(struct forest_part *p);
@@ -296,6 +298,8 @@ struct forest_scene {
 	float *leaf_rgb;                     /* 3 a leaves vertex, or NULL: one colour */
 	struct live_attrs bark, leaves;      /* placed */
 	uint8_t *bark_trunk, *leaves_trunk;  /* 2 a vertex: harmonic0, phase0 */
+	uint8_t *bark_vine;                  /* 1 a bark vertex: a vine's stem (the screen
+					      * colours it as a vine); NULL: no vines */
 	size_t cap_bark_trunk, cap_leaves_trunk;
 	struct live_wind wind;               /* the frame's (the most swaying tree's) */
 	double center[3], radius, top;       /* what the camera frames: the trees' feet's

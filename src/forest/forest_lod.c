@@ -1214,6 +1214,7 @@ static int lod_bark_all(struct lod_tree *lt, size_t cap, struct mesh *out,
 	st->shoots_kept = st->shoots;
 	st->wood_triangles = w;
 	st->stem_triangles = v;
+	st->stem_vertices = 0;
 	*coarser = total > cap;
 	if (!*coarser) {
 		st->level = 0;
@@ -1224,6 +1225,7 @@ static int lod_bark_all(struct lod_tree *lt, size_t cap, struct mesh *out,
 			r = wood_fit(lt, cap, out);
 		if (r == 0)
 			r = lod_mesh_append(out, &lt->vines.bark);
+		st->stem_vertices = lt->vines.bark.nvertices;
 		return r;
 	}
 	share_w = (size_t)((double)cap * ((double)w / (double)total));
@@ -1262,6 +1264,7 @@ static int lod_bark_all(struct lod_tree *lt, size_t cap, struct mesh *out,
 		r = wood_fit(lt, cap > taken ? cap - taken : 0, out);
 	st->wood_triangles = triangles(out) - wt;
 	st->stem_triangles = triangles(&stems);
+	st->stem_vertices = stems.nvertices;
 	if (r == 0)
 		r = lod_mesh_append(out, &stems);
 	mesh_finish(&stems);

@@ -75,6 +75,7 @@ int forest_part_build(struct forest_part *p, const struct tree *t, uint64_t seed
 	p->crown_width = forest_tree_crown_width(t);
 	p->branches = t->nbranches;
 	p->leaves_drawn = t->nleaves;
+	p->bark_stems = st.stem_vertices <= p->mesh.bark.nvertices ? st.stem_vertices : 0;
 	p->amp0 = p->wind.amp0;
 	p->harmonic0 = p->wind.harmonic[0];
 	/* the trunk's phase from the drawing's seed: trees side by side do not sway as one */
@@ -105,6 +106,7 @@ void forest_scene_finish(struct forest_scene *s)
 	live_attrs_finish(&s->leaves);
 	free(s->bark_trunk);
 	free(s->leaves_trunk);
+	free(s->bark_vine);
 	forest_scene_init(s);
 	s->serial = serial;
 }
@@ -185,7 +187,7 @@ int forest_scene_build(struct forest_scene *s, const struct forest_part *const *
 		       const uint64_t *numbers, const double *positions, size_t n)
 {
 	double ref, lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
-	bool colored = false;
+	bool colored = false, vines = false;
 	int ret = 0;
 
 	forest_scene_finish(s);
@@ -193,8 +195,10 @@ int forest_scene_build(struct forest_scene *s, const struct forest_part *const *
 	if (n == 0)
 		return 0;
 	ret = grow((void **)&s->trees, &s->cap_trees, n, sizeof(*s->trees));
-	for (size_t i = 0; i < n && !colored; i++)
-		colored = parts[i]->colors.n > 0;
+	for (size_t i = 0; i < n; i++) {
+		colored = colored || parts[i]->colors.n > 0;
+		vines = vines || parts[i]->bark_stems > 0;
+	}
 	/* the frame's wind is the tree that sways most's: every other w0 scales down to its
 	 * own sway (a weight stays within 0..1, as the screen packs it) */
 	{
@@ -242,6 +246,18 @@ int forest_scene_build(struct forest_scene *s, const struct forest_part *const *
 					rgb[3 * v + k] = p->colors.n == p->mesh.leaves.nvertices
 								 ? p->colors.rgb[3 * (v - l0) + k]
 								 : 0.0f;
+		}
+		if (ret == 0 && vines) {
+			size_t nv = s->mesh.bark.nvertices, b0 = t->bark_vertices[0];
+			uint8_t *flag = realloc(s->bark_vine, nv + 1);
+
+			if (!flag) {
+				ret = -ENOMEM;
+				break;
+			}
+			s->bark_vine = flag;
+			for (size_t v = b0; v < nv; v++)
+				flag[v] = v >= nv - p->bark_stems;
 		}
 		t->bark_vertices[1] = s->mesh.bark.nvertices;
 		t->bark_indices[1] = s->mesh.bark.nindices;

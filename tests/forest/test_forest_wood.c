@@ -354,6 +354,15 @@ static void check_one(const struct tree *t, const struct whole *w, const struct 
 		mg->coarser_stems++;
 		CHECK(st.stem_triangles < tris(&w->vines.bark));
 	}
+	/* the stems' vertices are the bark's last stem_vertices, theirs alone (the screen
+	 * colours them as a vine's) */
+	CHECK(st.stem_vertices <= out.bark.nvertices);
+	CHECK(st.stem_level != 0 || st.stem_vertices == w->vines.bark.nvertices);
+	for (size_t i = 0; i < out.bark.nindices; i++) {
+		bool stem_tri = i / 3 >= st.bark_triangles - st.stem_triangles;
+
+		CHECK(stem_tri == (out.bark.indices[i] >= out.bark.nvertices - st.stem_vertices));
+	}
 	mg->shoots_left_out += st.shoots_kept < st.shoots;
 	mg->carded += st.cards > 0;
 	/* the outline */
