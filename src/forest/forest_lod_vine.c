@@ -13,11 +13,7 @@
 #include <string.h>
 
 #include "forest_lod_private.h"
-#include "tube_frame.h"
 #include "vine.h"
-
-/* vine_shape.c's tip: a cone one radius long. */
-#define STEM_TIP_LENGTH 1.0
 
 /* A vine's helix turns a sixteenth about its support a point (the default's 22.5
  * degrees): a ring every 8 points is one every half turn, which far away still reads as
@@ -157,73 +153,6 @@ size_t lod_stems_triangles(const struct lod_stems *ls, size_t i, int level)
 	return 2 * m * (rings - 1) + m;
 }
 
-static void push_vertex(struct mesh *m, struct vec3 p, struct vec3 n)
-{
-	float *pos = &m->positions[3 * m->nvertices], *nor = &m->normals[3 * m->nvertices];
-
-	pos[0] = (float)p.x;
-	pos[1] = (float)p.y;
-	pos[2] = (float)p.z;
-	nor[0] = (float)n.x;
-	nor[1] = (float)n.y;
-	nor[2] = (float)n.z;
-	m->nvertices++;
-}
-
-static void push_tri(struct mesh *m, size_t a, size_t b, size_t c)
-{
-	m->indices[m->nindices++] = (uint32_t)a;
-	m->indices[m->nindices++] = (uint32_t)b;
-	m->indices[m->nindices++] = (uint32_t)c;
-}
-
-/* Shoot s's tube with `sides` sides through its rings' points a[0..n) (room made). */
-static void tube(const struct lod_shoot *s, const struct vec3 *a, size_t n, size_t sides,
-		 struct vec3 *t, struct vec3 *nr, struct mesh *m)
-{
-	size_t base = m->nvertices, cone, apex;
-	double r = s->radius, h = STEM_TIP_LENGTH * r;
-
-	tube_frame_build(a, n, t, nr);
-	for (size_t i = 0; i < n; i++) {
-		struct vec3 b = vec3_cross(t[i], nr[i]);
-
-		for (size_t j = 0; j < sides; j++) {
-			double th = 2.0 * VEC_PI * (double)j / (double)sides;
-			struct vec3 rad = vec3_add(vec3_scale(nr[i], cos(th)), vec3_scale(b, sin(th)));
-
-			push_vertex(m, vec3_add(a[i], vec3_scale(rad, r)), rad);
-		}
-	}
-	for (size_t i = 0; i + 1 < n; i++) {
-		size_t r0 = base + i * sides, r1 = r0 + sides;
-
-		for (size_t j = 0; j < sides; j++) {
-			size_t j1 = j + 1 == sides ? 0 : j + 1;
-
-			push_tri(m, r0 + j, r1 + j1, r1 + j);
-			push_tri(m, r0 + j, r0 + j1, r1 + j1);
-		}
-	}
-	/* the tip: the last ring again with the cone's normals, and its apex */
-	cone = m->nvertices;
-	{
-		struct vec3 tt = t[n - 1], b = vec3_cross(tt, nr[n - 1]);
-
-		for (size_t j = 0; j < sides; j++) {
-			double th = 2.0 * VEC_PI * (double)j / (double)sides;
-			struct vec3 rad = vec3_add(vec3_scale(nr[n - 1], cos(th)), vec3_scale(b, sin(th)));
-			struct vec3 nor = vec3_norm_or(vec3_add(vec3_scale(rad, h), vec3_scale(tt, r)), tt);
-
-			push_vertex(m, vec3_add(a[n - 1], vec3_scale(rad, r)), nor);
-		}
-		apex = m->nvertices;
-		push_vertex(m, vec3_add(a[n - 1], vec3_scale(tt, h)), tt);
-	}
-	for (size_t j = 0; j < sides; j++)
-		push_tri(m, cone + j, cone + (j + 1 == sides ? 0 : j + 1), apex);
-}
-
 int lod_stems_build(const struct lod_stems *ls, int level, const bool *keep, struct mesh *out)
 {
 	size_t nv = 0, ni = 0, longest = 0, stride = level_stride(level);
@@ -260,7 +189,7 @@ int lod_stems_build(const struct lod_stems *ls, int level, const bool *keep, str
 		if (s->n < 2 || (keep && !keep[i]))
 			continue;
 		rings = rings_of(s, stride, pts);
-		tube(s, pts, rings, (size_t)level_sides(s, level), t, nr, out);
+		vine_stem_tube(pts, rings, (size_t)level_sides(s, level), s->radius, t, nr, out);
 	}
 	free(nr);
 	free(t);

@@ -181,3 +181,12 @@ struct mesh;
 /* The stems (rings of ring_sides along the smoothed axes, closed tips) appended to stem,
  * the leaves (double-sided quads) to leaves. 0 or -ENOMEM. */
 int vine_mesh_append(const struct vine *v, struct mesh *stem, struct mesh *leaves);
+/*
+ * One shoot's stem through its axis points a[0..n) (n >= 2): rings of `sides` sides of
+ * radius r, rotation-minimising (they do not twist), closed at the tip by a cone one
+ * radius long; t and nr are scratch for n each; room made in m for sides (n + 1) + 1
+ * vertices and 2 sides (n - 1) + sides triangles. vine_mesh_append's stems, and the
+ * forest's coarser ones (src/forest/forest_lod_vine.c), are these.
+ */
+void vine_stem_tube(const struct vec3 *a, size_t n, size_t sides, double r, struct vec3 *t,
+		    struct vec3 *nr, struct mesh *m);

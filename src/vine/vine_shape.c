@@ -565,11 +565,11 @@ static int ring_sides(const struct vine *v)
  * root (on the ground, or inside its parent), closed by a cone VINE_TIP_LENGTH radii long.
  * M (n + 1) + 1 vertices, 2 M (n - 1) + M triangles; room made already.
  */
-static void tube(const struct vine *v, const struct vec3 *a, size_t n, struct vec3 *t,
-		 struct vec3 *nr, struct mesh *m)
+void vine_stem_tube(const struct vec3 *a, size_t n, size_t sides, double r, struct vec3 *t,
+		    struct vec3 *nr, struct mesh *m)
 {
-	size_t sides = (size_t)ring_sides(v), base = m->nvertices, cone, apex;
-	double r = v->p.radius, h = VINE_TIP_LENGTH * r;
+	size_t base = m->nvertices, cone, apex;
+	double h = VINE_TIP_LENGTH * r;
 
 	/* rotation-minimising: the rings do not twist */
 	tube_frame_build(a, n, t, nr);
@@ -659,7 +659,8 @@ int vine_mesh_append(const struct vine *v, struct mesh *stem, struct mesh *leave
 	if (ret == 0) {
 		for (size_t s = 0; s < v->nshoots; s++)
 			if (v->shoots[s].n >= 2)
-				tube(v, axes[s], v->shoots[s].n, t, nr, stem);
+				vine_stem_tube(axes[s], v->shoots[s].n, (size_t)ring_sides(v),
+					       v->p.radius, t, nr, stem);
 		for (size_t i = 0; i < nl; i++)
 			leaf_quad(&l[i], leaves);
 	}
