@@ -44,6 +44,7 @@
 #include "synth_tree.h"
 #include "synth_vine.h"
 #include "synth_wood.h"
+#include "same.h"
 #include "test.h"
 #include "vine.h"
 #include "wood.h"
@@ -88,29 +89,6 @@ static struct vec3 nor(const struct mesh *m, size_t v)
 static size_t tris(const struct mesh *m)
 {
 	return m->nindices / 3;
-}
-
-static bool same_mesh(const struct mesh *a, const struct mesh *b)
-{
-	if (a->nvertices != b->nvertices || a->nindices != b->nindices)
-		return false;
-	/* (an empty mesh may hold no arrays at all) */
-	return (a->nvertices == 0 ||
-		(!memcmp(a->positions, b->positions, a->nvertices * 3 * sizeof(float)) &&
-		 !memcmp(a->normals, b->normals, a->nvertices * 3 * sizeof(float)))) &&
-	       (a->nindices == 0 || !memcmp(a->indices, b->indices, a->nindices * sizeof(uint32_t)));
-}
-
-/* Finite, indices in range, whole triangles. */
-static void check_sane(const struct mesh *m)
-{
-	CHECK(m->nindices % 3 == 0);
-	for (size_t i = 0; i < 3 * m->nvertices; i++) {
-		CHECK(isfinite(m->positions[i]));
-		CHECK(isfinite(m->normals[i]));
-	}
-	for (size_t i = 0; i < m->nindices; i++)
-		CHECK(m->indices[i] < m->nvertices);
 }
 
 static double thickest(const struct tree *t)
@@ -176,7 +154,7 @@ static void check_bark_rule(const struct tree *t, const struct tree_mesh *full, 
 		cap = budget - st->leaf_triangles;
 	if (st->level == 0) {
 		CHECK(tris(&full->bark) <= cap);
-		CHECK(same_mesh(bark, &full->bark));
+		CHECK(mesh_bytes_equal(bark, &full->bark));
 		CHECK_INT(st->branches_kept, n);
 		goto done;
 	}
@@ -203,7 +181,7 @@ static void check_bark_rule(const struct tree *t, const struct tree_mesh *full, 
 		if (keep[i])
 			which[nk++] = i;
 	CHECK_INT(tree_mesh_copy_parts(&pm, &pmk, &cm, &cmk, which, nk, NULL, 0), 0);
-	CHECK(same_mesh(bark, &pm.bark));
+	CHECK(mesh_bytes_equal(bark, &pm.bark));
 	/* pruning only at the coarsest level */
 	CHECK(kept == n || st->level == FOREST_LOD_LEVELS);
 	tree_mesh_marks_finish(&pmk);
@@ -236,8 +214,8 @@ static void check_one(const struct tree *t, const struct tree_mesh *full, size_t
 
 	tree_mesh_init(&out);
 	CHECK_INT(forest_lod_build(t, budget, &out, &st), 0);
-	check_sane(&out.bark);
-	check_sane(&out.leaves);
+	check_mesh_sane(&out.bark);
+	check_mesh_sane(&out.leaves);
 	CHECK_INT(st.full_triangles, own);
 	CHECK_INT(st.bark_triangles, tris(&out.bark));
 	CHECK_INT(st.leaf_triangles, tris(&out.leaves));
@@ -245,8 +223,8 @@ static void check_one(const struct tree *t, const struct tree_mesh *full, size_t
 	CHECK(tris(&out.bark) + tris(&out.leaves) <= budget);
 	mg->cases++;
 	if (own <= budget) {
-		CHECK(same_mesh(&out.bark, &full->bark));
-		CHECK(same_mesh(&out.leaves, &full->leaves));
+		CHECK(mesh_bytes_equal(&out.bark, &full->bark));
+		CHECK(mesh_bytes_equal(&out.leaves, &full->leaves));
 		CHECK(st.level == 0 && st.cards == 0);
 		mg->full++;
 	} else {
@@ -257,15 +235,15 @@ static void check_one(const struct tree *t, const struct tree_mesh *full, size_t
 			CHECK(st.cards <= drawn && st.cell > 0.0);
 			mg->carded++;
 		} else {
-			CHECK(same_mesh(&out.leaves, &full->leaves));
+			CHECK(mesh_bytes_equal(&out.leaves, &full->leaves));
 		}
 		mg->pruned += st.branches_kept < t->nbranches;
 	}
 	if (again) {
 		tree_mesh_init(&out2);
 		CHECK_INT(forest_lod_build(t, budget, &out2, &st2), 0);
-		CHECK(same_mesh(&out.bark, &out2.bark));
-		CHECK(same_mesh(&out.leaves, &out2.leaves));
+		CHECK(mesh_bytes_equal(&out.bark, &out2.bark));
+		CHECK(mesh_bytes_equal(&out.leaves, &out2.leaves));
 		CHECK(!memcmp(&st, &st2, sizeof(st)));
 		tree_mesh_finish(&out2);
 	}
@@ -568,24 +546,24 @@ static void test_coarse(void)
 		CHECK_INT(tree_mesh_build_parts(&a, &ma, &t, all, t.nbranches, leaves, t.nleaves), 0);
 		CHECK_INT(tree_mesh_build_parts_coarse(&b, &mb, &t, all, t.nbranches, leaves,
 						       t.nleaves, NULL), 0);
-		CHECK(same_mesh(&a.bark, &b.bark) && same_mesh(&a.leaves, &b.leaves));
+		CHECK(mesh_bytes_equal(&a.bark, &b.bark) && mesh_bytes_equal(&a.leaves, &b.leaves));
 		{
 			struct mesh_coarse none = { 0, 1.0 }, finer = { 0, 0.5 };
 
 			CHECK_INT(tree_mesh_build_parts_coarse(&b, &mb, &t, all, t.nbranches, leaves,
 							       t.nleaves, &none), 0);
-			CHECK(same_mesh(&a.bark, &b.bark) && same_mesh(&a.leaves, &b.leaves));
+			CHECK(mesh_bytes_equal(&a.bark, &b.bark) && mesh_bytes_equal(&a.leaves, &b.leaves));
 			CHECK_INT(tree_mesh_build_parts_coarse(&b, &mb, &t, all, t.nbranches, leaves,
 							       t.nleaves, &finer), 0);
-			CHECK(same_mesh(&a.bark, &b.bark) && same_mesh(&a.leaves, &b.leaves));
+			CHECK(mesh_bytes_equal(&a.bark, &b.bark) && mesh_bytes_equal(&a.leaves, &b.leaves));
 		}
 		/* every level: sane, leaves untouched, joints hidden, fewer triangles (or as
 		 * many) than the level before */
 		for (int l = 0; l < FOREST_LOD_LEVELS; l++) {
 			CHECK_INT(tree_mesh_build_parts_coarse(&b, &mb, &t, all, t.nbranches, leaves,
 							       t.nleaves, &forest_lod_levels[l]), 0);
-			check_sane(&b.bark);
-			CHECK(same_mesh(&a.leaves, &b.leaves));
+			check_mesh_sane(&b.bark);
+			CHECK(mesh_bytes_equal(&a.leaves, &b.leaves));
 			children += check_joints(&t, &b, &mb, &forest_lod_levels[l], &least, &out,
 						 &poke);
 			CHECK(tris(&b.bark) <= prev);
@@ -627,7 +605,7 @@ static void test_least(void)
 			CHECK_INT(st.level, FOREST_LOD_LEVELS);
 			CHECK_INT(st.sides, MESH_MIN_SIDES);
 			CHECK_INT(st.branches_kept, 1);
-			CHECK(same_mesh(&out.bark, &trunk.bark));
+			CHECK(mesh_bytes_equal(&out.bark, &trunk.bark));
 			CHECK_INT(st.cards, leaves ? 1 : 0);
 			CHECK_INT(tris(&out.leaves), leaves ? 2 : 0);
 			if (leaves)

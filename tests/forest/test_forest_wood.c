@@ -41,6 +41,7 @@
 #include "live_trees.h"
 #include "rng.h"
 #include "season.h"
+#include "same.h"
 #include "test.h"
 #include "vine.h"
 #include "vine_presets.h"
@@ -50,28 +51,6 @@
 static size_t tris(const struct mesh *m)
 {
 	return m->nindices / 3;
-}
-
-static bool same_mesh(const struct mesh *a, const struct mesh *b)
-{
-	if (a->nvertices != b->nvertices || a->nindices != b->nindices)
-		return false;
-	return (a->nvertices == 0 ||
-		(!memcmp(a->positions, b->positions, a->nvertices * 3 * sizeof(float)) &&
-		 !memcmp(a->normals, b->normals, a->nvertices * 3 * sizeof(float)))) &&
-	       (a->nindices == 0 || !memcmp(a->indices, b->indices, a->nindices * sizeof(uint32_t)));
-}
-
-/* Finite, indices in range, whole triangles. */
-static void check_sane(const struct mesh *m)
-{
-	CHECK(m->nindices % 3 == 0);
-	for (size_t i = 0; i < 3 * m->nvertices; i++) {
-		CHECK(isfinite(m->positions[i]));
-		CHECK(isfinite(m->normals[i]));
-	}
-	for (size_t i = 0; i < m->nindices; i++)
-		CHECK(m->indices[i] < m->nvertices);
 }
 
 /* a ++ b ++ c as one mesh (b's and c's indices moved on) into out. */
@@ -311,8 +290,8 @@ static void check_one(const struct tree *t, const struct whole *w, const struct 
 
 	tree_mesh_init(&out);
 	CHECK_INT(forest_lod_build(t, budget, &out, &st), 0);
-	check_sane(&out.bark);
-	check_sane(&out.leaves);
+	check_mesh_sane(&out.bark);
+	check_mesh_sane(&out.leaves);
 	CHECK_INT(st.full_triangles, w->triangles);
 	CHECK_INT(st.bark_triangles, tris(&out.bark));
 	CHECK_INT(st.leaf_triangles, tris(&out.leaves));
@@ -325,8 +304,8 @@ static void check_one(const struct tree *t, const struct whole *w, const struct 
 	mg->builds++;
 	if (w->triangles <= budget) {
 		/* everything as it is, byte for byte */
-		CHECK(same_mesh(&out.bark, &w->bark));
-		CHECK(same_mesh(&out.leaves, &w->leaves));
+		CHECK(mesh_bytes_equal(&out.bark, &w->bark));
+		CHECK(mesh_bytes_equal(&out.leaves, &w->leaves));
 		CHECK(st.level == 0 && st.stem_level == 0 && st.cards == 0);
 		CHECK_INT(st.wood_triangles, w->wood ? tris(w->wood) : 0);
 		CHECK_INT(st.stem_triangles, tris(&w->vines.bark));
@@ -392,8 +371,8 @@ static void check_one(const struct tree *t, const struct whole *w, const struct 
 
 		tree_mesh_init(&out2);
 		CHECK_INT(forest_lod_build(t, budget, &out2, &st2), 0);
-		CHECK(same_mesh(&out.bark, &out2.bark));
-		CHECK(same_mesh(&out.leaves, &out2.leaves));
+		CHECK(mesh_bytes_equal(&out.bark, &out2.bark));
+		CHECK(mesh_bytes_equal(&out.leaves, &out2.leaves));
 		CHECK(!memcmp(&st, &st2, sizeof(st)));
 		tree_mesh_finish(&out2);
 	}
@@ -667,7 +646,7 @@ static void check_decimate(const struct mesh *wood, const struct key *keys, stru
 		CHECK(!memcmp(&db, &wb, sizeof(db)));
 		if (c == 1) {
 			CHECK_INT(forest_lod_decimate(wood, max, &m2, NULL), 0);
-			CHECK(same_mesh(&m, &m2));
+			CHECK(mesh_bytes_equal(&m, &m2));
 		}
 		dm->cases++;
 		dm->fewest_most = fewest > dm->fewest_most ? fewest : dm->fewest_most;

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include "same.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "test.h"
@@ -19,6 +20,27 @@ void same_mesh(const struct mesh *a, const struct mesh *b)
 	}
 	if (a->nindices)
 		CHECK(memcmp(a->indices, b->indices, a->nindices * sizeof(uint32_t)) == 0);
+}
+
+bool mesh_bytes_equal(const struct mesh *a, const struct mesh *b)
+{
+	if (a->nvertices != b->nvertices || a->nindices != b->nindices)
+		return false;
+	return (a->nvertices == 0 ||
+		(!memcmp(a->positions, b->positions, a->nvertices * 3 * sizeof(float)) &&
+		 !memcmp(a->normals, b->normals, a->nvertices * 3 * sizeof(float)))) &&
+	       (a->nindices == 0 || !memcmp(a->indices, b->indices, a->nindices * sizeof(uint32_t)));
+}
+
+void check_mesh_sane(const struct mesh *m)
+{
+	CHECK(m->nindices % 3 == 0);
+	for (size_t i = 0; i < 3 * m->nvertices; i++) {
+		CHECK(isfinite(m->positions[i]));
+		CHECK(isfinite(m->normals[i]));
+	}
+	for (size_t i = 0; i < m->nindices; i++)
+		CHECK(m->indices[i] < m->nvertices);
 }
 
 void same_tree(const struct tree *a, const struct tree *b)
