@@ -5,7 +5,6 @@
 #include "kiosk_private.h"
 
 #include <errno.h>
-#include <inttypes.h>
 #include <stdio.h>
 #include <sys/random.h>
 #include <unistd.h>
@@ -114,7 +113,7 @@ void kiosk_archive_replaced(struct kiosk *k)
 			fprintf(stderr, "edaha: New: the drawing is archived as %s/%s\n",
 				AUTOSAVE_ARCHIVE_DIR, name);
 		if (name[0])
-			kiosk_forest_archived(k, name);
+			kiosk_forest_archived(k, name, false);
 	}
 	tree_finish(&t);
 }
@@ -134,21 +133,19 @@ void kiosk_idle_reset(struct kiosk *k, uint64_t now)
 		fprintf(stderr, "edaha: warning: idle reset: cannot archive the drawing: %s\n", err.msg);
 	/* a drawing without a tree is archived too, but never planted */
 	if (name[0] && k->app->tree.nbranches)
-		number = kiosk_forest_archived(k, name);
+		number = kiosk_forest_archived(k, name, true);
 	else if (name[0])
 		kiosk_forest_refresh(k);
 	if (app_reset(k->app, fresh_seed()) < 0) {
 		kiosk_fail(k, "idle reset", -ENOMEM);
 		return;
 	}
-	/* whoever comes back for it: where it stands */
-	app_tell_forest_number(k->app, number, now);
 	fprintf(stderr, "edaha: idle for %.0f s: %s%s%s; a new canvas\n",
 		(double)(now - k->app->last_time_us) / 1e6,
 		name[0] ? "the drawing is archived as " : "the drawing is cleared",
 		name[0] ? AUTOSAVE_ARCHIVE_DIR "/" : "", name);
+	/* whoever comes back for it: where it stands */
 	if (number)
-		fprintf(stderr, "edaha: forest: the drawing is No. %" PRIu64 " in today's forest\n",
-			number);
+		kiosk_forest_tell(k, number);
 	kiosk_save_edits(k);
 }

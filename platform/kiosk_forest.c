@@ -39,6 +39,7 @@ struct kiosk_forest {
 	struct forest_day day;
 	uint64_t next;          /* the next archived drawing's number */
 	bool known;             /* a job has finished: day and next are the archive's */
+	uint64_t tell;          /* an idle reset's archive number, told once known */
 	struct forest_scene shown, back; /* shown: app->forest; back: the job's */
 	uint64_t serial;
 	/* the job on its thread */
@@ -203,6 +204,14 @@ static int on_done(void *data)
 		say(f, newest_before, f->job.planted, first);
 		forest_job_finish(&f->job);
 		app_set_forest_number(k->app, kiosk_forest_number(k));
+		if (f->tell) {
+			uint64_t number = forest_day_number(&f->day, f->tell);
+
+			/* archived before the forest was known (a slow start): told now */
+			f->tell = 0;
+			if (number)
+				kiosk_forest_tell(k, number);
+		}
 	}
 	if (f->again)
 		kiosk_forest_refresh(k);
@@ -332,10 +341,16 @@ uint64_t kiosk_forest_number(const struct kiosk *k)
 	return f && f->known ? forest_day_number(&f->day, f->next) : 0;
 }
 
-uint64_t kiosk_forest_archived(struct kiosk *k, const char *name)
+void kiosk_forest_tell(struct kiosk *k, uint64_t number)
+{
+	fprintf(stderr, "edaha: forest: the drawing is No. %" PRIu64 " in today's forest\n", number);
+	app_tell_forest_number(k->app, number, kiosk_now_us());
+}
+
+uint64_t kiosk_forest_archived(struct kiosk *k, const char *name, bool tell)
 {
 	struct kiosk_forest *f = k->forest;
-	uint64_t a = autosave_archive_number(name);
+	uint64_t a = autosave_archive_number(name), number;
 
 	if (!f || !a)
 		return 0;
@@ -343,7 +358,12 @@ uint64_t kiosk_forest_archived(struct kiosk *k, const char *name)
 		f->next = a + 1;
 	kiosk_forest_refresh(k);
 	app_set_forest_number(k->app, kiosk_forest_number(k));
-	return f->known ? forest_day_number(&f->day, a) : 0;
+	if (!f->known) {
+		f->tell = tell ? a : 0;
+		return 0;
+	}
+	number = forest_day_number(&f->day, a);
+	return number;
 }
 
 int kiosk_forest_glb(struct kiosk *k, struct buf *out, char date[11])

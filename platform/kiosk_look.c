@@ -13,10 +13,14 @@ void kiosk_look_of(const struct app *app, uint64_t now_us, struct kiosk_look *l)
 	memset(l, 0, sizeof(*l)); /* padding too, though only fields are compared */
 	l->status = app_status_at(app, now_us, NULL);
 	l->attract = app_attract_at(app, now_us, NULL);
+	/* each only where it shows: a planting that changes nothing on the screen (the
+	 * forest off it, no message with a number) draws no frame */
 	l->forest = app_forest_at(app, now_us);
-	l->forest_serial = app->forest ? app->forest->serial : 0;
-	l->status_number = app->status_number;
-	l->forest_number = app->forest_number;
+	l->forest_serial = l->forest ? app->forest->serial : 0;
+	l->status_number = l->status == APP_STATUS_IN_FOREST ? app->status_number : 0;
+	l->forest_number = l->status == APP_STATUS_SAVED || l->status == APP_STATUS_SAVED_USB
+				   ? app->forest_number
+				   : 0;
 	l->mesh_serial = app->mesh_serial;
 	l->previews_serial = app->previews_serial;
 	l->stroke_points = app->stroke.npoints;

@@ -162,8 +162,11 @@ void kiosk_forest_refresh(struct kiosk *k);
 /* The number the drawing on the canvas will have in today's forest when archived (0:
  * no forest, or not known yet). */
 uint64_t kiosk_forest_number(const struct kiosk *k);
-/* A drawing archived under name: planted; its number in the day (0: no forest). */
-uint64_t kiosk_forest_archived(struct kiosk *k, const char *name);
+/* A drawing archived under name: planted; its number in the day (0: no forest, or not
+ * known yet: with tell, said by kiosk_forest_tell once the forest's first job is done). */
+uint64_t kiosk_forest_archived(struct kiosk *k, const char *name, bool tell);
+/* "Your tree is No. number in today's forest", on the screen and in the journal. */
+void kiosk_forest_tell(struct kiosk *k, uint64_t number);
 /* Save on the forest: forest.glb's bytes (every standing tree at full detail, placed as
  * on screen, with its wind) into out, and the day's date "YYYY-MM-DD" (local time) into
  * date. 0, -ENODATA (no tree stands) or -ENOMEM. */

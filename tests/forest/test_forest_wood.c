@@ -61,7 +61,8 @@ static void concat(struct mesh *out, const struct mesh *const *parts, size_t n)
 		const struct mesh *p = parts[k];
 		size_t v0 = out->nvertices;
 
-		if (!p)
+		/* (an empty mesh may hold no arrays: memcpy is not given NULL) */
+		if (!p || p->nvertices == 0)
 			continue;
 		CHECK_INT(mesh_reserve(out, p->nvertices, p->nindices), 0);
 		memcpy(&out->positions[3 * v0], p->positions, 3 * p->nvertices * sizeof(float));

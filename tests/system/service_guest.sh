@@ -106,6 +106,7 @@ sleep 8
 "$scanout" /dev/dri/card0 /out/forest-1.png 2>> /out/scanout.err || say "no scanout"
 phase "the forest of one"
 export ARCHIVED_KILL="$0 archived-kill"
+export PEN_READY="$H/tablet_added.sh /out/edaha.log $(($(grep -c 'edaha virtual pen added' /out/edaha.log) + 1))"
 pid=$(show MainPID)
 UINPUT_PEN_WAIT_MS=0 "$pen" < "$H/forest.script" 2>> /out/pen.err || say "uinput_pen failed"
 other() { [ "$(show MainPID)" != "$pid" ] && [ "$(show MainPID)" != 0 ] && [ "$(show ActiveState)" = active ]; }
