@@ -226,6 +226,37 @@ static int upload_trunk(GLuint *vbo, const uint8_t *trunk, const struct mesh *m,
 	return 0;
 }
 
+/* The leaves' season colours as the drawing screen shows a palette colour (leaf_tint_map:
+ * lighter than the palette, summer exactly its green); a leaf's vertices share a colour, so
+ * each run is mapped once. */
+static int upload_leaf_tints(struct render_forest *f, const struct forest_scene *s)
+{
+	size_t n = s->mesh.leaves.nvertices;
+	float *rgb = malloc(3 * n * sizeof(*rgb) + 1), last[3] = { -1.0f, -1.0f, -1.0f }, out[3] = { 0 };
+	float summer[3] = { LEAF_TINT_SUMMER_RGB };
+	const struct season_rgb *palette;
+	int ret;
+
+	if (!rgb)
+		return -ENOMEM;
+	(void)season_palette(SEASON_SUMMER, &palette);
+	for (size_t v = 0; v < n; v++) {
+		const float *in = &s->leaf_rgb[3 * v];
+
+		if (memcmp(in, last, sizeof(last)) != 0) {
+			memcpy(last, in, sizeof(last));
+			if (in[0] == palette[0].r && in[1] == palette[0].g && in[2] == palette[0].b)
+				memcpy(out, summer, sizeof(out));
+			else
+				leaf_tint_map((struct season_rgb){ in[0], in[1], in[2] }, out);
+		}
+		memcpy(&rgb[3 * v], out, sizeof(out));
+	}
+	ret = render_mesh_upload_tints(&f->leaves, &s->mesh.leaves, rgb);
+	free(rgb);
+	return ret;
+}
+
 /* The bark's colours when vines climb in the forest: a vine's stems as the drawing screen
  * colours them (render_vine_stem), the rest the bark's. */
 static int upload_bark_tints(struct render_forest *f, const struct forest_scene *s)
@@ -273,7 +304,7 @@ static int upload(struct render *r, const struct forest_scene *s)
 	if (ret == 0)
 		ret = render_mesh_upload(&f->leaves, &s->mesh.leaves, r->uint_indices);
 	if (ret == 0 && s->leaf_rgb)
-		ret = render_mesh_upload_tints(&f->leaves, &s->mesh.leaves, s->leaf_rgb);
+		ret = upload_leaf_tints(f, s);
 	if (ret == 0 && s->bark_vine)
 		ret = upload_bark_tints(f, s);
 	if (ret == 0)
