@@ -52,30 +52,6 @@
 #define TEST_PI 3.14159265358979323846
 #define TUBE_MIN_RADIUS 0.0005 /* mesh_private.h: a joint shrinks a root ring no further */
 
-struct box {
-	double lo[3], hi[3];
-};
-
-static void box_empty(struct box *b)
-{
-	for (int k = 0; k < 3; k++) {
-		b->lo[k] = INFINITY;
-		b->hi[k] = -INFINITY;
-	}
-}
-
-static void box_add(struct box *b, const struct mesh *m)
-{
-	for (size_t v = 0; v < m->nvertices; v++) {
-		for (int k = 0; k < 3; k++) {
-			double x = m->positions[3 * v + (size_t)k];
-
-			b->lo[k] = fmin(b->lo[k], x);
-			b->hi[k] = fmax(b->hi[k], x);
-		}
-	}
-}
-
 static struct vec3 pos(const struct mesh *m, size_t v)
 {
 	return vec3(m->positions[3 * v], m->positions[3 * v + 1], m->positions[3 * v + 2]);

@@ -74,30 +74,6 @@ static void concat(struct mesh *out, const struct mesh *const *parts, size_t n)
 	}
 }
 
-struct box {
-	double lo[3], hi[3];
-};
-
-static void box_empty(struct box *b)
-{
-	for (int k = 0; k < 3; k++) {
-		b->lo[k] = INFINITY;
-		b->hi[k] = -INFINITY;
-	}
-}
-
-static void box_add(struct box *b, const struct mesh *m)
-{
-	for (size_t v = 0; m && v < m->nvertices; v++) {
-		for (int k = 0; k < 3; k++) {
-			double x = m->positions[3 * v + (size_t)k];
-
-			b->lo[k] = fmin(b->lo[k], x);
-			b->hi[k] = fmax(b->hi[k], x);
-		}
-	}
-}
-
 /* ---- trees as visitors grow them --------------------------------------------------- */
 
 /* The kiosk's vine, scaled to the trunk as app_mode_vine.c's scaled_params does. */

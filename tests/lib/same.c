@@ -32,6 +32,26 @@ bool mesh_bytes_equal(const struct mesh *a, const struct mesh *b)
 	       (a->nindices == 0 || !memcmp(a->indices, b->indices, a->nindices * sizeof(uint32_t)));
 }
 
+void box_empty(struct box *b)
+{
+	for (int k = 0; k < 3; k++) {
+		b->lo[k] = INFINITY;
+		b->hi[k] = -INFINITY;
+	}
+}
+
+void box_add(struct box *b, const struct mesh *m)
+{
+	for (size_t v = 0; m && v < m->nvertices; v++) {
+		for (int k = 0; k < 3; k++) {
+			double x = m->positions[3 * v + (size_t)k];
+
+			b->lo[k] = fmin(b->lo[k], x);
+			b->hi[k] = fmax(b->hi[k], x);
+		}
+	}
+}
+
 void check_mesh_sane(const struct mesh *m)
 {
 	CHECK(m->nindices % 3 == 0);
