@@ -191,8 +191,13 @@
 					for (var i = 0; i < o.morphTargetInfluences.length; i++)
 						o.morphTargetInfluences[i] = 0;
 			});
+			/* a turn still easing out ends now (damping off: the rest at once), then
+			 * the front again */
+			controls.enableDamping = false;
+			controls.update();
 			front();
 			controls.update();
+			controls.enableDamping = true;
 		};
 
 		function tick() {
