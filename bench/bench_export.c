@@ -454,13 +454,14 @@ static void save_row(const char *name, bool cherry, const struct page_look *look
 		/* the page alone: made, then written as fileio writes a file (fsync, rename) */
 		buf_reset(&html);
 		t0 = bench_now();
-		if (page_viewer_html(look, s.files[EXPORT_SET_GLB].data, s.files[EXPORT_SET_GLB].len,
+		if (look->viewer &&
+		    page_viewer_html(look, s.files[EXPORT_SET_GLB].data, s.files[EXPORT_SET_GLB].len,
 				     1, s.page_date, &html) < 0) {
 			fprintf(stderr, "bench_export: the page: out of memory\n");
 			exit(1);
 		}
 		t1 = bench_now();
-		if (fileio_write_atomic(sub, "page.html", html.data, html.len, &err) < 0) {
+		if (look->viewer && fileio_write_atomic(sub, "page.html", html.data, html.len, &err) < 0) {
 			fprintf(stderr, "bench_export: %s\n", err.msg);
 			exit(1);
 		}
@@ -474,7 +475,7 @@ static void save_row(const char *name, bool cherry, const struct page_look *look
 	}
 	for (size_t i = 0; i < EXPORT_NAMES_NSUFFIXES; i++)
 		all += sizes[i];
-	printf("%-10s %8.1f %8.1f %7.1f %7.1f %9.1f %8.2f %12.2f %8.1f %9.1f %8.1f %8.1f %8.1f\n",
+	printf("%-15s %8.1f %8.1f %7.1f %7.1f %9.1f %8.2f %12.2f %8.1f %9.1f %8.1f %8.1f %8.1f\n",
 	       name, sizes[EXPORT_SET_GLB] / 1e3, sizes[EXPORT_SET_HTML] / 1e3,
 	       sizes[EXPORT_SET_PNG] / 1e3, sizes[EXPORT_SET_EDAHA] / 1e3,
 	       (sizes[EXPORT_SET_OBJ] + sizes[EXPORT_SET_MTL]) / 1e3, all / 1e6,
@@ -505,13 +506,18 @@ static void run_save(void)
 	printf("\nbench_export: a Save with the page (tree-NNNN.*, issue 28), median of %d runs "
 	       "(KB, MB, ms); the viewer's scripts %zu KB\n\n", bench_reps(REPS),
 	       (viewer.scripts[0].len + viewer.scripts[1].len + viewer.scripts[2].len) / 1000);
-	printf("%-10s %8s %8s %7s %7s %9s %8s %12s %8s %9s %8s %8s %8s\n", "tree", "glb KB",
+	printf("%-15s %8s %8s %7s %7s %9s %8s %12s %8s %9s %8s %8s %8s\n", "tree", "glb KB",
 	       "html KB", "png KB", "edaha", "obj+mtl", "set MB", "glb+html+png", "page ms",
 	       "page wr ms", "build ms", "write ms", "Save ms");
-	printf("%-10s %8s %8s %7s %7s %9s %8s %12s\n", "", "", "", "", "KB", "KB", "", "+edaha MB");
+	printf("%-15s %8s %8s %7s %7s %9s %8s %12s\n", "", "", "", "", "KB", "KB", "", "+edaha MB");
 	save_row("demo (3D)", false, &look);
 	if (!bench_quick)
 		save_row("cherry", true, &look);
+	/* as before the page: the same Save without it */
+	look.viewer = NULL;
+	save_row("demo, no page", false, &look);
+	if (!bench_quick)
+		save_row("cherry, no page", true, &look);
 	page_viewer_finish(&viewer);
 }
 
