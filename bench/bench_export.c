@@ -10,19 +10,38 @@
  * in 3D), cherry and a 1,000-branch tree with 20 leaves a branch. Then today's forest
  * (issue 27): export_glb_forest of 10, 20 and 40 trees of the demo's size (the demo in
  * 3D) and of cherry's, each its own seed and place, with the wind over the 8 s loop,
- * against as many model.glb.
+ * against as many model.glb. Last, a Save with the take-home page (issue 28) of the demo
+ * in 3D and of cherry, each drawn by the kiosk's renderer into llvmpipe at 1280x800 for its
+ * picture: the page's size and the time to make it (export_page_html with Debian's
+ * libjs-three) and to write it (temporary, fsync, rename), every file's size, and the
+ * Save's two halves: export_set_build on the main thread, export_set_save (the page made,
+ * the six files written, fsynced and renamed) into a fresh directory on this disk.
  */
+#include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include "app.h"
 #include "bench_draw.h"
 #include "bench_util.h"
 #include "buf.h"
+#include "egl_headless.h"
 #include "export.h"
+#include "export_set.h"
+#include "fileio.h"
+#include "font_file.h"
 #include "live_trees.h"
 #include "mesh.h"
+#include "page_viewer.h"
+#include "render.h"
+#include "render_shaders.h"
 #include "synth_tree.h"
+#include "trace.h"
 #include "tree.h"
 
 #define REPS 7
@@ -317,6 +336,191 @@ static void run_forest(void)
 	tree_finish(&t);
 }
 
+/* ---- a Save with the page (issue 28) ---------------------------------------------- */
+
+#define SAVE_W 1280
+#define SAVE_H 800
+
+/* The app as the kiosk holds it at Save: the demo drawn and lifted, or cherry's template. */
+static struct app *save_app(bool cherry)
+{
+	struct app *app = app_create(SAVE_W, SAVE_H, 1);
+	struct event e = { .type = EVENT_BUTTON, .pressed = true };
+	struct error err = { { 0 } };
+	char path[4096];
+	struct trace tr;
+
+	if (!app)
+		return NULL;
+	trace_init(&tr);
+	if (!cherry) {
+		snprintf(path, sizeof(path), "%s/demo.edaha-trace", BENCH_DATA_DIR);
+		if (trace_load(path, SAVE_W, SAVE_H, &tr, &err) < 0) {
+			fprintf(stderr, "bench_export: %s\n", err.msg);
+			app_destroy(app);
+			return NULL;
+		}
+		for (size_t i = 0; i < tr.nevents; i++)
+			app_handle_event(app, &tr.events[i]);
+		trace_finish(&tr);
+	}
+	e.button = cherry ? BUTTON_TPL_CHERRY : BUTTON_3D;
+	e.time_us = app->last_time_us + 100000;
+	app_handle_event(app, &e);
+	e.pressed = false;
+	e.time_us += 100000;
+	app_handle_event(app, &e);
+	(void)app_take_requests(app);
+	if (app->failed || app->tree.nbranches == 0) {
+		fprintf(stderr, "bench_export: the %s did not come out\n", cherry ? "cherry" : "demo");
+		app_destroy(app);
+		return NULL;
+	}
+	return app;
+}
+
+/* The screen as the kiosk shows it at Save, read back: the picture's pixels. */
+static int save_picture(struct app *app, uint8_t *rgba)
+{
+	struct error err = { { 0 } };
+	struct egl_headless *egl = egl_headless_create(SAVE_W, SAVE_H, &err);
+	struct render *render = egl ? render_create() : NULL;
+	const char *used;
+	char *font = NULL;
+	size_t len;
+	int r = -EIO;
+
+	if (render && font_file_read(NULL, &font, &len, &used, &err) == 0)
+		(void)render_set_text(render, font, len, RENDER_LANG_EN);
+	(void)app_vines_advance(app, UINT64_MAX);
+	if (render && render_frame(render, app) == 0 && egl_headless_read_rgba(egl, rgba) == 0)
+		r = 0;
+	else
+		fprintf(stderr, "bench_export: no picture: %s\n", err.msg[0] ? err.msg : "rendering failed");
+	free(font);
+	render_destroy(render);
+	egl_headless_destroy(egl);
+	return r;
+}
+
+static void remove_set(const char *dir)
+{
+	char cmd[4200];
+
+	snprintf(cmd, sizeof(cmd), "rm -rf '%s'", dir);
+	if (system(cmd) != 0)
+		fprintf(stderr, "bench_export: cannot remove %s\n", dir);
+}
+
+static void save_row(const char *name, bool cherry, const struct page_look *look)
+{
+	int reps = bench_reps(REPS);
+	double build[REPS], write[REPS], page[REPS], page_write[REPS];
+	size_t sizes[EXPORT_NAMES_NSUFFIXES] = { 0 }, all = 0;
+	struct app *app = save_app(cherry);
+	uint8_t *rgba = malloc((size_t)SAVE_W * SAVE_H * 4);
+	char dir[] = "/tmp/edaha-bench-save-XXXXXX", sub[64], base[32];
+	struct error err = { { 0 } };
+	struct export_set s;
+	struct buf html;
+
+	if (!app || !rgba || save_picture(app, rgba) < 0 || !mkdtemp(dir)) {
+		fprintf(stderr, "bench_export: cannot set up the save of the %s\n", name);
+		exit(1);
+	}
+	buf_init(&html);
+	for (int rep = 0; rep < reps; rep++) {
+		double t0, t1, t2;
+		int fd;
+
+		export_set_init(&s);
+		s.page = *look;
+		t0 = bench_now();
+		if (export_set_build(&s, app, rgba, &err) < 0) {
+			fprintf(stderr, "bench_export: %s\n", err.msg);
+			exit(1);
+		}
+		t1 = bench_now();
+		snprintf(sub, sizeof(sub), "%s/%d", dir, rep);
+		if (mkdir(sub, 0755) < 0 || (fd = open(sub, O_RDONLY | O_DIRECTORY | O_CLOEXEC)) < 0 ||
+		    export_set_save(fd, &s, base, sizeof(base), &err) < 0) {
+			fprintf(stderr, "bench_export: saving: %s\n", err.msg);
+			exit(1);
+		}
+		t2 = bench_now();
+		close(fd);
+		build[rep] = t1 - t0;
+		write[rep] = t2 - t1;
+		/* the page alone: made, then written as fileio writes a file (fsync, rename) */
+		buf_reset(&html);
+		t0 = bench_now();
+		if (look->viewer &&
+		    page_viewer_html(look, s.files[EXPORT_SET_GLB].data, s.files[EXPORT_SET_GLB].len,
+				     1, s.page_date, &html) < 0) {
+			fprintf(stderr, "bench_export: the page: out of memory\n");
+			exit(1);
+		}
+		t1 = bench_now();
+		if (look->viewer && fileio_write_atomic(sub, "page.html", html.data, html.len, &err) < 0) {
+			fprintf(stderr, "bench_export: %s\n", err.msg);
+			exit(1);
+		}
+		t2 = bench_now();
+		page[rep] = t1 - t0;
+		page_write[rep] = t2 - t1;
+		for (size_t i = 0; i < EXPORT_NAMES_NSUFFIXES; i++)
+			sizes[i] = s.files[i].len;
+		export_set_finish(&s);
+		remove_set(sub);
+	}
+	for (size_t i = 0; i < EXPORT_NAMES_NSUFFIXES; i++)
+		all += sizes[i];
+	printf("%-15s %8.1f %8.1f %7.1f %7.1f %9.1f %8.2f %12.2f %8.1f %9.1f %8.1f %8.1f %8.1f\n",
+	       name, sizes[EXPORT_SET_GLB] / 1e3, sizes[EXPORT_SET_HTML] / 1e3,
+	       sizes[EXPORT_SET_PNG] / 1e3, sizes[EXPORT_SET_EDAHA] / 1e3,
+	       (sizes[EXPORT_SET_OBJ] + sizes[EXPORT_SET_MTL]) / 1e3, all / 1e6,
+	       (sizes[EXPORT_SET_GLB] + sizes[EXPORT_SET_HTML] + sizes[EXPORT_SET_PNG] +
+		sizes[EXPORT_SET_EDAHA]) / 1e6,
+	       bench_median(page, (size_t)reps) * 1e3, bench_median(page_write, (size_t)reps) * 1e3,
+	       bench_median(build, (size_t)reps) * 1e3, bench_median(write, (size_t)reps) * 1e3,
+	       (bench_median(build, (size_t)reps) + bench_median(write, (size_t)reps)) * 1e3);
+	remove_set(dir);
+	buf_finish(&html);
+	free(rgba);
+	app_destroy(app);
+}
+
+static void run_save(void)
+{
+	struct page_look look = { .lang = EXPORT_PAGE_EN,
+				  .paper = { render_paper[0], render_paper[1], render_paper[2] } };
+	struct page_viewer viewer;
+	struct error err = { { 0 } };
+
+	page_viewer_init(&viewer);
+	if (page_viewer_load(&viewer, NULL, &err) < 0) {
+		printf("\nbench_export: no Save with the page: %s (Debian's libjs-three)\n", err.msg);
+		return;
+	}
+	look.viewer = &viewer;
+	printf("\nbench_export: a Save with the page (tree-NNNN.*, issue 28), median of %d runs "
+	       "(KB, MB, ms); the viewer's scripts %zu KB\n\n", bench_reps(REPS),
+	       (viewer.scripts[0].len + viewer.scripts[1].len + viewer.scripts[2].len) / 1000);
+	printf("%-15s %8s %8s %7s %7s %9s %8s %12s %8s %9s %8s %8s %8s\n", "tree", "glb KB",
+	       "html KB", "png KB", "edaha", "obj+mtl", "set MB", "glb+html+png", "page ms",
+	       "page wr ms", "build ms", "write ms", "Save ms");
+	printf("%-15s %8s %8s %7s %7s %9s %8s %12s\n", "", "", "", "", "KB", "KB", "", "+edaha MB");
+	save_row("demo (3D)", false, &look);
+	if (!bench_quick)
+		save_row("cherry", true, &look);
+	/* as before the page: the same Save without it */
+	look.viewer = NULL;
+	save_row("demo, no page", false, &look);
+	if (!bench_quick)
+		save_row("cherry, no page", true, &look);
+	page_viewer_finish(&viewer);
+}
+
 int main(int argc, char **argv)
 {
 	static const int sizes[NSIZES] = { 100, 250, 500, 1000 };
@@ -384,5 +588,6 @@ int main(int argc, char **argv)
 		       (double)drawn[i].bark_tris / (double)drawn[i].branches, drawn[i].leaf_tris);
 	run_wind();
 	run_forest();
+	run_save();
 	return 0;
 }

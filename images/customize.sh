@@ -18,6 +18,11 @@ for unit in edaha.service edaha-usb.socket edaha-usb@.service; do
 	[ -f "$root/lib/systemd/system/$unit" ] ||
 		{ echo "customize: the package installed no $unit" >&2; exit 1; }
 done
+# the viewer every saved tree-NNNN.html carries (libjs-three, docs/page.md)
+for js in three.min.js examples/js/loaders/GLTFLoader.js examples/js/controls/OrbitControls.js; do
+	[ -f "$root/usr/share/javascript/three/$js" ] ||
+		{ echo "customize: no $js (libjs-three): saves would carry no page" >&2; exit 1; }
+done
 
 # --- who and where ---
 echo edaha > "$root/etc/hostname"

@@ -15,7 +15,9 @@
 #include "gen.h"
 #include "headless_one.h"
 #include "output.h"
+#include "page_viewer.h"
 #include "render.h"
+#include "render_shaders.h"
 #include "skeleton_read.h"
 #include "trace.h"
 #include "wood.h"
@@ -36,6 +38,7 @@ struct run {
 	struct trace_writer *rec;
 	uint64_t now_us;
 	int status;
+	bool page; /* model.html written */
 };
 
 static void feed(struct run *r, const struct event *ev)
@@ -245,10 +248,24 @@ static int render_and_write(struct run *r)
 		const struct export_wind wind = { .strength = o->wind > 0 ? o->wind : 0.0,
 						  .angle = EXPORT_WIND_ANGLE,
 						  .seed = r->app->doc.seed };
+		struct page_look look = {
+			.lang = o->lang && !strcmp(o->lang, "ja") ? EXPORT_PAGE_JA : EXPORT_PAGE_EN,
+			.paper = { render_paper[0], render_paper[1], render_paper[2] },
+		};
+		struct page_viewer viewer;
 
-		ret = output_write_all(r->app, o->out_dir, rgba, &wind, &err);
+		/* the page needs the viewer's scripts; the rest is written without them */
+		page_viewer_init(&viewer);
+		if (page_viewer_load(&viewer, NULL, &err) < 0)
+			fprintf(stderr, "edaha: no model.html: %s (the viewer's scripts are Debian's "
+				"libjs-three)\n", err.msg);
+		else
+			look.viewer = &viewer;
+		r->page = look.viewer != NULL;
+		ret = output_write_all(r->app, o->out_dir, rgba, &wind, &look, &err);
 		if (ret < 0)
 			fprintf(stderr, "edaha: %s\n", err.msg);
+		page_viewer_finish(&viewer);
 	}
 	free(rgba);
 	return ret < 0 ? 1 : 0;
@@ -336,9 +353,9 @@ int headless_run(const struct options *o)
 	if (status == 0 && o->dump_voxels)
 		status = dump_voxels(r.app, o->out_dir);
 	if (status == 0)
-		printf("edaha: wrote screen.png, model.glb, model.obj, model.mtl, skeleton.json%s and "
-		       "drawing.edaha to %s\n", o->dump_voxels ? ", voxels.json, voxels.bin" : "",
-		       o->out_dir);
+		printf("edaha: wrote screen.png, model.glb, %smodel.obj, model.mtl, skeleton.json%s "
+		       "and drawing.edaha to %s\n", r.page ? "model.html, " : "",
+		       o->dump_voxels ? ", voxels.json, voxels.bin" : "", o->out_dir);
 out:
 	if (r.rec && trace_writer_destroy(r.rec) < 0 && status == 0) {
 		fprintf(stderr, "edaha: %s: cannot write the recording\n", o->record);

@@ -19,6 +19,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "export_set.h"
 #include "notify.h"
 
 uint64_t kiosk_now_us(void)
@@ -174,6 +175,9 @@ void kiosk_destroy(struct kiosk *k)
 		fprintf(stderr, "edaha: %s: cannot write the recording\n", k->cfg.record);
 	/* waits for a save under way: its files reach the stick whole or not at all */
 	usb_export_destroy(k->usb);
+	/* no set is being written any more: the page's scripts can go */
+	export_set_page_default(NULL);
+	page_viewer_finish(&k->page_viewer);
 	grow_worker_destroy(k->grow); /* and for a press under way */
 	kiosk_forest_destroy(k);       /* and for a planting */
 	/* GL objects go while the display's context is still current */

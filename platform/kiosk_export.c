@@ -7,6 +7,9 @@
 #include <errno.h>
 #include <stdio.h>
 
+#include "export_set.h"
+#include "render_shaders.h"
+
 static void usb_status(void *data, enum app_status status, bool held)
 {
 	struct kiosk *k = data;
@@ -29,10 +32,21 @@ int kiosk_open_usb(struct kiosk *k)
 		.status = usb_status,
 		.data = k,
 	};
+	struct page_look look = {
+		.lang = k->cfg.language == RENDER_LANG_JA ? EXPORT_PAGE_JA : EXPORT_PAGE_EN,
+		.paper = { render_paper[0], render_paper[1], render_paper[2] },
+	};
 	struct kiosk_source src[2];
 	struct error err = { { 0 } };
 	size_t n;
 
+	/* the take-home page's viewer, read once; without it a save is the rest, said once */
+	if (page_viewer_load(&k->page_viewer, NULL, &err) < 0)
+		fprintf(stderr, "edaha: export: saves carry no page (tree-NNNN.html): %s (the "
+			"viewer's scripts are Debian's libjs-three)\n", err.msg);
+	else
+		look.viewer = &k->page_viewer;
+	export_set_page_default(&look);
 	k->usb = usb_export_create(&uc, &err);
 	if (!k->usb) {
 		fprintf(stderr, "edaha: %s\n", err.msg);

@@ -18,6 +18,7 @@
 #include "grow_worker.h"
 #include "kiosk.h"
 #include "latency.h"
+#include "page_viewer.h"
 #include "trace.h"
 #include "usb_export.h"
 
@@ -104,6 +105,7 @@ struct kiosk {
 	bool export_forest; /* ...of today's forest too: Save pressed while it was on screen */
 	uint8_t *pixels;
 	struct usb_export *usb;  /* where the export goes: sticks, the local copy */
+	struct page_viewer page_viewer; /* the take-home page's scripts, read at start */
 	struct grow_worker *grow; /* grow presses, off the loop */
 	/* the press's start, and frames drawn and shown by then */
 	uint64_t grow_started_us, grow_frames, grow_shown;

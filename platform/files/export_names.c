@@ -6,7 +6,7 @@
 #include <string.h>
 
 const char *const export_names_suffixes[EXPORT_NAMES_NSUFFIXES] = {
-	".glb", ".obj", ".mtl", ".png", ".edaha",
+	".glb", ".obj", ".mtl", ".png", ".edaha", ".html",
 };
 
 void export_names_init(struct export_names *n)

@@ -3,10 +3,10 @@
 
 /*
  * The names an export set takes in a directory (a USB stick's edaha/, kiosk.export_dir):
- * tree-NNNN.glb, .obj, .mtl, .png, .edaha (NNNN at least four digits), written through
- * temporaries .tree-NNNN.EXT.tmp. The next number is found from one listing of the
- * directory, the names fed in one by one: pure, so thousands of files cost one readdir
- * and no stat each. Names compare without case, as FAT does.
+ * tree-NNNN.glb, .obj, .mtl, .png, .edaha and .html, the take-home page (NNNN at least
+ * four digits), written through temporaries .tree-NNNN.EXT.tmp. The next number is found
+ * from one listing of the directory, the names fed in one by one: pure, so thousands of
+ * files cost one readdir and no stat each. Names compare without case, as FAT does.
  */
 #include <stdbool.h>
 #include <stddef.h>
@@ -15,7 +15,7 @@
 /* Numbers stay below this (five digits); a directory that holds them all is full. */
 #define EXPORT_NAMES_MAX 99999u
 /* The files of a set, in the order they are written. */
-#define EXPORT_NAMES_NSUFFIXES 5
+#define EXPORT_NAMES_NSUFFIXES 6
 extern const char *const export_names_suffixes[EXPORT_NAMES_NSUFFIXES];
 
 enum export_name_kind {

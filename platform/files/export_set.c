@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "export.h"
@@ -18,6 +19,17 @@
 #define EXPORT_SET_MTL_PLACEHOLDER "tree.mtl"
 #define NAME_SIZE 48
 
+/* The kiosk's page, set on its main thread before any set is made there. */
+static struct page_look page_default;
+
+void export_set_page_default(const struct page_look *look)
+{
+	if (look)
+		page_default = *look;
+	else
+		page_default = (struct page_look){ .viewer = NULL };
+}
+
 void export_set_init(struct export_set *s)
 {
 	for (size_t i = 0; i < EXPORT_NAMES_NSUFFIXES; i++)
@@ -26,6 +38,21 @@ void export_set_init(struct export_set *s)
 	buf_init(&s->forest);
 	s->forest_date[0] = s->forest_name[0] = '\0';
 	s->forest_only = false;
+	s->page = page_default;
+	s->page_date[0] = '\0';
+}
+
+/* Today as the page says it, by the local clock ("" when it cannot be read). */
+static void page_today(struct export_set *s)
+{
+	time_t now = time(NULL);
+	struct tm tm;
+
+	s->page_date[0] = '\0';
+	if (now == (time_t)-1 || !localtime_r(&now, &tm))
+		return;
+	(void)export_page_date(s->page.lang, tm.tm_year + 1900, tm.tm_mon + 1, tm.tm_mday,
+			       s->page_date, sizeof(s->page_date));
 }
 
 void export_set_finish(struct export_set *s)
@@ -54,6 +81,7 @@ int export_set_build(struct export_set *s, const struct app *app, const uint8_t 
 		return error_set(err, r, "cannot build the .obj: %s", strerror(-r));
 	if ((r = doc_serialize(&app->doc, &app->tree, &f[EXPORT_SET_EDAHA])) < 0)
 		return error_set(err, r, "cannot build the .edaha: %s", strerror(-r));
+	page_today(s);
 	if (rgba)
 		return pngio_encode_rgba(rgba, app->screen.width, app->screen.height,
 					 &f[EXPORT_SET_PNG], err);
@@ -185,8 +213,18 @@ int export_set_write(int dirfd, struct export_set *s, unsigned number, struct er
 	r = export_obj_mtllib(&s->files[EXPORT_SET_OBJ], final[EXPORT_SET_MTL]);
 	if (r < 0)
 		return error_set(err, r, "cannot name the .mtl in the .obj: %s", strerror(-r));
+	/* the page shows the number: made again for each */
+	buf_reset(&s->files[EXPORT_SET_HTML]);
+	if (s->page.viewer) {
+		const struct buf *glb = &s->files[EXPORT_SET_GLB];
+
+		r = page_viewer_html(&s->page, glb->data, glb->len, number, s->page_date,
+				     &s->files[EXPORT_SET_HTML]);
+		if (r < 0)
+			return error_set(err, r, "cannot build the .html: %s", strerror(-r));
+	}
 	for (i = 0; i < EXPORT_NAMES_NSUFFIXES; i++) {
-		if (i == EXPORT_SET_PNG && s->files[i].len == 0)
+		if ((i == EXPORT_SET_PNG || i == EXPORT_SET_HTML) && s->files[i].len == 0)
 			continue;
 		r = write_temp(dirfd, tmp[i], &s->files[i]);
 		/* even a failed create may have made the name (EIO after it): remove it

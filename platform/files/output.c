@@ -16,7 +16,8 @@ static int write_buf(const char *dir, const char *name, struct buf *b, int ret, 
 }
 
 int output_write(const struct app *app, const char *dir, const struct output_names *n,
-		 const uint8_t *rgba, const struct export_wind *wind, struct error *err)
+		 const uint8_t *rgba, const struct export_wind *wind,
+		 const struct page_look *page, struct error *err)
 {
 	struct buf a, b;
 	int ret;
@@ -24,12 +25,21 @@ int output_write(const struct app *app, const char *dir, const struct output_nam
 	buf_init(&a);
 	buf_init(&b);
 	ret = fileio_mkdirs(dir, err);
+	if (ret == 0 && (n->glb || n->html)) {
+		int r = export_glb_wind(&app->tree, &app->mesh, &app->mesh_marks, wind, &a);
+
+		if (r < 0)
+			ret = write_buf(dir, n->glb ? n->glb : n->html, &a, r, err);
+	}
 	if (ret == 0 && n->glb)
-		ret = write_buf(dir, n->glb, &a,
-				export_glb_wind(&app->tree, &app->mesh, &app->mesh_marks, wind, &a),
+		ret = write_buf(dir, n->glb, &a, 0, err);
+	/* the page of the very bytes model.glb has */
+	if (ret == 0 && n->html && page && page->viewer)
+		ret = write_buf(dir, n->html, &b, page_viewer_html(page, a.data, a.len, 0, NULL, &b),
 				err);
 	if (ret == 0 && n->obj && n->mtl) {
 		buf_reset(&a);
+		buf_reset(&b);
 		ret = export_obj(&app->tree, &app->mesh, &app->mesh_marks, n->mtl, &a, &b);
 		ret = write_buf(dir, n->obj, &a, ret, err);
 		if (ret == 0)
@@ -56,12 +66,14 @@ int output_write(const struct app *app, const char *dir, const struct output_nam
 }
 
 int output_write_all(const struct app *app, const char *dir, const uint8_t *rgba,
-		     const struct export_wind *wind, struct error *err)
+		     const struct export_wind *wind, const struct page_look *page,
+		     struct error *err)
 {
 	static const struct output_names headless = {
 		.glb = "model.glb", .obj = "model.obj", .mtl = "model.mtl",
 		.skeleton = "skeleton.json", .drawing = "drawing.edaha", .png = "screen.png",
+		.html = "model.html",
 	};
 
-	return output_write(app, dir, &headless, rgba, wind, err);
+	return output_write(app, dir, &headless, rgba, wind, page, err);
 }

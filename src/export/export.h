@@ -142,3 +142,62 @@ struct vine;
  */
 int export_skeleton_vines(const struct tree *t, const struct vine *vines, size_t nvines,
 			  struct buf *out);
+
+/*
+ * The take-home page (issue 28, docs/page.md): one self-contained HTML file that shows the
+ * model turning under the mouse or a finger and playing its "wind", on the kiosk's paper,
+ * with its number, its date and a line of words in the kiosk's language; it opens from a
+ * file (a USB stick's tree-NNNN.html, a headless run's model.html) in any current browser,
+ * offline. Everything is inline: the model in base64, the viewer's scripts (three.js, its
+ * GLTFLoader and OrbitControls: passed in, as platform/ reads them from Debian's
+ * libjs-three), edaha's own viewer script and style (src/export/page/), and a
+ * Content-Security-Policy that lets nothing load from anywhere.
+ *
+ * Text never becomes markup: the number, the date and the words go into one
+ * <script type="application/json"> with every <, > and & escaped (\u003c...), and the
+ * viewer sets them as textContent. So the bytes before and after that JSON are the same
+ * whatever the text (and, the model's base64 aside, whatever the model). No inlined script
+ * holds "</script" or "<!--" (escaped as "<\/script", "\x3C!--": the same JavaScript in a
+ * string or a regular expression, where such text is found). Same input, same bytes.
+ */
+enum export_page_lang { EXPORT_PAGE_EN, EXPORT_PAGE_JA, EXPORT_PAGE_NLANGS };
+
+/* What the page says; "#" in number and title is the tree's number. */
+struct export_page_words {
+	const char *lang;     /* the page's language tag: "en", "ja" */
+	const char *number;   /* "Tree No. #" */
+	const char *title;    /* the window's title with a number */
+	const char *untitled; /* ...and without one */
+	const char *hint;     /* how to turn it */
+	const char *nogl;     /* a browser without WebGL */
+	const char *failed;   /* the model cannot be read */
+};
+
+/* One of the viewer's scripts, its bytes as read. */
+struct export_page_script {
+	const void *data;
+	size_t len;
+};
+
+struct export_page {
+	const void *glb; /* the model: export_glb_wind's bytes */
+	size_t glb_len;
+	/* three.min.js, GLTFLoader.js, OrbitControls.js: inlined in this order, before
+	 * edaha's viewer */
+	const struct export_page_script *scripts;
+	size_t nscripts;
+	unsigned number;  /* the set's number; 0: none shown (a headless run's page) */
+	const char *date; /* as shown (export_page_date); NULL or "": none */
+	const struct export_page_words *words; /* export_page_words(lang) */
+	float paper[3];   /* the background, 0..1 (ui's render_paper) */
+};
+
+/* The words of a language (a table in export_page.c); NULL past EXPORT_PAGE_NLANGS. */
+const struct export_page_words *export_page_words(enum export_page_lang lang);
+/* A day as the page says it: "5 December 2026", "2026ねん 12がつ 5にち". 0, or -EINVAL
+ * (no such day, no such language) or -ENOSPC (out too small; out is "" then). */
+int export_page_date(enum export_page_lang lang, int year, int month, int day, char *out,
+		     size_t size);
+/* Appends the page to out. 0, -EINVAL (no model, no words, a script without bytes) or
+ * -ENOMEM; out as it was on failure. */
+int export_page_html(const struct export_page *p, struct buf *out);

@@ -4,8 +4,9 @@
  * exporter in turn, the glTF and OBJ exporters in every season, a tree with a vine too
  * (the exporters mesh it) and a grown tree (its wood's bark, skeleton.json's "wood"),
  * with the wind too (export_glb_wind's bindings, targets and keys; skeleton.json's
- * "wind"), and a forest of three trees (export_glb_forest, still and with the wind); each
- * must return -ENOMEM, leave nothing half-built and leak nothing.
+ * "wind"), a forest of three trees (export_glb_forest, still and with the wind) and the
+ * take-home page (export_page_html, after what its buffer held); each must return
+ * -ENOMEM, leave nothing half-built and leak nothing.
  * Allocations fail through tests/lib/fail_alloc.c, which replaces malloc & co., so it is not
  * built with sanitizers, which replace them too.
  */
@@ -111,6 +112,36 @@ static int op_skeleton(const struct job *j)
 	r = export_skeleton(j->tree, &b);
 	if (r < 0)
 		CHECK_INT(b.len, 0);
+	buf_finish(&b);
+	return r;
+}
+
+/* The page of a few bytes appended to a buffer that holds something: on failure the
+ * buffer holds that alone, and takes more. */
+static int op_page(const struct job *j)
+{
+	static const char glb[] = "glTF model bytes", three[] = "var THREE = {};\n";
+	const struct export_page_script script = { three, sizeof(three) - 1 };
+	const struct export_page page = {
+		.glb = glb, .glb_len = sizeof(glb) - 1, .scripts = &script, .nscripts = 1,
+		.number = 3, .date = "5 December 2026", .words = export_page_words(EXPORT_PAGE_JA),
+		.paper = { 0.975f, 0.953f, 0.898f },
+	};
+	char before[4096];
+	struct buf b;
+	int r;
+
+	(void)j;
+	memset(before, 'x', sizeof(before));
+	buf_init(&b);
+	r = buf_append(&b, before, sizeof(before));
+	if (r == 0) {
+		r = export_page_html(&page, &b);
+		if (r < 0) {
+			CHECK(b.len == sizeof(before) && !memcmp(b.data, before, b.len) && !b.failed);
+			CHECK_INT(buf_append(&b, "", 1), 0);
+		}
+	}
 	buf_finish(&b);
 	return r;
 }
@@ -307,6 +338,9 @@ int main(void)
 	n = exhaust(op_skeleton_wind, &j);
 	printf("export_skeleton_wind: %ld allocations, each failed once\n", n);
 	CHECK(n > 0);
+	n = exhaust(op_page, &j);
+	printf("export_page_html: %ld allocations, each failed once\n", n);
+	CHECK(n > 1);
 
 	tree_mesh_marks_finish(&mk);
 	tree_mesh_finish(&tm);
