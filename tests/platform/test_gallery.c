@@ -635,7 +635,8 @@ static void test_random(void)
 							 : 1 + (unsigned)(rng_next(&r) % 99);
 			static const char *const forms[] = {
 				"tree-%04u.obj", "tree-%04u.mtl", "tree-%04u.edaha", "TREE-%04u.HTML",
-				"Tree-%04u.glb", "tree-%u.html", "tree-0%04u.png", "tree-%04u.html.bak",
+				"Tree-%04u.glb", "TREE-%04u.png", "tree-%04u.PNG", "tree-%u.html",
+				"tree-0%04u.png", "tree-%04u.html.bak",
 				".tree-%04u.html.tmp", "tree-%04u.html\"><img src=x onerror=alert(%u)>",
 				"<script>%u.glb", "tree-%04u.png&amp;%u", "tree-%04u.glb'%u",
 				"tree-%04u", "forest-2026-01-%02u.glb",
