@@ -51,10 +51,12 @@ static const struct words words[] = {
 	},
 };
 
-/* No script, nothing from the network: the pictures beside it and its own style. */
-static const char head[] =
+/* No script, nothing from the network: the pictures beside it and its own style. Between
+ * the parts: the language's code, its title, its title again. */
+static const char *const head[] = {
 	"<!DOCTYPE html>\n"
-	"<html lang=\"%s\">\n"
+	"<html lang=\"",
+	"\">\n"
 	"<head>\n"
 	"<meta charset=\"utf-8\">\n"
 	"<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; "
@@ -62,7 +64,8 @@ static const char head[] =
 	"<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
 	"<meta name=\"color-scheme\" content=\"light\">\n"
 	"<meta name=\"generator\" content=\"edaha\">\n"
-	"<title>%s</title>\n"
+	"<title>",
+	"</title>\n"
 	"<style>\n"
 	"body { margin: 0; padding: 24px 32px; background: " GALLERY_PAPER "; color: #3b2f24;\n"
 	"  font-family: system-ui, sans-serif; }\n"
@@ -73,15 +76,19 @@ static const char head[] =
 	"a { display: block; color: inherit; text-decoration: none; padding: 12px;\n"
 	"  background: #fffdf8; border-radius: 14px; box-shadow: 0 2px 6px rgba(60, 40, 20, 0.18); }\n"
 	"a:hover, a:focus { box-shadow: 0 3px 12px rgba(60, 40, 20, 0.4); }\n"
-	"img, .blank { display: block; width: 100%%; aspect-ratio: 4 / 3; object-fit: contain;\n"
+	"img, .blank { display: block; width: 100%; aspect-ratio: 4 / 3; object-fit: contain;\n"
 	"  background: " GALLERY_PAPER "; border-radius: 8px; }\n"
 	".number { display: block; font-size: 2.2em; font-weight: bold; margin-top: 8px; }\n"
 	".date, .model { display: block; font-size: 1.1em; color: #6d5b48; }\n"
 	"</style>\n"
 	"</head>\n"
 	"<body>\n"
-	"<h1>%s</h1>\n";
+	"<h1>",
+	"</h1>\n",
+};
 
+/* s as HTML text or an attribute's value. An append that fails sets b->failed, which
+ * gallery_html checks once at the end (buf.h). */
 static void put_escaped(struct buf *b, const char *s)
 {
 	for (; *s; s++) {
@@ -176,23 +183,21 @@ static void put_tree(struct buf *b, const struct gallery_tree *t, enum config_la
 int gallery_html(const struct gallery *g, enum config_language lang, struct buf *out)
 {
 	const struct words *w;
-	struct buf title;
 
 	lang = lang == CONFIG_LANG_JA ? CONFIG_LANG_JA : CONFIG_LANG_EN;
 	w = &words[lang];
-	buf_init(&title);
-	put_escaped(&title, w->title);
-	buf_append(&title, "", 1);
-	if (!title.failed)
-		buf_printf(out, head, w->lang, (const char *)title.data, (const char *)title.data);
-	buf_finish(&title);
+	for (size_t i = 0; i < sizeof(head) / sizeof(head[0]); i++) {
+		buf_append(out, head[i], strlen(head[i]));
+		if (i < 3)
+			put_escaped(out, i == 0 ? w->lang : w->title);
+	}
 	buf_append(out, "<p>", 3);
 	put_escaped(out, g->count ? w->hint : w->none);
 	buf_append(out, "</p>\n<ul>\n", 10);
 	for (size_t i = 0; i < g->count; i++)
 		put_tree(out, &g->trees[i], lang);
 	buf_append(out, "</ul>\n</body>\n</html>\n", 22);
-	return out->failed || title.failed ? -ENOMEM : 0;
+	return out->failed ? -ENOMEM : 0;
 }
 
 void gallery_init(struct gallery *g)

@@ -7,7 +7,8 @@
  * words and dates of each language; the kiosk's paper. Then seeded random directories of
  * valid, misspelt and hostile names, symlinks and directories: every output passes a
  * strict check of its markup, and lists exactly the trees the directory holds, highest
- * number first, each link and picture a regular file there, each date the file's.
+ * number first, each link and picture a regular file there, each date the file's. And
+ * every allocation failed in turn: -ENOMEM or a whole page, nothing leaked.
  */
 #define _GNU_SOURCE
 #include <errno.h>
@@ -24,6 +25,7 @@
 #include "app.h"
 #include "export_names.h"
 #include "export_set.h"
+#include "fail_alloc.h"
 #include "gallery.h"
 #include "render_shaders.h"
 #include "rng.h"
@@ -534,6 +536,58 @@ static void test_paper(void)
 	CHECK(!strcmp(hex, GALLERY_PAPER));
 }
 
+/* Each allocation of listing and page failed in turn (not under the sanitizers, which
+ * bring their own malloc): -ENOMEM, or a whole page when the failure was not needed. */
+static void test_oom(void)
+{
+#if FAIL_ALLOC_HOOK
+	int dirfd = fresh_dir("oom");
+	long n;
+	char name[48];
+
+	for (unsigned v = 1; v <= 300; v++) {
+		snprintf(name, sizeof(name), "tree-%04u.html", v);
+		put(dirfd, name, "a page");
+		snprintf(name, sizeof(name), "tree-%04u.png", v);
+		put(dirfd, name, "a picture");
+	}
+	if (!fail_alloc_hooked()) {
+		close(dirfd);
+		return;
+	}
+	for (n = 0;; n++) {
+		struct error err = { { 0 } };
+		long live = fail_alloc_live(), calls;
+		struct gallery g;
+		struct buf html;
+		int r;
+
+		gallery_init(&g);
+		buf_init(&html);
+		fail_alloc_at(n);
+		r = gallery_list(dirfd, &g, &err);
+		if (r == 0)
+			r = gallery_html(&g, CONFIG_LANG_EN, &html);
+		calls = fail_alloc_calls();
+		fail_alloc_off();
+		if (r == 0) {
+			CHECK_INT(g.count, 300);
+			CHECK(html.len > 40 && !strncmp((const char *)html.data, "<!DOCTYPE html>", 15));
+			CHECK(!memcmp(html.data + html.len - 8, "</html>\n", 8));
+		} else {
+			CHECK_INT(r, -ENOMEM);
+		}
+		buf_finish(&html);
+		gallery_finish(&g);
+		CHECK_INT(fail_alloc_live(), live);
+		if (r == 0 && calls <= n)
+			break; /* the nth allocation was never made: every one has failed once */
+	}
+	printf("gallery: each of %ld allocations failed in turn, -ENOMEM or a whole page\n", n);
+	close(dirfd);
+#endif
+}
+
 /* ---- seeded random directories --------------------------------------------------- */
 
 static const char *const months[] = { "Jan", "Feb", "Mar", "Apr", "May", "Jun",
@@ -722,6 +776,7 @@ int main(void)
 	test_hostile();
 	test_full();
 	test_words();
+	test_oom();
 	test_random();
 	app_destroy(app);
 	snprintf(cmd, sizeof(cmd), "rm -rf '%s'", root);
