@@ -139,8 +139,9 @@ static void format_date(char *out, size_t size, int64_t t, enum config_language 
 		snprintf(out, size, "%d年%d月%d日 %02d:%02d", tm.tm_year + 1900, tm.tm_mon + 1,
 			 tm.tm_mday, tm.tm_hour, tm.tm_min);
 	else
-		snprintf(out, size, "%d %s %d, %02d:%02d", tm.tm_mday, words[lang].months[tm.tm_mon],
-			 tm.tm_year + 1900, tm.tm_hour, tm.tm_min);
+		snprintf(out, size, "%d %s %d, %02d:%02d", tm.tm_mday,
+			 words[CONFIG_LANG_EN].months[tm.tm_mon], tm.tm_year + 1900, tm.tm_hour,
+			 tm.tm_min);
 }
 
 static void put_tree(struct buf *b, const struct gallery_tree *t, enum config_language lang)
@@ -265,8 +266,9 @@ static int collect(int dirfd, const uint8_t *has, unsigned max, struct gallery *
 		for (int page = 1; page >= 0 && !found; page--) {
 			if (!(has[v] & (page ? HAS_PAGE : HAS_MODEL)))
 				continue;
-			(void)export_names_format(name, sizeof(name), v, page ? ".html" : ".glb", false);
-			if (fstatat(dirfd, name, &st, AT_SYMLINK_NOFOLLOW) == 0 && S_ISREG(st.st_mode)) {
+			(void)export_names_format(name, sizeof(name), v, kinds[page ? 0 : 1], false);
+			if (fstatat(dirfd, name, &st, AT_SYMLINK_NOFOLLOW) == 0 &&
+			    S_ISREG(st.st_mode)) {
 				t.page = page;
 				t.mtime = (int64_t)st.st_mtime;
 				found = true;

@@ -725,7 +725,8 @@ static void test_random(void)
 			if (i == n || (page[i] != REGULAR && model[i] != REGULAR))
 				continue;
 			CHECK(expect < p.n);
-			snprintf(want, sizeof(want), "tree-%04u.%s", v, page[i] == REGULAR ? "html" : "glb");
+			snprintf(want, sizeof(want), "tree-%04u.%s", v,
+				 page[i] == REGULAR ? "html" : "glb");
 			CHECK(!strcmp(p.href[expect], want));
 			if (picture[i] == REGULAR)
 				snprintf(want, sizeof(want), "tree-%04u.png", v);
