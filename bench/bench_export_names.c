@@ -5,7 +5,10 @@
  * against probing numbers one by one with five fstatat each (what export_dir.c did
  * before USB export), for N = 10, 1,000 and 10,000 files (N/5 sets of five, names in mixed
  * case). Medians of REPS runs, in a directory under /tmp (TMPDIR); then the
- * classification alone, per name.
+ * classification alone, per name. Then the stick's gallery (gallery.c) for 2, 200 and
+ * 2,000 saved trees (six files each: page, model, picture, obj, mtl, drawing): its one
+ * listing, a stat a tree and the page in memory, and the whole write with its fsyncs
+ * (the disk's, here; a USB stick's are slower).
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -19,6 +22,7 @@
 #include "error.h"
 #include "export_names.h"
 #include "export_set.h"
+#include "gallery.h"
 
 #define REPS 15
 
@@ -79,6 +83,60 @@ static int fill(int dirfd, int nfiles)
 
 static volatile unsigned sink;
 
+static int fill_trees(int dirfd, int trees)
+{
+	static const char *const sfx[] = { ".html", ".glb", ".png", ".obj", ".mtl", ".edaha" };
+	char name[48];
+
+	for (int i = 1; i <= trees; i++) {
+		for (size_t k = 0; k < sizeof(sfx) / sizeof(sfx[0]); k++) {
+			int fd;
+
+			export_names_format(name, sizeof(name), (unsigned)i, sfx[k], false);
+			fd = openat(dirfd, name, O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+			if (fd < 0)
+				return -errno;
+			close(fd);
+		}
+	}
+	return 0;
+}
+
+struct gallery_arg {
+	int dirfd;
+	size_t count, bytes;
+};
+
+static void gallery_page(void *data)
+{
+	struct gallery_arg *a = data;
+	struct error err;
+	struct gallery g;
+	struct buf html;
+
+	gallery_init(&g);
+	buf_init(&html);
+	if (gallery_list(a->dirfd, &g, &err) < 0 || gallery_html(&g, CONFIG_LANG_EN, &html) < 0) {
+		fprintf(stderr, "bench_export_names: gallery: %s\n", err.msg);
+		exit(1);
+	}
+	a->count = g.count;
+	a->bytes = html.len;
+	buf_finish(&html);
+	gallery_finish(&g);
+}
+
+static void gallery_whole(void *data)
+{
+	struct gallery_arg *a = data;
+	struct error err;
+
+	if (gallery_write(a->dirfd, CONFIG_LANG_EN, &a->count, &err) < 0) {
+		fprintf(stderr, "bench_export_names: gallery: %s\n", err.msg);
+		exit(1);
+	}
+}
+
 static void classify_many(void *data)
 {
 	const int *count = data;
@@ -133,6 +191,33 @@ int main(int argc, char **argv)
 		double t = bench_run(classify_many, &count, reps);
 
 		printf("export_names_classify: %.1f ns a name (with its snprintf)\n", t / count * 1e9);
+	}
+	prev_n = prev_s = prev_n2 = prev_s2 = 0;
+	for (size_t k = 0; k < BENCH_COUNT(sizes); k++) {
+		struct gallery_arg a = { 0 };
+		int trees = sizes[k] / 5;
+		double t_page, t_write;
+
+		snprintf(dir, sizeof(dir), "%s/edaha-bench-gallery-XXXXXX", tmp);
+		if (!mkdtemp(dir) || (a.dirfd = open(dir, O_RDONLY | O_DIRECTORY)) < 0 ||
+		    fill_trees(a.dirfd, trees) < 0) {
+			perror("bench_export_names");
+			return 1;
+		}
+		t_page = bench_run(gallery_page, &a, reps);
+		if (a.count != (size_t)trees) {
+			fprintf(stderr, "bench_export_names: the gallery lists %zu of %d\n", a.count,
+				trees);
+			return 1;
+		}
+		bench_row("gallery, list and page", trees, t_page, &prev_n, &prev_s);
+		t_write = bench_run(gallery_whole, &a, reps);
+		bench_row("gallery, written (fsyncs)", trees, t_write, &prev_n2, &prev_s2);
+		printf("  index.html for %d trees: %zu bytes\n", trees, a.bytes);
+		close(a.dirfd);
+		snprintf(cmd, sizeof(cmd), "rm -rf '%s'", dir);
+		if (system(cmd) != 0)
+			return 1;
 	}
 	return 0;
 }

@@ -27,6 +27,7 @@ int kiosk_open_usb(struct kiosk *k)
 		.usb = k->cfg.usb,
 		.helper_socket = k->cfg.usb_socket,
 		.wind = k->cfg.wind > 0 ? k->cfg.wind : 0.0, /* 0: the file's breeze */
+		.language = k->cfg.language == RENDER_LANG_JA ? CONFIG_LANG_JA : CONFIG_LANG_EN,
 		.local_dir = k->cfg.export_dir && k->cfg.export_dir[0] ? k->cfg.export_dir : NULL,
 		.monitor = true,
 		.status = usb_status,

@@ -133,48 +133,63 @@ static int write_all(int fd, const unsigned char *p, size_t len)
 				continue;
 			return -errno;
 		}
+		if (n == 0)
+			return -EIO;
 		p += n;
 		len -= (size_t)n;
 	}
 	return 0;
 }
 
-int fileio_write_atomic(const char *dir, const char *name, const void *data, size_t len,
-		      struct error *err)
+int fileio_write_atomic_at(int dfd, const char *name, const void *data, size_t len,
+			   struct error *err)
 {
 	char tmp[NAME_MAX + 1];
-	int dfd, fd, ret;
+	int fd, ret;
 
 	if (strchr(name, '/') || snprintf(tmp, sizeof(tmp), ".%s.tmp", name) >= (int)sizeof(tmp))
 		return error_set(err, -EINVAL, "%s: bad file name", name);
-	dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-	if (dfd < 0)
-		return error_at(err, -errno, dir, 0, "%s", strerror(errno));
 	(void)unlinkat(dfd, tmp, 0); /* a leftover from an interrupted run */
 	fd = openat(dfd, tmp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
-	if (fd < 0) {
-		ret = error_at(err, -errno, dir, 0, "cannot create %s: %s", tmp, strerror(errno));
-		goto out_dir;
-	}
+	if (fd < 0)
+		return error_set(err, -errno, "cannot create %s: %s", tmp, strerror(errno));
 	ret = write_all(fd, data, len);
 	if (ret == 0 && fsync(fd) < 0)
 		ret = -errno;
 	if (close(fd) < 0 && ret == 0)
 		ret = -errno;
 	if (ret < 0) {
-		error_at(err, ret, dir, 0, "cannot write %s: %s", name, strerror(-ret));
+		error_set(err, ret, "cannot write %s: %s", name, strerror(-ret));
 		(void)unlinkat(dfd, tmp, 0);
-		goto out_dir;
+		return ret;
 	}
+	/* rename replaces name, a symlink there included, and never follows it */
 	if (renameat(dfd, tmp, dfd, name) < 0) {
-		ret = error_at(err, -errno, dir, 0, "cannot rename %s to %s: %s", tmp, name,
-			       strerror(errno));
+		ret = error_set(err, -errno, "cannot rename %s to %s: %s", tmp, name,
+				strerror(errno));
 		(void)unlinkat(dfd, tmp, 0);
-		goto out_dir;
+		return ret;
 	}
 	if (fsync(dfd) < 0)
-		ret = error_at(err, -errno, dir, 0, "fsync failed: %s", strerror(errno));
-out_dir:
+		return error_set(err, -errno, "fsync failed: %s", strerror(errno));
+	return 0;
+}
+
+int fileio_write_atomic(const char *dir, const char *name, const void *data, size_t len,
+		      struct error *err)
+{
+	int dfd, ret;
+
+	dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+	if (dfd < 0)
+		return error_at(err, -errno, dir, 0, "%s", strerror(errno));
+	ret = fileio_write_atomic_at(dfd, name, data, len, err);
 	close(dfd);
+	if (ret < 0) {
+		struct error why = *err;
+
+		/* "dir: ...", as before there was an fd-relative half */
+		error_at(err, ret, dir, 0, "%s", why.msg);
+	}
 	return ret;
 }

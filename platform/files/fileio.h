@@ -16,3 +16,9 @@ int fileio_mkdirs(const char *dir, struct error *err);
  * a temporary name, fsync, rename, fsync of the directory. Never follows a symlink. */
 int fileio_write_atomic(const char *dir, const char *name, const void *data, size_t len,
 		      struct error *err);
+/* The same in the directory dfd (a stick's edaha/, passed by the helper): the temporary
+ * .NAME.tmp (a leftover of that name removed first), O_EXCL | O_NOFOLLOW, fsynced, renamed
+ * over name (replacing it, a symlink itself rather than its target), dfd fsynced. On
+ * failure name is as it was and no temporary is left. 0 or -errno. */
+int fileio_write_atomic_at(int dfd, const char *name, const void *data, size_t len,
+			   struct error *err);

@@ -15,6 +15,7 @@
 #include "config.h"
 #include "export_set.h"
 #include "fileio.h"
+#include "gallery.h"
 #include "usb_client.h"
 #if HAVE_USB_MONITOR
 #include "usb_monitor.h"
@@ -177,6 +178,21 @@ static enum usb_outcome probe(struct usb_export *ux, const char *kname)
 	return o;
 }
 
+/* The directory's gallery, after a set went in. A failure is said and no more: the set
+ * stands, its files whole, and the old index.html is left as it was. */
+static void write_gallery(const struct usb_export *ux, int dirfd, const char *where)
+{
+	struct error err = { { 0 } };
+	size_t count = 0;
+
+	if (gallery_write(dirfd, ux->cfg.language, &count, &err) < 0)
+		fprintf(stderr,
+			"edaha: gallery: %s/" GALLERY_FILE " not rewritten (the tree is saved): %s\n",
+			where, err.msg);
+	else
+		fprintf(stderr, "edaha: gallery: %s/" GALLERY_FILE " lists %zu trees\n", where, count);
+}
+
 static enum usb_outcome save_to_stick(struct usb_export *ux, const char *kname,
 				      struct export_set *set)
 {
@@ -190,6 +206,12 @@ static enum usb_outcome save_to_stick(struct usb_export *ux, const char *kname,
 		return o;
 	fprintf(stderr, "edaha: usb: writing to %s (%s)\n", kname, fstype);
 	ret = export_set_save(dirfd, set, base, sizeof(base), &err);
+	if (ret == 0) {
+		char where[USB_PROTO_KNAME_MAX + 8];
+
+		snprintf(where, sizeof(where), "%s/edaha", kname);
+		write_gallery(ux, dirfd, where);
+	}
 	/* on the stick, not in the cache, before anyone is told it may go */
 	if (ret == 0 && syncfs(dirfd) < 0)
 		ret = error_set(&err, -errno, "syncfs: %s", strerror(errno));
@@ -227,6 +249,8 @@ static bool save_local(struct usb_export *ux, struct export_set *set)
 			ret = error_set(&err, -errno, "%s", strerror(errno));
 		} else {
 			ret = export_set_save(fd, set, base, sizeof(base), &err);
+			if (ret == 0)
+				write_gallery(ux, fd, ux->local);
 			close(fd);
 		}
 	}

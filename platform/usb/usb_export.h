@@ -9,8 +9,9 @@
  * looked at when it comes (the helper mounts it, opens edaha/ and lets go of it again),
  * so the visitor hears at once whether it will do. On export the main thread builds the
  * files' bytes (export_set.c) and hands them to this module's thread, which asks
- * edaha-usb-helper to mount the stick, writes the set into the edaha/ fd it passes,
- * syncfs, closes, asks the helper to eject, writes the local copy, and reports back
+ * edaha-usb-helper to mount the stick, writes the set into the edaha/ fd it passes and
+ * rewrites the gallery there (gallery.h: index.html), syncfs, closes, asks the helper to
+ * eject, writes the local copy and its gallery, and reports back
  * through an eventfd in the kiosk's poll. A slow or dying stick blocks that thread only;
  * the stick is mounted only while a save is under way, so it may be pulled at any other
  * time.
@@ -20,6 +21,7 @@
 #include <stdint.h>
 
 #include "app.h"
+#include "config_file.h"
 #include "error.h"
 #include "kiosk_source.h"
 #include "usb_proto.h"
@@ -29,6 +31,7 @@ struct usb_export_config {
 	const char *helper_socket; /* usb.helper_socket */
 	const char *local_dir;     /* kiosk.export_dir, a copy of every export; NULL: none */
 	double wind;               /* kiosk.wind: the .glb's sway; 0: the default breeze */
+	enum config_language language; /* the words of the gallery, index.html */
 	bool monitor;              /* false: no udev monitor, sticks come by usb_export_added */
 	const char *sys_block;     /* NULL: /sys/class/block, where a stick is seen to be gone */
 	/* tells the visitor (on the main thread): held until the next, while under way */

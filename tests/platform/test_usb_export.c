@@ -3,8 +3,10 @@
  * The kiosk's side of USB export (usb_export.c, usb_client.c) against a stand-in for
  * edaha-usb-helper on a unix socket, which "mounts" a stick by passing a temporary
  * directory's fd: a stick put in is looked at; an export goes to it and to the local
- * copy; with no stick the visitor is told to put one in; a locked stick, a full one, one
- * pulled while saving, a second press while saving, and no USB at all.
+ * copy, each with its gallery (index.html) rewritten; with no stick the visitor is told
+ * to put one in; a locked stick, a full one (its gallery as it was), one pulled while
+ * saving, a second press while saving, no USB at all, and a gallery that cannot be
+ * written (the tree saved all the same).
  */
 #define _GNU_SOURCE
 #include <errno.h>
@@ -117,6 +119,38 @@ static void wait_result(struct usb_export *ux)
 	CHECK_INT(src[0].dispatch(src[0].data), 0);
 }
 
+/* dir/index.html's bytes, NUL-terminated; NULL when there is none. */
+static char *gallery_of(const char *dir)
+{
+	char path[300], *s;
+	size_t len = 0;
+	FILE *f;
+
+	snprintf(path, sizeof(path), "%s/index.html", dir);
+	f = fopen(path, "r");
+	if (!f)
+		return NULL;
+	s = malloc(1 << 16);
+	CHECK(s);
+	len = fread(s, 1, (1 << 16) - 1, f);
+	CHECK(feof(f));
+	fclose(f);
+	s[len] = '\0';
+	return s;
+}
+
+/* How many entries a gallery lists, and that the first (newest) links to set first. */
+static int entries(const char *html, const char *first)
+{
+	const char *p = strstr(html, "<li><a href=\"");
+	int n = 0;
+
+	CHECK(p && !strncmp(p + 13, first, strlen(first)));
+	for (; p; p = strstr(p + 1, "<li><a href=\""))
+		n++;
+	return n;
+}
+
 static void stick_there(const char *kname, bool there)
 {
 	char path[300];
@@ -147,7 +181,7 @@ static void test_sticks(struct app *app)
 	struct error err = { { 0 } };
 	struct usb_export *ux = usb_export_create(&cfg, &err);
 	static uint8_t rgba[64 * 64 * 4];
-	char path[300];
+	char path[300], *gallery, *html;
 	struct rlimit old, lim;
 
 	CHECK(ux);
@@ -176,6 +210,13 @@ static void test_sticks(struct app *app)
 	CHECK_INT(dir_count(AT_FDCWD, stick_dir, "tree-0001."), 5);
 	CHECK_INT(dir_count(AT_FDCWD, local_dir, "tree-0001."), 5);
 	CHECK_INT(dir_count(AT_FDCWD, stick_dir, "tree-0002."), 0); /* the second press */
+	/* the gallery beside the set, on the stick and in the copy */
+	gallery = gallery_of(stick_dir);
+	CHECK(gallery && entries(gallery, "tree-0001.") == 1);
+	CHECK(strstr(gallery, "<img src=\"tree-0001.png\""));
+	html = gallery_of(local_dir);
+	CHECK(html && entries(html, "tree-0001.") == 1);
+	free(html);
 
 	/* full: nothing of the set left on it, the visitor told so */
 	CHECK_INT(getrlimit(RLIMIT_FSIZE, &old), 0);
@@ -189,6 +230,12 @@ static void test_sticks(struct app *app)
 	CHECK_INT(last(), APP_STATUS_STICK_FULL);
 	CHECK_INT(dir_count(AT_FDCWD, stick_dir, "tree-0002"), 0);
 	CHECK_INT(dir_count(AT_FDCWD, stick_dir, ".tree-"), 0);
+	/* its gallery as it was, whole */
+	html = gallery_of(stick_dir);
+	CHECK(html && !strcmp(html, gallery));
+	free(html);
+	free(gallery);
+	CHECK_INT(dir_count(AT_FDCWD, stick_dir, ".index"), 0);
 
 	/* pulled while saving: told at once, and again by the result */
 	pthread_mutex_lock(&fake_lock);
@@ -262,7 +309,7 @@ static void test_local_only(struct app *app)
 	struct usb_export_config cfg = { .usb = false, .local_dir = local_dir, .status = on_status };
 	struct error err = { { 0 } };
 	struct usb_export *ux = usb_export_create(&cfg, &err);
-	char file[300];
+	char file[300], *html;
 	FILE *f;
 
 	CHECK(ux);
@@ -272,6 +319,19 @@ static void test_local_only(struct app *app)
 	wait_result(ux);
 	CHECK_INT(last(), APP_STATUS_SAVED);
 	CHECK_INT(dir_count(AT_FDCWD, local_dir, "tree-0006."), 4); /* after the locked stick's two */
+	html = gallery_of(local_dir);
+	CHECK(html && entries(html, "tree-0006.") == 6);
+	free(html);
+	/* a gallery that cannot be written (a directory of its name): the tree is saved */
+	snprintf(file, sizeof(file), "%s/index.html", local_dir);
+	CHECK_INT(unlink(file), 0);
+	CHECK_INT(mkdir(file, 0755), 0);
+	usb_export_start(ux, app, NULL, NULL, NULL);
+	wait_result(ux);
+	CHECK_INT(last(), APP_STATUS_SAVED);
+	CHECK_INT(dir_count(AT_FDCWD, local_dir, "tree-0007."), 4);
+	CHECK_INT(dir_count(AT_FDCWD, local_dir, ".index"), 0);
+	CHECK_INT(rmdir(file), 0);
 	usb_export_destroy(ux);
 	/* a file where the directory should be */
 	snprintf(file, sizeof(file), "%s/plain", root);
