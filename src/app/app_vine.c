@@ -7,12 +7,30 @@
  */
 #include <errno.h>
 #include <math.h>
+#include <string.h>
 
 #include "app_private.h"
 #include "mesh.h"
 #include "sketch.h"
 #include "vine.h"
 #include "vine_support.h"
+
+/* w's triangles after m's. 0 or -ENOMEM. */
+static int append_wood(struct mesh *m, const struct mesh *w)
+{
+	size_t v0 = m->nvertices;
+	int ret = mesh_reserve(m, w->nvertices, w->nindices);
+
+	if (ret < 0)
+		return ret;
+	memcpy(&m->positions[3 * v0], w->positions, 3 * w->nvertices * sizeof(float));
+	memcpy(&m->normals[3 * v0], w->normals, 3 * w->nvertices * sizeof(float));
+	for (size_t i = 0; i < w->nindices; i++)
+		m->indices[m->nindices + i] = w->indices[i] + (uint32_t)v0;
+	m->nvertices += w->nvertices;
+	m->nindices += w->nindices;
+	return 0;
+}
 
 int app_vine_support(const struct tree *t, struct vine_support **out)
 {
@@ -21,8 +39,11 @@ int app_vine_support(const struct tree *t, struct vine_support **out)
 
 	*out = NULL;
 	tree_mesh_init(&bark);
-	/* the bark alone: a vine twines round wood, not leaves */
+	/* the bark alone: a vine twines round wood, not leaves; a grown tree's trunk and
+	 * limbs are its wood's bark (tree_mesh_append leaves their tubes out) */
 	ret = tree_mesh_append(&bark, t, 0, t->nleaves);
+	if (ret == 0 && t->wood && t->wood->bark.nvertices)
+		ret = append_wood(&bark.bark, &t->wood->bark);
 	if (ret == 0)
 		ret = vine_support_create(bark.bark.positions, bark.bark.nvertices, bark.bark.indices,
 					  bark.bark.nindices / 3, out);

@@ -591,6 +591,83 @@ static void test_drawn_tree(void)
 	app_destroy(app);
 }
 
+/* A solid of t's bark as the kiosk's vines climb it (app_vine_support): the branches'
+ * tubes and, on a grown tree, its wood's bark; the measure's own copy. */
+static void solid_of_bark(struct solid *s, const struct tree *t)
+{
+	struct tree_mesh bark;
+	const struct mesh *parts[2];
+
+	tree_mesh_init(&bark);
+	CHECK_INT(tree_mesh_append(&bark, t, 0, t->nleaves), 0);
+	parts[0] = &bark.bark;
+	parts[1] = t->wood ? &t->wood->bark : NULL;
+	for (int k = 0; k < 2; k++) {
+		const struct mesh *m = parts[k];
+		size_t v0 = s->nv;
+
+		if (!m || !m->nvertices)
+			continue;
+		s->pos = realloc(s->pos, 3 * (s->nv + m->nvertices) * sizeof(*s->pos));
+		CHECK(s->pos);
+		memcpy(s->pos + 3 * v0, m->positions, 3 * m->nvertices * sizeof(*s->pos));
+		s->nv += m->nvertices;
+		for (size_t i = 0; i < m->nindices; i += 3)
+			add_triangle(s, v0 + m->indices[i], v0 + m->indices[i + 1],
+				     v0 + m->indices[i + 2]);
+	}
+	tree_mesh_finish(&bark);
+}
+
+/*
+ * A grown tree (two grow presses: its trunk and limbs are its wood's bark, thicker than
+ * their tubes) and the kiosk's vine planted at its foot afterwards: the vine twines round
+ * the wood, clear of it and outside it, as round any bark (it once climbed the thin
+ * tubes inside the wood: app_vine_support left the wood out).
+ */
+static void test_grown_tree(void)
+{
+	struct app *app = app_create(1280, 800, 7);
+	struct solid s = { 0 };
+	struct margins m;
+	double wood_r = 0.0;
+
+	CHECK(app);
+	pen_line(&pen, app, 640, 736, 640, 236);
+	pen_line(&pen, app, 640, 536, 880, 400);
+	pen_line(&pen, app, 640, 480, 410, 350);
+	pen_line(&pen, app, 640, 400, 780, 250);
+	pen_button(&pen, app, BUTTON_3D);
+	pen_button(&pen, app, BUTTON_GROW);
+	pen_button(&pen, app, BUTTON_GROW);
+	CHECK(app->tree.wood && app->tree.wood->bark.nvertices);
+	pen_button(&pen, app, BUTTON_VINE);
+	pen_line(&pen, app, 700, 730, 700, 730);
+	CHECK_INT(app->tree.nvines, 1);
+	solid_of_bark(&s, &app->tree);
+	/* the wood is thicker than the trunk's tube at its foot: the case that matters */
+	{
+		const struct branch *tr = &app->tree.branches[0];
+		const struct mesh *w = &app->tree.wood->bark;
+		struct vec3 foot = tr->points[0];
+
+		for (size_t i = 0; i < w->nvertices; i++) {
+			const float *q = w->positions + 3 * i;
+
+			if (q[1] - foot.y < 4 * tr->radii[0])
+				wood_r = fmax(wood_r, hypot(q[0] - foot.x, q[2] - foot.z));
+		}
+		printf("grown tree: the trunk's tube %.3f m, its wood %.3f m at the foot\n",
+		       tr->radii[0], wood_r);
+		CHECK(wood_r > tr->radii[0]);
+	}
+	margins_init(&m);
+	check_vine(&app->tree.vines[0], &s, "grown tree, the kiosk's vine", &m);
+	margins_print("grown tree", &m);
+	solid_finish(&s);
+	app_destroy(app);
+}
+
 /* ---- Random supports ---- */
 
 static double uni(struct rng *g, double lo, double hi)
@@ -750,6 +827,7 @@ int main(void)
 {
 	test_named();
 	test_drawn_tree();
+	test_grown_tree();
 	test_random(300);
 	return 0;
 }
