@@ -14,6 +14,7 @@
 #include "fileio.h"
 #include "gen.h"
 #include "headless_one.h"
+#include "leaf_tint.h"
 #include "output.h"
 #include "page_viewer.h"
 #include "render.h"
@@ -251,6 +252,9 @@ static int render_and_write(struct run *r)
 		struct page_look look = {
 			.lang = o->lang && !strcmp(o->lang, "ja") ? EXPORT_PAGE_JA : EXPORT_PAGE_EN,
 			.paper = { render_paper[0], render_paper[1], render_paper[2] },
+		.bark = { render_bark[0], render_bark[1], render_bark[2] },
+		.leaves = { LEAF_TINT_SUMMER_RGB },
+		.stem = { render_vine_stem[0], render_vine_stem[1], render_vine_stem[2] },
 		};
 		struct page_viewer viewer;
 

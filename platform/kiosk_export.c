@@ -8,6 +8,7 @@
 #include <stdio.h>
 
 #include "export_set.h"
+#include "leaf_tint.h"
 #include "render_shaders.h"
 
 static void usb_status(void *data, enum app_status status, bool held)
@@ -36,6 +37,9 @@ int kiosk_open_usb(struct kiosk *k)
 	struct page_look look = {
 		.lang = k->cfg.language == RENDER_LANG_JA ? EXPORT_PAGE_JA : EXPORT_PAGE_EN,
 		.paper = { render_paper[0], render_paper[1], render_paper[2] },
+		.bark = { render_bark[0], render_bark[1], render_bark[2] },
+		.leaves = { LEAF_TINT_SUMMER_RGB },
+		.stem = { render_vine_stem[0], render_vine_stem[1], render_vine_stem[2] },
 	};
 	struct kiosk_source src[2];
 	struct error err = { { 0 } };

@@ -49,7 +49,6 @@ static const char flat_fs[] =
 	"	gl_FragColor = vec4(v_color.rgb, v_color.a * texture2D(u_atlas, v_uv).a);\n"
 	"}\n";
 
-static const float bark_color[3] = { 0.47f, 0.32f, 0.20f };
 /* Towards the light, in view space: from the upper left, in front of the sketch plane. */
 static const float light_dir[3] = { -0.4418339f, 0.7069342f, 0.5522924f };
 
@@ -327,7 +326,7 @@ static int draw_tree(struct render *r, const struct app *app, const struct camer
 	glEnable(GL_CULL_FACE);
 	glCullFace(GL_BACK);
 	glUniform1i(r->lit.two_sided, 0);
-	glUniform3fv(r->lit.color, 1, bark_color);
+	glUniform3fv(r->lit.color, 1, render_bark);
 	render_live_draw(r, &r->bark, &r->live.bark, false);
 	render_live_draw(r, &r->wood, &r->live.wood, false);
 	r2 = render_vines_draw(r, app);

@@ -23,7 +23,6 @@
 #include "render_private.h"
 #include "text.h"
 
-static const float forest_bark[3] = { 0.47f, 0.32f, 0.20f };
 static const float forest_ground[3] = { 0.80f, 0.74f, 0.58f };
 /* the light, world space (towards it): from the upper left and in front of the camera's
  * start, fixed to the forest so it does not flicker as the camera travels */
@@ -268,7 +267,7 @@ static int upload_bark_tints(struct render_forest *f, const struct forest_scene 
 	if (!rgb)
 		return -ENOMEM;
 	for (size_t v = 0; v < n; v++)
-		memcpy(&rgb[3 * v], s->bark_vine[v] ? render_vine_stem : forest_bark, 3 * sizeof(*rgb));
+		memcpy(&rgb[3 * v], s->bark_vine[v] ? render_vine_stem : render_bark, 3 * sizeof(*rgb));
 	ret = render_mesh_upload_tints(&f->bark, &s->mesh.bark, rgb);
 	free(rgb);
 	return ret;
@@ -556,7 +555,7 @@ int render_forest_draw(struct render *r, const struct app *app, uint64_t now_us)
 	glEnable(GL_CULL_FACE);
 	glCullFace(GL_BACK);
 	glUniform1i(p->tree.two_sided, 0);
-	glUniform3fv(p->tree.color, 1, forest_bark);
+	glUniform3fv(p->tree.color, 1, render_bark);
 	draw_part(r, p, &f->bark, &f->bark_live, f->bark_trunk, f->tinted_bark, &fr,
 		  newest->bark_indices[0]);
 	glDisable(GL_CULL_FACE);

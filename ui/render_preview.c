@@ -16,7 +16,6 @@
 #include "leaf_tint.h"
 #include "render_private.h"
 
-static const float bark_color[3] = { 0.47f, 0.32f, 0.20f };
 
 /* The picture slot that holds the app's mesh m: previews[] first, then templates[]. */
 static int picture_of(const struct app *app, const struct tree_mesh *m)
@@ -166,7 +165,7 @@ static int draw_picture(struct render *r, const struct app *app, int k, const st
 	glUniformMatrix4fv(r->tree_mvp, 1, GL_FALSE, mvp);
 	glEnable(GL_CULL_FACE);
 	glUniform1i(r->tree_two_sided, 0);
-	glUniform3fv(r->tree_color, 1, bark_color);
+	glUniform3fv(r->tree_color, 1, render_bark);
 	render_mesh_draw(r, &p->bark);
 	glDisable(GL_CULL_FACE);
 	glUniform1i(r->tree_two_sided, 1);

@@ -246,10 +246,9 @@ void render_fit_matrix(const struct mesh *const *meshes, size_t nmeshes,
  * first): for benchmarks. 0 or a negative errno. */
 int render_upload_tree(struct render *r, const struct app *app);
 
-/* render_vine.c: the stems' green, and the app's vines drawn with the tree program in use
- * (uploaded first when vines_serial changed); leaves in the season's colour. 0 or a
- * negative errno. */
-extern const float render_vine_stem[3];
+/* render_vine.c: the app's vines drawn with the tree program in use (uploaded first when
+ * vines_serial changed), their stems render_vine_stem's green; leaves in the season's
+ * colour. 0 or a negative errno. */
 int render_vines_draw(struct render *r, const struct app *app);
 void render_vines_finish(struct render *r);
 

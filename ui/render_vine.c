@@ -17,10 +17,6 @@
  * fixed to the scene so that the picture does not depend on the camera's code. */
 static const double vine_light[3] = { -0.48, 0.6, 0.64 };
 
-/* The screen's bark, and a young stem's green: darker and yellower than the leaves, so
- * that a stem reads against its own leaves. */
-static const float vine_bark[3] = { 0.47f, 0.32f, 0.20f };
-const float render_vine_stem[3] = { 0.30f, 0.45f, 0.16f };
 
 #define VINE_FIT_MARGIN 1.08
 
@@ -29,7 +25,7 @@ int render_vine(struct render *r, const struct mesh *support, const struct mesh 
 {
 	const float leaf[3] = { LEAF_TINT_SUMMER_RGB };
 	const struct mesh *meshes[3] = { support, stems, leaves };
-	const float *colors[3] = { vine_bark, render_vine_stem, leaf };
+	const float *colors[3] = { render_bark, render_vine_stem, leaf };
 	struct render_mesh rm[3];
 	struct camera_xf xf;
 	struct vec3 l = vec3_norm_or(vec3(vine_light[0], vine_light[1], vine_light[2]),

@@ -76,6 +76,9 @@ int page_viewer_html(const struct page_look *look, const void *glb, size_t glb_l
 		.date = date,
 		.words = export_page_words(look->lang),
 		.paper = { look->paper[0], look->paper[1], look->paper[2] },
+		.bark = { look->bark[0], look->bark[1], look->bark[2] },
+		.leaves = { look->leaves[0], look->leaves[1], look->leaves[2] },
+		.stem = { look->stem[0], look->stem[1], look->stem[2] },
 	};
 
 	if (!look->viewer)

@@ -34,11 +34,13 @@ const char *page_viewer_dir(void);
 int page_viewer_load(struct page_viewer *v, const char *dir, struct error *err);
 
 /* What a tree's page needs besides the tree: the viewer (NULL: no page), the kiosk's
- * language and its paper (ui's render_paper). */
+ * language, its paper (ui's render_paper) and the screen's colours of the bark, summer's
+ * leaves and a vine's stems (render_bark, LEAF_TINT_SUMMER_RGB, render_vine_stem), so
+ * the page colours the tree as the screen does (export_page). */
 struct page_look {
 	const struct page_viewer *viewer;
 	enum export_page_lang lang;
-	float paper[3];
+	float paper[3], bark[3], leaves[3], stem[3];
 };
 /* The page of the model glb (export_page_html): number 0 and date NULL for none. 0,
  * -EINVAL (no viewer, a language we have no words for) or -ENOMEM; out as it was then. */

@@ -190,6 +190,12 @@ struct export_page {
 	const char *date; /* as shown (export_page_date); NULL or "": none */
 	const struct export_page_words *words; /* export_page_words(lang) */
 	float paper[3];   /* the background, 0..1 (ui's render_paper) */
+	/* The screen's colours of the bark, summer's leaves and a vine's stems, 0..1 (ui's
+	 * render_bark, LEAF_TINT_SUMMER_RGB, render_vine_stem): the page shows each of the
+	 * model's colours through the curve that takes the file's to the screen's, channel
+	 * by channel, c^k with k = ln(screen) / ln(file), as the screen shows a season's
+	 * (ui/leaf_tint.h). A channel outside (0, 1) keeps the file's colour. */
+	float bark[3], leaves[3], stem[3];
 };
 
 /* The words of a language (a table in export_page.c); NULL past EXPORT_PAGE_NLANGS. */

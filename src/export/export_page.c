@@ -181,6 +181,37 @@ static unsigned channel(float c)
 	return c >= 1.0f ? 255u : (unsigned)lroundf(c * 255.0f);
 }
 
+/* k of c^k, taking the file's channel to the screen's; 1 where either is no colour. */
+static double tint_power(double file, float screen)
+{
+	if (!(file > 0.0 && file < 1.0 && screen > 0.0f && screen < 1.0f))
+		return 1.0;
+	return log((double)screen) / log(file);
+}
+
+static int json_tint(struct buf *b, const char *name, const double file[3],
+		     const float screen[3], bool last)
+{
+	char k[3][NUMFMT_MAX];
+
+	for (int c = 0; c < 3; c++)
+		numfmt_micro(k[c], tint_power(file[c], screen[c]), true);
+	return buf_printf(b, "\"%s\":[%s,%s,%s]%s", name, k[0], k[1], k[2], last ? "}," : ",");
+}
+
+static int json_tints(struct buf *b, const struct export_page *p)
+{
+	static const double bark[3] = { MATERIAL_BARK_RGB }, leaves[3] = { MATERIAL_LEAVES_RGB },
+			    vine[3] = { MATERIAL_VINE_RGB };
+	int r = put(b, "\"tint\":{");
+
+	if (r == 0)
+		r = json_tint(b, "bark", bark, p->bark, false);
+	if (r == 0)
+		r = json_tint(b, "leaves", leaves, p->leaves, false);
+	return r ? r : json_tint(b, "vine", vine, p->stem, true);
+}
+
 static int json_data(struct buf *b, const struct export_page *p)
 {
 	const struct export_page_words *w = p->words;
@@ -197,9 +228,13 @@ static int json_data(struct buf *b, const struct export_page *p)
 	if (r == 0)
 		r = json_key(b, "date", p->date, false);
 	if (r == 0)
-		r = buf_printf(b, "\"paper\":[%u,%u,%u],\"pitch\":[%s,%s],\"words\":{",
+		r = buf_printf(b, "\"paper\":[%u,%u,%u],\"pitch\":[%s,%s],",
 			       channel(p->paper[0]), channel(p->paper[1]), channel(p->paper[2]), lo,
 			       hi);
+	if (r == 0)
+		r = json_tints(b, p);
+	if (r == 0)
+		r = put(b, "\"words\":{");
 	if (r == 0)
 		r = json_key(b, "number", w->number, false);
 	if (r == 0)

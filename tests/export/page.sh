@@ -44,7 +44,7 @@ run() {
 # the side strip (to x 280) and the ground (from y 732)
 KIOSK_BOX="290 0 1020 731"
 export SIL_IOU=0.75 SIL_NEAR=0.98 SIL_ASPECT=0.05 NEAR_WIND=0.95 CROWN_MIN=0.02 \
-	FOOT_EDGE_MAX=1 FOOT_EDGE_MEAN=0.25 TURN_MIN=0.5
+	FOOT_EDGE_MAX=1 FOOT_EDGE_MEAN=0.25 TURN_MIN=0.5 COLOR_MAX=8
 
 run --out "$T/demo" --replay "$DEMO" --press 3d
 grep -q "model.html" "$T/log" || fail "the run does not say it wrote model.html"
@@ -91,7 +91,7 @@ import json, os, sys
 T, d = sys.argv[1:3]
 E = {k: float(os.environ[k]) for k in ("SIL_IOU", "SIL_NEAR", "SIL_ASPECT", "NEAR_WIND",
                                        "CROWN_MIN", "FOOT_EDGE_MAX", "FOOT_EDGE_MEAN",
-                                       "TURN_MIN")}
+                                       "TURN_MIN", "COLOR_MAX")}
 load = lambda name: json.load(open(os.path.join(T, name)))
 o = load(d + ".json")
 assert o["state"] == "ready", "the page is %s" % o["state"]
@@ -117,6 +117,10 @@ aspect = abs(st["page_aspect"] / st["kiosk_aspect"] - 1)
 assert st["iou"] >= E["SIL_IOU"], "at rest: IoU %.3f < %.2f" % (st["iou"], E["SIL_IOU"])
 assert st["near"] >= E["SIL_NEAR"], "at rest: %.3f of the cells near" % st["near"]
 assert aspect <= E["SIL_ASPECT"], "at rest: the boxes' shapes differ by %.3f" % aspect
+# the screen's colours (the model's mapped as the kiosk maps them): the tree's mean colour
+color = max(abs(a - b) for a, b in zip(st["kiosk_mean"], st["page_mean"]))
+assert color <= E["COLOR_MAX"], "at rest: the tree's mean colour %s, the kiosk's %s" % (
+    st["page_mean"], st["kiosk_mean"])
 for s in ("front", "later"):
     assert sil[s]["near"] >= E["NEAR_WIND"], "%s: %.3f of the cells near" % (s, sil[s]["near"])
 w = load(d + ".wind")
@@ -132,10 +136,11 @@ assert 0 <= x0 and x1 < t["size"][0] and 0 <= y0 and y1 < t["size"][1] and x1 - 
     "the turned tree left the window: %s" % t
 assert sil["turned"]["iou"] < st["iou"] - 0.1, "turned, the same silhouette: %s" % sil["turned"]
 print("%s: ready, no console error, no request; at rest IoU %.3f (>= %.2f), %.3f of the cells "
-      "within one (>= %.2f), shapes %.1f%% apart; in the wind %.3f and %.3f within one; "
+      "within one (>= %.2f), shapes %.1f%% apart, mean colours %.1f apart (<= %d); in the wind %.3f and %.3f within one; "
       "%.2f s apart the crown's pixels differ %d for its %d, the foot's %d for its %d (its "
       "outline moved %d px at most, %.3f on average); the drag turned it %.2f rad, IoU then %.3f"
-      % (d, st["iou"], E["SIL_IOU"], st["near"], E["SIL_NEAR"], 100 * aspect,
+      % (d, st["iou"], E["SIL_IOU"], st["near"], E["SIL_NEAR"], 100 * aspect, color,
+         E["COLOR_MAX"],
          sil["front"]["near"], sil["later"]["near"], o["seconds"], w["crown_differ"],
          w["crown_tree"], w["foot_differ"], w["foot_tree"], w["foot_edge_max"],
          w["foot_edge_mean"], turn, sil["turned"]["iou"]))

@@ -190,8 +190,30 @@ static struct box whole(const struct image *im)
 	return (struct box){ 0, 0, im->w - 1, im->h - 1 };
 }
 
+/* The mean colour of the tree's pixels within b, 0..255 a channel. */
+static void tree_mean(const struct image *im, struct box b, double mean[3])
+{
+	double sum[3] = { 0.0, 0.0, 0.0 };
+	long n = 0;
+
+	for (int y = b.y0; y <= b.y1; y++)
+		for (int x = b.x0; x <= b.x1; x++) {
+			const uint8_t *q = im->rgba + ((size_t)y * (size_t)im->w + (size_t)x) * 4;
+
+			if (!tree_at(im, x, y))
+				continue;
+			for (int c = 0; c < 3; c++)
+				sum[c] += q[c];
+			n++;
+		}
+	for (int c = 0; c < 3; c++)
+		mean[c] = n > 0 ? sum[c] / (double)n : 0.0;
+}
+
 static int silhouette(const struct image *k, struct box limit, const struct image *p)
 {
+	double mk[3], mp[3];
+
 	struct box bk = tree_box(k, limit), bp = tree_box(p, whole(p));
 	struct overlap o;
 
@@ -201,11 +223,14 @@ static int silhouette(const struct image *k, struct box limit, const struct imag
 	}
 	if (overlap(k, bk, p, bp, &o) < 0)
 		return 2;
+	tree_mean(k, bk, mk);
+	tree_mean(p, bp, mp);
 	printf("{\"iou\": %.4f, \"near\": %.4f, \"grid\": [%d, %d], \"kiosk_aspect\": %.4f, "
 	       "\"page_aspect\": %.4f, \"kiosk_box\": [%d, %d, %d, %d], "
-	       "\"page_box\": [%d, %d, %d, %d]}\n",
+	       "\"page_box\": [%d, %d, %d, %d], \"kiosk_mean\": [%.1f, %.1f, %.1f], "
+	       "\"page_mean\": [%.1f, %.1f, %.1f]}\n",
 	       o.iou, o.near, o.gx, o.gy, aspect(bk), aspect(bp), bk.x0, bk.y0, bk.x1, bk.y1,
-	       bp.x0, bp.y0, bp.x1, bp.y1);
+	       bp.x0, bp.y0, bp.x1, bp.y1, mk[0], mk[1], mk[2], mp[0], mp[1], mp[2]);
 	return 0;
 }
 

@@ -12,11 +12,19 @@
 #include "buf.h"
 #include "error.h"
 #include "fileio.h"
+#include "leaf_tint.h"
 #include "page_viewer.h"
+#include "render_shaders.h"
 
 int main(int argc, char **argv)
 {
-	struct page_look look = { .paper = { 0.975f, 0.953f, 0.898f } };
+	/* the kiosk's look, as kiosk_export.c gives it */
+	struct page_look look = {
+		.paper = { render_paper[0], render_paper[1], render_paper[2] },
+		.bark = { render_bark[0], render_bark[1], render_bark[2] },
+		.leaves = { LEAF_TINT_SUMMER_RGB },
+		.stem = { render_vine_stem[0], render_vine_stem[1], render_vine_stem[2] },
+	};
 	struct error err = { { 0 } };
 	struct page_viewer viewer;
 	struct buf html;

@@ -28,6 +28,7 @@
 
 #include "buf.h"
 #include "export.h"
+#include "numfmt.h"
 #include "rng.h"
 #include "test.h"
 
@@ -401,8 +402,38 @@ static void random_input(struct rng *r, struct input *in)
 					(unsigned)rng_next(r) }[rng_next(r) % 6];
 	in->page.date = (const char *)in->date.in.data;
 	in->page.words = &in->w;
-	for (int i = 0; i < 3; i++)
+	for (int i = 0; i < 3; i++) {
 		in->page.paper[i] = rng_next(r) % 2 ? papers[rng_next(r) % 8] : (float)rng_uniform(r);
+		in->page.bark[i] = rng_next(r) % 2 ? papers[rng_next(r) % 8] : (float)rng_uniform(r);
+		in->page.leaves[i] = rng_next(r) % 2 ? papers[rng_next(r) % 8] : (float)rng_uniform(r);
+		in->page.stem[i] = rng_next(r) % 2 ? papers[rng_next(r) % 8] : (float)rng_uniform(r);
+	}
+}
+
+/* data.tint: for each of the file's colours the power that takes it to the screen's, 1 where
+ * either is no colour in (0, 1). */
+static void check_tint(struct json_object *o, const struct export_page *page)
+{
+	static const double file[3][3] = { { MATERIAL_BARK_RGB }, { MATERIAL_LEAVES_RGB },
+					   { MATERIAL_VINE_RGB } };
+	static const char *const names[3] = { "bark", "leaves", "vine" };
+	const float *screen[3] = { page->bark, page->leaves, page->stem };
+	struct json_object *t, *v;
+
+	CHECK(json_object_object_get_ex(o, "tint", &t) && json_object_object_length(t) == 3);
+	for (int m = 0; m < 3; m++) {
+		CHECK(json_object_object_get_ex(t, names[m], &v) && json_object_array_length(v) == 3);
+		for (size_t c = 0; c < 3; c++) {
+			double k = json_object_get_double(json_object_array_get_idx(v, c));
+			float s = screen[m][c];
+
+			CHECK(isfinite(k) && k > 0.0);
+			if (s > 0.0f && s < 1.0f)
+				CHECK(fabs(pow(file[m][c], k) - s) < 2e-6);
+			else
+				CHECK(k == 1.0);
+		}
+	}
 }
 
 /* Checks one page against its input; returns how many bytes of text it carried. */
@@ -436,6 +467,7 @@ static size_t check_page(const struct input *in, const struct buf *html, struct 
 	CHECK(json_object_object_get_ex(o, "pitch", &v) && json_object_array_length(v) == 2);
 	CHECK_INT(json_object_get_int(json_object_array_get_idx(v, 0)), -20);
 	CHECK_INT(json_object_get_int(json_object_array_get_idx(v, 1)), 75);
+	check_tint(o, &in->page);
 	CHECK(json_object_object_get_ex(o, "words", &w));
 	for (int i = 0; i < 6; i++) {
 		CHECK(!strcmp(json_str(w, keys[i]), (const char *)in->words[i].out.data));
@@ -538,6 +570,7 @@ static void test_fixed(void)
 		.glb = glb, .glb_len = sizeof(glb) - 1, .scripts = &script, .nscripts = 1,
 		.number = 7, .date = hostile, .words = export_page_words(EXPORT_PAGE_JA),
 		.paper = { 0.975f, 0.953f, 0.898f },
+		.bark = { 0.47f, 0.32f, 0.20f },
 	};
 	struct buf html, plain;
 	struct page p, q;
@@ -551,6 +584,9 @@ static void test_fixed(void)
 	CHECK(!find(p.text, p.end, hostile) && !find(p.text, p.end, "alert(1)</script>"));
 	CHECK(find(p.json, p.json_end, "\\u003c/script\\u003e\\u003cscript\\u003ealert(1)"));
 	CHECK(find(p.json, p.json_end, "\"paper\":[249,243,229]"));
+	/* the screen's bark from the file's (0.33, 0.22, 0.13); no leaves or stem given: as is */
+	CHECK(find(p.json, p.json_end, "\"tint\":{\"bark\":[0.681021,0.752535,0.788855],"
+		   "\"leaves\":[1,1,1],\"vine\":[1,1,1]}"));
 	CHECK(find(p.script[2], p.script_end[2], "var a = '<\\/script>';"));
 	/* and the same markup as a page of plain words */
 	page.date = "5 December 2026";

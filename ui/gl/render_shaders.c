@@ -67,3 +67,5 @@ const char render_forest_tinted_vs[] = "#define LIVE\n#define FOREST\n#define TI
 
 /* Warm paper, like the sheet a child would draw on. */
 const float render_paper[3] = { 0.975f, 0.953f, 0.898f };
+const float render_bark[3] = { 0.47f, 0.32f, 0.20f };
+const float render_vine_stem[3] = { 0.30f, 0.45f, 0.16f };

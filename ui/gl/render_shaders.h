@@ -30,6 +30,12 @@ extern const char render_forest_tinted_vs[];
 
 /* The paper behind every picture. */
 extern const float render_paper[3];
+/* The bark as the screen colours it, in every view (lighter than the exporters', numfmt.h;
+ * the take-home page maps the one to the other, export_page). */
+extern const float render_bark[3];
+/* A vine's young stem: darker and yellower than the leaves, so that a stem reads against
+ * its own leaves (the exporters' vine colour, numfmt.h, as it is). */
+extern const float render_vine_stem[3];
 
 /* What the tinted vertex shaders (TINT defined: a colour a vertex or an instance, for spring
  * and autumn leaves) declare and pass on, the merged and the instanced alike. */

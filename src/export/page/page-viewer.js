@@ -61,15 +61,57 @@
 	}
 
 	/*
+	 * The screen's colours: each channel c of a material's colour, and of the leaves'
+	 * colours a vertex (spring, autumn), shown as c^k, the k of data.tint for its material
+	 * ("leaves-autumn" is the leaves'), as the kiosk shows them (ui/leaf_tint.h).
+	 */
+	function tint_of(name) {
+		var t = data.tint || {};
+
+		return t[name] || t[String(name).split("-")[0]] || null;
+	}
+
+	function tint_color(c, k) {
+		c.r = Math.pow(c.r, k[0]);
+		c.g = Math.pow(c.g, k[1]);
+		c.b = Math.pow(c.b, k[2]);
+	}
+
+	/* COLOR_0 as GLTFLoader gives it: r111 keeps normalised bytes as they are stored */
+	function tint_vertices(geometry, k) {
+		var a = geometry.attributes.color, most = 1, get, set;
+
+		if (!a || geometry.userData.edahaTinted)
+			return;
+		if (a.normalized)
+			most = a.array instanceof Uint8Array ? 255 : a.array instanceof Uint16Array ? 65535 : 1;
+		get = [a.getX, a.getY, a.getZ];
+		set = [a.setX, a.setY, a.setZ];
+		for (var i = 0; i < a.count; i++)
+			for (var c = 0; c < 3; c++) {
+				var v = Math.pow(get[c].call(a, i) / most, k[c]) * most;
+
+				set[c].call(a, i, most > 1 ? Math.round(v) : v);
+			}
+		geometry.userData.edahaTinted = true;
+		a.needsUpdate = true;
+	}
+
+	/*
 	 * The kiosk's look: a colour times 0.45 + 0.7 * the light's Lambert term (ui/gl/
 	 * render_shaders.c), the light turning with the camera. three.js's Lambert material
 	 * under an ambient light of 0.45 and a directional one of 0.7 computes just that.
 	 */
-	function kiosk_material(m) {
-		var k = new THREE.MeshLambertMaterial();
+	function kiosk_material(m, geometry) {
+		var k = new THREE.MeshLambertMaterial(), t = tint_of(m.name);
 
 		k.name = m.name;
 		k.color.copy(m.color);
+		if (t) {
+			tint_color(k.color, t);
+			if (m.vertexColors)
+				tint_vertices(geometry, t);
+		}
 		k.side = m.side;
 		k.vertexColors = m.vertexColors;
 		k.morphTargets = m.morphTargets;
@@ -115,7 +157,7 @@
 		scene.traverse(function (o) {
 			if (!o.isMesh)
 				return;
-			o.material = kiosk_material(o.material);
+			o.material = kiosk_material(o.material, o.geometry);
 			/* r111's bounds of a morphed mesh are not its own (rest_box): never culled */
 			o.frustumCulled = false;
 		});
