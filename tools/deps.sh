@@ -17,6 +17,8 @@ TEST_PKGS+=" blender python3-numpy"
 # tests/export/threejs.sh: three.js (Debian's libjs-three) plays the same wind in headless
 # Chromium
 TEST_PKGS+=" chromium libjs-three"
+# tests/export/page.sh: the take-home page in a second browser engine, Firefox (Gecko)
+TEST_PKGS+=" firefox-esr"
 
 deps_install() {
 	local missing=() p

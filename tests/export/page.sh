@@ -1,10 +1,12 @@
 #!/bin/bash
 # SPDX-License-Identifier: MIT
-# page.sh: the take-home page (issue 28, docs/page.md) in Debian's headless Chromium.
+# page.sh: the take-home page (issue 28, docs/page.md) in Debian's headless Chromium and,
+# when installed, headless Firefox ESR (a second engine: Gecko beside Blink).
 # `edaha --headless --out DIR` writes model.html for the demo in 3D and for cherry (and
 # the demo in Japanese); page_write makes a Save's tree-0012.html of the demo with a
 # hostile date. Each page is opened from a file:// URL with every request but the page's
-# own sent to a closed port, and driven through the DevTools protocol (page_cdp.py):
+# own sent to a closed port, and driven through the DevTools protocol (page_cdp.py) or
+# Firefox's WebDriver BiDi (page_firefox.py; under Xvfb, which Firefox's WebGL needs):
 #  - it draws its first frame, with no console error, no exception, no refusal by its
 #    Content-Security-Policy and no request at all;
 #  - its elements are the template's, whatever the text: the hostile date is shown as
@@ -13,7 +15,9 @@
 #    (its screen.png): the masks of tree pixels, each cut to its bounding box, on a grid
 #    of 48 cells across (page_masks): IoU at least SIL_IOU, at least SIL_NEAR of each
 #    mask's cells within a cell of the other's, the boxes' width/height within SIL_ASPECT;
-#    with the wind playing, NEAR_WIND of the cells within a cell. The page's camera is
+#    with the wind playing, NEAR_WIND of the cells within a cell; the tree's mean colour
+#    within COLOR_MAX of the kiosk's, a channel (the page shows the screen's colours).
+#    The page's camera is
 #    orthographic, as the kiosk's, so the front views compare as they are;
 #  - two screenshots a second apart differ in the crown (the upper half of the tree's
 #    box: at least CROWN_MIN of its tree pixels' worth) and not at the trunk's foot: in
@@ -24,10 +28,10 @@
 # The drawing's odd text: a drawing full of comments of markup loads to the same page,
 # byte for byte, as without them. Without the viewer's scripts (EDAHA_THREE_DIR pointing
 # nowhere) the run writes everything else and says why.
-# Paths from meson's environment: EDAHA, DEMO, PAGE_CDP, PAGE_MASKS, PAGE_WRITE,
+# Paths from meson's environment: EDAHA, DEMO, PAGE_CDP, PAGE_FIREFOX, PAGE_MASKS, PAGE_WRITE,
 # EDAHA_GL_PRELOAD (ASan builds). Exit 77 (skipped) without chromium or libjs-three.
 set -uo pipefail
-: "${EDAHA:?}" "${DEMO:?}" "${PAGE_CDP:?}" "${PAGE_MASKS:?}" "${PAGE_WRITE:?}"
+: "${EDAHA:?}" "${DEMO:?}" "${PAGE_CDP:?}" "${PAGE_FIREFOX:?}" "${PAGE_MASKS:?}" "${PAGE_WRITE:?}"
 THREE=/usr/share/javascript/three
 CHROMIUM=$(command -v chromium || command -v chromium-browser) ||
 	{ echo "chromium not installed, skipping (Debian: apt-get install chromium)" >&2; exit 77; }
@@ -71,29 +75,59 @@ EDAHA_THREE_DIR="$T/nowhere" edaha --headless --out "$T/none" --press tpl-cherry
 	fail "without libjs-three: not the files expected: $(ls "$T/none")"
 grep -q "no model.html:.*three.min.js" "$T/none.log" || { cat "$T/none.log" >&2; fail "not said why"; }
 
-for d in demo cherry demo-ja tree-0012; do
+# Firefox (Gecko) beside Chromium (Blink): its WebGL needs a display even headless (Xvfb)
+BROWSERS=chromium
+FIREFOX=$(command -v firefox-esr || command -v firefox) && command -v Xvfb >/dev/null &&
+	BROWSERS="chromium firefox" ||
+	echo "firefox-esr or Xvfb not installed: the page in Chromium only (Debian: apt-get install firefox-esr xvfb)" >&2
+case $BROWSERS in
+*firefox*)
+	exec 3>"$T/display"
+	Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp >"$T/xvfb.log" 2>&1 &
+	XVFB=$!
+	trap 'kill $XVFB 2>/dev/null; wait 2>/dev/null; rm -rf "$T"' EXIT
+	for _ in $(seq 100); do [ -s "$T/display" ] && break; sleep 0.1; done
+	exec 3>&-
+	[ -s "$T/display" ] || { cat "$T/xvfb.log" >&2; fail "Xvfb did not start"; }
+	;;
+esac
+
+for b in $BROWSERS; do
+# in Firefox the pages that differ most: cherry (spring's leaf colours, the largest) and
+# a Save's page with its hostile date (the demo's model)
+pages="demo cherry demo-ja tree-0012"
+[ "$b" = firefox ] && pages="cherry tree-0012"
+for d in $pages; do
+	r=$b-$d
 	case $d in
 	tree-0012) page=$T/tree-0012.html kiosk=$T/demo/screen.png ;;
 	*) page=$T/$d/model.html kiosk=$T/$d/screen.png ;;
 	esac
-	timeout 300 python3 "$PAGE_CDP" "$CHROMIUM" "$page" "$T/$d-shots" >"$T/$d.json" 2>"$T/$d.err" ||
-		{ tail -20 "$T/$d.err" "$T/$d-shots/profile/chromium.log" >&2; fail "chromium: $d"; }
+	case $b in
+	chromium)
+		timeout 300 python3 "$PAGE_CDP" "$CHROMIUM" "$page" "$T/$r-shots" >"$T/$r.json" 2>"$T/$r.err" ||
+			{ tail -20 "$T/$r.err" "$T/$r-shots/profile/chromium.log" >&2; fail "chromium: $d"; } ;;
+	firefox)
+		DISPLAY=:$(cat "$T/display") timeout 300 python3 "$PAGE_FIREFOX" "$FIREFOX" "$page" \
+			"$T/$r-shots" >"$T/$r.json" 2>"$T/$r.err" ||
+			{ tail -20 "$T/$r.err" "$T/$r-shots/firefox.log" >&2; fail "firefox: $d"; } ;;
+	esac
 	for shot in still front later turned; do
-		"$PAGE_MASKS" silhouette "$kiosk" $KIOSK_BOX "$T/$d-shots/$shot.png" \
-			>"$T/$d-$shot.sil" || fail "$d: no tree in $shot.png"
+		"$PAGE_MASKS" silhouette "$kiosk" $KIOSK_BOX "$T/$r-shots/$shot.png" \
+			>"$T/$r-$shot.sil" || fail "$r: no tree in $shot.png"
 	done
-	"$PAGE_MASKS" wind "$T/$d-shots/front.png" "$T/$d-shots/later.png" >"$T/$d.wind" ||
-		fail "$d: the wind's shots"
-	"$PAGE_MASKS" turned "$T/$d-shots/later.png" "$T/$d-shots/turned.png" >"$T/$d.turned" ||
-		fail "$d: the turned shot"
-	python3 - "$T" "$d" <<'PY' || fail "the page: $d"
+	"$PAGE_MASKS" wind "$T/$r-shots/front.png" "$T/$r-shots/later.png" >"$T/$r.wind" ||
+		fail "$r: the wind's shots"
+	"$PAGE_MASKS" turned "$T/$r-shots/later.png" "$T/$r-shots/turned.png" >"$T/$r.turned" ||
+		fail "$r: the turned shot"
+	python3 - "$T" "$d" "$r" <<'PY' || fail "the page: $r"
 import json, os, sys
-T, d = sys.argv[1:3]
+T, d, r = sys.argv[1:4]
 E = {k: float(os.environ[k]) for k in ("SIL_IOU", "SIL_NEAR", "SIL_ASPECT", "NEAR_WIND",
                                        "CROWN_MIN", "FOOT_EDGE_MAX", "FOOT_EDGE_MEAN",
                                        "TURN_MIN", "COLOR_MAX")}
 load = lambda name: json.load(open(os.path.join(T, name)))
-o = load(d + ".json")
+o = load(r + ".json")
 assert o["state"] == "ready", "the page is %s" % o["state"]
 assert not o["errors"], "console errors: %s" % o["errors"]
 assert not o["requests"], "requests: %s" % o["requests"]
@@ -111,7 +145,7 @@ elif d == "demo-ja":
 else:
     assert o["lang"] == "en" and o["title"] == "My tree", (o["lang"], o["title"])
     assert texts == [None, None, "Drag to turn the tree. Scroll or pinch to come closer.", None], texts
-sil = {s: load("%s-%s.sil" % (d, s)) for s in ("still", "front", "later", "turned")}
+sil = {s: load("%s-%s.sil" % (r, s)) for s in ("still", "front", "later", "turned")}
 st = sil["still"]
 aspect = abs(st["page_aspect"] / st["kiosk_aspect"] - 1)
 assert st["iou"] >= E["SIL_IOU"], "at rest: IoU %.3f < %.2f" % (st["iou"], E["SIL_IOU"])
@@ -123,14 +157,14 @@ assert color <= E["COLOR_MAX"], "at rest: the tree's mean colour %s, the kiosk's
     st["page_mean"], st["kiosk_mean"])
 for s in ("front", "later"):
     assert sil[s]["near"] >= E["NEAR_WIND"], "%s: %.3f of the cells near" % (s, sil[s]["near"])
-w = load(d + ".wind")
+w = load(r + ".wind")
 assert o["seconds"] >= 0.9 and o["wind_time"][1] - o["wind_time"][0] >= 0.5, (o["seconds"], o["wind_time"])
 assert w["crown_differ"] >= E["CROWN_MIN"] * w["crown_tree"], "the crown did not move: %s" % w
 assert w["foot_edge_max"] <= E["FOOT_EDGE_MAX"] and w["foot_edge_mean"] <= E["FOOT_EDGE_MEAN"], \
     "the foot moved: %s" % w
 turn = abs(o["after"]["azimuth"] - o["before"]["azimuth"])
 assert turn >= E["TURN_MIN"], "the drag turned the tree by %.3f rad" % turn
-t = load(d + ".turned")
+t = load(r + ".turned")
 x0, y0, x1, y1 = t["box"]
 assert 0 <= x0 and x1 < t["size"][0] and 0 <= y0 and y1 < t["size"][1] and x1 - x0 > 100, \
     "the turned tree left the window: %s" % t
@@ -139,11 +173,12 @@ print("%s: ready, no console error, no request; at rest IoU %.3f (>= %.2f), %.3f
       "within one (>= %.2f), shapes %.1f%% apart, mean colours %.1f apart (<= %d); in the wind %.3f and %.3f within one; "
       "%.2f s apart the crown's pixels differ %d for its %d, the foot's %d for its %d (its "
       "outline moved %d px at most, %.3f on average); the drag turned it %.2f rad, IoU then %.3f"
-      % (d, st["iou"], E["SIL_IOU"], st["near"], E["SIL_NEAR"], 100 * aspect, color,
+      % (r, st["iou"], E["SIL_IOU"], st["near"], E["SIL_NEAR"], 100 * aspect, color,
          E["COLOR_MAX"],
          sil["front"]["near"], sil["later"]["near"], o["seconds"], w["crown_differ"],
          w["crown_tree"], w["foot_differ"], w["foot_tree"], w["foot_edge_max"],
          w["foot_edge_mean"], turn, sil["turned"]["iou"]))
 PY
+done
 done
 ls -l "$T/demo/model.html" "$T/cherry/model.html" "$T/tree-0012.html" | awk '{print $5, $9}'
