@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "export.h"
+#include "fileio.h"
 #include "pngio.h"
 
 /* The OBJ is built before its name is known; export_set_write renames the MTL it uses. */
@@ -98,21 +99,13 @@ static bool forest_temp(const char *name)
 
 int export_set_pick(int dirfd, unsigned *number, struct error *err)
 {
-	/* a fresh open file description: dirfd's offset stays where it is */
-	int fd = openat(dirfd, ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
 	struct export_names *names;
 	struct dirent *d;
 	DIR *dir;
-	int r = 0;
+	int r = fileio_opendir_at(dirfd, &dir, err);
 
-	if (fd < 0)
-		return error_set(err, -errno, "cannot open the directory: %s", strerror(errno));
-	dir = fdopendir(fd);
-	if (!dir) {
-		r = -errno;
-		close(fd);
-		return error_set(err, r, "cannot list the directory: %s", strerror(-r));
-	}
+	if (r < 0)
+		return r;
 	/* 12 KiB of bits: on the heap, as this runs on threads with small stacks too */
 	names = malloc(sizeof(*names));
 	if (!names) {

@@ -193,3 +193,20 @@ int fileio_write_atomic(const char *dir, const char *name, const void *data, siz
 	}
 	return ret;
 }
+
+int fileio_opendir_at(int dfd, DIR **dir, struct error *err)
+{
+	int fd = openat(dfd, ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+	int r;
+
+	*dir = NULL;
+	if (fd < 0)
+		return error_set(err, -errno, "cannot open the directory: %s", strerror(errno));
+	*dir = fdopendir(fd);
+	if (!*dir) {
+		r = -errno;
+		close(fd);
+		return error_set(err, r, "cannot list the directory: %s", strerror(-r));
+	}
+	return 0;
+}

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #pragma once
 
+#include <dirent.h>
 #include <stddef.h>
 
 #include "error.h"
@@ -22,3 +23,7 @@ int fileio_write_atomic(const char *dir, const char *name, const void *data, siz
  * failure name is as it was and no temporary is left. 0 or -errno. */
 int fileio_write_atomic_at(int dfd, const char *name, const void *data, size_t len,
 			   struct error *err);
+
+/* *dir: a listing of the directory dfd through an open file description of its own, so
+ * that dfd's offset stays where it is (closedir it). 0, or -errno with a message. */
+int fileio_opendir_at(int dfd, DIR **dir, struct error *err);

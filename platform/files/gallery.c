@@ -282,23 +282,16 @@ static int collect(int dirfd, const uint8_t *has, unsigned max, struct gallery *
 
 int gallery_list(int dirfd, struct gallery *g, struct error *err)
 {
-	/* a fresh open file description: dirfd's offset stays where it is */
-	int fd = openat(dirfd, ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
 	uint8_t *has;
 	unsigned max = 0;
 	struct dirent *d;
 	DIR *dir;
-	int r = 0;
+	int r;
 
 	g->count = 0;
-	if (fd < 0)
-		return error_set(err, -errno, "cannot open the directory: %s", strerror(errno));
-	dir = fdopendir(fd);
-	if (!dir) {
-		r = -errno;
-		close(fd);
-		return error_set(err, r, "cannot list the directory: %s", strerror(-r));
-	}
+	r = fileio_opendir_at(dirfd, &dir, err);
+	if (r < 0)
+		return r;
 	/* 100 KB, one byte a number: on the heap, as this runs on threads with small stacks */
 	has = calloc(EXPORT_NAMES_MAX + 1, 1);
 	if (!has) {
