@@ -30,6 +30,8 @@ import subprocess
 import sys
 import time
 
+import page_scenario
+
 
 class Browser:
     def __init__(self, chromium, profile, width, height):
@@ -121,22 +123,8 @@ class Browser:
 
 
 def main():
-    args = sys.argv[1:]
-    size, drag = (1280, 800), 300
-    while len(args) > 3:
-        if args[-2] == '--size':
-            size = tuple(int(v) for v in args[-1].split('x'))
-        elif args[-2] == '--drag':
-            drag = int(args[-1])
-        else:
-            break
-        args = args[:-2]
-    if len(args) != 3:
-        sys.exit(__doc__)
-    chromium, page, out = args
-    os.makedirs(out, exist_ok=True)
+    chromium, page, out, size, drag_px = page_scenario.args(sys.argv, __doc__)
     profile = os.path.join(out, 'profile')
-    os.makedirs(profile, exist_ok=True)
     url = 'file://' + os.path.abspath(page)
     b = Browser(chromium, profile, *size)
     result = {'errors': [], 'requests': [], 'warnings': []}
@@ -157,54 +145,22 @@ def main():
                 raise RuntimeError('%s: %s' % (expr, r['exceptionDetails']))
             return r['result'].get('value')
 
-        state = None
-        deadline = time.time() + 90
-        while time.time() < deadline:
-            state = js('document.documentElement && document.documentElement.getAttribute("data-state")')
-            if state in ('ready', 'failed'):
-                break
-            b.pump(0.2)
-        result['state'] = state
-        result['title'] = js('document.title')
-        result['lang'] = js('document.documentElement.lang')
-        result['texts'] = js('[...document.querySelectorAll("#label > div, #note")]'
-                             '.map(e => e.hidden ? null : e.textContent)')
-        # the document's elements, in order: what the markup (and the viewer) made
-        result['elements'] = js('[...document.querySelectorAll("*")].map(e => e.tagName)'
-                                '.join(" ")')
-        if state == 'ready':
-            # the tree alone on the paper
-            js('document.getElementById("label").style.visibility = "hidden"')
-            b.pump(0.3)
+        def shot(path):
+            png = b.call('Page.captureScreenshot', {'format': 'png'}, session=s)['data']
+            with open(path, 'wb') as f:
+                f.write(base64.b64decode(png))
 
-            def shot(name):
-                png = b.call('Page.captureScreenshot', {'format': 'png'}, session=s)['data']
-                with open(os.path.join(out, name), 'wb') as f:
-                    f.write(base64.b64decode(png))
-                return js('edahaView()')
-
-            v0 = shot('front.png')
-            t0 = time.time()
-            b.pump(1.0)
-            v1 = shot('later.png')
-            result['seconds'] = time.time() - t0
-            result['wind_time'] = [v0['time'], v1['time']]
-            result['before'] = v1
-            x0, y = size[0] // 2 - drag // 2, size[1] // 2
+        def drag(x0, y, dx):
             mouse = lambda kind, x, **kw: b.call('Input.dispatchMouseEvent', dict(
                 type=kind, x=x, y=y, button='left', clickCount=1, **kw), session=s)
             mouse('mouseMoved', x0, buttons=0)
             mouse('mousePressed', x0, buttons=1)
             for i in range(1, 13):
-                mouse('mouseMoved', x0 + drag * i // 12, buttons=1)
+                mouse('mouseMoved', x0 + dx * i // 12, buttons=1)
                 b.pump(0.03)
-            mouse('mouseReleased', x0 + drag, buttons=0)
-            b.pump(2.0)  # the damping settles
-            result['after'] = shot('turned.png')
-            # the tree at rest in the front view, as the kiosk's headless run shows it
-            js('edahaStill()')
-            b.pump(0.5)
-            result['still'] = shot('still.png')
+            mouse('mouseReleased', x0 + dx, buttons=0)
+
+        page_scenario.visit(result, out, size, drag_px, js, shot, drag, b.pump)
         b.pump(0.2)
     finally:
         b.close()

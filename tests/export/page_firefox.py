@@ -31,6 +31,8 @@ import subprocess
 import sys
 import time
 
+import page_scenario
+
 PREFS = """
 user_pref("webgl.force-enabled", true);
 user_pref("network.proxy.type", 1);
@@ -183,22 +185,8 @@ class Firefox:
 
 
 def main():
-    args = sys.argv[1:]
-    size, drag = (1280, 800), 300
-    while len(args) > 3:
-        if args[-2] == '--size':
-            size = tuple(int(v) for v in args[-1].split('x'))
-        elif args[-2] == '--drag':
-            drag = int(args[-1])
-        else:
-            break
-        args = args[:-2]
-    if len(args) != 3:
-        sys.exit(__doc__)
-    firefox, page, out = args
-    os.makedirs(out, exist_ok=True)
+    firefox, page, out, size, drag_px = page_scenario.args(sys.argv, __doc__)
     profile = os.path.join(out, 'profile')
-    os.makedirs(profile, exist_ok=True)
     url = 'file://' + os.path.abspath(page)
     try:
         b = Firefox(firefox, profile, os.path.join(out, 'firefox.log'))
@@ -224,52 +212,23 @@ def main():
             v = r['result']
             return json.loads(v['value']) if v.get('type') == 'string' else None
 
-        state = None
-        deadline = time.time() + 90
-        while time.time() < deadline:
-            state = js('document.documentElement && document.documentElement.getAttribute("data-state")')
-            if state in ('ready', 'failed'):
-                break
-            b.pump(0.2)
-        result['state'] = state
-        result['title'] = js('document.title')
-        result['lang'] = js('document.documentElement.lang')
-        result['texts'] = js('[...document.querySelectorAll("#label > div, #note")]'
-                             '.map(e => e.hidden ? null : e.textContent)')
-        result['elements'] = js('[...document.querySelectorAll("*")].map(e => e.tagName)'
-                                '.join(" ")')
-        if state == 'ready':
-            js('(document.getElementById("label").style.visibility = "hidden", 0)')
-            b.pump(0.3)
+        def shot(path):
+            png = b.call('browsingContext.captureScreenshot', {'context': ctx})['data']
+            with open(path, 'wb') as f:
+                f.write(base64.b64decode(png))
 
-            def shot(name):
-                png = b.call('browsingContext.captureScreenshot', {'context': ctx})['data']
-                with open(os.path.join(out, name), 'wb') as f:
-                    f.write(base64.b64decode(png))
-                return js('edahaView()')
-
-            v0 = shot('front.png')
-            t0 = time.time()
-            b.pump(1.0)
-            v1 = shot('later.png')
-            result['seconds'] = time.time() - t0
-            result['wind_time'] = [v0['time'], v1['time']]
-            result['before'] = v1
-            x0, y = size[0] // 2 - drag // 2, size[1] // 2
+        def drag(x0, y, dx):
             moves = [{'type': 'pointerMove', 'x': x0, 'y': y},
                      {'type': 'pointerDown', 'button': 0}]
             for i in range(1, 13):
-                moves.append({'type': 'pointerMove', 'x': x0 + drag * i // 12, 'y': y,
+                moves.append({'type': 'pointerMove', 'x': x0 + dx * i // 12, 'y': y,
                               'duration': 30})
             moves.append({'type': 'pointerUp', 'button': 0})
             b.call('input.performActions', {'context': ctx, 'actions': [{
                    'type': 'pointer', 'id': 'mouse', 'parameters': {'pointerType': 'mouse'},
                    'actions': moves}]})
-            b.pump(2.0)  # the damping settles
-            result['after'] = shot('turned.png')
-            js('(edahaStill(), 0)')
-            b.pump(0.5)
-            result['still'] = shot('still.png')
+
+        page_scenario.visit(result, out, size, drag_px, js, shot, drag, b.pump)
         b.pump(0.2)
     except Exception as e:
         result['errors'].append('driver: %s' % e)
