@@ -24,7 +24,8 @@
 #    its lowest 12 rows the outline's edges moved by at most FOOT_EDGE_MAX pixel (a
 #    slanted edge's pixel flipping: a sub-pixel move), FOOT_EDGE_MEAN on average;
 #  - a 300-pixel drag (mouse events through the protocol) turns the tree by at least
-#    TURN_MIN radians, and it stays in the window.
+#    TURN_MIN radians, and it stays in the window; a finger's drag back (touch) turns it
+#    the other way, as far.
 # The drawing's odd text: a drawing full of comments of markup loads to the same page,
 # byte for byte, as without them. Without the viewer's scripts (EDAHA_THREE_DIR pointing
 # nowhere) the run writes everything else and says why.
@@ -164,6 +165,11 @@ assert w["foot_edge_max"] <= E["FOOT_EDGE_MAX"] and w["foot_edge_mean"] <= E["FO
     "the foot moved: %s" % w
 turn = abs(o["after"]["azimuth"] - o["before"]["azimuth"])
 assert turn >= E["TURN_MIN"], "the drag turned the tree by %.3f rad" % turn
+# a finger's drag back turns it back: the other way, as far
+f0, f1 = o["touch"]
+finger = f1["azimuth"] - f0["azimuth"]
+assert abs(finger) >= E["TURN_MIN"] and finger * (o["after"]["azimuth"] - o["before"]["azimuth"]) < 0, \
+    "a finger's drag turned the tree by %.3f rad" % finger
 t = load(r + ".turned")
 x0, y0, x1, y1 = t["box"]
 assert 0 <= x0 and x1 < t["size"][0] and 0 <= y0 and y1 < t["size"][1] and x1 - x0 > 100, \
@@ -172,12 +178,13 @@ assert sil["turned"]["iou"] < st["iou"] - 0.1, "turned, the same silhouette: %s"
 print("%s: ready, no console error, no request; at rest IoU %.3f (>= %.2f), %.3f of the cells "
       "within one (>= %.2f), shapes %.1f%% apart, mean colours %.1f apart (<= %d); in the wind %.3f and %.3f within one; "
       "%.2f s apart the crown's pixels differ %d for its %d, the foot's %d for its %d (its "
-      "outline moved %d px at most, %.3f on average); the drag turned it %.2f rad, IoU then %.3f"
+      "outline moved %d px at most, %.3f on average); the drag turned it %.2f rad, IoU then %.3f; "
+      "a finger's drag back %.2f rad"
       % (r, st["iou"], E["SIL_IOU"], st["near"], E["SIL_NEAR"], 100 * aspect, color,
          E["COLOR_MAX"],
          sil["front"]["near"], sil["later"]["near"], o["seconds"], w["crown_differ"],
          w["crown_tree"], w["foot_differ"], w["foot_tree"], w["foot_edge_max"],
-         w["foot_edge_mean"], turn, sil["turned"]["iou"]))
+         w["foot_edge_mean"], turn, sil["turned"]["iou"], finger))
 PY
 done
 done

@@ -160,7 +160,18 @@ def main():
                 b.pump(0.03)
             mouse('mouseReleased', x0 + dx, buttons=0)
 
-        page_scenario.visit(result, out, size, drag_px, js, shot, drag, b.pump)
+        def touch(x0, y, dx):
+            b.call('Emulation.setTouchEmulationEnabled', {'enabled': True, 'maxTouchPoints': 1},
+                   session=s)
+            finger = lambda kind, pts: b.call('Input.dispatchTouchEvent', dict(
+                type=kind, touchPoints=pts), session=s)
+            finger('touchStart', [{'x': x0, 'y': y}])
+            for i in range(1, 13):
+                finger('touchMove', [{'x': x0 + dx * i // 12, 'y': y}])
+                b.pump(0.03)
+            finger('touchEnd', [])
+
+        page_scenario.visit(result, out, size, drag_px, js, shot, drag, b.pump, touch)
         b.pump(0.2)
     finally:
         b.close()

@@ -228,7 +228,18 @@ def main():
                    'type': 'pointer', 'id': 'mouse', 'parameters': {'pointerType': 'mouse'},
                    'actions': moves}]})
 
-        page_scenario.visit(result, out, size, drag_px, js, shot, drag, b.pump)
+        def touch(x0, y, dx):
+            moves = [{'type': 'pointerMove', 'x': x0, 'y': y},
+                     {'type': 'pointerDown', 'button': 0}]
+            for i in range(1, 13):
+                moves.append({'type': 'pointerMove', 'x': x0 + dx * i // 12, 'y': y,
+                              'duration': 30})
+            moves.append({'type': 'pointerUp', 'button': 0})
+            b.call('input.performActions', {'context': ctx, 'actions': [{
+                   'type': 'pointer', 'id': 'finger', 'parameters': {'pointerType': 'touch'},
+                   'actions': moves}]})
+
+        page_scenario.visit(result, out, size, drag_px, js, shot, drag, b.pump, touch)
         b.pump(0.2)
     except Exception as e:
         result['errors'].append('driver: %s' % e)

@@ -6,6 +6,7 @@ BiDi). Each driver gives four functions; visit() does the rest, the same in both
   js(expr)        the value of a JavaScript expression in the page (JSON-like)
   shot(path)      a PNG of the page's viewport written to path
   drag(x, y, dx)  a left-button drag from (x, y) to (x + dx, y): press, 12 moves, release
+  touch(x, y, dx) the same drag by one finger (None: the driver has no touch)
   pump(seconds)   lets that much time pass, taking the browser's events meanwhile
 """
 import os
@@ -33,11 +34,12 @@ def args(argv, doc):
     return browser, page, out, size, drag
 
 
-def visit(result, out, size, drag_px, js, shot, drag, pump):
+def visit(result, out, size, drag_px, js, shot, drag, pump, touch=None):
     """Waits for data-state ready or failed (90 s at most) and reads the page's state,
     title, language, label texts and elements into result; when ready: front.png, later.png
-    a second on, the drag and turned.png once the damping settled, then edahaStill() and
-    still.png, with edahaView() at each."""
+    a second on, the drag and turned.png once the damping settled, the finger's drag back
+    (result's touch: the views before and after it), then edahaStill() and still.png, with
+    edahaView() at each."""
     state = None
     deadline = time.time() + 90
     while time.time() < deadline:
@@ -72,6 +74,10 @@ def visit(result, out, size, drag_px, js, shot, drag, pump):
     drag(size[0] // 2 - drag_px // 2, size[1] // 2, drag_px)
     pump(2.0)  # the damping settles
     result['after'] = view('turned.png')
+    if touch:
+        touch(size[0] // 2 + drag_px // 2, size[1] // 2, -drag_px)
+        pump(2.0)
+        result['touch'] = [result['after'], js('edahaView()')]
     # the tree at rest in the front view, as the kiosk's headless run shows it
     js('edahaStill()')
     pump(0.5)
