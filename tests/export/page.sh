@@ -42,6 +42,7 @@ CHROMIUM=$(command -v chromium || command -v chromium-browser) ||
 T=$(mktemp -d "${TMPDIR:-/tmp}/edaha-page.XXXXXX")
 trap 'rm -rf "$T"' EXIT
 . "$(dirname "$0")/../tools/edaha.sh"
+. "$(dirname "$0")/../tools/xvfb.sh"
 run() {
 	edaha --headless "$@" >"$T/log" 2>&1 || { cat "$T/log" >&2; fail "edaha $* exited $?"; }
 }
@@ -83,13 +84,8 @@ FIREFOX=$(command -v firefox-esr || command -v firefox) && command -v Xvfb >/dev
 	echo "firefox-esr or Xvfb not installed: the page in Chromium only (Debian: apt-get install firefox-esr xvfb)" >&2
 case $BROWSERS in
 *firefox*)
-	exec 3>"$T/display"
-	Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp >"$T/xvfb.log" 2>&1 &
-	XVFB=$!
 	trap 'kill $XVFB 2>/dev/null; wait 2>/dev/null; rm -rf "$T"' EXIT
-	for _ in $(seq 100); do [ -s "$T/display" ] && break; sleep 0.1; done
-	exec 3>&-
-	[ -s "$T/display" ] || { cat "$T/xvfb.log" >&2; fail "Xvfb did not start"; }
+	xvfb_start "$T" 1280x800 || fail "Xvfb did not start"
 	;;
 esac
 
@@ -109,7 +105,7 @@ for d in $pages; do
 		timeout 300 python3 "$PAGE_CDP" "$CHROMIUM" "$page" "$T/$r-shots" >"$T/$r.json" 2>"$T/$r.err" ||
 			{ tail -20 "$T/$r.err" "$T/$r-shots/profile/chromium.log" >&2; fail "chromium: $d"; } ;;
 	firefox)
-		DISPLAY=:$(cat "$T/display") timeout 300 python3 "$PAGE_FIREFOX" "$FIREFOX" "$page" \
+		DISPLAY=$XVFB_DISPLAY timeout 300 python3 "$PAGE_FIREFOX" "$FIREFOX" "$page" \
 			"$T/$r-shots" >"$T/$r.json" 2>"$T/$r.err" ||
 			{ tail -20 "$T/$r.err" "$T/$r-shots/firefox.log" >&2; fail "firefox: $d"; } ;;
 	esac

@@ -217,7 +217,7 @@ def main():
             with open(path, 'wb') as f:
                 f.write(base64.b64decode(png))
 
-        def drag(x0, y, dx):
+        def pointer_drag(kind, x0, y, dx):
             moves = [{'type': 'pointerMove', 'x': x0, 'y': y},
                      {'type': 'pointerDown', 'button': 0}]
             for i in range(1, 13):
@@ -225,19 +225,11 @@ def main():
                               'duration': 30})
             moves.append({'type': 'pointerUp', 'button': 0})
             b.call('input.performActions', {'context': ctx, 'actions': [{
-                   'type': 'pointer', 'id': 'mouse', 'parameters': {'pointerType': 'mouse'},
+                   'type': 'pointer', 'id': kind, 'parameters': {'pointerType': kind},
                    'actions': moves}]})
 
-        def touch(x0, y, dx):
-            moves = [{'type': 'pointerMove', 'x': x0, 'y': y},
-                     {'type': 'pointerDown', 'button': 0}]
-            for i in range(1, 13):
-                moves.append({'type': 'pointerMove', 'x': x0 + dx * i // 12, 'y': y,
-                              'duration': 30})
-            moves.append({'type': 'pointerUp', 'button': 0})
-            b.call('input.performActions', {'context': ctx, 'actions': [{
-                   'type': 'pointer', 'id': 'finger', 'parameters': {'pointerType': 'touch'},
-                   'actions': moves}]})
+        drag = lambda x0, y, dx: pointer_drag('mouse', x0, y, dx)
+        touch = lambda x0, y, dx: pointer_drag('touch', x0, y, dx)
 
         page_scenario.visit(result, out, size, drag_px, js, shot, drag, b.pump, touch)
         b.pump(0.2)

@@ -10,6 +10,7 @@
 set -uo pipefail
 : "${EDAHA:?}" "${DEMO:?}"
 . "$(dirname "$0")/../tools/edaha.sh"
+. "$(dirname "$0")/../tools/xvfb.sh"
 for p in Xvfb xdotool; do
 	command -v $p >/dev/null || { echo "SKIP: no $p (tools/deps.sh TEST_PKGS has it)"; exit 77; }
 done
@@ -27,13 +28,8 @@ cleanup() {
 }
 trap cleanup EXIT
 
-exec 3>"$T/display"
-Xvfb -displayfd 3 -screen 0 1600x1000x24 -nolisten tcp >"$T/xvfb.log" 2>&1 &
-XVFB=$!
-for _ in $(seq 100); do [ -s "$T/display" ] && break; sleep 0.1; done
-exec 3>&-
-[ -s "$T/display" ] || { cat "$T/xvfb.log" >&2; fail "Xvfb did not start"; }
-DISPLAY=:$(cat "$T/display")
+xvfb_start "$T" 1600x1000 || fail "Xvfb did not start"
+DISPLAY=$XVFB_DISPLAY
 export DISPLAY
 unset WAYLAND_DISPLAY
 export SDL_VIDEODRIVER=x11
